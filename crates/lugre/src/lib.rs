@@ -1,0 +1,54 @@
+//! # lugre
+//!
+//! The hysteresis loop and every minor loop of the LuGre and Dahl friction models for any
+//! periodic input, exact and stable at any stiffness, after Ikhouane, Mañosa and Pujol,
+//! "Minor loops of the Dahl and LuGre models".
+//!
+//! ```
+//! use lugre::{Bimodal, HysteresisLoop, LuGre};
+//!
+//! // The paper's Example 4: sigma0 = 6, turning points 0, 1, 0.5, 1.5.
+//! let model = LuGre::paper().with_sigma0(6.0).unwrap();
+//! let input = Bimodal::new(0.0, 0.5, 1.0, 1.5).unwrap();
+//! let hl = HysteresisLoop::new(model.rate_independent(), &input.turning_points()).unwrap();
+//! let loops = hl.loops();
+//! assert_eq!(loops.len(), 2); // the major loop and one minor loop
+//! assert_eq!([loops[1].start.rho, loops[1].end.rho], [1.0, 2.0]); // [rho_1, rho_5]
+//! assert!(loops.iter().all(|l| l.dissipation >= 0.0));
+//! ```
+//!
+//! The core is pure computation: no file or terminal I/O.
+
+pub mod error;
+pub mod hysteresis;
+pub mod input;
+pub mod minor;
+pub mod model;
+pub mod numerics;
+pub mod prec;
+pub mod theorem_a;
+
+pub use error::{InputError, LoopError, ModelError};
+pub use hysteresis::{HysteresisLoop, LoopPoint};
+pub use input::{Bimodal, TurningPoints};
+pub use minor::{minor_loops, Loop, LoopKind};
+pub use model::{Dahl, LuGre, LuGreParams, RateIndependent, Stribeck, VelocityFn, Viscous};
+pub use theorem_a::TheoremA;
+
+/// Any error of the library.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Input(#[from] InputError),
+    #[error(transparent)]
+    Loop(#[from] LoopError),
+}
+
+impl HysteresisLoop {
+    /// The major loop and every minor loop, with energies and nesting (see [`minor`]).
+    pub fn loops(&self) -> Vec<Loop> {
+        minor_loops(self)
+    }
+}

@@ -1,0 +1,251 @@
+//! Every loop of a periodic input: the major loop (the whole period) and all minor loops,
+//! with their nesting and energies (DESIGN §1, "Minor loops"; the paper's closing remark made
+//! precise).
+//!
+//! The cyclic sequence of turning points is started at a global maximum and its reversals are
+//! paired by the ASTM E1049 three-point rule for repeating histories (rainflow): with the last
+//! three points `A, B, P` on the stack, `X = |P - B|`, `Y = |B - A|`, the pair `(A, B)` is a
+//! cycle once `X >= Y`. Each cycle is a loop: the arc from `rho_A` through `rho_B` to `rho_C`,
+//! the first `rho > rho_B` where the input is back at `u_A`. That return lies on the last
+//! segment into `P` (everything in between stayed strictly inside `(u_A, u_B)`), so `rho_C`
+//! costs O(1) even when cycles are nested on the return branch.
+//!
+//! **Ties** (`X == Y`, the input comes back exactly to `u_A`): a return *upwards* to a maximum
+//! closes the cycle, a return *downwards* to a minimum does not (the input must go strictly
+//! below). This is the one convention under which every input of Definition 1, including
+//! `umin1 == umin2` and `umax1 == umax2`, has exactly Theorem A's minor loop
+//! `[rho_1, rho_5]`. When a minimum is touched without closing, the touch is remembered: if
+//! that cycle closes later, its arc still ends at the first return (the touch).
+//!
+//! **Start**: among the global maxima the start is the one whose rotation of the sequence is
+//! lexicographically greatest, so the set of loops does not depend on where the user's
+//! period begins, even with repeated extreme values.
+//!
+//! Energies over an arc come from double-double prefix sums of the closed forms (see
+//! [`crate::hysteresis`]): O(1) per loop.
+
+use crate::hysteresis::{HysteresisLoop, LoopPoint, Position};
+
+/// Whether a loop is the major loop (the whole period) or a minor loop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum LoopKind {
+    Major,
+    Minor,
+}
+
+/// One loop of the hysteresis curve, with the energy over its arc.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Loop {
+    pub kind: LoopKind,
+    /// Where the arc starts (`rho_A`, in `[0, P)`).
+    pub start: LoopPoint,
+    /// The reversal the loop turns at (`rho_B`).
+    pub reversal: LoopPoint,
+    /// Where the input first returns to `u_A` (`rho_C`; may exceed `P` when the arc wraps).
+    pub end: LoopPoint,
+    /// `W = integral y° dpsi` over the arc, nested loops included.
+    pub work: f64,
+    /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the change of the energy stored in the bristles.
+    pub stored_energy_change: f64,
+    /// `D = W - dV = (1/g0) integral y°^2 drho >= 0`.
+    pub dissipation: f64,
+    /// `y_C - y_A`: minor loops do not close in general (paper Fig. 15).
+    pub closure_gap: f64,
+    /// Index of the smallest loop whose arc contains this one (`None` for the major loop).
+    pub parent: Option<usize>,
+    /// 0 for the major loop, parent's depth + 1 otherwise.
+    pub depth: usize,
+}
+
+/// A rainflow cycle in the rotated sequence: indices `a`, `b` (turning points `j`, where
+/// turning point `j` is `(start + j) % n` of the original) and the end of its arc.
+#[derive(Debug, Clone, Copy)]
+struct Cycle {
+    a: usize,
+    b: usize,
+    /// End of the arc as (segment `j`, offset along it), ordered lexicographically.
+    end: (usize, f64),
+}
+
+struct StackEntry {
+    j: usize,
+    /// The first later turning point equal to the value below this entry (a tie that did not
+    /// close the cycle).
+    touch: Option<usize>,
+}
+
+/// The rotation of `u` that starts at a global maximum and is lexicographically greatest
+/// (the minimum-expression algorithm, O(n)).
+pub(crate) fn canonical_start(u: &[f64]) -> usize {
+    let n = u.len();
+    let (mut i, mut j, mut k) = (0usize, 1usize, 0usize);
+    while i < n && j < n && k < n {
+        let x = u[(i + k) % n];
+        let y = u[(j + k) % n];
+        if x == y {
+            k += 1;
+            continue;
+        }
+        if x < y {
+            i += k + 1;
+        } else {
+            j += k + 1;
+        }
+        if i == j {
+            j += 1;
+        }
+        k = 0;
+    }
+    i.min(j)
+}
+
+/// The rainflow cycles of the cyclic sequence `v` (already rotated to a global maximum and
+/// closed: `v[n] == v[0]`), in the order they close.
+fn rainflow_cycles(v: &[f64]) -> Vec<Cycle> {
+    let mut stack: Vec<StackEntry> = Vec::with_capacity(64);
+    let mut cycles = Vec::with_capacity(v.len() / 2);
+    for p in 0..v.len() {
+        stack.push(StackEntry { j: p, touch: None });
+        while stack.len() >= 3 {
+            let m = stack.len();
+            let (a, b) = (stack[m - 3].j, stack[m - 2].j);
+            let x = (v[p] - v[b]).abs();
+            let y = (v[b] - v[a]).abs();
+            let rising = v[p] > v[b];
+            if x > y || (x == y && rising) {
+                let end = match stack[m - 2].touch {
+                    Some(t) => (t, 0.0),
+                    None if x == y => (p, 0.0),
+                    None => (p - 1, (v[a] - v[p - 1]).abs()),
+                };
+                cycles.push(Cycle { a, b, end });
+                stack.drain(m - 3..m - 1);
+            } else {
+                if x == y && stack[m - 2].touch.is_none() {
+                    stack[m - 2].touch = Some(p);
+                }
+                break;
+            }
+        }
+    }
+    cycles
+}
+
+/// All loops of `hl`: `[0]` is the major loop, then the minor loops ordered by where their
+/// arcs start (so a parent comes before its children).
+pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
+    let n = hl.len();
+    let u = hl.turning_points();
+    let start = canonical_start(u);
+    let v: Vec<f64> = (0..=n).map(|j| u[(start + j) % n]).collect();
+
+    let mut cycles = rainflow_cycles(&v);
+    // The last cycle closed is the one hanging from the start; it is the major loop when its
+    // arc is the whole period. With a repeated global maximum it is not, and the major loop
+    // is added on its own, turning at the first global minimum.
+    let whole = |c: &Cycle| c.a == 0 && c.end == (n, 0.0);
+    let major = match cycles.last() {
+        Some(c) if whole(c) => cycles.pop().expect("non-empty"),
+        _ => {
+            let (b, _) =
+                v.iter().enumerate().fold(
+                    (0, f64::INFINITY),
+                    |m, (j, &x)| if x < m.1 { (j, x) } else { m },
+                );
+            Cycle {
+                a: 0,
+                b,
+                end: (n, 0.0),
+            }
+        }
+    };
+    cycles.sort_by(|p, q| {
+        p.a.cmp(&q.a)
+            .then(q.end.0.cmp(&p.end.0))
+            .then(q.end.1.total_cmp(&p.end.1))
+    });
+
+    let position = |j: usize, offset: f64| Position {
+        k: (start + j) % n,
+        wraps: ((start + j) / n) as u32,
+        offset,
+    };
+    let mut loops = Vec::with_capacity(cycles.len() + 1);
+    let mut open: Vec<(usize, (usize, f64))> = Vec::new(); // (loop index, arc end)
+    for (i, c) in std::iter::once(&major).chain(cycles.iter()).enumerate() {
+        while let Some(&(_, end)) = open.last() {
+            if end.0 < c.a || (end.0 == c.a && end.1 == 0.0) {
+                open.pop();
+            } else {
+                break;
+            }
+        }
+        let parent = open.last().map(|&(p, _)| p);
+        let depth = open.len();
+        open.push((i, c.end));
+
+        let (mut pa, mut pb, mut pc) = (
+            position(c.a, 0.0),
+            position(c.b, 0.0),
+            position(c.end.0, c.end.1),
+        );
+        if pa.wraps > 0 {
+            // Report the start within [0, P).
+            pa.wraps -= 1;
+            pb.wraps -= 1;
+            pc.wraps -= 1;
+        }
+        let (work, dissipation) = hl.energy_between(pa, pc);
+        let (start, reversal, end) = (
+            hl.position_point(pa),
+            hl.position_point(pb),
+            hl.position_point(pc),
+        );
+        let sigma0 = hl.model().sigma0();
+        loops.push(Loop {
+            kind: if i == 0 {
+                LoopKind::Major
+            } else {
+                LoopKind::Minor
+            },
+            start,
+            reversal,
+            end,
+            work,
+            stored_energy_change: (end.y - start.y) * (end.y + start.y) / (2.0 * sigma0),
+            dissipation,
+            closure_gap: end.y - start.y,
+            parent,
+            depth,
+        });
+    }
+    loops
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn canonical_start_is_the_greatest_rotation() {
+        assert_eq!(canonical_start(&[0.0, 1.0, 0.2, 1.5]), 3);
+        // Repeated maximum: [1, 0.5, 1, 0] > [1, 0, 1, 0.5].
+        assert_eq!(canonical_start(&[0.0, 1.0, 0.5, 1.0]), 1);
+        assert_eq!(canonical_start(&[1.0, 0.0, 1.0, 0.0]), 0);
+    }
+
+    #[test]
+    fn astm_worked_example_as_a_repeating_history() {
+        // ASTM E1049 Fig. 6 (repeating history): peaks/valleys -2 1 -3 5 -1 3 -4 4 -2, started
+        // at the greatest peak 5: 5 -1 3 -4 4 -2 -2(merged) 1 -3 5. Ranges counted by the
+        // standard's §5.4.4 example: 4 (3,-1), 6 (4,-2)... checked by hand below.
+        let v = [5.0, -1.0, 3.0, -4.0, 4.0, -2.0, 1.0, -3.0, 5.0];
+        let cycles = rainflow_cycles(&v);
+        let ranges: Vec<f64> = cycles.iter().map(|c| (v[c.b] - v[c.a]).abs()).collect();
+        // (-1,3): 4; (-2,1): 3; (4,-3)... by hand: stack 5,-1,3 ; -4 closes (-1,3) r=4;
+        // 5,-4,4 ; -2 ; 1 ; -3 closes (-2,1) r=3 ; 5,-4,4,-3 ; 5 closes (4,-3) r=7, then
+        // (5,-4) r=9.
+        assert_eq!(ranges, vec![4.0, 3.0, 7.0, 9.0]);
+    }
+}

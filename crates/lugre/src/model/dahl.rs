@@ -1,0 +1,69 @@
+//! The Dahl model in the paper's form: `w' = rho (u' - |u'| w)`, `y = Fc w`, `|w(0)| <= 1`.
+//!
+//! It is the LuGre model with `g == Fc`, `sigma0 = rho Fc`, `sigma1 = 0`, `f = 0`, and
+//! `x = w / rho` (paper §1); [`Dahl::to_lugre`] returns exactly that model.
+
+use super::{check_positive, LuGre, LuGreParams, RateIndependent};
+use crate::error::ModelError;
+
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Dahl {
+    rho: f64,
+    fc: f64,
+}
+
+impl Dahl {
+    /// Validated: `rho` and `Fc` finite and `> 0`, and `rho Fc` finite.
+    pub fn new(rho: f64, fc: f64) -> Result<Self, ModelError> {
+        check_positive("rho", rho)?;
+        check_positive("fc", fc)?;
+        check_positive("sigma0 = rho * fc", rho * fc)?;
+        Ok(Self { rho, fc })
+    }
+
+    pub fn rho(&self) -> f64 {
+        self.rho
+    }
+    pub fn fc(&self) -> f64 {
+        self.fc
+    }
+
+    /// The equivalent LuGre model. `g` is the Stribeck curve with `Fs = Fc`, which is the
+    /// constant `Fc` exactly (the exponential's coefficient is 0).
+    pub fn to_lugre(&self) -> LuGre {
+        LuGre::from_params(LuGreParams {
+            sigma0: self.rho * self.fc,
+            sigma1: 0.0,
+            sigma2: 0.0,
+            fc: self.fc,
+            fs: self.fc,
+            vs: 1.0,
+            beta: 1.0,
+        })
+        .expect("validated in new()")
+    }
+
+    pub fn rate_independent(&self) -> RateIndependent {
+        self.to_lugre().rate_independent()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn maps_to_lugre() {
+        let d = Dahl::new(2.5, 0.8).unwrap();
+        let m = d.to_lugre();
+        assert_eq!(m.sigma0(), 2.0);
+        assert_eq!(m.sigma1(), 0.0);
+        for v in [-10.0, -1e-3, 0.0, 0.3, 7.0] {
+            assert_eq!(m.g(v), 0.8);
+            assert_eq!(m.f(v), 0.0);
+        }
+        assert_eq!(d.rate_independent().a(), 2.5);
+        assert!(Dahl::new(0.0, 1.0).is_err());
+        assert!(Dahl::new(1.0, f64::NAN).is_err());
+    }
+}

@@ -1,0 +1,92 @@
+//! The velocity functions of the LuGre model: `g` (macro-damping, Stribeck curve) and `f`
+//! (viscous friction). Any `Fn(f64) -> f64` is also a [`VelocityFn`], for user-supplied shapes.
+
+use super::{check_non_negative, check_positive};
+use crate::error::ModelError;
+
+/// A function of the sliding velocity, `g(v)` or `f(v)`.
+pub trait VelocityFn {
+    fn eval(&self, v: f64) -> f64;
+}
+
+impl<F: Fn(f64) -> f64> VelocityFn for F {
+    fn eval(&self, v: f64) -> f64 {
+        self(v)
+    }
+}
+
+/// The Stribeck curve (paper §4.2): `g(v) = Fc + (Fs - Fc) exp(-|v / vs|^beta)`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Stribeck {
+    fc: f64,
+    fs: f64,
+    vs: f64,
+    beta: f64,
+}
+
+impl Stribeck {
+    /// Validated: `Fc, Fs, vs, beta` finite and `> 0`.
+    pub fn new(fc: f64, fs: f64, vs: f64, beta: f64) -> Result<Self, ModelError> {
+        Ok(Self {
+            fc: check_positive("fc", fc)?,
+            fs: check_positive("fs", fs)?,
+            vs: check_positive("vs", vs)?,
+            beta: check_positive("beta", beta)?,
+        })
+    }
+
+    pub fn fc(&self) -> f64 {
+        self.fc
+    }
+    pub fn fs(&self) -> f64 {
+        self.fs
+    }
+    pub fn vs(&self) -> f64 {
+        self.vs
+    }
+    pub fn beta(&self) -> f64 {
+        self.beta
+    }
+}
+
+impl VelocityFn for Stribeck {
+    #[inline]
+    fn eval(&self, v: f64) -> f64 {
+        let r = (v / self.vs).abs();
+        // exp(-r^beta) with the common exponents done without powf.
+        let e = if self.beta == 1.0 {
+            (-r).exp()
+        } else if self.beta == 2.0 {
+            (-r * r).exp()
+        } else {
+            (-r.powf(self.beta)).exp()
+        };
+        self.fc + (self.fs - self.fc) * e
+    }
+}
+
+/// Linear viscous friction `f(v) = sigma2 v`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Viscous {
+    sigma2: f64,
+}
+
+impl Viscous {
+    /// Validated: `sigma2` finite and `>= 0`.
+    pub fn new(sigma2: f64) -> Result<Self, ModelError> {
+        Ok(Self {
+            sigma2: check_non_negative("sigma2", sigma2)?,
+        })
+    }
+
+    pub fn sigma2(&self) -> f64 {
+        self.sigma2
+    }
+}
+
+impl VelocityFn for Viscous {
+    #[inline]
+    fn eval(&self, v: f64) -> f64 {
+        self.sigma2 * v
+    }
+}

@@ -1,0 +1,84 @@
+//! The LuGre and Dahl models (paper eq. 1) and the functions `g` and `f` that shape them.
+//!
+//! LuGre, input displacement `u(t)`, output friction force `F(t)`:
+//!
+//! ```text
+//! x' = -sigma0 |u'| / g(u') x + u'         x(0) = x0
+//! F  =  sigma0 x + sigma1 x' + f(u')
+//! ```
+//!
+//! with `sigma0 > 0`, `sigma1 >= 0`, `g > 0` continuous and `f` continuous with `f(0) = 0`.
+//! The hysteresis loop (the limit of slow periodic inputs, eqs. 6-10) depends only on
+//! `sigma0` and `g0 = g(0)`, gathered in [`RateIndependent`].
+
+mod dahl;
+mod functions;
+mod lugre;
+
+pub use dahl::Dahl;
+pub use functions::{Stribeck, VelocityFn, Viscous};
+pub use lugre::{LuGre, LuGreParams};
+
+use crate::error::ModelError;
+
+/// What the rate-independent limit of a LuGre model depends on: `sigma0` and `g0 = g(0)`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct RateIndependent {
+    sigma0: f64,
+    g0: f64,
+}
+
+impl RateIndependent {
+    /// Validated: both finite and positive, and `a = sigma0 / g0` finite and positive.
+    pub fn new(sigma0: f64, g0: f64) -> Result<Self, ModelError> {
+        check_positive("sigma0", sigma0)?;
+        if !g0.is_finite() || g0 <= 0.0 {
+            return Err(ModelError::BadG0 { value: g0 });
+        }
+        let a = sigma0 / g0;
+        if !a.is_finite() || a <= 0.0 {
+            return Err(ModelError::BadRatio { sigma0, g0 });
+        }
+        Ok(Self { sigma0, g0 })
+    }
+
+    pub fn sigma0(&self) -> f64 {
+        self.sigma0
+    }
+
+    /// `g(0)`: the force the loop saturates to, `|y°| < g0`.
+    pub fn g0(&self) -> f64 {
+        self.g0
+    }
+
+    /// `a = sigma0 / g(0)`, the inverse length over which the loop relaxes.
+    pub fn a(&self) -> f64 {
+        self.sigma0 / self.g0
+    }
+}
+
+pub(crate) fn check_finite(name: &'static str, value: f64) -> Result<f64, ModelError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ModelError::NotFinite { name, value })
+    }
+}
+
+pub(crate) fn check_positive(name: &'static str, value: f64) -> Result<f64, ModelError> {
+    check_finite(name, value)?;
+    if value > 0.0 {
+        Ok(value)
+    } else {
+        Err(ModelError::NotPositive { name, value })
+    }
+}
+
+pub(crate) fn check_non_negative(name: &'static str, value: f64) -> Result<f64, ModelError> {
+    check_finite(name, value)?;
+    if value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(ModelError::Negative { name, value })
+    }
+}
