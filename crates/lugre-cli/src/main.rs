@@ -1,1 +1,98 @@
-fn main() {}
+//! `lugre`: hysteresis and minor loops of the LuGre and Dahl friction models.
+//!
+//! Exit status: 0 success, 2 bad input or usage, 1 internal error (a bug).
+
+mod atomic;
+mod cli;
+mod csv_in;
+mod fmt;
+mod json_out;
+mod loop_cmd;
+mod numbers;
+
+use clap::Parser;
+use std::io::Write;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    // One line and status 1 for a bug, never a backtrace (RUST_BACKTRACE is set on the
+    // machines users run us on).
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".into());
+        let at = info
+            .location()
+            .map(|l| format!(" at {}:{}", l.file(), l.line()))
+            .unwrap_or_default();
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: internal error (please report): {}{at}",
+            one_line(&msg)
+        );
+    }));
+
+    let cli = match cli::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_error(e),
+    };
+    let result = std::panic::catch_unwind(|| run(cli));
+    match result {
+        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(Err(e)) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "lugre: error: {}",
+                one_line(&format!("{e:#}"))
+            );
+            ExitCode::from(2)
+        }
+        Err(_) => ExitCode::from(1),
+    }
+}
+
+fn run(cli: cli::Cli) -> anyhow::Result<()> {
+    match cli.command {
+        cli::Command::Loop(args) => loop_cmd::run(&args),
+    }
+}
+
+/// Help and version go to stdout with status 0; every other clap error becomes one line.
+fn clap_error(e: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp
+        | ErrorKind::DisplayVersion
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                ExitCode::from(2)
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+        _ => {
+            let text = e.render().to_string();
+            // clap's message is the paragraph before the first blank line.
+            let head: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty())
+                .map(str::trim)
+                .collect();
+            let msg = head.join(" ");
+            let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
+            let _ = writeln!(
+                std::io::stderr(),
+                "lugre: error: {msg} (see 'lugre --help')"
+            );
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}

@@ -40,6 +40,10 @@ use crate::input::TurningPoints;
 use crate::model::RateIndependent;
 use crate::numerics::{h, one_minus_exp, phi, phi_minus_phi2, q_over_z, DoubleDouble};
 
+/// Loops whose arcs span at most this many segments get their work integrated directly
+/// (relative to their start value); longer ones use prefix sums.
+const DIRECT_WORK_MAX_SEGMENTS: usize = 64;
+
 /// A point of the loop: the normalized variable, the input and the output there.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LoopPoint {
@@ -313,10 +317,14 @@ impl HysteresisLoop {
         acc
     }
 
-    /// Work and dissipation from `from` to `to` (`to` not before `from`).
-    pub(crate) fn energy_between(&self, from: Position, to: Position) -> (f64, f64) {
-        let w = self.cumulative(&self.work, to, self.piece_work(to.k, to.offset))
-            - self.cumulative(&self.work, from, self.piece_work(from.k, from.offset));
+    /// Work and dissipation from `from` to `to` (`to` not before `from`). `y_ref` is `y°` at
+    /// `from`.
+    ///
+    /// Dissipation terms are all positive, so prefix sums are exact to rounding. Work terms
+    /// `+-y l` cancel over a small loop; since `u` returns to its start over a loop's arc,
+    /// `W = integral (y - y_ref) dpsi`, whose terms are small: short arcs are integrated that
+    /// way, segment by segment, and long arcs (large loops, large `W`) from the prefix sums.
+    pub(crate) fn energy_between(&self, from: Position, to: Position, y_ref: f64) -> (f64, f64) {
         let d = self.cumulative(
             &self.dissipation,
             to,
@@ -326,7 +334,44 @@ impl HysteresisLoop {
             from,
             self.piece_dissipation(from.k, from.offset),
         );
-        (w.to_f64(), d.to_f64().max(0.0))
+        let n = self.len();
+        let span = (to.wraps as usize * n + to.k) - (from.wraps as usize * n + from.k);
+        let w = if span <= DIRECT_WORK_MAX_SEGMENTS {
+            self.work_relative(from, span, to.offset, y_ref)
+        } else {
+            (self.cumulative(&self.work, to, self.piece_work(to.k, to.offset))
+                - self.cumulative(&self.work, from, self.piece_work(from.k, from.offset)))
+            .to_f64()
+        };
+        (w, d.to_f64().max(0.0))
+    }
+
+    /// `integral (y - y_ref) dpsi` from `from` over `span` segment boundaries to offset
+    /// `end_offset` of the last segment.
+    fn work_relative(&self, from: Position, span: usize, end_offset: f64, y_ref: f64) -> f64 {
+        let (a, sigma0) = (self.model.a(), self.model.sigma0());
+        let mut total = DoubleDouble::ZERO;
+        let mut k = from.k;
+        let mut offset = from.offset;
+        for step in 0..=span {
+            let stop = if step == span {
+                end_offset
+            } else {
+                self.segment_length(k)
+            };
+            let l = stop - offset;
+            if l > 0.0 {
+                let s = self.direction(k);
+                let y0 = self.advance(self.y[k], k, offset);
+                let z = a * l;
+                // s (y0 - y_ref) l phi(z) + a (g0 - s y_ref) l^2 h(z)
+                let piece = s * (y0 - y_ref) * l * phi(z) + (sigma0 - s * a * y_ref) * l * l * h(z);
+                total = total.add_f64(piece);
+            }
+            k = (k + 1) % self.len();
+            offset = 0.0;
+        }
+        total.to_f64()
     }
 
     /// Checks that every value a report would print is finite.

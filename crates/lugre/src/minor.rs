@@ -196,7 +196,8 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             pb.wraps -= 1;
             pc.wraps -= 1;
         }
-        let (work, dissipation) = hl.energy_between(pa, pc);
+        let y_start = hl.position_point(pa).y;
+        let (work, dissipation) = hl.energy_between(pa, pc, y_start);
         let (start, reversal, end) = (
             hl.position_point(pa),
             hl.position_point(pb),

@@ -1,0 +1,103 @@
+//! A streaming JSON emitter for large reports: numbers go straight from `zmij` (shortest
+//! round-trip representation, as serde_json prints them) into a buffer flushed in large
+//! chunks. serde_json's generic path costs about 1.5x more on a 10^6-turning-point loop.
+
+use lugre::LoopPoint;
+use std::io::{self, Write};
+
+const FLUSH_AT: usize = 1 << 20;
+
+pub struct JsonOut<W: Write> {
+    out: W,
+    buf: Vec<u8>,
+    fmt: zmij::Buffer,
+}
+
+impl<W: Write> JsonOut<W> {
+    pub fn new(out: W) -> Self {
+        Self {
+            out,
+            buf: Vec::with_capacity(FLUSH_AT + 4096),
+            fmt: zmij::Buffer::new(),
+        }
+    }
+
+    /// Raw JSON text (punctuation, keys, or an already-serialized value).
+    #[inline]
+    pub fn raw(&mut self, s: &str) -> io::Result<()> {
+        self.buf.extend_from_slice(s.as_bytes());
+        self.maybe_flush()
+    }
+
+    /// A finite number (callers check finiteness first: JSON has no NaN/inf).
+    #[inline]
+    pub fn num(&mut self, x: f64) -> io::Result<()> {
+        debug_assert!(x.is_finite());
+        let s = self.fmt.format_finite(x);
+        self.buf.extend_from_slice(s.as_bytes());
+        Ok(())
+    }
+
+    #[inline]
+    pub fn int(&mut self, x: usize) -> io::Result<()> {
+        write!(self.buf, "{x}")
+    }
+
+    /// `prefix` (punctuation and key, e.g. `,"work":`) then a number: one copy each.
+    #[inline]
+    pub fn field(&mut self, prefix: &str, x: f64) -> io::Result<()> {
+        self.buf.extend_from_slice(prefix.as_bytes());
+        self.num(x)
+    }
+
+    /// `{"rho":..,"u":..,"y":..}`.
+    #[inline]
+    pub fn point(&mut self, p: &LoopPoint) -> io::Result<()> {
+        self.field("{\"rho\":", p.rho)?;
+        self.field(",\"u\":", p.u)?;
+        self.field(",\"y\":", p.y)?;
+        self.buf.push(b'}');
+        self.maybe_flush()
+    }
+
+    /// `[x0,x1,...]`.
+    pub fn array(&mut self, xs: &[f64]) -> io::Result<()> {
+        self.buf.push(b'[');
+        for (i, &x) in xs.iter().enumerate() {
+            if i > 0 {
+                self.buf.push(b',');
+            }
+            self.num(x)?;
+        }
+        self.buf.push(b']');
+        self.maybe_flush()
+    }
+
+    /// `[{point},...]`.
+    pub fn points(&mut self, ps: &[LoopPoint]) -> io::Result<()> {
+        self.buf.push(b'[');
+        for (i, p) in ps.iter().enumerate() {
+            if i > 0 {
+                self.buf.push(b',');
+            }
+            self.point(p)?;
+        }
+        self.buf.push(b']');
+        Ok(())
+    }
+
+    #[inline]
+    fn maybe_flush(&mut self) -> io::Result<()> {
+        if self.buf.len() >= FLUSH_AT {
+            self.out.write_all(&self.buf)?;
+            self.buf.clear();
+        }
+        Ok(())
+    }
+
+    pub fn finish(mut self) -> io::Result<()> {
+        self.out.write_all(&self.buf)?;
+        self.buf.clear();
+        self.out.flush()
+    }
+}

@@ -1,0 +1,313 @@
+//! `lugre loop`: the hysteresis loop y° (eqs. 8-10), Theorem A for bimodal inputs, every minor
+//! loop with its energies, as a table, JSON or CSV.
+
+use anyhow::{bail, Result};
+use lugre::{HysteresisLoop, Loop, LoopKind, LoopPoint, TheoremA};
+use std::io::Write;
+
+use crate::atomic::write_atomic;
+use crate::cli::{LoopArgs, ModelChoice, PeriodicInput};
+use crate::fmt::{exact, sig};
+use crate::json_out::JsonOut;
+use crate::numbers::parse_list;
+
+/// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
+const MAX_TABLE_ROWS: usize = 40;
+
+/// Samples written by `--csv` when neither `--samples` nor `--at` is given.
+const DEFAULT_CSV_SAMPLES: usize = 1001;
+
+pub fn run(args: &LoopArgs) -> Result<()> {
+    let model = args.model.build()?;
+    let input = args.input.build()?;
+    let at = match &args.at {
+        Some(text) => Some(parse_list("--at", text)?),
+        None => None,
+    };
+    if let Some(n) = args.samples {
+        if n < 2 {
+            bail!("--samples must be at least 2 (both ends of the period are included), got {n}");
+        }
+    }
+
+    let hl = HysteresisLoop::new(model.rate_independent(), &input.turning_points())?;
+    hl.check_finite()?;
+    let loops = hl.loops();
+    check_loops_finite(&loops)?;
+    let theorem_a = match &input {
+        PeriodicInput::Bimodal(b) => Some(TheoremA::new(b, &hl)),
+        _ => None,
+    };
+    let points: Option<Vec<LoopPoint>> = match (&at, args.samples) {
+        (Some(rhos), _) => Some(rhos.iter().map(|&r| hl.point_at(r)).collect()),
+        (None, Some(n)) => Some(hl.sample(n)),
+        (None, None) => None,
+    };
+    if let Some(p) = &points {
+        if p.iter().any(|p| !p.y.is_finite() || !p.u.is_finite()) {
+            bail!("a requested point overflows f64 (rho too large?)");
+        }
+    }
+
+    if let Some(path) = &args.csv {
+        let csv_points = match &points {
+            Some(p) => p.clone(),
+            None => hl.sample(DEFAULT_CSV_SAMPLES),
+        };
+        write_atomic(path, |w| {
+            writeln!(w, "rho,u,y")?;
+            for p in &csv_points {
+                writeln!(w, "{},{},{}", exact(p.rho), exact(p.u), exact(p.y))?;
+            }
+            Ok(())
+        })?;
+    }
+
+    let stdout = std::io::stdout();
+    if args.json {
+        let report = Report {
+            model: &model,
+            hl: &hl,
+            theorem_a: theorem_a.as_ref(),
+            loops: &loops,
+            points: points.as_deref(),
+        };
+        report.write(JsonOut::new(stdout.lock()))?;
+    } else {
+        let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+        print_table(
+            &mut out,
+            &model.describe(),
+            &hl,
+            &loops,
+            theorem_a.as_ref(),
+            points.as_deref(),
+        )?;
+        if let Some(path) = &args.csv {
+            writeln!(
+                out,
+                "\nWrote the sampled curve (rho,u,y) to {}",
+                path.display()
+            )?;
+        }
+        out.flush()?;
+    }
+    Ok(())
+}
+
+/// Everything `lugre loop --json` prints (the documented schema; keys may be added, never
+/// renamed).
+struct Report<'a> {
+    model: &'a ModelChoice,
+    hl: &'a HysteresisLoop,
+    theorem_a: Option<&'a TheoremA>,
+    loops: &'a [Loop],
+    points: Option<&'a [LoopPoint]>,
+}
+
+impl Report<'_> {
+    fn write<W: Write>(&self, mut j: JsonOut<W>) -> std::io::Result<()> {
+        let hl = self.hl;
+        j.raw("{\"model\":")?;
+        j.raw(&self.model.to_json().to_string())?;
+        j.field(",\"g0\":", hl.model().g0())?;
+        j.field(",\"a\":", hl.model().a())?;
+        j.field(",\"period\":", hl.period())?;
+        j.raw(",\"turning_points\":")?;
+        j.points(&hl.turning_loop_points())?;
+        if let Some(ta) = self.theorem_a {
+            j.raw(",\"theorem_a\":{\"rho\":")?;
+            j.array(&ta.rho)?;
+            j.raw(",\"y\":")?;
+            j.array(&ta.y)?;
+            j.raw(",\"minor_loop\":")?;
+            j.array(&ta.minor_loop)?;
+            j.raw("}")?;
+        }
+        j.raw(",\"loops\":[")?;
+        for (i, l) in self.loops.iter().enumerate() {
+            j.raw(if i == 0 {
+                "{\"kind\":\""
+            } else {
+                ",{\"kind\":\""
+            })?;
+            j.raw(match l.kind {
+                LoopKind::Major => "major\",\"start\":",
+                LoopKind::Minor => "minor\",\"start\":",
+            })?;
+            j.point(&l.start)?;
+            j.raw(",\"reversal\":")?;
+            j.point(&l.reversal)?;
+            j.raw(",\"end\":")?;
+            j.point(&l.end)?;
+            j.field(",\"work\":", l.work)?;
+            j.field(",\"stored_energy_change\":", l.stored_energy_change)?;
+            j.field(",\"dissipation\":", l.dissipation)?;
+            j.field(",\"closure_gap\":", l.closure_gap)?;
+            j.raw(",\"parent\":")?;
+            match l.parent {
+                Some(p) => j.int(p)?,
+                None => j.raw("null")?,
+            }
+            j.raw(",\"depth\":")?;
+            j.int(l.depth)?;
+            j.raw("}")?;
+        }
+        j.raw("]")?;
+        j.field(",\"work_per_period\":", hl.work_per_period())?;
+        if let Some(points) = self.points {
+            j.raw(",\"points\":")?;
+            j.points(points)?;
+        }
+        j.raw("}\n")?;
+        j.finish()
+    }
+}
+
+fn check_loops_finite(loops: &[Loop]) -> Result<()> {
+    let finite = |p: &LoopPoint| p.rho.is_finite() && p.u.is_finite() && p.y.is_finite();
+    for l in loops {
+        let ok = finite(&l.start)
+            && finite(&l.reversal)
+            && finite(&l.end)
+            && l.work.is_finite()
+            && l.stored_energy_change.is_finite()
+            && l.dissipation.is_finite();
+        if !ok {
+            bail!("the loop energies overflow f64 for this model and input (values too large)");
+        }
+    }
+    Ok(())
+}
+
+fn print_table(
+    out: &mut impl Write,
+    model: &str,
+    hl: &HysteresisLoop,
+    loops: &[Loop],
+    theorem_a: Option<&TheoremA>,
+    points: Option<&[LoopPoint]>,
+) -> Result<()> {
+    let m = hl.model();
+    writeln!(out, "{model}")?;
+    writeln!(
+        out,
+        "g(0) = {}   a = sigma0/g(0) = {}   period P = {} (total variation of u per period)",
+        sig(m.g0(), 10),
+        sig(m.a(), 10),
+        sig(hl.period(), 10)
+    )?;
+
+    writeln!(out, "\nHysteresis loop y° at the turning points")?;
+    writeln!(out, "{:>6} {:>16} {:>16} {:>18}", "k", "rho", "u", "y°")?;
+    let tp = hl.turning_loop_points();
+    for (k, p) in tp.iter().enumerate().take(MAX_TABLE_ROWS) {
+        writeln!(
+            out,
+            "{:>6} {:>16} {:>16} {:>18}",
+            k,
+            sig(p.rho, 10),
+            sig(p.u, 10),
+            sig(p.y, 12)
+        )?;
+    }
+    more(out, tp.len())?;
+
+    if let Some(ta) = theorem_a {
+        writeln!(out, "\nTheorem A (bimodal input)")?;
+        writeln!(out, "{:>6} {:>16} {:>18}", "i", "rho_i", "y°(rho_i)")?;
+        for i in 0..6 {
+            writeln!(
+                out,
+                "{:>6} {:>16} {:>18}",
+                i,
+                sig(ta.rho[i], 10),
+                sig(ta.y[i], 12)
+            )?;
+        }
+        writeln!(
+            out,
+            "minor loop: rho in [rho_1, rho_5] = [{}, {}]",
+            sig(ta.minor_loop[0], 10),
+            sig(ta.minor_loop[1], 10)
+        )?;
+    }
+
+    writeln!(
+        out,
+        "\nLoops (arc from rho_A through the reversal rho_B to the first return rho_C; energies over the arc)"
+    )?;
+    writeln!(
+        out,
+        "{:>5} {:>5} {:>6} {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>13} {:>13} {:>13} {:>13}",
+        "#",
+        "kind",
+        "depth",
+        "parent",
+        "rho_A",
+        "rho_B",
+        "rho_C",
+        "u_A",
+        "u_B",
+        "work W",
+        "stored dV",
+        "dissip. D",
+        "gap y_C-y_A"
+    )?;
+    for (i, l) in loops.iter().enumerate().take(MAX_TABLE_ROWS) {
+        writeln!(
+            out,
+            "{:>5} {:>5} {:>6} {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>13} {:>13} {:>13} {:>13}",
+            i,
+            match l.kind {
+                LoopKind::Major => "major",
+                LoopKind::Minor => "minor",
+            },
+            l.depth,
+            l.parent.map_or("-".to_string(), |p| p.to_string()),
+            sig(l.start.rho, 8),
+            sig(l.reversal.rho, 8),
+            sig(l.end.rho, 8),
+            sig(l.start.u, 8),
+            sig(l.reversal.u, 8),
+            sig(l.work, 8),
+            sig(l.stored_energy_change, 8),
+            sig(l.dissipation, 8),
+            sig(l.closure_gap, 8),
+        )?;
+    }
+    more(out, loops.len())?;
+    writeln!(
+        out,
+        "\nWork per period (energy dissipated per cycle): {}",
+        sig(hl.work_per_period(), 12)
+    )?;
+
+    if let Some(points) = points {
+        writeln!(out, "\nPoints")?;
+        writeln!(out, "{:>16} {:>16} {:>18}", "rho", "u", "y°")?;
+        for p in points.iter().take(MAX_TABLE_ROWS) {
+            writeln!(
+                out,
+                "{:>16} {:>16} {:>18}",
+                sig(p.rho, 10),
+                sig(p.u, 10),
+                sig(p.y, 12)
+            )?;
+        }
+        more(out, points.len())?;
+    }
+    Ok(())
+}
+
+fn more(out: &mut impl Write, n: usize) -> Result<()> {
+    if n > MAX_TABLE_ROWS {
+        writeln!(
+            out,
+            "{:>6} ... {} more rows: use --json (or --csv for the curve) to get all",
+            "",
+            n - MAX_TABLE_ROWS
+        )?;
+    }
+    Ok(())
+}
