@@ -42,6 +42,8 @@ fn main() -> ExitCode {
     let result = std::panic::catch_unwind(|| run(cli));
     match result {
         Ok(Ok(())) => ExitCode::SUCCESS,
+        // A reader that stopped early (`| head`) is not an error.
+        Ok(Err(e)) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Ok(Err(e)) => {
             let _ = writeln!(
                 std::io::stderr(),
@@ -91,6 +93,13 @@ fn clap_error(e: clap::Error) -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
 }
 
 fn one_line(s: &str) -> String {
