@@ -25,24 +25,77 @@
 //!
 //! with `R_k = P - rho_{k+1}` and `h(z) = (1 - phi(z)) / z`.
 //!
-//! Energy over a piece of length `l` from `y_k` (the identity `W = dV + D` follows from
-//! `dy/drho = a (s g0 - y)`):
+//! Energy. Along the loop `dy/drho = a (s g0 - y)`, so `y dpsi = d(y^2 / (2 sigma0)) + y^2 / g0
+//! drho`: over any arc the work `W = integral y dpsi` is the change of the stored energy
+//! `dV = (y_end^2 - y_start^2) / (2 sigma0)` plus the dissipation `D = (1/g0) integral y^2 drho`.
+//! `W` is reported as `dV + D`: summing `W`'s own closed form `sigma0 l^2 h(z) + s y_k l phi(z)`
+//! piece by piece cancels (its terms are `O(sigma0 l^2)`, the elastic energy that comes back,
+//! while `W` is `O(a sigma0 P^3)` for small `a P`), whereas `D`'s terms are all positive:
 //!
 //! ```text
-//! W = integral y dpsi        = sigma0 l^2 h(z) + s y_k l phi(z)                        z = a l
-//! D = (1/g0) integral y^2 drho = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z))
-//!                              + sigma0 l^2 q(z) / z
-//! dV = (y_end^2 - y_k^2) / (2 sigma0)
+//! D over a piece = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z
 //! ```
+//!
+//! with `z = a l` and `q(z) = 1 - 2 phi(z) + phi(2z)`, summed in double-double prefix sums so
+//! that any arc's `D` costs O(1). `dV` needs the closure gap `y_end - y_start`, which is `O(a)`
+//! on loops shorter than `1/a`; [`HysteresisLoop::closure_gap`] computes it without taking the
+//! difference of the two values.
 
 use crate::error::{InputError, LoopError};
 use crate::input::TurningPoints;
 use crate::model::RateIndependent;
 use crate::numerics::{h, one_minus_exp, phi, phi_minus_phi2, q_over_z, DoubleDouble};
 
-/// Loops whose arcs span at most this many segments get their work integrated directly
-/// (relative to their start value); longer ones use prefix sums.
-const DIRECT_WORK_MAX_SEGMENTS: usize = 64;
+/// The exact solution of `w' = -r w + q` with constant `r >= 0` and `q` over a duration
+/// `tau`, from `w0`: `w0 exp(-c) + d phi(c)` with `c = r tau`, `d = q tau` and
+/// `phi(c) = (1 - exp(-c)) / c`.
+///
+/// This is eq. 8 on one segment of the normalized input (`w = y°`, `c = a l`,
+/// `d = s sigma0 l`), and eq. 5 on one segment of a piecewise-linear input (`w = z`,
+/// `c = sigma0 |du| / g(v / gamma)`, `d = du`, see [`crate::simulate`]): one piece of code for
+/// both. The form never divides by `r` (so `r = 0` and tiny `r` are exact) and its only
+/// exponent, `-c`, is `<= 0`. `exp(-c)` and `1 - exp(-c)` come from a single call, `exp` or
+/// `expm1` depending on which of the two loses nothing when the other is derived from it: both
+/// are then correct to an ulp. `c = inf` gives `w = 0 + 0` for finite `d`.
+#[inline]
+pub fn relax(w0: f64, c: f64, d: f64) -> f64 {
+    let (e, one_minus_e) = if c > std::f64::consts::LN_2 {
+        // exp(-c) < 1/2: 1 - exp(-c) is in (1/2, 1] and rounds once.
+        let e = (-c).exp();
+        (e, 1.0 - e)
+    } else {
+        // exp(-c) in [1/2, 1]: 1 + expm1(-c) rounds once, and expm1 keeps small c exact.
+        let m = (-c).exp_m1();
+        (1.0 + m, -m)
+    };
+    let phi = if c > 0.0 { one_minus_e / c } else { 1.0 };
+    w0 * e + d * phi
+}
+
+/// `y` a length `l` along a piece of the normalized input with direction `s` (+-1), from `y_k`
+/// at its start (eq. 8 on one piece). The per-piece closed forms below are shared by the
+/// periodic loop and by histories ([`crate::cycles`]).
+#[inline]
+pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
+    // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above g0.
+    let g0 = model.g0();
+    relax(y_k, model.a() * l, s * model.sigma0() * l).clamp(-g0, g0)
+}
+
+/// Dissipation `(1/g0) integral y^2 drho` over a piece of length `l`, direction `s`, from
+/// `y_k` (never < 0).
+#[inline]
+pub(crate) fn piece_dissipation(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
+    if l == 0.0 {
+        return 0.0;
+    }
+    let (a, sigma0) = (model.a(), model.sigma0());
+    let z = a * l;
+    let d = a * y_k * y_k * l * phi(2.0 * z) / sigma0
+        + 2.0 * s * y_k * l * phi_minus_phi2(z)
+        + sigma0 * l * l * q_over_z(z);
+    d.max(0.0)
+}
 
 /// A point of the loop: the normalized variable, the input and the output there.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -71,10 +124,12 @@ pub struct HysteresisLoop {
     rho: Vec<f64>,
     /// `y°(rho_k)`, `k = 0..=n`; `y_n = y_0`.
     y: Vec<f64>,
-    /// Work `integral y dpsi` from `rho = 0` to `rho_k`, `k = 0..=n`.
-    work: Vec<DoubleDouble>,
     /// Dissipation `(1/g0) integral y^2 drho` from `rho = 0` to `rho_k`, `k = 0..=n`.
     dissipation: Vec<DoubleDouble>,
+    /// `sum y_j L_j phi(a L_j)` and `sum s_j L_j^2 h(a L_j)` over `j < k`, `k = 0..=n`: the
+    /// pieces of the closure gap (see [`HysteresisLoop::closure_gap`]).
+    drift_y: Vec<DoubleDouble>,
+    drift_l: Vec<DoubleDouble>,
 }
 
 impl HysteresisLoop {
@@ -95,8 +150,9 @@ impl HysteresisLoop {
             u,
             rho,
             y: Vec::new(),
-            work: Vec::new(),
             dissipation: Vec::new(),
+            drift_y: Vec::new(),
+            drift_l: Vec::new(),
         };
         hl.y = hl.turning_point_values();
         hl.accumulate_energy();
@@ -200,51 +256,49 @@ impl HysteresisLoop {
     /// `y°` a length `l` into segment `k`, from `y_k` there.
     #[inline]
     fn advance(&self, y_k: f64, k: usize, l: f64) -> f64 {
-        let z = self.model.a() * l;
-        y_k * (-z).exp() + self.direction(k) * self.model.sigma0() * l * phi(z)
-    }
-
-    /// Work `integral y dpsi` over the first `l` of segment `k`.
-    #[inline]
-    fn piece_work(&self, k: usize, l: f64) -> f64 {
-        let z = self.model.a() * l;
-        self.model.sigma0() * l * l * h(z) + self.direction(k) * self.y[k] * l * phi(z)
+        advance(self.model, y_k, self.direction(k), l)
     }
 
     /// Dissipation `(1/g0) integral y^2 drho` over the first `l` of segment `k` (never < 0).
     #[inline]
     fn piece_dissipation(&self, k: usize, l: f64) -> f64 {
-        if l == 0.0 {
-            return 0.0;
-        }
-        let (a, sigma0, y_k) = (self.model.a(), self.model.sigma0(), self.y[k]);
-        let z = a * l;
-        let d = a * y_k * y_k * l * phi(2.0 * z) / sigma0
-            + 2.0 * self.direction(k) * y_k * l * phi_minus_phi2(z)
-            + sigma0 * l * l * q_over_z(z);
-        d.max(0.0)
+        piece_dissipation(self.model, self.y[k], self.direction(k), l)
     }
 
     fn accumulate_energy(&mut self) {
         let n = self.len();
-        let mut w = DoubleDouble::ZERO;
         let mut d = DoubleDouble::ZERO;
-        self.work = Vec::with_capacity(n + 1);
+        let (mut dy, mut dl) = (DoubleDouble::ZERO, DoubleDouble::ZERO);
         self.dissipation = Vec::with_capacity(n + 1);
-        self.work.push(w);
+        self.drift_y = Vec::with_capacity(n + 1);
+        self.drift_l = Vec::with_capacity(n + 1);
         self.dissipation.push(d);
+        self.drift_y.push(dy);
+        self.drift_l.push(dl);
         for k in 0..n {
             let l = self.segment_length(k);
-            w = w.add_f64(self.piece_work(k, l));
             d = d.add_f64(self.piece_dissipation(k, l));
-            self.work.push(w);
+            let (y_term, l_term) = self.piece_drift(k, l);
+            dy = dy.add_f64(y_term);
+            dl = dl.add_f64(l_term);
             self.dissipation.push(d);
+            self.drift_y.push(dy);
+            self.drift_l.push(dl);
         }
     }
 
-    /// The work `integral y° dpsi` over one period: the energy dissipated per cycle.
+    /// The two terms of the closure gap over the first `l` of segment `k`:
+    /// `(y_k l phi(a l), s_k l^2 h(a l))`.
+    #[inline]
+    fn piece_drift(&self, k: usize, l: f64) -> (f64, f64) {
+        let z = self.model.a() * l;
+        (self.y[k] * l * phi(z), self.direction(k) * l * l * h(z))
+    }
+
+    /// The work `integral y° dpsi` over one period: the energy dissipated per cycle (the stored
+    /// energy returns to its start, so it equals the dissipation over the period).
     pub fn work_per_period(&self) -> f64 {
-        self.work[self.len()].to_f64()
+        self.dissipation[self.len()].to_f64()
     }
 
     /// The segment holding `rho` (reduced to `[0, P)`) and the offset into it.
@@ -317,14 +371,9 @@ impl HysteresisLoop {
         acc
     }
 
-    /// Work and dissipation from `from` to `to` (`to` not before `from`). `y_ref` is `y°` at
-    /// `from`.
-    ///
-    /// Dissipation terms are all positive, so prefix sums are exact to rounding. Work terms
-    /// `+-y l` cancel over a small loop; since `u` returns to its start over a loop's arc,
-    /// `W = integral (y - y_ref) dpsi`, whose terms are small: short arcs are integrated that
-    /// way, segment by segment, and long arcs (large loops, large `W`) from the prefix sums.
-    pub(crate) fn energy_between(&self, from: Position, to: Position, y_ref: f64) -> (f64, f64) {
+    /// Dissipation `(1/g0) integral y°^2 drho` from `from` to `to` (`to` not before `from`).
+    /// Its terms are all positive, so the double-double prefix sums give it to rounding.
+    pub(crate) fn dissipation_between(&self, from: Position, to: Position) -> f64 {
         let d = self.cumulative(
             &self.dissipation,
             to,
@@ -334,44 +383,36 @@ impl HysteresisLoop {
             from,
             self.piece_dissipation(from.k, from.offset),
         );
-        let n = self.len();
-        let span = (to.wraps as usize * n + to.k) - (from.wraps as usize * n + from.k);
-        let w = if span <= DIRECT_WORK_MAX_SEGMENTS {
-            self.work_relative(from, span, to.offset, y_ref)
-        } else {
-            (self.cumulative(&self.work, to, self.piece_work(to.k, to.offset))
-                - self.cumulative(&self.work, from, self.piece_work(from.k, from.offset)))
-            .to_f64()
-        };
-        (w, d.to_f64().max(0.0))
+        d.to_f64().max(0.0)
     }
 
-    /// `integral (y - y_ref) dpsi` from `from` over `span` segment boundaries to offset
-    /// `end_offset` of the last segment.
-    fn work_relative(&self, from: Position, span: usize, end_offset: f64, y_ref: f64) -> f64 {
-        let (a, sigma0) = (self.model.a(), self.model.sigma0());
-        let mut total = DoubleDouble::ZERO;
-        let mut k = from.k;
-        let mut offset = from.offset;
-        for step in 0..=span {
-            let stop = if step == span {
-                end_offset
-            } else {
-                self.segment_length(k)
-            };
-            let l = stop - offset;
-            if l > 0.0 {
-                let s = self.direction(k);
-                let y0 = self.advance(self.y[k], k, offset);
-                let z = a * l;
-                // s (y0 - y_ref) l phi(z) + a (g0 - s y_ref) l^2 h(z)
-                let piece = s * (y0 - y_ref) * l * phi(z) + (sigma0 - s * a * y_ref) * l * l * h(z);
-                total = total.add_f64(piece);
-            }
-            k = (k + 1) % self.len();
-            offset = 0.0;
+    /// `y°(to) - y°(from)` over an arc on which the input returns to its start value
+    /// (`psi(to) = psi(from)`, as on every loop's arc).
+    ///
+    /// On a piece, `y_end - y_k = s sigma0 l - a (s sigma0 l^2 h(a l) + y_k l phi(a l))`; the
+    /// first terms add up to `sigma0 (psi(to) - psi(from)) = 0`, which leaves
+    /// `gap = -a sum (s sigma0 l^2 h + y_k l phi)`: no cancellation when `a` times the arc's
+    /// length is small, where the plain difference of the two values would lose everything
+    /// (the gap is `O(a)`, the values `O(sigma0 P)`). Longer arcs use the plain difference.
+    pub(crate) fn closure_gap(&self, from: Position, to: Position) -> f64 {
+        let (y_from, y_to) = (self.position_point(from).y, self.position_point(to).y);
+        let length = self.position_rho(to) - self.position_rho(from);
+        let whole_periods = to.k == from.k && to.offset == from.offset;
+        if whole_periods {
+            return 0.0;
         }
-        total.to_f64()
+        if self.model.a() * length > 1.0 {
+            return y_to - y_from;
+        }
+        let cumulative = |pos: Position| {
+            let (py, pl) = self.piece_drift(pos.k, pos.offset);
+            (
+                self.cumulative(&self.drift_y, pos, py),
+                self.cumulative(&self.drift_l, pos, pl),
+            )
+        };
+        let ((y1, l1), (y0, l0)) = (cumulative(to), cumulative(from));
+        -self.model.a() * ((y1 - y0).to_f64() + self.model.sigma0() * (l1 - l0).to_f64())
     }
 
     /// Checks that every value a report would print is finite.

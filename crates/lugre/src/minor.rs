@@ -21,8 +21,9 @@
 //! lexicographically greatest, so the set of loops does not depend on where the user's
 //! period begins, even with repeated extreme values.
 //!
-//! Energies over an arc come from double-double prefix sums of the closed forms (see
-//! [`crate::hysteresis`]): O(1) per loop.
+//! Energies over an arc: the dissipation from double-double prefix sums of its closed form, the
+//! stored-energy change from the end points, the work as their sum (see [`crate::hysteresis`]):
+//! O(1) per loop.
 
 use crate::hysteresis::{HysteresisLoop, LoopPoint, Position};
 
@@ -141,25 +142,22 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
     let v: Vec<f64> = (0..=n).map(|j| u[(start + j) % n]).collect();
 
     let mut cycles = rainflow_cycles(&v);
-    // The last cycle closed is the one hanging from the start; it is the major loop when its
-    // arc is the whole period. With a repeated global maximum it is not, and the major loop
-    // is added on its own, turning at the first global minimum.
-    let whole = |c: &Cycle| c.a == 0 && c.end == (n, 0.0);
-    let major = match cycles.last() {
-        Some(c) if whole(c) => cycles.pop().expect("non-empty"),
-        _ => {
-            let (b, _) =
-                v.iter().enumerate().fold(
-                    (0, f64::INFINITY),
-                    |m, (j, &x)| if x < m.1 { (j, x) } else { m },
-                );
-            Cycle {
-                a: 0,
-                b,
-                end: (n, 0.0),
-            }
-        }
+    // The major loop turns at the first global minimum: nothing goes strictly below it, so it
+    // is always a cycle's reversal, paired with the last global maximum before it. That cycle
+    // ends at the next occurrence of the global maximum, which is the period's end unless the
+    // maximum repeats; the major loop is the whole period all the same (Theorem A with
+    // `umax1 == umax2`: the arc through the global minimum is not a minor loop).
+    let lowest = (0..n).fold(0, |m, j| if v[j] < v[m] { j } else { m });
+    let major_at = cycles
+        .iter()
+        .position(|c| c.b == lowest)
+        .expect("the global minimum is a reversal of some cycle");
+    let major = Cycle {
+        a: 0,
+        b: lowest,
+        end: (n, 0.0),
     };
+    cycles.swap_remove(major_at);
     cycles.sort_by(|p, q| {
         p.a.cmp(&q.a)
             .then(q.end.0.cmp(&p.end.0))
@@ -196,14 +194,14 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             pb.wraps -= 1;
             pc.wraps -= 1;
         }
-        let y_start = hl.position_point(pa).y;
-        let (work, dissipation) = hl.energy_between(pa, pc, y_start);
+        let dissipation = hl.dissipation_between(pa, pc);
         let (start, reversal, end) = (
             hl.position_point(pa),
             hl.position_point(pb),
             hl.position_point(pc),
         );
-        let sigma0 = hl.model().sigma0();
+        let closure_gap = hl.closure_gap(pa, pc);
+        let stored_energy_change = closure_gap * (end.y + start.y) / (2.0 * hl.model().sigma0());
         loops.push(Loop {
             kind: if i == 0 {
                 LoopKind::Major
@@ -213,10 +211,10 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             start,
             reversal,
             end,
-            work,
-            stored_energy_change: (end.y - start.y) * (end.y + start.y) / (2.0 * sigma0),
+            work: stored_energy_change + dissipation,
+            stored_energy_change,
             dissipation,
-            closure_gap: end.y - start.y,
+            closure_gap,
             parent,
             depth,
         });

@@ -159,6 +159,24 @@ impl DoubleDouble {
     pub fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+
+    /// `a * b` exactly (Dekker's two-product with Veltkamp splitting, so no FMA instruction is
+    /// needed), for `|a|, |b|` below about `1e300` and a product that neither over- nor
+    /// underflows.
+    #[inline]
+    pub fn product(a: f64, b: f64) -> Self {
+        const SPLIT: f64 = 134_217_729.0; // 2^27 + 1
+        let split = |x: f64| {
+            let t = SPLIT * x;
+            let hi = t - (t - x);
+            (hi, x - hi)
+        };
+        let p = a * b;
+        let (ah, al) = split(a);
+        let (bh, bl) = split(b);
+        let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+        Self { hi: p, lo: e }
+    }
 }
 
 impl std::ops::Add for DoubleDouble {
@@ -279,6 +297,18 @@ mod tests {
         assert_eq!(q_over_z(f64::INFINITY), 0.0);
         assert_eq!(h(0.0), 0.5);
         assert_eq!(one_minus_phi(0.0), 0.0);
+    }
+
+    #[test]
+    fn product_is_exact() {
+        // (1 + 2^-30)^2 = 1 + 2^-29 + 2^-60: the last term is below f64's precision.
+        let x = 1.0 + 2f64.powi(-30);
+        let p = DoubleDouble::product(x, x);
+        assert_eq!(p.hi, 1.0 + 2f64.powi(-29));
+        assert_eq!(p.lo, 2f64.powi(-60));
+        let p = DoubleDouble::product(0.1, 3.0);
+        assert_eq!(p.hi, 0.1 * 3.0);
+        assert_eq!(p.lo, 0.1f64.mul_add(3.0, -(0.1 * 3.0)));
     }
 
     #[test]

@@ -1,0 +1,311 @@
+//! Stability at any stiffness: `a P` from ~1e-12 to ~1e12, and the realistic case
+//! `sigma0 = 1e5 N/m`, `Fs = 1.5 N`, 1 cm of travel, where the paper's eq. 13 overflows f64.
+//!
+//! References: the paper's eqs. 13-16 evaluated literally in mpmath at 120 digits (checked
+//! against 60 digits to 1e-25), energies by mp.quad; `tests/reference/make_reference.py`,
+//! `SWEEP_EXAMPLE3`, `SWEEP_DYADIC`, `realistic` in `tests/common/reference_values.rs`.
+//!
+//! Tolerance: `prec::LOOP` relative to the loop's scale `max |y°|` (values cross zero). Near a
+//! reversal at high stiffness `y°` changes by `~2 g0` over `1/a` of `rho`, so an error of one
+//! ulp in `rho_k` moves `y°` by `~2 a ulp(rho_k)` relative: probes inside those boundary layers
+//! are placed only after turning points whose `rho_k` is exact in f64 (all of them for the
+//! dyadic input, `rho_0 = 0` and `rho_1 = 1` for Example 3's).
+
+mod common;
+
+use common::reference_values::{
+    realistic, SweepCase, SWEEP_DYADIC, SWEEP_DYADIC_BIMODAL, SWEEP_DYADIC_G0, SWEEP_EXAMPLE3,
+    SWEEP_EXAMPLE3_BIMODAL, SWEEP_EXAMPLE3_G0,
+};
+use common::{
+    assert_close, assert_rel, check_loop_invariants, loop_invariant_violations,
+    periodicity_residual,
+};
+use lugre::prec::{FEW_ULPS, IDENTITY, LOOP};
+use lugre::{Bimodal, HysteresisLoop, LuGre, LuGreParams, RateIndependent, TheoremA};
+
+fn bimodal_loop(sigma0: f64, g0: f64, b: [f64; 4]) -> (Bimodal, HysteresisLoop) {
+    let b = Bimodal::new(b[0], b[1], b[2], b[3]).unwrap();
+    let model = RateIndependent::new(sigma0, g0).unwrap();
+    let hl = HysteresisLoop::new(model, &b.turning_points()).unwrap();
+    (b, hl)
+}
+
+/// `y°` over the sweep: at the turning points and `rho_5` (against the exact `rho_k`) and at the
+/// probes (against that f64 `rho`), relative to the loop's scale.
+fn sweep_y(name: &str, g0: f64, bimodal: [f64; 4], cases: &[SweepCase]) {
+    let mut a_p = Vec::new();
+    for &(sigma0, scale, turning, points, _) in cases {
+        let (b, hl) = bimodal_loop(sigma0, g0, bimodal);
+        a_p.push(hl.model().a() * hl.period());
+        hl.check_finite().unwrap();
+        let what = |w: &str| {
+            format!(
+                "{name}, sigma0 = {sigma0:e} (a P = {:e}): {w}",
+                a_p[a_p.len() - 1]
+            )
+        };
+        for (k, (&got, &want)) in hl.turning_y().iter().zip(&turning[..4]).enumerate() {
+            assert!(
+                got.abs() <= g0,
+                "{}",
+                what(&format!("|y(rho_{k})| = {got} > g0"))
+            );
+            assert_close(&what(&format!("y(rho_{k})")), got, want, scale, LOOP);
+        }
+        let loops = hl.loops();
+        assert_eq!(loops.len(), 2, "{}", what("number of loops"));
+        let minor = &loops[1];
+        assert_eq!(
+            [minor.start.rho, minor.end.rho],
+            TheoremA::new(&b, &hl).minor_loop
+        );
+        assert_close(
+            &what("minor y_A = y(rho_1)"),
+            minor.start.y,
+            turning[1],
+            scale,
+            LOOP,
+        );
+        assert_close(
+            &what("minor y_B = y(rho_2)"),
+            minor.reversal.y,
+            turning[2],
+            scale,
+            LOOP,
+        );
+        assert_close(
+            &what("minor y_C = y(rho_5)"),
+            minor.end.y,
+            turning[4],
+            scale,
+            LOOP,
+        );
+        for &(rho, want) in points {
+            let got = hl.y_at(rho);
+            assert!(
+                got.is_finite() && got.abs() <= g0,
+                "{}",
+                what(&format!("y({rho}) = {got}"))
+            );
+            assert_close(&what(&format!("y({rho})")), got, want, scale, LOOP);
+        }
+        let r = periodicity_residual(&hl);
+        assert!(
+            r <= IDENTITY,
+            "{}",
+            what(&format!("periodicity residual {r:e}"))
+        );
+    }
+    // the sweep spans a P = 1e-12 .. 1e12 and both sides of the two-formula switch at a P = 1
+    let lo = a_p.iter().cloned().fold(f64::INFINITY, f64::min);
+    let hi = a_p.iter().cloned().fold(0.0, f64::max);
+    assert!(lo <= 1e-12 && hi >= 1e12, "{name}: a P in [{lo:e}, {hi:e}]");
+    assert!(a_p.iter().any(|&x| (0.98..1.0).contains(&x)));
+    assert!(a_p.iter().any(|&x| (1.0..1.02).contains(&x)));
+}
+
+/// Energies over the sweep against mp.quad: `W`, `D` of the major loop and, where given, `W`,
+/// `D`, `dV` of the minor loop, relative to their own size (`dV` relative to the stored
+/// energies it is the difference of); then every per-loop invariant, `W = dV + D` included.
+/// Collects every failure, so that one run shows the whole range of stiffness where it fails.
+fn sweep_energies(name: &str, g0: f64, bimodal: [f64; 4], cases: &[SweepCase]) {
+    let mut failures = Vec::new();
+    for &(sigma0, _, _, _, energies) in cases {
+        let (_, hl) = bimodal_loop(sigma0, g0, bimodal);
+        let a_p = hl.model().a() * hl.period();
+        let loops = hl.loops();
+        let (major, minor) = (&loops[0], &loops[1]);
+        let mut check = |what: &str, got: f64, want: f64, scale: f64| {
+            let err = (got - want).abs() / want.abs().max(scale);
+            if err.is_nan() || err > LOOP {
+                failures.push(format!(
+                    "sigma0 = {sigma0:e} (a P = {a_p:.3e}): {what} = {got:e}, reference {want:e}, \
+                     relative error {err:.2e}"
+                ));
+            }
+        };
+        check("major W", major.work, energies[0], 0.0);
+        check("work_per_period", hl.work_per_period(), energies[0], 0.0);
+        check("major D", major.dissipation, energies[1], 0.0);
+        if energies.len() == 5 {
+            let stored = (minor.start.y.powi(2) + minor.end.y.powi(2)) / (2.0 * sigma0);
+            check("minor W", minor.work, energies[2], 0.0);
+            check("minor D", minor.dissipation, energies[3], 0.0);
+            check("minor dV", minor.stored_energy_change, energies[4], stored);
+        }
+        for v in loop_invariant_violations(&hl, &loops, IDENTITY) {
+            failures.push(format!("sigma0 = {sigma0:e} (a P = {a_p:.3e}): {v}"));
+        }
+    }
+    assert!(failures.is_empty(), "{name}:\n{}", failures.join("\n"));
+}
+
+#[test]
+fn y_matches_eq_13_for_a_p_from_1e_minus_12_to_1e12_example3_input() {
+    sweep_y(
+        "Example 3 input",
+        SWEEP_EXAMPLE3_G0,
+        SWEEP_EXAMPLE3_BIMODAL,
+        SWEEP_EXAMPLE3,
+    );
+}
+
+#[test]
+fn y_matches_eq_13_for_a_p_from_1e_minus_12_to_1e12_dyadic_input() {
+    sweep_y(
+        "dyadic input",
+        SWEEP_DYADIC_G0,
+        SWEEP_DYADIC_BIMODAL,
+        SWEEP_DYADIC,
+    );
+}
+
+#[test]
+fn energies_match_quadrature_for_a_p_from_1e_minus_12_to_1e12_example3_input() {
+    sweep_energies(
+        "Example 3 input",
+        SWEEP_EXAMPLE3_G0,
+        SWEEP_EXAMPLE3_BIMODAL,
+        SWEEP_EXAMPLE3,
+    );
+}
+
+#[test]
+fn energies_match_quadrature_for_a_p_from_1e_minus_12_to_1e12_dyadic_input() {
+    sweep_energies(
+        "dyadic input",
+        SWEEP_DYADIC_G0,
+        SWEEP_DYADIC_BIMODAL,
+        SWEEP_DYADIC,
+    );
+}
+
+#[test]
+fn realistic_stiffness_where_eq_13_overflows_f64() {
+    let params = LuGreParams::canudas_de_wit_1995();
+    assert_eq!(
+        (params.sigma0, params.fs),
+        (realistic::SIGMA0, realistic::G0)
+    );
+    let model = LuGre::from_params(params).unwrap();
+    assert_eq!(model.g0(), realistic::G0);
+    let [umin1, umin2, umax1, umax2] = realistic::BIMODAL;
+    let b = Bimodal::new(umin1, umin2, umax1, umax2).unwrap();
+    let hl = HysteresisLoop::new(model.rate_independent(), &b.turning_points()).unwrap();
+
+    // The paper's eq. 13 in f64 is not an option here: e^(a rho_4) overflows.
+    let (a, rho) = (model.rate_independent().a(), b.rho());
+    let e = |r: f64| (a * r).exp();
+    let eq13_y0 = realistic::G0 * (-a * rho[4]).exp() / (1.0 - (-a * rho[4]).exp())
+        * (2.0 * e(rho[1]) - 2.0 * e(rho[2]) + 2.0 * e(rho[3]) - e(rho[4]) - 1.0);
+    assert!(!eq13_y0.is_finite(), "eq. 13 in f64 gave {eq13_y0}");
+
+    hl.check_finite().unwrap();
+    for k in 0..4 {
+        let got = hl.turning_y()[k];
+        assert_close(
+            &format!("realistic y(rho_{k})"),
+            got,
+            realistic::TURNING[k],
+            realistic::SCALE,
+            LOOP,
+        );
+    }
+    for &(rho, want) in realistic::POINTS {
+        let got = hl.y_at(rho);
+        assert!(got.abs() <= realistic::G0);
+        assert_close(
+            &format!("realistic y({rho})"),
+            got,
+            want,
+            realistic::SCALE,
+            LOOP,
+        );
+    }
+    let loops = hl.loops();
+    assert_eq!(loops.len(), 2);
+    let (major, minor) = (&loops[0], &loops[1]);
+    assert_rel("realistic major W", major.work, realistic::MAJOR_W, LOOP);
+    assert_rel(
+        "realistic major D",
+        major.dissipation,
+        realistic::MAJOR_D,
+        LOOP,
+    );
+    assert_rel(
+        "realistic W per period",
+        hl.work_per_period(),
+        realistic::MAJOR_W,
+        LOOP,
+    );
+    assert_eq!([minor.start.rho, minor.end.rho], [rho[1], rho[5]]);
+    assert_close(
+        "realistic minor y_C",
+        minor.end.y,
+        realistic::TURNING[4],
+        realistic::SCALE,
+        LOOP,
+    );
+    assert_rel("realistic minor W", minor.work, realistic::MINOR_W, LOOP);
+    assert_rel(
+        "realistic minor D",
+        minor.dissipation,
+        realistic::MINOR_D,
+        LOOP,
+    );
+    // dV = (y_C^2 - y_A^2) / (2 sigma0) with y_A, y_C both within e^-500 of g0: pure rounding
+    // (the reference is ~1e-230); it must be no more than an ulp of y^2 / sigma0.
+    assert!(
+        (minor.stored_energy_change - realistic::MINOR_DV).abs()
+            <= FEW_ULPS * realistic::G0 * realistic::G0 / realistic::SIGMA0,
+        "realistic minor dV = {:e}, reference {:e}",
+        minor.stored_energy_change,
+        realistic::MINOR_DV
+    );
+    check_loop_invariants(&hl, &loops, IDENTITY);
+}
+
+/// `|y°| < g0` holds exactly (eqs. 13-16: `y°` relaxes towards `+-g0` and never reaches it); in
+/// f64 the correctly rounded value can be `g0` itself once `g0 - |y°|` is below half an ulp, but
+/// never more. FAILS at the time of writing: e.g. `sigma0 = 1e3`, `g0 = 1.5`, triangle `0 -> 1`:
+/// `y_at(0.058) = 1.5000000000000002` (exact: `1.5 - 4.8e-17`, which rounds to 1.5), and 406 of
+/// 1001 evenly spaced samples exceed `g0` by an ulp.
+#[test]
+fn y_never_exceeds_g0() {
+    let mut bad = Vec::new();
+    let mut total = 0usize;
+    let mut check = |what: &str, hl: &HysteresisLoop| {
+        let g0 = hl.model().g0();
+        let mut points = hl.sample(1001);
+        points.extend(hl.turning_loop_points());
+        for l in hl.loops() {
+            points.extend([l.start, l.reversal, l.end]);
+        }
+        for pt in points {
+            total += 1;
+            if pt.y.is_nan() || pt.y.abs() > g0 {
+                bad.push(format!("{what}: y({}) = {:?}, g0 = {g0:?}", pt.rho, pt.y));
+            }
+        }
+    };
+    check(
+        "sigma0 = 1e3, g0 = 1.5, triangle 0 -> 1",
+        &common::loop_of(1e3, 1.5, &[0.0, 1.0]),
+    );
+    let mut rng = common::Lcg(0x5eed_0006);
+    for i in 0..200 {
+        let u = common::random_turning_points(&mut rng, 8);
+        let (sigma0, g0) = (rng.log_uniform(-3.0, 6.0), rng.log_uniform(-1.0, 1.0));
+        check(
+            &format!("random {i} (sigma0 = {sigma0:e}, u = {u:?})"),
+            &common::loop_of(sigma0, g0, &u),
+        );
+    }
+    assert!(
+        bad.is_empty(),
+        "{} of {total} values of y° exceed g0, e.g.\n{}",
+        bad.len(),
+        bad[..bad.len().min(5)].join("\n")
+    );
+}
