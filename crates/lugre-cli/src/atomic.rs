@@ -5,8 +5,21 @@ use anyhow::{Context, Result};
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-/// Writes `path` atomically with `fill`.
-pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
+/// Writes `path` atomically by letting `fill` write a temporary path next to it (for encoders
+/// that want a path rather than a writer).
+pub fn write_atomic_path(path: &Path, fill: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
+    let tmp = temporary_sibling(path)?;
+    let result = fill(&tmp).and_then(|()| {
+        std::fs::rename(&tmp, path).with_context(|| format!("cannot write '{}'", path.display()))
+    });
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// `.NAME.tmp-PID` in the same directory as `path` (so the rename is atomic).
+fn temporary_sibling(path: &Path) -> Result<std::path::PathBuf> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -14,11 +27,21 @@ pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>
     let name = path
         .file_name()
         .with_context(|| format!("cannot write '{}': not a file name", path.display()))?;
-    let tmp = dir.join(format!(
-        ".{}.tmp-{}",
+    let ext = path
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    // The extension is kept last: encoders choose the format from it.
+    Ok(dir.join(format!(
+        ".{}.tmp-{}{ext}",
         name.to_string_lossy(),
         std::process::id()
-    ));
+    )))
+}
+
+/// Writes `path` atomically with `fill`.
+pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
+    let tmp = temporary_sibling(path)?;
     let result = (|| -> Result<()> {
         let file = std::fs::File::create(&tmp)
             .with_context(|| format!("cannot write '{}'", path.display()))?;

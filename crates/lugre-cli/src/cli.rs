@@ -291,4 +291,8 @@ pub struct LoopArgs {
     /// --samples or --at is given).
     #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
     pub csv: Option<PathBuf>,
+    /// Draw the loop in the (u, y°) plane, the minor loops solid with their start (circle) and
+    /// end (square) marked, to an SVG or PNG file.
+    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
+    pub plot: Option<PathBuf>,
 }

@@ -10,6 +10,7 @@ use crate::cli::{LoopArgs, ModelChoice, PeriodicInput};
 use crate::fmt::{exact, sig};
 use crate::json_out::JsonOut;
 use crate::numbers::parse_list;
+use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, PALETTE};
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
 const MAX_TABLE_ROWS: usize = 40;
@@ -63,6 +64,10 @@ pub fn run(args: &LoopArgs) -> Result<()> {
         })?;
     }
 
+    if let Some(path) = &args.plot {
+        loop_figure(&hl, &loops).save(path)?;
+    }
+
     let stdout = std::io::stdout();
     if args.json {
         let report = Report {
@@ -89,6 +94,9 @@ pub fn run(args: &LoopArgs) -> Result<()> {
                 "\nWrote the sampled curve (rho,u,y) to {}",
                 path.display()
             )?;
+        }
+        if let Some(path) = &args.plot {
+            writeln!(out, "Drew the loop to {}", path.display())?;
         }
         out.flush()?;
     }
@@ -310,4 +318,103 @@ fn more(out: &mut impl Write, n: usize) -> Result<()> {
         )?;
     }
     Ok(())
+}
+
+/// Minor loops drawn in colour (the largest by input range); the others are part of the
+/// drawn major loop all the same.
+const MAX_DRAWN_MINOR_LOOPS: usize = 10;
+
+/// Points per drawn arc (plus the turning points inside it, when there are not too many).
+const POINTS_PER_ARC: usize = 600;
+
+/// The loop in the (u, y°) plane as the paper's Fig. 15 draws it.
+fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
+    let major = &loops[0];
+    let mut minors: Vec<&Loop> = loops[1..].iter().collect();
+    minors.sort_by(|p, q| {
+        let range = |l: &Loop| (l.reversal.u - l.start.u).abs();
+        range(q).total_cmp(&range(p))
+    });
+    let drawn = minors.len().min(MAX_DRAWN_MINOR_LOOPS);
+    let mut fig = Figure::new("input u", "friction force y°").title("Hysteresis loop");
+    fig = fig.curve(
+        Curve::new(
+            arc_points(hl, major.start.rho, major.end.rho),
+            if drawn > 0 {
+                LineStyle::Dashed
+            } else {
+                LineStyle::Solid
+            },
+            BLACK,
+        )
+        .label("hysteresis loop y°")
+        .width(2),
+    );
+    for (i, l) in minors.iter().take(drawn).enumerate() {
+        let label = format!(
+            "minor loop, rho in [{}, {}]",
+            sig(l.start.rho, 4),
+            sig(l.end.rho, 4)
+        );
+        fig = fig.curve(
+            Curve::new(
+                arc_points(hl, l.start.rho, l.end.rho),
+                // Colours repeat after five loops: the line style changes then, so every drawn
+                // loop stays distinguishable, in grey scale too.
+                [LineStyle::Solid, LineStyle::DashDot, LineStyle::Dotted][(i / PALETTE.len()) % 3],
+                PALETTE[i % PALETTE.len()],
+            )
+            .label(label)
+            .width(3),
+        );
+    }
+    for (i, l) in minors.iter().take(drawn).enumerate() {
+        let first = i == 0;
+        fig = fig
+            .marker(Marker {
+                label: first.then(|| "start of a minor loop (rho_A)".to_string()),
+                at: (l.start.u, l.start.y),
+                shape: Shape::Circle,
+                color: BLACK,
+            })
+            .marker(Marker {
+                label: first.then(|| "end: first return to u_A (rho_C)".to_string()),
+                at: (l.end.u, l.end.y),
+                shape: Shape::Square,
+                color: BLACK,
+            });
+    }
+    if minors.len() > drawn {
+        fig.title = Some(format!(
+            "Hysteresis loop ({drawn} largest of {} minor loops in colour)",
+            minors.len()
+        ));
+    }
+    fig
+}
+
+/// `(u, y°)` along the arc `[rho0, rho1]`: evenly spaced points and the turning points inside.
+fn arc_points(hl: &HysteresisLoop, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
+    let mut rhos: Vec<f64> = (0..=POINTS_PER_ARC)
+        .map(|i| rho0 + (rho1 - rho0) * (i as f64 / POINTS_PER_ARC as f64))
+        .collect();
+    let p = hl.period();
+    let turning = hl.turning_rho();
+    if turning.len() <= 20 * POINTS_PER_ARC {
+        for shift in [0.0, p, 2.0 * p] {
+            rhos.extend(
+                turning
+                    .iter()
+                    .map(|r| r + shift)
+                    .filter(|r| *r > rho0 && *r < rho1),
+            );
+        }
+    }
+    rhos.sort_by(f64::total_cmp);
+    rhos.iter()
+        .map(|&r| {
+            let pt = hl.point_at(r);
+            (pt.u, pt.y)
+        })
+        .collect()
 }

@@ -9,6 +9,7 @@ mod fmt;
 mod json_out;
 mod loop_cmd;
 mod numbers;
+mod plot;
 
 use clap::Parser;
 use std::io::Write;

@@ -402,3 +402,49 @@ fn help_and_version_succeed() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("--turning-points"));
     assert!(lugre(&["--version"]).status.success());
 }
+
+#[test]
+fn plots_are_written_as_png_and_svg() {
+    let dir = std::env::temp_dir().join(format!("lugre-loop-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("ex4.png");
+    let svg = dir.join("ex4.svg");
+    for path in [&png, &svg] {
+        let out = lugre(&[
+            "loop",
+            "--sigma0",
+            "6",
+            "--bimodal",
+            "0,0.5,1,1.5",
+            "--plot",
+            path.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    // IHDR: width and height, big-endian, right after the chunk header.
+    let width = u32::from_be_bytes(bytes[16..20].try_into().unwrap());
+    let height = u32::from_be_bytes(bytes[20..24].try_into().unwrap());
+    assert_eq!((width, height), (1000, 700));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.trim_start().starts_with("<svg") && text.trim_end().ends_with("</svg>"));
+    for label in ["input u", "friction force y°", "minor loop, rho in [1, 2]"] {
+        assert!(text.contains(label), "{label}");
+    }
+    rejects(
+        &[
+            "loop",
+            "--turning-points",
+            "0,1",
+            "--plot",
+            dir.join("x.pdf").to_str().unwrap(),
+        ],
+        "must end in .svg or .png",
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
