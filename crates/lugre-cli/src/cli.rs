@@ -26,6 +26,9 @@ pub struct Cli {
 pub enum Command {
     /// The hysteresis loop y° and every minor loop of a periodic input, with energies.
     Loop(LoopArgs),
+    /// Minor loops in a measured history: reversals, ASTM E1049 rainflow cycles, where each
+    /// loop closes, and (with a model) the energy over each loop.
+    Cycles(crate::cycles_cmd::CyclesArgs),
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,7 +81,7 @@ impl ModelArgs {
         match self.model {
             ModelKind::Lugre => {
                 if self.rho.is_some() {
-                    bail!("--rho is the Dahl model's parameter (add --model dahl); to evaluate the loop at given rho use --at");
+                    bail!("--rho is the Dahl model's parameter (add --model dahl)");
                 }
                 let d = LuGreParams::default();
                 let p = LuGreParams {
@@ -122,7 +125,7 @@ impl ModelChoice {
     }
 
     /// The equivalent LuGre model (Dahl maps exactly).
-    #[allow(dead_code)] // used by `simulate`
+    #[allow(dead_code)] // used by `simulate`, in the works
     pub fn lugre(&self) -> LuGre {
         match self {
             ModelChoice::LuGre(m) => m.clone(),

@@ -1,8 +1,14 @@
 //! Reading a series from CSV: header `t,u`, or a single column `u`; the header is optional.
 //! A UTF-8 byte-order mark, `#` comments, blank lines, CRLF line ends and spaces around values
 //! are accepted. Every problem is reported with the file's line number.
+//!
+//! [`SampleReader`] streams the file one row at a time (a measured history may not fit in
+//! memory); [`read_series`] collects it. Both share the per-row parsing and validation.
+//! With a column name (`lugre cycles --column NAME`), any header naming that column is
+//! accepted, a column `t` is read as times, and other columns are ignored.
 
 use anyhow::{bail, Context, Result};
+use std::io::Read;
 use std::path::Path;
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
@@ -13,116 +19,228 @@ pub struct Series {
 }
 
 pub fn read_series(path: &Path) -> Result<Series> {
-    let bytes = std::fs::read(path).with_context(|| format!("cannot read '{}'", path.display()))?;
-    parse_series(&bytes).with_context(|| path.display().to_string())
+    let file =
+        std::fs::File::open(path).with_context(|| format!("cannot read '{}'", path.display()))?;
+    collect(SampleReader::new(file, None)).with_context(|| path.display().to_string())
 }
 
+#[cfg(test)]
 pub fn parse_series(bytes: &[u8]) -> Result<Series> {
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .comment(Some(b'#'))
-        .trim(csv::Trim::All)
-        .from_reader(bytes);
-    let mut width: Option<usize> = None;
+    collect(SampleReader::new(bytes, None))
+}
+
+fn collect<R: Read>(mut reader: SampleReader<R>) -> Result<Series> {
     let mut t: Vec<f64> = Vec::new();
     let mut u: Vec<f64> = Vec::new();
-    let mut record = csv::ByteRecord::new();
-    loop {
-        let more = reader.read_byte_record(&mut record);
-        let line = record.position().map_or(0, |p| p.line());
-        match more {
-            Ok(false) => break,
-            Ok(true) => {}
-            Err(e) => bail!("line {line}: {e}"),
+    while let Some(s) = reader.next_sample()? {
+        if let Some(ts) = s.t {
+            t.push(ts);
         }
-        if record.iter().all(|f| f.is_empty()) {
-            continue; // a blank line (or only separators)
-        }
-        let fields: Vec<&str> = record
-            .iter()
-            .map(std::str::from_utf8)
-            .collect::<Result<_, _>>()
-            .map_err(|_| anyhow::anyhow!("line {line}: not valid UTF-8 text"))?;
-        let w = match width {
-            Some(w) => w,
-            None => {
-                let w = columns(&fields, line)?;
-                width = Some(w);
-                if fields.iter().any(|f| f.parse::<f64>().is_err()) {
-                    continue; // the header, checked by `columns`
-                }
-                w
-            }
-        };
-        if fields.len() != w {
-            let names = if w == 2 {
-                "2 values (t,u)"
-            } else {
-                "1 value (u)"
-            };
-            bail!("line {line}: expected {names}, found {}", fields.len());
-        }
-        let values: Vec<f64> = fields
-            .iter()
-            .zip(if w == 2 {
-                ["t", "u"].as_slice()
-            } else {
-                ["u"].as_slice()
-            })
-            .map(|(f, name)| number(f, name, line))
-            .collect::<Result<_>>()?;
-        if w == 2 {
-            if let Some(&prev) = t.last() {
-                if values[0] <= prev {
-                    bail!(
-                        "line {line}: times must be strictly increasing, t = {} follows t = {prev}",
-                        values[0]
-                    );
-                }
-            }
-            t.push(values[0]);
-            u.push(values[1]);
-        } else {
-            u.push(values[0]);
-        }
+        u.push(s.u);
     }
     if u.is_empty() {
         bail!("no data rows");
     }
     Ok(Series {
-        t: (width == Some(2)).then_some(t),
+        t: reader.has_time().then_some(t),
         u,
     })
 }
 
-/// The number of columns, from the first row: a header `t,u` or `u`, or numbers.
-fn columns(fields: &[&str], line: u64) -> Result<usize> {
+/// One row: its time (if the file has times) and value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    pub t: Option<f64>,
+    pub u: f64,
+}
+
+/// Where the values are, from the first row.
+#[derive(Debug, Clone)]
+struct Layout {
+    width: usize,
+    t: Option<usize>,
+    u: usize,
+    /// The value column's name, for messages.
+    name: String,
+    /// The columns, for messages (`t,u`).
+    header: String,
+}
+
+/// Streams the rows of a CSV file.
+pub struct SampleReader<R: Read> {
+    reader: csv::Reader<SkipBom<R>>,
+    record: csv::ByteRecord,
+    column: Option<String>,
+    layout: Option<Layout>,
+    prev_t: Option<f64>,
+    line: u64,
+}
+
+impl SampleReader<std::fs::File> {
+    /// Opens `path`; `column` as in [`SampleReader::new`].
+    pub fn open(path: &Path, column: Option<&str>) -> Result<Self> {
+        let file = std::fs::File::open(path)
+            .with_context(|| format!("cannot read '{}'", path.display()))?;
+        Ok(Self::new(file, column))
+    }
+}
+
+impl<R: Read> SampleReader<R> {
+    /// `column`: `None` for a header `t,u` or `u` (or none); `Some(name)` for the column of
+    /// that name in any header (a file without a header has the columns `u` or `t,u`).
+    pub fn new(inner: R, column: Option<&str>) -> Self {
+        let reader = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .comment(Some(b'#'))
+            .trim(csv::Trim::All)
+            .buffer_capacity(1 << 16)
+            .from_reader(SkipBom::new(inner));
+        Self {
+            reader,
+            record: csv::ByteRecord::new(),
+            column: column.map(str::to_string),
+            layout: None,
+            prev_t: None,
+            line: 0,
+        }
+    }
+
+    /// Whether the rows have times (known once the first row is read).
+    pub fn has_time(&self) -> bool {
+        self.layout.as_ref().is_some_and(|l| l.t.is_some())
+    }
+
+    /// The line of the last row read.
+    pub fn line(&self) -> u64 {
+        self.line
+    }
+
+    /// The next row, or `None` at the end of the file.
+    pub fn next_sample(&mut self) -> Result<Option<Sample>> {
+        loop {
+            let more = self.reader.read_byte_record(&mut self.record);
+            self.line = self.record.position().map_or(0, |p| p.line());
+            let line = self.line;
+            match more {
+                Ok(false) => return Ok(None),
+                Ok(true) => {}
+                Err(e) => bail!("line {line}: {e}"),
+            }
+            if self.record.iter().all(|f| f.is_empty()) {
+                continue; // a blank line (or only separators)
+            }
+            if self.layout.is_none() {
+                let fields = utf8_fields(&self.record, line)?;
+                let (first, is_header) = layout(&fields, self.column.as_deref(), line)?;
+                self.layout = Some(first);
+                if is_header {
+                    continue;
+                }
+            }
+            let Some(layout) = &self.layout else {
+                continue; // set just above
+            };
+            if self.record.len() != layout.width {
+                let w = layout.width;
+                let values = if w == 1 { "value" } else { "values" };
+                bail!(
+                    "line {line}: expected {w} {values} ({}), found {}",
+                    layout.header,
+                    self.record.len()
+                );
+            }
+            let u = number(&self.record[layout.u], &layout.name, line)?;
+            let t = match layout.t {
+                Some(k) => {
+                    let t = number(&self.record[k], "t", line)?;
+                    if let Some(prev) = self.prev_t {
+                        if t <= prev {
+                            bail!(
+                                "line {line}: times must be strictly increasing, t = {t} follows t = {prev}"
+                            );
+                        }
+                    }
+                    self.prev_t = Some(t);
+                    Some(t)
+                }
+                None => None,
+            };
+            return Ok(Some(Sample { t, u }));
+        }
+    }
+}
+
+fn utf8_fields(record: &csv::ByteRecord, line: u64) -> Result<Vec<&str>> {
+    record
+        .iter()
+        .map(std::str::from_utf8)
+        .collect::<Result<_, _>>()
+        .map_err(|_| anyhow::anyhow!("line {line}: not valid UTF-8 text"))
+}
+
+/// The layout from the first row (a header, or numbers), and whether that row is a header.
+fn layout(fields: &[&str], column: Option<&str>, line: u64) -> Result<(Layout, bool)> {
     let numeric = fields.iter().all(|f| f.parse::<f64>().is_ok());
+    let unnamed = |width: usize| Layout {
+        width,
+        t: (width == 2).then_some(0),
+        u: width - 1,
+        name: "u".into(),
+        header: if width == 2 { "t,u" } else { "u" }.into(),
+    };
     if numeric {
+        if let Some(name) = column {
+            if !name.eq_ignore_ascii_case("u") {
+                bail!("line {line}: no header line, so no column '{name}' (a file without a header has the columns u or t,u)");
+            }
+        }
         return match fields.len() {
-            1 | 2 => Ok(fields.len()),
+            1 | 2 => Ok((unnamed(fields.len()), false)),
             n => bail!("line {line}: expected 1 column (u) or 2 columns (t,u), found {n}"),
         };
     }
     let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
-    match names
-        .iter()
-        .map(String::as_str)
-        .collect::<Vec<_>>()
-        .as_slice()
-    {
-        ["t", "u"] => Ok(2),
-        ["u"] => Ok(1),
-        _ => bail!(
-            "line {line}: unexpected header '{}': expected 't,u' or 'u'",
-            fields.join(",")
-        ),
+    let header = fields.join(",");
+    match column {
+        None => match names
+            .iter()
+            .map(String::as_str)
+            .collect::<Vec<_>>()
+            .as_slice()
+        {
+            ["t", "u"] => Ok((unnamed(2), true)),
+            ["u"] => Ok((unnamed(1), true)),
+            _ => bail!("line {line}: unexpected header '{header}': expected 't,u' or 'u'"),
+        },
+        Some(name) => {
+            let wanted = name.to_ascii_lowercase();
+            let find = |n: &str| names.iter().position(|x| x == n);
+            let Some(u) = find(&wanted) else {
+                bail!("line {line}: no column '{name}' in the header '{header}'");
+            };
+            if names.iter().filter(|x| **x == wanted).count() > 1 {
+                bail!("line {line}: the header '{header}' names '{name}' more than once");
+            }
+            let t = find("t").filter(|&k| k != u);
+            Ok((
+                Layout {
+                    width: fields.len(),
+                    t,
+                    u,
+                    name: fields[u].to_string(),
+                    header,
+                },
+                true,
+            ))
+        }
     }
 }
 
-fn number(field: &str, name: &str, line: u64) -> Result<f64> {
+fn number(field: &[u8], name: &str, line: u64) -> Result<f64> {
+    let Ok(field) = std::str::from_utf8(field) else {
+        bail!("line {line}: not valid UTF-8 text");
+    };
     if field.is_empty() {
         bail!("line {line}: empty value for {name}");
     }
@@ -130,6 +248,52 @@ fn number(field: &str, name: &str, line: u64) -> Result<f64> {
         Ok(v) if v.is_finite() => Ok(v),
         Ok(_) => bail!("line {line}: {name} = '{field}' is not a finite number"),
         Err(_) => bail!("line {line}: {name} = '{field}' is not a number"),
+    }
+}
+
+/// Drops a UTF-8 byte-order mark at the start of a stream.
+struct SkipBom<R> {
+    inner: R,
+    /// Bytes read ahead to look for the mark and not yet handed out.
+    head: [u8; 3],
+    head_len: usize,
+    started: bool,
+}
+
+impl<R: Read> SkipBom<R> {
+    fn new(inner: R) -> Self {
+        Self {
+            inner,
+            head: [0; 3],
+            head_len: 0,
+            started: false,
+        }
+    }
+}
+
+impl<R: Read> Read for SkipBom<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        if !self.started {
+            self.started = true;
+            while self.head_len < 3 {
+                let n = self.inner.read(&mut self.head[self.head_len..])?;
+                if n == 0 {
+                    break;
+                }
+                self.head_len += n;
+            }
+            if self.head[..self.head_len] == *b"\xEF\xBB\xBF" {
+                self.head_len = 0;
+            }
+        }
+        if self.head_len > 0 {
+            let n = self.head_len.min(buf.len());
+            buf[..n].copy_from_slice(&self.head[..n]);
+            self.head.copy_within(n..self.head_len, 0);
+            self.head_len -= n;
+            return Ok(n);
+        }
+        self.inner.read(buf)
     }
 }
 
@@ -148,6 +312,9 @@ mod tests {
         assert_eq!(s.u, vec![1.0, -2.0]);
         let s = parse_series(b"0,1\n1,2\n").unwrap();
         assert_eq!(s.u, vec![1.0, 2.0]);
+        // A mark alone, or a file shorter than one.
+        assert!(parse_series(b"\xEF\xBB\xBF").is_err());
+        assert_eq!(parse_series(b"7").unwrap().u, vec![7.0]);
     }
 
     #[test]
@@ -167,6 +334,62 @@ mod tests {
         ];
         for (input, want) in cases {
             let e = parse_series(input).unwrap_err().to_string();
+            assert!(e.contains(want), "{e} (wanted {want})");
+        }
+    }
+
+    fn named(bytes: &[u8], column: &str) -> Result<Vec<Sample>> {
+        let mut r = SampleReader::new(bytes, Some(column));
+        let mut out = Vec::new();
+        while let Some(s) = r.next_sample()? {
+            out.push(s);
+        }
+        Ok(out)
+    }
+
+    #[test]
+    fn a_named_column() {
+        let rows = named(b"t,force,U\n0,9,1\n1,x,2\n", "u").unwrap();
+        assert_eq!(
+            rows,
+            vec![
+                Sample {
+                    t: Some(0.0),
+                    u: 1.0
+                },
+                Sample {
+                    t: Some(1.0),
+                    u: 2.0
+                }
+            ]
+        );
+        assert_eq!(named(b"x\n3\n", "x").unwrap()[0].t, None);
+        assert_eq!(named(b"1\n2\n", "u").unwrap().len(), 2);
+        for (input, column, want) in [
+            (
+                &b"t,u\n0,1\n"[..],
+                "x",
+                "line 1: no column 'x' in the header 't,u'",
+            ),
+            (b"1,2\n", "x", "line 1: no header line, so no column 'x'"),
+            (b"u,u\n1,2\n", "u", "names 'u' more than once"),
+            (
+                b"t,x\n0,1\n1\n",
+                "x",
+                "line 3: expected 2 values (t,x), found 1",
+            ),
+            (
+                b"t,x\n0,1\n0,2\n",
+                "x",
+                "line 3: times must be strictly increasing",
+            ),
+            (
+                b"t,x\n0,inf\n",
+                "x",
+                "line 2: x = 'inf' is not a finite number",
+            ),
+        ] {
+            let e = named(input, column).unwrap_err().to_string();
             assert!(e.contains(want), "{e} (wanted {want})");
         }
     }

@@ -5,6 +5,7 @@
 mod atomic;
 mod cli;
 mod csv_in;
+mod cycles_cmd;
 mod fmt;
 mod json_out;
 mod loop_cmd;
@@ -60,6 +61,7 @@ fn main() -> ExitCode {
 fn run(cli: cli::Cli) -> anyhow::Result<()> {
     match cli.command {
         cli::Command::Loop(args) => loop_cmd::run(&args),
+        cli::Command::Cycles(args) => cycles_cmd::run(&args),
     }
 }
 

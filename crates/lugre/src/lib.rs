@@ -19,6 +19,7 @@
 //!
 //! The core is pure computation: no file or terminal I/O.
 
+pub mod cycles;
 pub mod error;
 pub mod hysteresis;
 pub mod input;
@@ -28,7 +29,11 @@ pub mod numerics;
 pub mod prec;
 pub mod theorem_a;
 
-pub use error::{InputError, LoopError, ModelError};
+pub use cycles::{
+    count_cycles, count_cycles_with_energy, Closure, Cycle, CycleCounter, CycleEnergy, CycleSink,
+    CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy, Reversal,
+};
+pub use error::{HistoryError, InputError, LoopError, ModelError};
 pub use hysteresis::{HysteresisLoop, LoopPoint};
 pub use input::{Bimodal, TurningPoints};
 pub use minor::{minor_loops, Loop, LoopKind};
@@ -44,6 +49,8 @@ pub enum Error {
     Input(#[from] InputError),
     #[error(transparent)]
     Loop(#[from] LoopError),
+    #[error(transparent)]
+    History(#[from] HistoryError),
 }
 
 impl HysteresisLoop {

@@ -32,3 +32,24 @@ pub fn rel_diff(a: f64, b: f64) -> f64 {
 /// relative to the cycle's scale `g0 * range`: per-step closed forms summed in double-double
 /// over the arc, against mpmath quadrature and against the periodic loop.
 pub const CYCLE_ENERGY: f64 = 1e-13;
+
+/// Relative error of the work of a history's cycle as small as `a * range ~ 1e-5`, against
+/// mpmath: summing per-step terms of size `sigma0 range^2` into `W ~ a sigma0 range^3` costs
+/// `1e-16 / (a range)`.
+pub const TINY_LOOP_WORK: f64 = 1e-10;
+
+/// The exact simulation of eq. 5 on piecewise-linear inputs ([`crate::simulate`]) against
+/// mpmath and against closed forms, relative to the state's scale `g(0) / sigma0` (for `z`)
+/// and the force's `g(0)` (for `y`): a few roundings per segment, at any `sigma0 / g`.
+pub const EXACT_SIMULATION: f64 = 1e-13;
+
+/// Agreement with the `differential-equations` crate's Radau5 at `rtol = 1e-12`, restarted at
+/// every kink, relative to `g(0)`: the stiff solver's own error. On Example 1's `x`, whose exact
+/// solution is known, it is 1.3e-9 (and larger, not smaller, at `rtol = 1e-13`).
+pub const STIFF_SOLVER: f64 = 1e-8;
+
+/// The adaptive integrator for smooth inputs at `tol = 1e-10` or tighter, against closed forms,
+/// mpmath or Radau5, relative to `g(0)`: the tolerance bounds the local error per step, the
+/// global error is that summed over the steps (damped by the model's dissipation), and Radau5
+/// adds its own ([`STIFF_SOLVER`]).
+pub const ADAPTIVE: f64 = 2e-8;
