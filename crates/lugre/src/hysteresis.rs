@@ -433,14 +433,9 @@ impl HysteresisLoop {
     /// length is small, where the plain difference of the two values would lose everything
     /// (the gap is `O(a)`, the values `O(sigma0 P)`). Longer arcs use the plain difference.
     pub(crate) fn closure_gap(&self, from: Position, to: Position) -> f64 {
-        let (y_from, y_to) = (self.position_point(from).y, self.position_point(to).y);
-        let length = self.position_rho(to) - self.position_rho(from);
         let whole_periods = to.k == from.k && to.offset == from.offset;
         if whole_periods {
             return 0.0;
-        }
-        if self.model.a() * length > 1.0 {
-            return y_to - y_from;
         }
         let cumulative = |pos: Position| {
             let (py, pl) = self.piece_drift(pos.k, pos.offset);
@@ -450,7 +445,45 @@ impl HysteresisLoop {
             )
         };
         let ((y1, l1), (y0, l0)) = (cumulative(to), cumulative(from));
-        -self.model.a() * ((y1 - y0).to_f64() + self.model.sigma0() * (l1 - l0).to_f64())
+        crate::arc_energy::closure_gap(
+            self.model,
+            self.position_rho(to) - self.position_rho(from),
+            (y1 - y0).to_f64(),
+            (l1 - l0).to_f64(),
+            self.position_point(from).y,
+            self.position_point(to).y,
+        )
+    }
+
+    /// The sums of [`crate::arc_energy`] over the pieces from `from` to `to`, when the arc
+    /// crosses at most `max_segments` segment boundaries (else `None`: use the prefix sums).
+    pub(crate) fn arc_sums(
+        &self,
+        from: Position,
+        to: Position,
+        max_segments: usize,
+    ) -> Option<crate::arc_energy::Sums> {
+        let n = self.len();
+        let span = (to.wraps as usize * n + to.k) - (from.wraps as usize * n + from.k);
+        if span > max_segments {
+            return None;
+        }
+        let mut sums = crate::arc_energy::Sums::default();
+        let (mut k, mut offset) = (from.k, from.offset);
+        for step in 0..=span {
+            let stop = if step == span {
+                to.offset
+            } else {
+                self.segment_length(k)
+            };
+            if stop > offset {
+                let y = self.advance(self.y[k], k, offset);
+                sums.add_piece(self.model, y, self.direction(k), stop - offset);
+            }
+            k = (k + 1) % n;
+            offset = 0.0;
+        }
+        Some(sums)
     }
 
     /// Checks that every value a report would print is finite.

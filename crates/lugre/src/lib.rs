@@ -19,6 +19,7 @@
 //!
 //! The core is pure computation: no file or terminal I/O.
 
+mod arc_energy;
 pub mod cycles;
 pub mod error;
 pub mod hysteresis;

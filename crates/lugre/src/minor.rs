@@ -21,11 +21,17 @@
 //! lexicographically greatest, so the set of loops does not depend on where the user's
 //! period begins, even with repeated extreme values.
 //!
-//! Energies over an arc: the dissipation from double-double prefix sums of its closed form, the
-//! stored-energy change from the end points, the work as their sum (see [`crate::hysteresis`]):
-//! O(1) per loop.
+//! Energies over an arc ([`crate::arc_energy`]): short arcs are summed piece by piece, long ones
+//! from double-double prefix sums, and the work is taken from whichever of its two forms
+//! (`integral (y - y_A) dpsi` or `dV + D`) rounds less.
 
+use crate::arc_energy::{arc_energy, best_work, stored_energy_change, ArcEnergy};
 use crate::hysteresis::{HysteresisLoop, LoopPoint, Position};
+
+/// Minor loops whose arcs cross at most this many segments are summed piece by piece, which
+/// also gives the direct form of their work (see [`crate::arc_energy`]); longer ones use the
+/// loop's prefix sums.
+const DIRECT_WORK_MAX_SEGMENTS: usize = 64;
 
 /// Whether a loop is the major loop (the whole period) or a minor loop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -194,14 +200,27 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             pb.wraps -= 1;
             pc.wraps -= 1;
         }
-        let dissipation = hl.dissipation_between(pa, pc);
         let (start, reversal, end) = (
             hl.position_point(pa),
             hl.position_point(pb),
             hl.position_point(pc),
         );
-        let closure_gap = hl.closure_gap(pa, pc);
-        let stored_energy_change = closure_gap * (end.y + start.y) / (2.0 * hl.model().sigma0());
+        let model = hl.model();
+        let energy = match hl.arc_sums(pa, pc, DIRECT_WORK_MAX_SEGMENTS) {
+            Some(sums) if i > 0 => arc_energy(model, &sums, start.y, end.y),
+            _ => {
+                // The major loop and long arcs: O(1) from the prefix sums.
+                let dissipation = hl.dissipation_between(pa, pc);
+                let closure_gap = hl.closure_gap(pa, pc);
+                let dv = stored_energy_change(model, closure_gap, start.y, end.y);
+                ArcEnergy {
+                    work: best_work(model, end.rho - start.rho, None, dv, dissipation),
+                    stored_energy_change: dv,
+                    dissipation,
+                    closure_gap,
+                }
+            }
+        };
         loops.push(Loop {
             kind: if i == 0 {
                 LoopKind::Major
@@ -211,10 +230,10 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             start,
             reversal,
             end,
-            work: stored_energy_change + dissipation,
-            stored_energy_change,
-            dissipation,
-            closure_gap,
+            work: energy.work,
+            stored_energy_change: energy.stored_energy_change,
+            dissipation: energy.dissipation,
+            closure_gap: energy.closure_gap,
             parent,
             depth,
         });

@@ -3,18 +3,10 @@
 //!
 //! Samples are joined by straight lines, so each step is one piece of the normalized input
 //! (direction `s`, length `l = |du|`) and `y*` advances exactly, at any stiffness. Over a piece
-//! from `y_k` the work is `s y_k c + sigma0 e` with `(c, e) = piece_terms(l)`. Over an arc from
-//! `A` to the closure `C` the input returns to `u_A`, so the work equals
-//! `integral (y - y_A) dpsi`:
-//!
-//! ```text
-//! W = S1 - y_A S2 + sigma0 S3 - a y_A S4,   S1 = sum s y_k c,  S2 = sum s c,  S3 = sum e,  S4 = sum s e
-//! ```
-//!
-//! with the sums over the arc's pieces. `y_k c` is formed exactly (double-double product) and
-//! the sums are double-double, so this is the relative form of [`crate::hysteresis`] (no
-//! cancellation of `+-y l` terms on small loops), evaluated in O(1) per cycle without keeping
-//! samples.
+//! from `y_k` the work is `s y_k c + sigma0 e` with `(c, e) = piece_terms(l)`. The sums over
+//! an arc's pieces ([`crate::arc_energy::Sums`]) give its work, stored-energy change,
+//! dissipation and closure gap in O(1) per cycle without keeping samples, each in the form
+//! that rounds least ([`crate::arc_energy`]).
 //!
 //! Sums are kept per stack segment, from one open reversal to the next (and from the top one
 //! to the current sample), never from the start of the history: the rounding of a sum then
@@ -23,66 +15,11 @@
 
 use super::engine::{Open, Track};
 use super::{CycleEnergy, HistoryEnergy};
+use crate::arc_energy::{arc_energy, Sums};
 use crate::error::HistoryError;
-use crate::hysteresis::{advance, piece_dissipation, piece_terms};
+use crate::hysteresis::advance;
 use crate::model::RateIndependent;
 use crate::numerics::DoubleDouble;
-
-/// Sums over a stretch of the history (see the module docs); `d` is the dissipation
-/// `(1/g0) integral y^2 drho`.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Sums {
-    s1: DoubleDouble,
-    s2: DoubleDouble,
-    s3: DoubleDouble,
-    s4: DoubleDouble,
-    d: DoubleDouble,
-}
-
-impl Sums {
-    /// Adds the piece of direction `s`, length `l` starting at `y`; returns its work and
-    /// dissipation.
-    #[inline]
-    fn add_piece(&mut self, model: RateIndependent, y: f64, s: f64, l: f64) -> (DoubleDouble, f64) {
-        let (c, e) = piece_terms(model, l);
-        let syc = DoubleDouble::product(s * y, c);
-        let d = piece_dissipation(model, y, s, l);
-        self.s1 = self.s1 + syc;
-        self.s2 = self.s2.add_f64(s * c);
-        self.s3 = self.s3.add_f64(e);
-        self.s4 = self.s4.add_f64(s * e);
-        self.d = self.d.add_f64(d);
-        (syc.add_f64(model.sigma0() * e), d)
-    }
-}
-
-impl std::ops::Add for Sums {
-    type Output = Self;
-    #[inline]
-    fn add(self, o: Self) -> Self {
-        Self {
-            s1: self.s1 + o.s1,
-            s2: self.s2 + o.s2,
-            s3: self.s3 + o.s3,
-            s4: self.s4 + o.s4,
-            d: self.d + o.d,
-        }
-    }
-}
-
-impl std::ops::Sub for Sums {
-    type Output = Self;
-    #[inline]
-    fn sub(self, o: Self) -> Self {
-        Self {
-            s1: self.s1 - o.s1,
-            s2: self.s2 - o.s2,
-            s3: self.s3 - o.s3,
-            s4: self.s4 - o.s4,
-            d: self.d - o.d,
-        }
-    }
-}
 
 /// `y*` at a sample and the sums from the reversal below it on the stack (for a stack entry)
 /// or from the top of the stack (for a sample of the current run).
@@ -233,13 +170,12 @@ impl Track for EnergyTrack {
         let y_end = advance(model, y_prev, s, l);
 
         let y_a = a.state.y;
-        let work = sums.s1.to_f64() - y_a * sums.s2.to_f64() + model.sigma0() * sums.s3.to_f64()
-            - model.a() * y_a * sums.s4.to_f64();
+        let e = arc_energy(model, &sums, y_a, y_end);
         let energy = CycleEnergy {
-            work,
-            stored_energy_change: (y_end - y_a) * (y_end + y_a) / (2.0 * model.sigma0()),
-            dissipation: sums.d.to_f64().max(0.0),
-            closure_gap: y_end - y_a,
+            work: e.work,
+            stored_energy_change: e.stored_energy_change,
+            dissipation: e.dissipation,
+            closure_gap: e.closure_gap,
             y_start: y_a,
             y_closure: y_end,
         };

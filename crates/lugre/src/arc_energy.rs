@@ -1,0 +1,182 @@
+//! Energies over a loop's arc, shared by periodic loops ([`crate::minor`]) and measured
+//! histories ([`crate::cycles`]): the work `W = integral y dpsi`, the stored-energy change
+//! `dV = (y_C^2 - y_A^2) / (2 sigma0)` and the dissipation `D = (1/g0) integral y^2 drho`,
+//! over an arc from `A` to `C` on which the input returns to its start (`u_C = u_A`).
+//!
+//! `W = dV + D` exactly, and `W` can be computed two ways whose rounding differs by orders of
+//! magnitude depending on the loop:
+//!
+//! * directly, as `integral (y - y_A) dpsi` (equal to `W` because `integral dpsi = 0`): per
+//!   piece `s (y_k - y_A) c + (sigma0 - s a y_A) e` with `(c, e) = (l phi(a l), l^2 h(a l))`.
+//!   Its terms are at most about `sigma0 L min(L, 2/a)` over an arc of length `L`: accurate for
+//!   loops narrower than `1/a` far from `y = 0`, where `D ~ |dV| >> W`;
+//! * as `dV + D`: its terms are `|dV|` and `D`: accurate in the elastic regime (`a L << 1`
+//!   near `y = 0`), where the direct terms `O(sigma0 L^2)` cancel down to `W = O(a sigma0 L^3)`.
+//!
+//! [`arc_energy`] returns the one with the smaller rounding bound. The closure gap
+//! `y_C - y_A` is `O(a)` on arcs shorter than `1/a`, so it is not taken as a difference there:
+//! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s sigma0 e)`, and the first terms add up
+//! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sigma0 sum s e)`.
+
+use crate::hysteresis::{piece_dissipation, piece_terms};
+use crate::model::RateIndependent;
+use crate::numerics::DoubleDouble;
+
+/// Running sums over pieces of an arc, in double-double. `y_k c` is formed exactly, so
+/// `s1 - y_A s2` is `sum s (y_k - y_A) c` up to one rounding of a small number.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Sums {
+    /// `sum s y_k c`
+    s1: DoubleDouble,
+    /// `sum s c`
+    s2: DoubleDouble,
+    /// `sum e`
+    s3: DoubleDouble,
+    /// `sum s e`
+    s4: DoubleDouble,
+    /// `sum y_k c`
+    s5: DoubleDouble,
+    /// `sum l`, the arc's length in rho.
+    length: DoubleDouble,
+    /// The dissipation `sum (1/g0) integral y^2 drho`.
+    d: DoubleDouble,
+}
+
+impl Sums {
+    /// Adds the piece of direction `s` and length `l` starting at `y`; returns its work
+    /// `integral y dpsi` and dissipation.
+    #[inline]
+    pub fn add_piece(
+        &mut self,
+        model: RateIndependent,
+        y: f64,
+        s: f64,
+        l: f64,
+    ) -> (DoubleDouble, f64) {
+        let (c, e) = piece_terms(model, l);
+        let yc = DoubleDouble::product(y, c);
+        let syc = if s > 0.0 { yc } else { -yc };
+        let d = piece_dissipation(model, y, s, l);
+        self.s1 = self.s1 + syc;
+        self.s2 = self.s2.add_f64(s * c);
+        self.s3 = self.s3.add_f64(e);
+        self.s4 = self.s4.add_f64(s * e);
+        self.s5 = self.s5 + yc;
+        self.length = self.length.add_f64(l);
+        self.d = self.d.add_f64(d);
+        (syc.add_f64(model.sigma0() * e), d)
+    }
+
+    /// The dissipation over the pieces added.
+    pub fn dissipation(&self) -> f64 {
+        self.d.to_f64().max(0.0)
+    }
+}
+
+impl std::ops::Add for Sums {
+    type Output = Self;
+    #[inline]
+    fn add(self, o: Self) -> Self {
+        Self {
+            s1: self.s1 + o.s1,
+            s2: self.s2 + o.s2,
+            s3: self.s3 + o.s3,
+            s4: self.s4 + o.s4,
+            s5: self.s5 + o.s5,
+            length: self.length + o.length,
+            d: self.d + o.d,
+        }
+    }
+}
+
+impl std::ops::Sub for Sums {
+    type Output = Self;
+    #[inline]
+    fn sub(self, o: Self) -> Self {
+        Self {
+            s1: self.s1 - o.s1,
+            s2: self.s2 - o.s2,
+            s3: self.s3 - o.s3,
+            s4: self.s4 - o.s4,
+            s5: self.s5 - o.s5,
+            length: self.length - o.length,
+            d: self.d - o.d,
+        }
+    }
+}
+
+/// The energies over an arc.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ArcEnergy {
+    pub work: f64,
+    pub stored_energy_change: f64,
+    pub dissipation: f64,
+    pub closure_gap: f64,
+}
+
+/// `y_C - y_A` over an arc of length `length` on which the input returns to its start, from
+/// the sums `y_k c` and `s e` over it (see the module docs), or as the plain difference on
+/// arcs longer than `1/a`, where the gap is not small and the difference is exact enough.
+#[inline]
+pub(crate) fn closure_gap(
+    model: RateIndependent,
+    length: f64,
+    sum_yc: f64,
+    sum_se: f64,
+    y_a: f64,
+    y_c: f64,
+) -> f64 {
+    if model.a() * length > 1.0 {
+        y_c - y_a
+    } else {
+        -model.a() * (sum_yc + model.sigma0() * sum_se)
+    }
+}
+
+/// `dV` from the gap and the two end values.
+#[inline]
+pub(crate) fn stored_energy_change(model: RateIndependent, gap: f64, y_a: f64, y_c: f64) -> f64 {
+    gap * (y_c + y_a) / (2.0 * model.sigma0())
+}
+
+/// `W` from whichever of its two forms rounds less (module docs), given `dV`, `D`, the arc's
+/// length and, when the pieces were summed, the direct form `integral (y - y_A) dpsi`.
+#[inline]
+pub(crate) fn best_work(
+    model: RateIndependent,
+    length: f64,
+    direct: Option<f64>,
+    stored_energy_change: f64,
+    dissipation: f64,
+) -> f64 {
+    let identity = stored_energy_change + dissipation;
+    match direct {
+        Some(w) => {
+            let direct_bound = model.sigma0() * length * length.min(2.0 / model.a());
+            let identity_bound = stored_energy_change.abs() + dissipation;
+            if direct_bound < identity_bound {
+                w
+            } else {
+                identity
+            }
+        }
+        None => identity,
+    }
+}
+
+/// Every energy of an arc from `A` (where `y = y_a`) to `C` (`y = y_c`) whose pieces were
+/// summed into `sums`.
+pub(crate) fn arc_energy(model: RateIndependent, sums: &Sums, y_a: f64, y_c: f64) -> ArcEnergy {
+    let length = sums.length.to_f64();
+    let gap = closure_gap(model, length, sums.s5.to_f64(), sums.s4.to_f64(), y_a, y_c);
+    let dv = stored_energy_change(model, gap, y_a, y_c);
+    let d = sums.dissipation();
+    let direct = sums.s1.to_f64() - y_a * sums.s2.to_f64() + model.sigma0() * sums.s3.to_f64()
+        - model.a() * y_a * sums.s4.to_f64();
+    ArcEnergy {
+        work: best_work(model, length, Some(direct), dv, d),
+        stored_energy_change: dv,
+        dissipation: d,
+        closure_gap: gap,
+    }
+}
