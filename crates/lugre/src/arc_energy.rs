@@ -139,8 +139,22 @@ pub(crate) fn stored_energy_change(model: RateIndependent, gap: f64, y_a: f64, y
     gap * (y_c + y_a) / (2.0 * model.sigma0())
 }
 
-/// `W` from whichever of its two forms rounds less (module docs), given `dV`, `D`, the arc's
-/// length and, when the pieces were summed, the direct form `integral (y - y_A) dpsi`.
+/// Whether the direct form of `W` rounds less than `dV + D` on an arc of length `length`
+/// (module docs): its terms are at most `sigma0 L min(L, 2/a)`, those of the identity
+/// `|dV| + D`.
+#[inline]
+pub(crate) fn direct_work_is_better(
+    model: RateIndependent,
+    length: f64,
+    stored_energy_change: f64,
+    dissipation: f64,
+) -> bool {
+    let direct_bound = model.sigma0() * length * length.min(2.0 / model.a());
+    direct_bound < stored_energy_change.abs() + dissipation
+}
+
+/// `W` from whichever of its two forms rounds less, given `dV`, `D`, the arc's length and,
+/// when the pieces were summed, the direct form `integral (y - y_A) dpsi`.
 #[inline]
 pub(crate) fn best_work(
     model: RateIndependent,
@@ -149,18 +163,9 @@ pub(crate) fn best_work(
     stored_energy_change: f64,
     dissipation: f64,
 ) -> f64 {
-    let identity = stored_energy_change + dissipation;
     match direct {
-        Some(w) => {
-            let direct_bound = model.sigma0() * length * length.min(2.0 / model.a());
-            let identity_bound = stored_energy_change.abs() + dissipation;
-            if direct_bound < identity_bound {
-                w
-            } else {
-                identity
-            }
-        }
-        None => identity,
+        Some(w) if direct_work_is_better(model, length, stored_energy_change, dissipation) => w,
+        _ => stored_energy_change + dissipation,
     }
 }
 

@@ -25,7 +25,7 @@
 //! from double-double prefix sums, and the work is taken from whichever of its two forms
 //! (`integral (y - y_A) dpsi` or `dV + D`) rounds less.
 
-use crate::arc_energy::{arc_energy, best_work, stored_energy_change, ArcEnergy};
+use crate::arc_energy::{arc_energy, direct_work_is_better, stored_energy_change, ArcEnergy};
 use crate::hysteresis::{HysteresisLoop, LoopPoint, Position};
 
 /// Minor loops whose arcs cross at most this many segments are summed piece by piece, which
@@ -206,20 +206,23 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             hl.position_point(pc),
         );
         let model = hl.model();
-        let energy = match hl.arc_sums(pa, pc, DIRECT_WORK_MAX_SEGMENTS) {
-            Some(sums) if i > 0 => arc_energy(model, &sums, start.y, end.y),
-            _ => {
-                // The major loop and long arcs: O(1) from the prefix sums.
-                let dissipation = hl.dissipation_between(pa, pc);
-                let closure_gap = hl.closure_gap(pa, pc);
-                let dv = stored_energy_change(model, closure_gap, start.y, end.y);
-                ArcEnergy {
-                    work: best_work(model, end.rho - start.rho, None, dv, dissipation),
-                    stored_energy_change: dv,
-                    dissipation,
-                    closure_gap,
-                }
-            }
+        // O(1) from the prefix sums; the arc is summed piece by piece only when the direct
+        // form of the work rounds less than dV + D (narrow loops far from y = 0).
+        let dissipation = hl.dissipation_between(pa, pc);
+        let closure_gap = hl.closure_gap(pa, pc);
+        let dv = stored_energy_change(model, closure_gap, start.y, end.y);
+        let length = end.rho - start.rho;
+        let energy = match (i > 0 && direct_work_is_better(model, length, dv, dissipation))
+            .then(|| hl.arc_sums(pa, pc, DIRECT_WORK_MAX_SEGMENTS))
+            .flatten()
+        {
+            Some(sums) => arc_energy(model, &sums, start.y, end.y),
+            None => ArcEnergy {
+                work: dv + dissipation,
+                stored_energy_change: dv,
+                dissipation,
+                closure_gap,
+            },
         };
         loops.push(Loop {
             kind: if i == 0 {
