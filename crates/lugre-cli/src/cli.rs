@@ -29,6 +29,9 @@ pub enum Command {
     /// Minor loops in a measured history: reversals, ASTM E1049 rainflow cycles, where each
     /// loop closes, and (with a model) the energy over each loop.
     Cycles(crate::cycles_cmd::CyclesArgs),
+    /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
+    /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
+    Simulate(crate::simulate_cmd::SimulateArgs),
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -125,7 +128,6 @@ impl ModelChoice {
     }
 
     /// The equivalent LuGre model (Dahl maps exactly).
-    #[allow(dead_code)] // used by `simulate`, in the works
     pub fn lugre(&self) -> LuGre {
         match self {
             ModelChoice::LuGre(m) => m.clone(),

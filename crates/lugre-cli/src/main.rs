@@ -11,6 +11,7 @@ mod json_out;
 mod loop_cmd;
 mod numbers;
 mod plot;
+mod simulate_cmd;
 
 use clap::Parser;
 use std::io::Write;
@@ -62,6 +63,7 @@ fn run(cli: cli::Cli) -> anyhow::Result<()> {
     match cli.command {
         cli::Command::Loop(args) => loop_cmd::run(&args),
         cli::Command::Cycles(args) => cycles_cmd::run(&args),
+        cli::Command::Simulate(args) => simulate_cmd::run(&args),
     }
 }
 

@@ -28,6 +28,7 @@ pub mod minor;
 pub mod model;
 pub mod numerics;
 pub mod prec;
+pub mod simulate;
 pub mod theorem_a;
 
 pub use cycles::{
@@ -39,6 +40,10 @@ pub use hysteresis::{HysteresisLoop, LoopPoint};
 pub use input::{Bimodal, TurningPoints};
 pub use minor::{minor_loops, Loop, LoopKind};
 pub use model::{Dahl, LuGre, LuGreParams, RateIndependent, Stribeck, VelocityFn, Viscous};
+pub use simulate::{
+    paper_example_1, Example1, Gamma, PiecewiseLinear, Sample, SimulateError, Simulator, Sine,
+    Tolerance, Trajectory,
+};
 pub use theorem_a::TheoremA;
 
 /// Any error of the library.
@@ -52,6 +57,8 @@ pub enum Error {
     Loop(#[from] LoopError),
     #[error(transparent)]
     History(#[from] HistoryError),
+    #[error(transparent)]
+    Simulate(#[from] SimulateError),
 }
 
 impl HysteresisLoop {

@@ -1,0 +1,502 @@
+//! `lugre simulate`: the response `y_gamma` of eq. 5 (`gamma = 1`: the model as given, eq. 1;
+//! `gamma = inf`: the rate-independent limit `y*_u`, eq. 6) from an initial state `x0`, over K
+//! periods of a periodic input (turning points at unit speed), sampled data (linear between
+//! samples) or a sine. Piecewise-linear inputs are solved exactly; a sine by the adaptive,
+//! L-stable integrator to `--tol` (exactly for `gamma = inf`). See `lugre::simulate`.
+//!
+//! Everything is computed and checked before anything is printed or written: an error leaves no
+//! half-written output.
+
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use lugre::simulate::{merge_times, uniform_times};
+use lugre::{Gamma, PiecewiseLinear, SimulateError, Simulator, Sine, Tolerance, Trajectory};
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use crate::atomic::write_atomic;
+use crate::cli::{ModelArgs, PeriodicInputArgs};
+use crate::fmt::sig;
+use crate::json_out::JsonOut;
+use crate::numbers::parse_list;
+
+/// Output times per period when none are asked for (piecewise-linear inputs also get their
+/// kinks; sampled data get exactly their samples).
+const DEFAULT_SAMPLES_PER_PERIOD: usize = 200;
+
+/// Rows of the table printed before the rest is summarised (all of it is in --json / --csv).
+const TABLE_HEAD: usize = 20;
+
+/// At most this many output rows (40 bytes each in memory, more as text).
+const MAX_ROWS: usize = 50_000_000;
+
+/// A run shorter than this shows no progress bar.
+const PROGRESS_AFTER: Duration = Duration::from_secs(1);
+
+#[derive(Args, Debug)]
+pub struct SimulateArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub input: PeriodicInputArgs,
+    /// A sine u(t) = A sin(2 pi t / T + PHASE) + OFFSET, A > 0, T > 0, PHASE in radians
+    /// (PHASE and OFFSET default to 0).
+    #[arg(
+        long,
+        value_name = "A,T[,PHASE[,OFFSET]]",
+        allow_hyphen_values = true,
+        help_heading = "Input"
+    )]
+    pub sine: Option<String>,
+    /// Slowness gamma of eq. 5 (the input runs as u(t / gamma) in physical time): a number > 0
+    /// (1 = the model as given, eq. 1) or 'inf' (the rate-independent limit y*_u, eq. 6).
+    #[arg(
+        long,
+        value_name = "G",
+        default_value = "1",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub gamma: String,
+    /// Number of periods K >= 1. An --input file is one period, repeated only if it ends where
+    /// it starts.
+    #[arg(
+        long,
+        value_name = "K",
+        default_value = "1",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub periods: String,
+    /// Initial state x0 = x(0) of eq. 1 (the bristle deflection [m]; for the Dahl model
+    /// w(0) / rho).
+    #[arg(
+        long,
+        value_name = "X",
+        default_value = "0",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub x0: String,
+    /// Relative tolerance of the adaptive integrator for --sine, in [1e-14, 1).
+    #[arg(
+        long,
+        value_name = "TOL",
+        default_value = "1e-10",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub tol: String,
+    /// Output at these times (eq. 5's time t: the period does not depend on gamma), strictly
+    /// increasing, within the K periods. At a kink the value just after it.
+    #[arg(
+        long,
+        value_name = "T1,T2,...",
+        allow_hyphen_values = true,
+        help_heading = "Output"
+    )]
+    pub times: Option<String>,
+    /// N >= 1 evenly spaced output times per period, both ends of the run included. Default:
+    /// the samples of an --input file; 200 per period plus every turning point otherwise.
+    #[arg(long, value_name = "N", help_heading = "Output")]
+    pub samples_per_period: Option<usize>,
+    /// Print {"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]} instead of the table.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// Write the columns t,u,z,dz,y to this CSV file.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
+    pub csv: Option<PathBuf>,
+}
+
+/// What drives the simulation.
+enum Drive {
+    /// Periodic turning points at unit speed.
+    TurningPoints(PiecewiseLinear),
+    /// Sampled data, linear between samples.
+    Samples(PiecewiseLinear),
+    Sine(Sine),
+}
+
+impl Drive {
+    /// `(start, period)`.
+    fn period(&self) -> (f64, f64) {
+        match self {
+            Drive::TurningPoints(pl) | Drive::Samples(pl) => (pl.times()[0], pl.period()),
+            Drive::Sine(s) => (0.0, s.period()),
+        }
+    }
+}
+
+pub fn run(args: &SimulateArgs) -> Result<()> {
+    let choice = args.model.build()?;
+    let model = choice.lugre();
+    let gamma = parse_gamma(&args.gamma)?;
+    let periods = parse_periods(&args.periods)?;
+    let x0 = parse_scalar("--x0", &args.x0)?;
+    let tol =
+        Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
+    let (drive, input_text) = build_drive(args)?;
+    let sim = Simulator::new(&model, gamma, x0).map_err(|e| anyhow!("--x0: {e}"))?;
+
+    let (start, period) = drive.period();
+    if args.times.is_some() && args.samples_per_period.is_some() {
+        bail!("give --times or --samples-per-period, not both");
+    }
+    let times: Option<Vec<f64>> = match (&args.times, args.samples_per_period) {
+        (Some(text), _) => Some(parse_list("--times", text)?),
+        (None, Some(0)) => bail!("--samples-per-period must be at least 1, got 0"),
+        (None, Some(n)) => {
+            check_rows(periods as usize * n + 1)?;
+            Some(uniform_times(start, period, periods, n))
+        }
+        (None, None) => match &drive {
+            Drive::Samples(_) => None,
+            Drive::TurningPoints(pl) => {
+                check_rows(periods as usize * (DEFAULT_SAMPLES_PER_PERIOD + pl.len()))?;
+                Some(merge_times(
+                    &uniform_times(start, period, periods, DEFAULT_SAMPLES_PER_PERIOD),
+                    &pl.knot_times(periods),
+                ))
+            }
+            Drive::Sine(_) => {
+                check_rows(periods as usize * DEFAULT_SAMPLES_PER_PERIOD + 1)?;
+                Some(uniform_times(
+                    start,
+                    period,
+                    periods,
+                    DEFAULT_SAMPLES_PER_PERIOD,
+                ))
+            }
+        },
+    };
+
+    if let (Drive::TurningPoints(pl) | Drive::Samples(pl), None) = (&drive, &times) {
+        check_rows((pl.len() - 1).saturating_mul(periods as usize) + 1)?;
+    }
+    let mut progress = Progress::new();
+    let mut out = Trajectory::default();
+    let result = {
+        let mut report = |fraction: f64| progress.update(fraction);
+        match (&drive, &times) {
+            (Drive::TurningPoints(pl) | Drive::Samples(pl), None) => {
+                sim.at_knots(pl, periods, &mut out, &mut report)
+            }
+            (Drive::TurningPoints(pl) | Drive::Samples(pl), Some(times)) => {
+                sim.at_times(pl, periods, times, &mut out, &mut report)
+            }
+            // A sine always has output times (the default is set above).
+            (Drive::Sine(sine), times) => sim.sine(
+                sine,
+                periods,
+                times.as_deref().unwrap_or_default(),
+                tol,
+                &mut out,
+                &mut report,
+            ),
+        }
+    };
+    progress.finish();
+    result.map_err(|e| match &e {
+        SimulateError::TimeOutOfRange { .. }
+        | SimulateError::TimesNotIncreasing { .. }
+        | SimulateError::TimeNotFinite { .. } => anyhow!("--times: {e}"),
+        SimulateError::NotClosed { .. } => anyhow!("--periods: {e}"),
+        _ => anyhow!("{e}"),
+    })?;
+
+    if let Some(path) = &args.csv {
+        write_atomic(path, |w| write_csv(w, &out))?;
+    }
+    let stdout = std::io::stdout();
+    if args.json {
+        let mut j = JsonOut::new(stdout.lock());
+        j.raw("{\"t\":")?;
+        j.array(&out.t)?;
+        j.raw(",\"u\":")?;
+        j.array(&out.u)?;
+        j.raw(",\"z\":")?;
+        j.array(&out.z)?;
+        j.raw(",\"dz\":")?;
+        j.array(&out.dz)?;
+        j.raw(",\"y\":")?;
+        j.array(&out.y)?;
+        j.raw("}\n")?;
+        j.finish()?;
+    } else {
+        let mut w = std::io::BufWriter::new(stdout.lock());
+        let summary = Summary {
+            model: &choice.describe(),
+            input: &input_text,
+            gamma,
+            periods,
+            period,
+            x0,
+            tol: matches!(drive, Drive::Sine(_)) && !gamma.is_infinite(),
+            tol_value: tol.value(),
+        };
+        print_table(&mut w, &summary, &out)?;
+        if let Some(path) = &args.csv {
+            writeln!(
+                w,
+                "\nWrote t,u,z,dz,y ({} rows) to {}",
+                out.len(),
+                path.display()
+            )?;
+        }
+        w.flush()?;
+    }
+    Ok(())
+}
+
+/// The input flag given (exactly one), with a description for the summary.
+fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
+    let mut given = args.input.given();
+    if args.sine.is_some() {
+        given.push("--sine");
+    }
+    if given.len() > 1 {
+        bail!("give one input, not {}", given.join(" and "));
+    }
+    if let Some(text) = &args.sine {
+        let v = parse_list("--sine", text)?;
+        if !(2..=4).contains(&v.len()) {
+            bail!(
+                "--sine takes A,T[,PHASE[,OFFSET]] (2 to 4 numbers), got {}",
+                v.len()
+            );
+        }
+        let sine = Sine::new(
+            v[0],
+            v[1],
+            v.get(2).copied().unwrap_or(0.0),
+            v.get(3).copied().unwrap_or(0.0),
+        )
+        .map_err(|e| anyhow!("--sine: {e}"))?;
+        let text = format!(
+            "sine u(t) = {} sin(2 pi t / {} + {}) + {}",
+            sig(sine.amplitude(), 10),
+            sig(sine.period(), 10),
+            sig(sine.phase(), 10),
+            sig(sine.offset(), 10)
+        );
+        return Ok((Drive::Sine(sine), text));
+    }
+    if let Some(path) = &args.input.input {
+        let series = crate::csv_in::read_series(path)?;
+        let Some(t) = series.t else {
+            bail!(
+                "{}: simulate needs the samples' times: a header 't,u' and two columns (a single column 'u' has no time)",
+                path.display()
+            );
+        };
+        let n = t.len();
+        let pl =
+            PiecewiseLinear::new(t, series.u).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        let text = format!(
+            "{} samples from {}, linear between samples, t in [{}, {}]",
+            n,
+            path.display(),
+            sig(pl.times()[0], 10),
+            sig(pl.times()[n - 1], 10)
+        );
+        return Ok((Drive::Samples(pl), text));
+    }
+    if given.is_empty() {
+        bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2, --input FILE.csv (t,u) or --sine A,T[,PHASE[,OFFSET]]");
+    }
+    let tp = args.input.build()?.turning_points();
+    let pl = PiecewiseLinear::from_turning_points(&tp, 1.0)?;
+    let values: Vec<String> = tp.values().iter().map(|&u| sig(u, 10)).collect();
+    let text = format!(
+        "turning points {} at unit speed (t = rho)",
+        if values.len() > 8 {
+            format!("{},... ({} in all)", values[..8].join(","), values.len())
+        } else {
+            values.join(",")
+        }
+    );
+    Ok((Drive::TurningPoints(pl), text))
+}
+
+fn parse_scalar(flag: &str, text: &str) -> Result<f64> {
+    let t = text.trim();
+    match t.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => bail!("{flag} must be a finite number, got '{t}'"),
+        Err(_) => bail!("{flag} must be a number, got '{t}'"),
+    }
+}
+
+/// A positive number or `inf`.
+fn parse_gamma(text: &str) -> Result<Gamma> {
+    let t = text.trim();
+    let value = match t.to_ascii_lowercase().as_str() {
+        "inf" | "+inf" | "infinity" | "+infinity" => f64::INFINITY,
+        _ => match t.parse::<f64>() {
+            Ok(v) if v.is_finite() => v,
+            _ => bail!("--gamma must be a number > 0 or 'inf', got '{t}'"),
+        },
+    };
+    Gamma::new(value).map_err(|e| anyhow!("--gamma: {e}"))
+}
+
+fn parse_periods(text: &str) -> Result<u32> {
+    let t = text.trim();
+    match t.parse::<i64>() {
+        Ok(k) if k >= 1 && k <= i64::from(u32::MAX) => Ok(k as u32),
+        Ok(k) if k < 1 => bail!("--periods must be at least 1, got {k}"),
+        _ => bail!(
+            "--periods must be a whole number from 1 to {}, got '{t}'",
+            u32::MAX
+        ),
+    }
+}
+
+fn check_rows(rows: usize) -> Result<()> {
+    if rows > MAX_ROWS {
+        bail!("the run would produce {rows} output rows (more than {MAX_ROWS}): lower --periods or --samples-per-period, or give --times");
+    }
+    Ok(())
+}
+
+fn write_csv(w: &mut dyn Write, out: &Trajectory) -> Result<()> {
+    let mut buf = zmij::Buffer::new();
+    let mut num = |w: &mut dyn Write, x: f64, end: u8| -> std::io::Result<()> {
+        let s = buf.format_finite(x);
+        w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
+        w.write_all(&[end])
+    };
+    writeln!(w, "t,u,z,dz,y")?;
+    for i in 0..out.len() {
+        num(w, out.t[i], b',')?;
+        num(w, out.u[i], b',')?;
+        num(w, out.z[i], b',')?;
+        num(w, out.dz[i], b',')?;
+        num(w, out.y[i], b'\n')?;
+    }
+    Ok(())
+}
+
+struct Summary<'a> {
+    model: &'a str,
+    input: &'a str,
+    gamma: Gamma,
+    periods: u32,
+    period: f64,
+    x0: f64,
+    tol: bool,
+    tol_value: f64,
+}
+
+fn print_table(w: &mut impl Write, s: &Summary, out: &Trajectory) -> Result<()> {
+    writeln!(w, "{}", s.model)?;
+    writeln!(w, "Input: {}", s.input)?;
+    let what = if s.gamma.is_infinite() {
+        "gamma = inf: the rate-independent limit y*_u (eq. 6)".to_string()
+    } else {
+        format!("gamma = {} (eq. 5)", sig(s.gamma.value(), 10))
+    };
+    writeln!(
+        w,
+        "{what}; period T = {}; {} period{}; x0 = {}{}",
+        sig(s.period, 10),
+        s.periods,
+        if s.periods == 1 { "" } else { "s" },
+        sig(s.x0, 10),
+        if s.tol {
+            format!("; adaptive integration to tol = {}", sig(s.tol_value, 3))
+        } else {
+            String::new()
+        }
+    )?;
+    let n = out.len();
+    if n == 0 {
+        return Ok(());
+    }
+    let (imin, imax) = (0..n).fold((0, 0), |(lo, hi), i| {
+        (
+            if out.y[i] < out.y[lo] { i } else { lo },
+            if out.y[i] > out.y[hi] { i } else { hi },
+        )
+    });
+    writeln!(
+        w,
+        "{} rows, t from {} to {} (at a kink: the value just after it); y from {} (t = {}) to {} (t = {}); y at the end {}",
+        n,
+        sig(out.t[0], 10),
+        sig(out.t[n - 1], 10),
+        sig(out.y[imin], 10),
+        sig(out.t[imin], 10),
+        sig(out.y[imax], 10),
+        sig(out.t[imax], 10),
+        sig(out.y[n - 1], 10),
+    )?;
+    writeln!(
+        w,
+        "\n{:>16} {:>16} {:>16} {:>16} {:>16}",
+        "t", "u", "z", "z'", "y"
+    )?;
+    for i in 0..n.min(TABLE_HEAD) {
+        writeln!(
+            w,
+            "{:>16} {:>16} {:>16} {:>16} {:>16}",
+            sig(out.t[i], 10),
+            sig(out.u[i], 10),
+            sig(out.z[i], 10),
+            sig(out.dz[i], 10),
+            sig(out.y[i], 10)
+        )?;
+    }
+    if n > TABLE_HEAD {
+        writeln!(
+            w,
+            "{:>16} ... {} more rows: use --json or --csv FILE to get all",
+            "",
+            n - TABLE_HEAD
+        )?;
+    }
+    Ok(())
+}
+
+/// A progress bar on stderr, shown only for runs longer than [`PROGRESS_AFTER`] and only when
+/// stderr is a terminal.
+struct Progress {
+    start: Instant,
+    terminal: bool,
+    bar: Option<indicatif::ProgressBar>,
+}
+
+impl Progress {
+    fn new() -> Self {
+        Self {
+            start: Instant::now(),
+            terminal: std::io::stderr().is_terminal(),
+            bar: None,
+        }
+    }
+
+    fn update(&mut self, fraction: f64) {
+        if !self.terminal {
+            return;
+        }
+        if self.bar.is_none() && self.start.elapsed() >= PROGRESS_AFTER {
+            let bar = indicatif::ProgressBar::new(1000);
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "simulating {bar:40} {percent:>3}% ({elapsed} elapsed, about {eta} left)",
+            ) {
+                bar.set_style(style);
+            }
+            self.bar = Some(bar);
+        }
+        if let Some(bar) = &self.bar {
+            bar.set_position((fraction.clamp(0.0, 1.0) * 1000.0) as u64);
+        }
+    }
+
+    fn finish(&mut self) {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+    }
+}
