@@ -22,16 +22,21 @@ pub struct Stribeck {
     fs: f64,
     vs: f64,
     beta: f64,
+    /// `1 / vs`: `g` is evaluated once per sample in simulations, where a division costs.
+    #[serde(skip)]
+    inv_vs: f64,
 }
 
 impl Stribeck {
     /// Validated: `Fc, Fs, vs, beta` finite and `> 0`.
     pub fn new(fc: f64, fs: f64, vs: f64, beta: f64) -> Result<Self, ModelError> {
+        let vs = check_positive("vs", vs)?;
         Ok(Self {
             fc: check_positive("fc", fc)?,
             fs: check_positive("fs", fs)?,
-            vs: check_positive("vs", vs)?,
+            vs,
             beta: check_positive("beta", beta)?,
+            inv_vs: 1.0 / vs,
         })
     }
 
@@ -52,7 +57,7 @@ impl Stribeck {
 impl VelocityFn for Stribeck {
     #[inline]
     fn eval(&self, v: f64) -> f64 {
-        let r = (v / self.vs).abs();
+        let r = (v * self.inv_vs).abs();
         // exp(-r^beta) with the common exponents done without powf.
         let e = if self.beta == 1.0 {
             (-r).exp()

@@ -44,6 +44,8 @@ pub struct Simulator<'m, G = Stribeck, F = Viscous> {
     gamma: Gamma,
     x0: f64,
     sigma0: f64,
+    /// `1 / sigma0`.
+    inv_sigma0: f64,
     /// `1 / gamma` (0 in the limit).
     pub(super) inv_gamma: f64,
     /// `sigma1 / gamma` (0 in the limit).
@@ -80,6 +82,7 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
             gamma,
             x0,
             sigma0,
+            inv_sigma0: 1.0 / sigma0,
             inv_gamma: gamma.inverse(),
             sigma1_over_gamma: model.sigma1() * gamma.inverse(),
         })
@@ -100,13 +103,13 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         let v = du / dt;
         let w = v * self.inv_gamma;
         let g = self.model.g(w);
-        let sigma0_over_g = self.sigma0 / g;
+        // One division per sample for both sigma0 / g and g / sigma0.
+        let sigma0_over_g = self.sigma0 * (1.0 / g);
         Segment {
             v,
             k: sigma0_over_g * v.abs(),
             c: sigma0_over_g * du.abs(),
-            // A second division, but off the critical path (it overlaps the exponential).
-            z_inf: (g / self.sigma0).copysign(du),
+            z_inf: (g * self.inv_sigma0).copysign(du),
             f: self.model.f(w),
         }
     }
