@@ -1,6 +1,36 @@
 #!/usr/bin/env bash
 # Every test of the project, on a fresh machine: installs what it needs, then runs the suites.
+#
+#   1. the Rust tests of every crate except the Python extension module (it takes its
+#      symbols from the interpreter that imports it, so it has no Rust test harness);
+#   2. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
+#      and pytest, the package built from crates/lugre-py and installed into it, its pytest
+#      suite.
+#
+# Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy and
+# pytest from PyPI. Re-runs reuse the environment and cargo's build cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-cargo test --workspace
+cargo test --workspace --exclude lugre-py
+
+venv=${LUGRE_VENV:-.venv}
+case "$venv" in /*) ;; *) venv="$PWD/$venv" ;; esac
+if ! "$venv/bin/python" -c 'import sys' 2>/dev/null; then
+    if [ -e "$venv" ] && [ ! -f "$venv/pyvenv.cfg" ]; then
+        echo "scripts/test.sh: $venv exists and is not a virtual environment" >&2
+        exit 1
+    fi
+    "${PYTHON:-python3}" -m venv --clear "$venv"
+fi
+# The environment's tools first on PATH: maturin's build backend runs the `maturin` it installed.
+export VIRTUAL_ENV="$venv"
+export PATH="$VIRTUAL_ENV/bin:$PATH"
+py="$VIRTUAL_ENV/bin/python"
+pip=("$py" -m pip install --quiet --disable-pip-version-check)
+"${pip[@]}" 'maturin==1.16.*' numpy pytest
+# The venv's maturin builds the wheel (no isolated build environment to download each time);
+# cargo rebuilds only what changed.
+"${pip[@]}" --no-build-isolation --force-reinstall --no-deps ./crates/lugre-py
+# pytest exits non-zero (5) when it collects no test, so an empty run fails here too.
+"$py" -m pytest -q -p no:cacheprovider crates/lugre-py/tests

@@ -351,20 +351,35 @@ impl HysteresisLoop {
         (k, (r - self.rho[k]).max(0.0))
     }
 
-    /// The normalized input `psi_u(rho)` (eq. 12), periodic in `rho`.
+    /// The normalized input `psi_u(rho)` (eq. 12), periodic in `rho`; NaN for a non-finite
+    /// `rho`.
     pub fn psi_at(&self, rho: f64) -> f64 {
+        if !rho.is_finite() {
+            return f64::NAN;
+        }
         let (k, l) = self.locate(rho);
         self.u[k] + self.direction(k) * l
     }
 
-    /// `y°(rho)`, periodic in `rho`.
+    /// `y°(rho)`, periodic in `rho`; NaN for a non-finite `rho`.
     pub fn y_at(&self, rho: f64) -> f64 {
+        if !rho.is_finite() {
+            return f64::NAN;
+        }
         let (k, l) = self.locate(rho);
         self.advance(self.y[k], k, l)
     }
 
-    /// `(rho, psi_u(rho), y°(rho))` with `rho` as given (not reduced).
+    /// `(rho, psi_u(rho), y°(rho))` with `rho` as given (not reduced); NaN for a non-finite
+    /// `rho`.
     pub fn point_at(&self, rho: f64) -> LoopPoint {
+        if !rho.is_finite() {
+            return LoopPoint {
+                rho,
+                u: f64::NAN,
+                y: f64::NAN,
+            };
+        }
         let (k, l) = self.locate(rho);
         LoopPoint {
             rho,

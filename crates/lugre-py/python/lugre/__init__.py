@@ -1,0 +1,45 @@
+"""lugre: hysteresis loops and minor loops of the LuGre and Dahl friction models.
+
+Exact and numerically stable at any stiffness, after Ikhouane, Mañosa and Pujol, "Minor loops
+of the Dahl and LuGre models". The computations are the Rust library's (crate ``lugre``); this
+package converts numpy arrays in and out.
+
+>>> import lugre
+>>> model = lugre.LuGre(sigma0=6)                 # the paper's Example 4
+>>> hl = model.loop_bimodal(0, 0.5, 1, 1.5)      # umin1, umin2, umax1, umax2
+>>> hl.theorem_a.minor_loop                      # the minor loop [rho_1, rho_5]
+(1.0, 2.0)
+>>> [l.kind for l in hl.loops]
+['major', 'minor']
+>>> rho, u, y = hl.sample(1001)                  # the loop, for plotting y against u
+>>> r = model.simulate([0, 1, 0.5, 1.5], gamma=10, periods=3)   # eq. 5: t, u, z, dz, y
+>>> c = lugre.cycles([-2, 1, -3, 5, -1, 3, -4, 4, -2])        # rainflow cycles of a history
+
+Models: LuGre(sigma0=1, sigma1=1, sigma2=0, fc=1, fs=2, vs=1, beta=1) and Dahl(rho=1, fc=1)
+(keyword arguments; the defaults are the paper's). Invalid values raise ValueError with the
+message the ``lugre`` command prints; arguments of the wrong type raise TypeError.
+"""
+
+from ._lugre import (
+    Curve,
+    Dahl,
+    HysteresisLoop,
+    Loop,
+    LoopPoint,
+    LuGre,
+    TheoremA,
+    __version__,
+    cycles,
+)
+
+__all__ = [
+    "Curve",
+    "Dahl",
+    "HysteresisLoop",
+    "Loop",
+    "LoopPoint",
+    "LuGre",
+    "TheoremA",
+    "__version__",
+    "cycles",
+]

@@ -1,0 +1,27 @@
+//! The Python package `lugre`: the LuGre and Dahl hysteresis engine of the `lugre` crate,
+//! from numpy. Every number comes from the core library; this crate only converts arguments
+//! and results and maps the core's errors to Python exceptions (`ValueError` with the message
+//! the `lugre` command prints, `TypeError` for arguments of the wrong type).
+
+mod convert;
+mod cycles;
+mod loops;
+mod models;
+mod simulate;
+
+use pyo3::prelude::*;
+
+/// The compiled core of the `lugre` package (import `lugre`, not this module).
+#[pymodule]
+fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<models::PyLuGre>()?;
+    m.add_class::<models::PyDahl>()?;
+    m.add_class::<loops::PyHysteresisLoop>()?;
+    m.add_class::<loops::PyLoop>()?;
+    m.add_class::<loops::PyLoopPoint>()?;
+    m.add_class::<loops::PyTheoremA>()?;
+    m.add_class::<loops::PyCurve>()?;
+    m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
+    Ok(())
+}

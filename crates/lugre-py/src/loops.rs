@@ -1,0 +1,537 @@
+//! `lugre.HysteresisLoop` and what it reports: `Loop`, `LoopPoint`, `TheoremA`, `Curve`.
+
+use std::sync::OnceLock;
+
+use pyo3::exceptions::{PyIndexError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple};
+
+use crate::convert::{
+    count, float_repr, floats, list_repr, map_floats, try_vec, value_error, vec_out,
+};
+use crate::models::reals;
+
+/// The hysteresis loop y° of a model for one periodic input (the rate-independent limit,
+/// paper eqs. 8-10), with all its minor loops and their energies.
+///
+/// Made by LuGre.loop / Dahl.loop (turning points) or LuGre.loop_bimodal /
+/// Dahl.loop_bimodal. `rho` is the normalized variable (the input's variation, eq. 7): the
+/// input runs at unit speed in rho between turning points, rho = 0 at the first turning
+/// point, and the loop is periodic in rho with period `period`.
+///
+/// Attributes: rho, u, y (float64 arrays at the turning points), period, work_per_period,
+/// model, theorem_a (bimodal inputs; None otherwise), loops.
+/// Methods: y_at(rho), u_at(rho), sample(n).
+#[pyclass(frozen, module = "lugre", name = "HysteresisLoop")]
+pub struct PyHysteresisLoop {
+    hl: lugre::HysteresisLoop,
+    model: Py<PyAny>,
+    theorem_a: Option<lugre::TheoremA>,
+    loops: OnceLock<Vec<lugre::Loop>>,
+}
+
+/// `f(r)` for a finite `r`, NaN otherwise (a NaN or infinite rho has no place on the loop).
+#[inline]
+fn finite_or_nan(r: f64, f: impl Fn(f64) -> f64) -> f64 {
+    if r.is_finite() {
+        f(r)
+    } else {
+        f64::NAN
+    }
+}
+
+impl PyHysteresisLoop {
+    fn build(
+        py: Python<'_>,
+        model_obj: &Bound<'_, PyAny>,
+        model: lugre::RateIndependent,
+        tp: &lugre::TurningPoints,
+        bimodal: Option<lugre::Bimodal>,
+        input_name: &str,
+    ) -> PyResult<Self> {
+        let hl = py
+            .detach(|| {
+                let hl = lugre::HysteresisLoop::new(model, tp)?;
+                hl.check_finite().map_err(lugre::Error::from)?;
+                Ok::<_, lugre::Error>(hl)
+            })
+            .map_err(|e| match e {
+                lugre::Error::Input(e) => PyValueError::new_err(format!("{input_name}{e}")),
+                e => value_error(e),
+            })?;
+        let theorem_a = bimodal.map(|b| lugre::TheoremA::new(&b, &hl));
+        Ok(Self {
+            hl,
+            model: model_obj.clone().unbind(),
+            theorem_a,
+            loops: OnceLock::new(),
+        })
+    }
+
+    pub fn from_turning_points(
+        model_obj: &Bound<'_, PyAny>,
+        model: lugre::RateIndependent,
+        turning_points: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let py = model_obj.py();
+        let u = floats(turning_points, "turning_points")?
+            .one_dimensional("turning_points", turning_points)?;
+        let tp = py
+            .detach(|| lugre::TurningPoints::new(&u))
+            .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
+        Self::build(py, model_obj, model, &tp, None, "turning_points: ")
+    }
+
+    pub fn from_bimodal(
+        model_obj: &Bound<'_, PyAny>,
+        model: lugre::RateIndependent,
+        corners: [&Bound<'_, PyAny>; 4],
+    ) -> PyResult<Self> {
+        let py = model_obj.py();
+        let [umin1, umin2, umax1, umax2] = reals(corners, ["umin1", "umin2", "umax1", "umax2"])?;
+        let b = lugre::Bimodal::new(umin1, umin2, umax1, umax2).map_err(value_error)?;
+        Self::build(py, model_obj, model, &b.turning_points(), Some(b), "")
+    }
+
+    fn rust_loops(&self, py: Python<'_>) -> &[lugre::Loop] {
+        if self.loops.get().is_none() {
+            let computed = py.detach(|| self.hl.loops());
+            let _ = self.loops.set(computed);
+        }
+        self.loops.get().expect("set above")
+    }
+}
+
+#[pymethods]
+impl PyHysteresisLoop {
+    /// rho at the turning points (float64 array, from 0).
+    #[getter]
+    fn rho<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        vec_out(py, self.hl.turning_rho().to_vec())
+    }
+
+    /// The turning points u_k in the loop's order (float64 array; the first is at rho = 0).
+    #[getter]
+    fn u<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        vec_out(py, self.hl.turning_points().to_vec())
+    }
+
+    /// y° at the turning points (float64 array).
+    #[getter]
+    fn y<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        vec_out(py, self.hl.turning_y().to_vec())
+    }
+
+    /// The period P in rho: the total variation of the input over one period.
+    #[getter]
+    fn period(&self) -> f64 {
+        self.hl.period()
+    }
+
+    /// The work of the friction force over one period, integral of y° du: the energy
+    /// dissipated per cycle.
+    #[getter]
+    fn work_per_period(&self) -> f64 {
+        self.hl.work_per_period()
+    }
+
+    /// g(0) of the model: |y°| < g0.
+    #[getter]
+    fn g0(&self) -> f64 {
+        self.hl.model().g0()
+    }
+
+    /// a = sigma0 / g(0).
+    #[getter]
+    fn a(&self) -> f64 {
+        self.hl.model().a()
+    }
+
+    /// The model (LuGre or Dahl) this loop was computed for.
+    #[getter]
+    fn model(&self, py: Python<'_>) -> Py<PyAny> {
+        self.model.clone_ref(py)
+    }
+
+    /// Theorem A for a bimodal input (LuGre.loop_bimodal): rho_0..rho_5, y° there and the
+    /// minor loop [rho_1, rho_5]. None for other inputs.
+    #[getter]
+    fn theorem_a(&self) -> Option<PyTheoremA> {
+        self.theorem_a.map(|inner| PyTheoremA { inner })
+    }
+
+    /// Every loop: [0] is the major loop (the whole period, starting at a global maximum),
+    /// then the minor loops ordered by where their arcs start (a parent before its children).
+    /// Each is a Loop with kind, start, reversal, end, work, stored_energy_change,
+    /// dissipation, closure_gap, parent and depth.
+    #[getter]
+    fn loops<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        let loops = self.rust_loops(py);
+        PyList::new(py, loops.iter().map(|l| PyLoop { inner: l.clone() }))
+    }
+
+    /// y°(rho), elementwise and periodic in rho: a float for a number, a float64 array of the
+    /// same shape for any array-like (list, tuple, numpy array of any real dtype, contiguous
+    /// or not). NaN where rho is NaN or infinite.
+    #[pyo3(signature = (rho))]
+    fn y_at<'py>(&self, rho: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        map_floats(rho, "rho", |r| finite_or_nan(r, |r| self.hl.y_at(r)))
+    }
+
+    /// The normalized input psi_u(rho) (eq. 12), elementwise and periodic in rho (a float or a
+    /// float64 array, like y_at).
+    #[pyo3(signature = (rho))]
+    fn u_at<'py>(&self, rho: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        map_floats(rho, "rho", |r| finite_or_nan(r, |r| self.hl.psi_at(r)))
+    }
+
+    /// n >= 2 points evenly spaced over one period, both ends included (rho = 0 and rho =
+    /// period). Returns a Curve with float64 arrays rho, u, y; it unpacks as
+    /// `rho, u, y = hl.sample(1001)`.
+    #[pyo3(signature = (n=None), text_signature = "($self, n=1001)")]
+    fn sample(&self, py: Python<'_>, n: Option<&Bound<'_, PyAny>>) -> PyResult<PyCurve> {
+        let n = match n {
+            Some(n) if !n.is_none() => count(n, "n")?,
+            _ => 1001,
+        };
+        if n < 2 {
+            return Err(PyValueError::new_err(format!(
+                "n must be at least 2 (both ends of the period are included), got {n}"
+            )));
+        }
+        let n = usize::try_from(n)
+            .map_err(|_| PyValueError::new_err(format!("n is too large, got {n}")))?;
+        // Fail with MemoryError, not an abort, when the result cannot be held.
+        drop(try_vec::<lugre::LoopPoint>(n)?);
+        let mut rho = try_vec(n)?;
+        let mut u = try_vec(n)?;
+        let mut y = try_vec(n)?;
+        py.detach(|| {
+            for p in self.hl.sample(n) {
+                rho.push(p.rho);
+                u.push(p.u);
+                y.push(p.y);
+            }
+        });
+        Ok(PyCurve {
+            rho: vec_out(py, rho).unbind(),
+            u: vec_out(py, u).unbind(),
+            y: vec_out(py, y).unbind(),
+        })
+    }
+
+    /// Number of turning points in one period.
+    fn __len__(&self) -> usize {
+        self.hl.len()
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        Ok(format!(
+            "HysteresisLoop(model={}, turning_points={}, period={}, work_per_period={}, loops={})",
+            self.model.bind(py).repr()?,
+            list_repr(py, self.hl.turning_points(), 8),
+            float_repr(py, self.hl.period()),
+            float_repr(py, self.hl.work_per_period()),
+            self.rust_loops(py).len()
+        ))
+    }
+
+    fn __traverse__(&self, visit: pyo3::PyVisit<'_>) -> Result<(), pyo3::PyTraverseError> {
+        visit.call(&self.model)
+    }
+}
+
+/// A point of the loop: rho, the input u = psi_u(rho) and the output y = y°(rho). Unpacks as
+/// `rho, u, y = point`.
+#[pyclass(frozen, eq, module = "lugre", name = "LoopPoint")]
+#[derive(Clone, PartialEq)]
+pub struct PyLoopPoint {
+    inner: lugre::LoopPoint,
+}
+
+#[pymethods]
+impl PyLoopPoint {
+    #[getter]
+    fn rho(&self) -> f64 {
+        self.inner.rho
+    }
+    #[getter]
+    fn u(&self) -> f64 {
+        self.inner.u
+    }
+    #[getter]
+    fn y(&self) -> f64 {
+        self.inner.y
+    }
+
+    fn __len__(&self) -> usize {
+        3
+    }
+
+    fn __getitem__(&self, i: isize) -> PyResult<f64> {
+        let p = self.inner;
+        match i {
+            0 | -3 => Ok(p.rho),
+            1 | -2 => Ok(p.u),
+            2 | -1 => Ok(p.y),
+            _ => Err(PyIndexError::new_err("LoopPoint index out of range")),
+        }
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let p = self.inner;
+        format!(
+            "LoopPoint(rho={}, u={}, y={})",
+            float_repr(py, p.rho),
+            float_repr(py, p.u),
+            float_repr(py, p.y)
+        )
+    }
+
+    /// {"rho": ..., "u": ..., "y": ...}
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        point_dict(py, &self.inner)
+    }
+}
+
+fn point_dict<'py>(py: Python<'py>, p: &lugre::LoopPoint) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("rho", p.rho)?;
+    d.set_item("u", p.u)?;
+    d.set_item("y", p.y)?;
+    Ok(d)
+}
+
+/// One loop of the hysteresis curve: the arc from `start` (rho_A) through the reversal
+/// `reversal` (rho_B) to `end` (rho_C, where the input first returns to u_A), with the
+/// energy over the arc.
+///
+/// kind: "major" (the whole period) or "minor"; work: W = integral of y° du over the arc
+/// (nested loops included); stored_energy_change: dV = (y_C^2 - y_A^2) / (2 sigma0);
+/// dissipation: D = W - dV >= 0; closure_gap: y_C - y_A (minor loops do not close in
+/// general); parent: index in HysteresisLoop.loops of the smallest loop containing this one
+/// (None for the major loop); depth: 0 for the major loop, parent's depth + 1 otherwise.
+#[pyclass(frozen, module = "lugre", name = "Loop")]
+pub struct PyLoop {
+    inner: lugre::Loop,
+}
+
+#[pymethods]
+impl PyLoop {
+    /// "major" or "minor".
+    #[getter]
+    fn kind(&self) -> &'static str {
+        match self.inner.kind {
+            lugre::LoopKind::Major => "major",
+            lugre::LoopKind::Minor => "minor",
+        }
+    }
+    /// Where the arc starts (rho_A, in [0, period)).
+    #[getter]
+    fn start(&self) -> PyLoopPoint {
+        PyLoopPoint {
+            inner: self.inner.start,
+        }
+    }
+    /// The reversal the loop turns at (rho_B).
+    #[getter]
+    fn reversal(&self) -> PyLoopPoint {
+        PyLoopPoint {
+            inner: self.inner.reversal,
+        }
+    }
+    /// Where the input first returns to u_A (rho_C; may exceed the period when the arc wraps).
+    #[getter]
+    fn end(&self) -> PyLoopPoint {
+        PyLoopPoint {
+            inner: self.inner.end,
+        }
+    }
+    /// W = integral of y° du over the arc, nested loops included.
+    #[getter]
+    fn work(&self) -> f64 {
+        self.inner.work
+    }
+    /// dV = (y_C^2 - y_A^2) / (2 sigma0), the change of the energy stored in the bristles.
+    #[getter]
+    fn stored_energy_change(&self) -> f64 {
+        self.inner.stored_energy_change
+    }
+    /// D = W - dV = (1/g0) integral of y°^2 drho >= 0.
+    #[getter]
+    fn dissipation(&self) -> f64 {
+        self.inner.dissipation
+    }
+    /// y_C - y_A.
+    #[getter]
+    fn closure_gap(&self) -> f64 {
+        self.inner.closure_gap
+    }
+    /// Index of the smallest loop containing this one (None for the major loop).
+    #[getter]
+    fn parent(&self) -> Option<usize> {
+        self.inner.parent
+    }
+    /// 0 for the major loop, parent's depth + 1 otherwise.
+    #[getter]
+    fn depth(&self) -> usize {
+        self.inner.depth
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let l = &self.inner;
+        let f = |v| float_repr(py, v);
+        let parent = l.parent.map_or("None".to_string(), |p| p.to_string());
+        let point =
+            |p: &lugre::LoopPoint| format!("(rho={}, u={}, y={})", f(p.rho), f(p.u), f(p.y));
+        format!(
+            "Loop(kind='{}', depth={}, parent={}, start={}, reversal={}, end={}, work={}, \
+             stored_energy_change={}, dissipation={}, closure_gap={})",
+            self.kind(),
+            l.depth,
+            parent,
+            point(&l.start),
+            point(&l.reversal),
+            point(&l.end),
+            f(l.work),
+            f(l.stored_energy_change),
+            f(l.dissipation),
+            f(l.closure_gap)
+        )
+    }
+
+    /// The loop as a dict, with the keys of `lugre loop --json` (start, reversal and end as
+    /// dicts {"rho", "u", "y"}).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let l = &self.inner;
+        let d = PyDict::new(py);
+        d.set_item("kind", self.kind())?;
+        d.set_item("start", point_dict(py, &l.start)?)?;
+        d.set_item("reversal", point_dict(py, &l.reversal)?)?;
+        d.set_item("end", point_dict(py, &l.end)?)?;
+        d.set_item("work", l.work)?;
+        d.set_item("stored_energy_change", l.stored_energy_change)?;
+        d.set_item("dissipation", l.dissipation)?;
+        d.set_item("closure_gap", l.closure_gap)?;
+        d.set_item("parent", l.parent)?;
+        d.set_item("depth", l.depth)?;
+        Ok(d)
+    }
+}
+
+/// Theorem A for a bimodal input: rho_0..rho_5 (the turning points at rho_0..rho_3, the
+/// period rho_4, and rho_5 where the input first returns to umax1), y° at each, and the minor
+/// loop [rho_1, rho_5]. print() shows them as a table.
+#[pyclass(frozen, module = "lugre", name = "TheoremA")]
+pub struct PyTheoremA {
+    inner: lugre::TheoremA,
+}
+
+#[pymethods]
+impl PyTheoremA {
+    /// rho_0..rho_5 (float64 array of 6).
+    #[getter]
+    fn rho<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        vec_out(py, self.inner.rho.to_vec())
+    }
+    /// y°(rho_0)..y°(rho_5) (float64 array of 6).
+    #[getter]
+    fn y<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        vec_out(py, self.inner.y.to_vec())
+    }
+    /// The minor loop's arc (rho_1, rho_5).
+    #[getter]
+    fn minor_loop(&self) -> (f64, f64) {
+        (self.inner.minor_loop[0], self.inner.minor_loop[1])
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "TheoremA(rho={}, y={}, minor_loop=({}, {}))",
+            list_repr(py, &self.inner.rho, 6),
+            list_repr(py, &self.inner.y, 6),
+            float_repr(py, self.inner.minor_loop[0]),
+            float_repr(py, self.inner.minor_loop[1])
+        )
+    }
+
+    fn __str__(&self, py: Python<'_>) -> String {
+        let t = &self.inner;
+        let mut s = String::from("Theorem A (bimodal input)\n");
+        s.push_str(&format!(
+            "{:>7}  {:>24}  {:>24}\n",
+            "i", "rho_i", "y°(rho_i)"
+        ));
+        for i in 0..6 {
+            s.push_str(&format!(
+                "{:>7}  {:>24}  {:>24}\n",
+                format!("rho_{i}"),
+                float_repr(py, t.rho[i]),
+                float_repr(py, t.y[i])
+            ));
+        }
+        s.push_str(&format!(
+            "minor loop: rho in [rho_1, rho_5] = [{}, {}]",
+            float_repr(py, t.minor_loop[0]),
+            float_repr(py, t.minor_loop[1])
+        ));
+        s
+    }
+
+    /// {"rho": [...6], "y": [...6], "minor_loop": [rho_1, rho_5]} (lists of floats, as in
+    /// `lugre loop --json`).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("rho", self.inner.rho.to_vec())?;
+        d.set_item("y", self.inner.y.to_vec())?;
+        d.set_item("minor_loop", self.inner.minor_loop.to_vec())?;
+        Ok(d)
+    }
+}
+
+/// Points of the loop: float64 arrays rho, u (= psi_u(rho)) and y (= y°(rho)). Unpacks as
+/// `rho, u, y = curve`.
+#[pyclass(frozen, module = "lugre", name = "Curve")]
+pub struct PyCurve {
+    rho: Py<PyAny>,
+    u: Py<PyAny>,
+    y: Py<PyAny>,
+}
+
+#[pymethods]
+impl PyCurve {
+    #[getter]
+    fn rho(&self, py: Python<'_>) -> Py<PyAny> {
+        self.rho.clone_ref(py)
+    }
+    #[getter]
+    fn u(&self, py: Python<'_>) -> Py<PyAny> {
+        self.u.clone_ref(py)
+    }
+    #[getter]
+    fn y(&self, py: Python<'_>) -> Py<PyAny> {
+        self.y.clone_ref(py)
+    }
+
+    fn __iter__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let t = PyTuple::new(
+            py,
+            [
+                self.rho.clone_ref(py),
+                self.u.clone_ref(py),
+                self.y.clone_ref(py),
+            ],
+        )?;
+        t.try_iter().map(|i| i.into_any())
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        Ok(format!("Curve(n={})", self.rho.bind(py).len()?))
+    }
+
+    fn __traverse__(&self, visit: pyo3::PyVisit<'_>) -> Result<(), pyo3::PyTraverseError> {
+        visit.call(&self.rho)?;
+        visit.call(&self.u)?;
+        visit.call(&self.y)
+    }
+}

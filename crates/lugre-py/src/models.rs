@@ -1,0 +1,398 @@
+//! `lugre.LuGre` and `lugre.Dahl`: validated models and what is computed from them.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+use crate::convert::{float_repr, map_floats, real, real_or, value_error};
+use crate::loops::PyHysteresisLoop;
+use crate::simulate::{simulate, SimulateArgs};
+
+/// The LuGre friction model (paper eq. 1) with the Stribeck curve and viscous friction.
+///
+///     x' = -sigma0 |u'| / g(u') x + u'
+///     F  =  sigma0 x + sigma1 x' + f(u')
+///     g(v) = fc + (fs - fc) exp(-|v / vs|^beta)       f(v) = sigma2 v
+///
+/// Keyword arguments; the defaults are the paper's Examples 2-3: sigma0 = 1 (bristle
+/// stiffness, > 0), sigma1 = 1 (micro-damping, >= 0), sigma2 = 0 (viscous coefficient, >= 0),
+/// fc = 1 (Coulomb force, > 0), fs = 2 (stiction force, > 0; g(0) = fs), vs = 1 (Stribeck
+/// velocity, > 0), beta = 1 (Stribeck exponent, > 0). An invalid value raises ValueError with
+/// the message the `lugre` command prints, e.g. "sigma0 must be > 0, got 0".
+///
+/// The hysteresis loop depends only on sigma0 and g(0) = fs (a = sigma0 / g(0)).
+///
+/// >>> import lugre
+/// >>> hl = lugre.LuGre(sigma0=6).loop_bimodal(0, 0.5, 1, 1.5)   # the paper's Example 4
+/// >>> hl.theorem_a.minor_loop
+/// (1.0, 2.0)
+#[pyclass(frozen, eq, module = "lugre", name = "LuGre")]
+#[derive(Clone, PartialEq)]
+pub struct PyLuGre {
+    pub inner: lugre::LuGre,
+}
+
+#[pymethods]
+impl PyLuGre {
+    #[new]
+    #[pyo3(
+        signature = (*, sigma0=None, sigma1=None, sigma2=None, fc=None, fs=None, vs=None, beta=None),
+        text_signature = "(*, sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        sigma0: Option<&Bound<'_, PyAny>>,
+        sigma1: Option<&Bound<'_, PyAny>>,
+        sigma2: Option<&Bound<'_, PyAny>>,
+        fc: Option<&Bound<'_, PyAny>>,
+        fs: Option<&Bound<'_, PyAny>>,
+        vs: Option<&Bound<'_, PyAny>>,
+        beta: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let d = lugre::LuGreParams::default();
+        let p = lugre::LuGreParams {
+            sigma0: real_or(sigma0, "sigma0", d.sigma0)?,
+            sigma1: real_or(sigma1, "sigma1", d.sigma1)?,
+            sigma2: real_or(sigma2, "sigma2", d.sigma2)?,
+            fc: real_or(fc, "fc", d.fc)?,
+            fs: real_or(fs, "fs", d.fs)?,
+            vs: real_or(vs, "vs", d.vs)?,
+            beta: real_or(beta, "beta", d.beta)?,
+        };
+        Ok(Self {
+            inner: lugre::LuGre::from_params(p).map_err(value_error)?,
+        })
+    }
+
+    /// Bristle stiffness sigma0 > 0.
+    #[getter]
+    fn sigma0(&self) -> f64 {
+        self.inner.sigma0()
+    }
+    /// Micro-damping sigma1 >= 0.
+    #[getter]
+    fn sigma1(&self) -> f64 {
+        self.inner.sigma1()
+    }
+    /// Viscous coefficient sigma2 >= 0: f(v) = sigma2 v.
+    #[getter]
+    fn sigma2(&self) -> f64 {
+        self.inner.params().sigma2
+    }
+    /// Coulomb force fc > 0.
+    #[getter]
+    fn fc(&self) -> f64 {
+        self.inner.params().fc
+    }
+    /// Stiction force fs > 0 (g(0) = fs).
+    #[getter]
+    fn fs(&self) -> f64 {
+        self.inner.params().fs
+    }
+    /// Stribeck velocity vs > 0.
+    #[getter]
+    fn vs(&self) -> f64 {
+        self.inner.params().vs
+    }
+    /// Stribeck exponent beta > 0.
+    #[getter]
+    fn beta(&self) -> f64 {
+        self.inner.params().beta
+    }
+    /// g(0), the force the hysteresis loop saturates to.
+    #[getter]
+    fn g0(&self) -> f64 {
+        self.inner.g0()
+    }
+    /// a = sigma0 / g(0), the inverse length over which the loop relaxes.
+    #[getter]
+    fn a(&self) -> f64 {
+        self.inner.rate_independent().a()
+    }
+
+    /// The Stribeck curve g(v) = fc + (fs - fc) exp(-|v / vs|^beta), elementwise: a float for
+    /// a number, a float64 array of the same shape for an array-like.
+    #[pyo3(signature = (v))]
+    fn g<'py>(&self, v: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        map_floats(v, "v", |x| self.inner.g(x))
+    }
+
+    /// The viscous friction f(v) = sigma2 v, elementwise (a float or a float64 array).
+    #[pyo3(signature = (v))]
+    fn f<'py>(&self, v: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        map_floats(v, "v", |x| self.inner.f(x))
+    }
+
+    /// The hysteresis loop y° (the periodic steady state for infinitely slow inputs, eqs.
+    /// 8-10) for one period of a periodic input given by its turning points, e.g.
+    /// [0, 1, 0.2, 1.5] (any sequence or array of real numbers; repeated values, a closing
+    /// value equal to the first and values the input passes through without reversing are
+    /// dropped, so one period of samples works too). Returns a HysteresisLoop.
+    #[pyo3(signature = (turning_points))]
+    fn r#loop(
+        slf: &Bound<'_, Self>,
+        turning_points: &Bound<'_, PyAny>,
+    ) -> PyResult<PyHysteresisLoop> {
+        let model = slf.get().inner.rate_independent();
+        PyHysteresisLoop::from_turning_points(slf.as_any(), model, turning_points)
+    }
+
+    /// The hysteresis loop of the paper's bimodal input (Definition 1): turning points
+    /// visited umin1 -> umax1 -> umin2 -> umax2, with umin1 <= umin2 < umax1 <= umax2 (not
+    /// both equalities). The result's `theorem_a` holds Theorem A's rho_0..rho_5, y° there
+    /// and the minor loop [rho_1, rho_5].
+    #[pyo3(signature = (umin1, umin2, umax1, umax2))]
+    fn loop_bimodal(
+        slf: &Bound<'_, Self>,
+        umin1: &Bound<'_, PyAny>,
+        umin2: &Bound<'_, PyAny>,
+        umax1: &Bound<'_, PyAny>,
+        umax2: &Bound<'_, PyAny>,
+    ) -> PyResult<PyHysteresisLoop> {
+        let model = slf.get().inner.rate_independent();
+        PyHysteresisLoop::from_bimodal(slf.as_any(), model, [umin1, umin2, umax1, umax2])
+    }
+
+    /// The response to a slow input (paper eq. 5) from the initial state x0, at slowness
+    /// gamma (gamma = 1 is eq. 1 itself; gamma = math.inf is the rate-independent limit y*,
+    /// eq. 6). Exactly one input:
+    ///
+    /// * turning_points: a periodic input through these values at unit speed (time = rho, as
+    ///   in the paper's Examples 2-4), repeated over `periods` periods;
+    /// * t, u: samples, linear in between (exact at any stiffness); with periods > 1 the
+    ///   samples must end where they start;
+    /// * sine=(A, T[, phase[, offset]]): u(t) = A sin(2 pi t / T + phase) + offset, from
+    ///   t = 0 (an adaptive L-stable integrator with relative tolerance `tol`).
+    ///
+    /// Output at `times` (strictly increasing, inside the simulated interval), or at
+    /// `samples_per_period` evenly spaced times per period, or else at every knot of a
+    /// piecewise-linear input (1000 samples per period for a sine). t is eq. 5's time: the
+    /// input's period does not depend on gamma. Where u' jumps, y is the value just after.
+    ///
+    /// Returns a dict of float64 arrays of equal length: t, u, z (the state), dz (z') and
+    /// y (the friction force y_gamma). Invalid arguments raise ValueError (with the message
+    /// of `lugre simulate`) or TypeError.
+    #[pyo3(
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None),
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        turning_points: Option<&Bound<'py, PyAny>>,
+        t: Option<&Bound<'py, PyAny>>,
+        u: Option<&Bound<'py, PyAny>>,
+        sine: Option<&Bound<'py, PyAny>>,
+        gamma: Option<&Bound<'py, PyAny>>,
+        periods: Option<&Bound<'py, PyAny>>,
+        x0: Option<&Bound<'py, PyAny>>,
+        times: Option<&Bound<'py, PyAny>>,
+        samples_per_period: Option<&Bound<'py, PyAny>>,
+        tol: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let args = SimulateArgs {
+            turning_points,
+            t,
+            u,
+            sine,
+            gamma,
+            periods,
+            x0,
+            times,
+            samples_per_period,
+            tol,
+        };
+        simulate(py, &self.inner, args)
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        let p = self.inner.params();
+        let f = |v| float_repr(py, v);
+        format!(
+            "LuGre(sigma0={}, sigma1={}, sigma2={}, fc={}, fs={}, vs={}, beta={})",
+            f(p.sigma0),
+            f(p.sigma1),
+            f(p.sigma2),
+            f(p.fc),
+            f(p.fs),
+            f(p.vs),
+            f(p.beta)
+        )
+    }
+
+    /// The model's parameters as a dict (keyword arguments of the constructor).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let p = self.inner.params();
+        let d = PyDict::new(py);
+        d.set_item("sigma0", p.sigma0)?;
+        d.set_item("sigma1", p.sigma1)?;
+        d.set_item("sigma2", p.sigma2)?;
+        d.set_item("fc", p.fc)?;
+        d.set_item("fs", p.fs)?;
+        d.set_item("vs", p.vs)?;
+        d.set_item("beta", p.beta)?;
+        Ok(d)
+    }
+
+    /// Pickling and copying: the constructor's keyword arguments.
+    fn __getnewargs_ex__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
+        Ok((PyTuple::empty(py), self.to_dict(py)?))
+    }
+}
+
+/// The Dahl friction model: w' = rho (u' - |u'| w), y = fc w.
+///
+/// It is the LuGre model with g = fc, sigma0 = rho fc, sigma1 = 0 and f = 0. Keyword
+/// arguments rho = 1 (> 0) and fc = 1 (> 0); an invalid value raises ValueError with the
+/// message the `lugre` command prints.
+#[pyclass(frozen, eq, module = "lugre", name = "Dahl")]
+#[derive(Clone, PartialEq)]
+pub struct PyDahl {
+    pub inner: lugre::Dahl,
+}
+
+#[pymethods]
+impl PyDahl {
+    #[new]
+    #[pyo3(signature = (*, rho=None, fc=None), text_signature = "(*, rho=1.0, fc=1.0)")]
+    fn new(rho: Option<&Bound<'_, PyAny>>, fc: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+        let rho = real_or(rho, "rho", 1.0)?;
+        let fc = real_or(fc, "fc", 1.0)?;
+        Ok(Self {
+            inner: lugre::Dahl::new(rho, fc).map_err(value_error)?,
+        })
+    }
+
+    /// The Dahl parameter rho > 0.
+    #[getter]
+    fn rho(&self) -> f64 {
+        self.inner.rho()
+    }
+    /// Coulomb force fc > 0.
+    #[getter]
+    fn fc(&self) -> f64 {
+        self.inner.fc()
+    }
+    /// sigma0 = rho fc, the stiffness of the equivalent LuGre model.
+    #[getter]
+    fn sigma0(&self) -> f64 {
+        self.inner.rate_independent().sigma0()
+    }
+    /// g(0) = fc.
+    #[getter]
+    fn g0(&self) -> f64 {
+        self.inner.rate_independent().g0()
+    }
+    /// a = sigma0 / g(0) = rho.
+    #[getter]
+    fn a(&self) -> f64 {
+        self.inner.rate_independent().a()
+    }
+
+    /// The equivalent LuGre model (g = fc, sigma0 = rho fc, sigma1 = sigma2 = 0).
+    fn to_lugre(&self) -> PyLuGre {
+        PyLuGre {
+            inner: self.inner.to_lugre(),
+        }
+    }
+
+    /// The hysteresis loop for one period of a periodic input given by its turning points
+    /// (see LuGre.loop).
+    #[pyo3(signature = (turning_points))]
+    fn r#loop(
+        slf: &Bound<'_, Self>,
+        turning_points: &Bound<'_, PyAny>,
+    ) -> PyResult<PyHysteresisLoop> {
+        let model = slf.get().inner.rate_independent();
+        PyHysteresisLoop::from_turning_points(slf.as_any(), model, turning_points)
+    }
+
+    /// The hysteresis loop of the paper's bimodal input, with Theorem A (see
+    /// LuGre.loop_bimodal).
+    #[pyo3(signature = (umin1, umin2, umax1, umax2))]
+    fn loop_bimodal(
+        slf: &Bound<'_, Self>,
+        umin1: &Bound<'_, PyAny>,
+        umin2: &Bound<'_, PyAny>,
+        umax1: &Bound<'_, PyAny>,
+        umax2: &Bound<'_, PyAny>,
+    ) -> PyResult<PyHysteresisLoop> {
+        let model = slf.get().inner.rate_independent();
+        PyHysteresisLoop::from_bimodal(slf.as_any(), model, [umin1, umin2, umax1, umax2])
+    }
+
+    /// The response to a slow input (paper eq. 5) of the equivalent LuGre model (see
+    /// LuGre.simulate): a dict of float64 arrays t, u, z, dz, y.
+    #[pyo3(
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None),
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10)"
+    )]
+    #[allow(clippy::too_many_arguments)]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        turning_points: Option<&Bound<'py, PyAny>>,
+        t: Option<&Bound<'py, PyAny>>,
+        u: Option<&Bound<'py, PyAny>>,
+        sine: Option<&Bound<'py, PyAny>>,
+        gamma: Option<&Bound<'py, PyAny>>,
+        periods: Option<&Bound<'py, PyAny>>,
+        x0: Option<&Bound<'py, PyAny>>,
+        times: Option<&Bound<'py, PyAny>>,
+        samples_per_period: Option<&Bound<'py, PyAny>>,
+        tol: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let args = SimulateArgs {
+            turning_points,
+            t,
+            u,
+            sine,
+            gamma,
+            periods,
+            x0,
+            times,
+            samples_per_period,
+            tol,
+        };
+        simulate(py, &self.inner.to_lugre(), args)
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "Dahl(rho={}, fc={})",
+            float_repr(py, self.inner.rho()),
+            float_repr(py, self.inner.fc())
+        )
+    }
+
+    /// The model's parameters as a dict (keyword arguments of the constructor).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("rho", self.inner.rho())?;
+        d.set_item("fc", self.inner.fc())?;
+        Ok(d)
+    }
+
+    /// Pickling and copying: the constructor's keyword arguments.
+    fn __getnewargs_ex__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
+        Ok((PyTuple::empty(py), self.to_dict(py)?))
+    }
+}
+
+/// Real-number arguments by name (a helper for the bimodal corners).
+pub fn reals<const N: usize>(
+    values: [&Bound<'_, PyAny>; N],
+    names: [&str; N],
+) -> PyResult<[f64; N]> {
+    let mut out = [0.0; N];
+    for i in 0..N {
+        out[i] = real(values[i], names[i])?;
+    }
+    Ok(out)
+}

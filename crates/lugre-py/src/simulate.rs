@@ -1,0 +1,236 @@
+//! `LuGre.simulate` / `Dahl.simulate`: the finite-rate response of eq. 5 (core
+//! `lugre::simulate`), as a dict of float64 arrays `t, u, z, dz, y`.
+
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::convert::{count, floats, real, try_vec, type_name, value_error, vec_out};
+
+/// Samples of the sine input per period when neither `times` nor `samples_per_period` is given.
+pub const DEFAULT_SINE_SAMPLES_PER_PERIOD: usize = 1000;
+
+/// The input of a simulation, as given.
+enum Input {
+    Knots(lugre::PiecewiseLinear),
+    Sine(lugre::Sine),
+}
+
+/// Where the output is wanted.
+enum Output {
+    Knots,
+    Times(Vec<f64>),
+    PerPeriod(usize),
+}
+
+/// The arguments of `simulate`, as Python objects (`None` when not given).
+pub struct SimulateArgs<'a, 'py> {
+    pub turning_points: Option<&'a Bound<'py, PyAny>>,
+    pub t: Option<&'a Bound<'py, PyAny>>,
+    pub u: Option<&'a Bound<'py, PyAny>>,
+    pub sine: Option<&'a Bound<'py, PyAny>>,
+    pub gamma: Option<&'a Bound<'py, PyAny>>,
+    pub periods: Option<&'a Bound<'py, PyAny>>,
+    pub x0: Option<&'a Bound<'py, PyAny>>,
+    pub times: Option<&'a Bound<'py, PyAny>>,
+    pub samples_per_period: Option<&'a Bound<'py, PyAny>>,
+    pub tol: Option<&'a Bound<'py, PyAny>>,
+}
+
+fn given<'a, 'py>(o: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
+    o.filter(|o| !o.is_none())
+}
+
+fn sine_arg(obj: &Bound<'_, PyAny>) -> PyResult<lugre::Sine> {
+    let bad_type = || {
+        PyTypeError::new_err(format!(
+            "sine must be a tuple (A, T[, phase[, offset]]) of real numbers, got {}",
+            type_name(obj)
+        ))
+    };
+    if obj.is_instance_of::<pyo3::types::PyString>() {
+        return Err(bad_type());
+    }
+    let items: Vec<Bound<'_, PyAny>> = obj
+        .try_iter()
+        .map_err(|_| bad_type())?
+        .collect::<PyResult<_>>()?;
+    if !(2..=4).contains(&items.len()) {
+        return Err(PyValueError::new_err(format!(
+            "sine takes 2 to 4 numbers (A, T[, phase[, offset]]), got {}",
+            items.len()
+        )));
+    }
+    let names = [
+        "sine amplitude A",
+        "sine period T",
+        "sine phase",
+        "sine offset",
+    ];
+    let mut v = [0.0; 4];
+    for (i, item) in items.iter().enumerate() {
+        v[i] = real(item, names[i])?;
+    }
+    lugre::Sine::new(v[0], v[1], v[2], v[3]).map_err(value_error)
+}
+
+fn one_dimensional(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
+    floats(obj, name)?.one_dimensional(name, obj)
+}
+
+/// Runs eq. 5 for `model` as `args` ask, detached from the interpreter.
+pub fn simulate<'py>(
+    py: Python<'py>,
+    model: &lugre::LuGre,
+    args: SimulateArgs<'_, 'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let mut inputs = Vec::new();
+    if given(args.turning_points).is_some() {
+        inputs.push("turning_points");
+    }
+    if given(args.t).is_some() || given(args.u).is_some() {
+        inputs.push("t, u");
+    }
+    if given(args.sine).is_some() {
+        inputs.push("sine");
+    }
+    match inputs.len() {
+        0 => {
+            return Err(PyValueError::new_err(
+                "no input: give turning_points, t and u, or sine=(A, T[, phase[, offset]])",
+            ))
+        }
+        1 => {}
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "give one input, not {}",
+                inputs.join(" and ")
+            )))
+        }
+    }
+
+    let input = if let Some(tp) = given(args.turning_points) {
+        let values = one_dimensional(tp, "turning_points")?;
+        let tp = lugre::TurningPoints::new(&values)
+            .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
+        Input::Knots(lugre::PiecewiseLinear::from_turning_points(&tp, 1.0).map_err(value_error)?)
+    } else if let Some(sine) = given(args.sine) {
+        Input::Sine(sine_arg(sine)?)
+    } else {
+        let (Some(t), Some(u)) = (given(args.t), given(args.u)) else {
+            return Err(PyValueError::new_err(
+                "a sampled input needs both t and u (arrays of equal length)",
+            ));
+        };
+        let t = one_dimensional(t, "t")?;
+        let u = one_dimensional(u, "u")?;
+        Input::Knots(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
+    };
+
+    let gamma = match given(args.gamma) {
+        Some(g) => real(g, "gamma")?,
+        None => 1.0,
+    };
+    let gamma = lugre::Gamma::new(gamma).map_err(value_error)?;
+    let periods = match given(args.periods) {
+        Some(p) => count(p, "periods")?,
+        None => 1,
+    };
+    let periods = u32::try_from(periods).map_err(|_| {
+        PyValueError::new_err(format!(
+            "periods must be at most {}, got {periods}",
+            u32::MAX
+        ))
+    })?;
+    let x0 = match given(args.x0) {
+        Some(x) => real(x, "x0")?,
+        None => 0.0,
+    };
+    let tol = match given(args.tol) {
+        Some(t) => lugre::Tolerance::new(real(t, "tol")?).map_err(value_error)?,
+        None => lugre::Tolerance::DEFAULT,
+    };
+    let output = match (given(args.times), given(args.samples_per_period)) {
+        (Some(_), Some(_)) => {
+            return Err(PyValueError::new_err(
+                "give times or samples_per_period, not both",
+            ))
+        }
+        (Some(times), None) => Output::Times(one_dimensional(times, "times")?),
+        (None, Some(n)) => {
+            let n = count(n, "samples_per_period")?;
+            if n < 1 {
+                return Err(PyValueError::new_err(format!(
+                    "samples_per_period must be at least 1, got {n}"
+                )));
+            }
+            Output::PerPeriod(usize::try_from(n).map_err(|_| {
+                PyValueError::new_err(format!("samples_per_period is too large, got {n}"))
+            })?)
+        }
+        (None, None) => match input {
+            Input::Knots(_) => Output::Knots,
+            Input::Sine(_) => Output::PerPeriod(DEFAULT_SINE_SAMPLES_PER_PERIOD),
+        },
+    };
+
+    // The number of output samples, checked against the memory there is before the core
+    // allocates (a failed allocation there would abort the interpreter).
+    let samples = match (&output, &input) {
+        (Output::Times(t), _) => Some(t.len()),
+        (Output::PerPeriod(n), _) => (periods as usize)
+            .checked_mul(*n)
+            .and_then(|s| s.checked_add(1)),
+        (Output::Knots, Input::Knots(pl)) => (pl.len() - 1)
+            .checked_mul(periods as usize)
+            .and_then(|s| s.checked_add(1)),
+        (Output::Knots, Input::Sine(_)) => unreachable!("a sine has an output grid"),
+    };
+    match samples {
+        Some(n) => drop(try_vec::<[f64; 6]>(n)?),
+        None => {
+            return Err(pyo3::exceptions::PyMemoryError::new_err(
+                "the requested output has more samples than can be held",
+            ))
+        }
+    }
+
+    let simulator = lugre::Simulator::new(model, gamma, x0).map_err(value_error)?;
+    let trajectory = py
+        .detach(|| {
+            let mut out = lugre::Trajectory::default();
+            let mut progress = |_: f64| {};
+            match (&input, &output) {
+                (Input::Knots(pl), Output::Knots) => {
+                    simulator.at_knots(pl, periods, &mut out, &mut progress)?
+                }
+                (Input::Knots(pl), Output::Times(times)) => {
+                    simulator.at_times(pl, periods, times, &mut out, &mut progress)?
+                }
+                (Input::Knots(pl), Output::PerPeriod(n)) => {
+                    let times =
+                        lugre::simulate::uniform_times(pl.times()[0], pl.period(), periods, *n);
+                    simulator.at_times(pl, periods, &times, &mut out, &mut progress)?
+                }
+                (Input::Sine(s), Output::Times(times)) => {
+                    simulator.sine(s, periods, times, tol, &mut out, &mut progress)?
+                }
+                (Input::Sine(s), Output::PerPeriod(n)) => {
+                    let times = lugre::simulate::uniform_times(0.0, s.period(), periods, *n);
+                    simulator.sine(s, periods, &times, tol, &mut out, &mut progress)?
+                }
+                (Input::Sine(_), Output::Knots) => unreachable!("a sine has an output grid"),
+            }
+            Ok::<_, lugre::SimulateError>(out)
+        })
+        .map_err(value_error)?;
+
+    let d = PyDict::new(py);
+    let lugre::Trajectory { t, u, z, dz, y } = trajectory;
+    d.set_item("t", vec_out(py, t))?;
+    d.set_item("u", vec_out(py, u))?;
+    d.set_item("z", vec_out(py, z))?;
+    d.set_item("dz", vec_out(py, dz))?;
+    d.set_item("y", vec_out(py, y))?;
+    Ok(d)
+}
