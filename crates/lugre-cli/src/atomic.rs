@@ -5,19 +5,6 @@ use anyhow::{Context, Result};
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-/// Writes `path` atomically by letting `fill` write a temporary path next to it (for encoders
-/// that want a path rather than a writer).
-pub fn write_atomic_path(path: &Path, fill: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
-    let tmp = temporary_sibling(path)?;
-    let result = fill(&tmp).and_then(|()| {
-        std::fs::rename(&tmp, path).with_context(|| format!("cannot write '{}'", path.display()))
-    });
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
-}
-
 /// `.NAME.tmp-PID` in the same directory as `path` (so the rename is atomic).
 fn temporary_sibling(path: &Path) -> Result<std::path::PathBuf> {
     let dir = match path.parent() {

@@ -32,6 +32,10 @@ pub enum Command {
     /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
     /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
     Simulate(crate::simulate_cmd::SimulateArgs),
+    /// Redraw the paper's Figures 3-17 (SVG, PNG, the CSV of every curve) and write
+    /// index.html: every figure with its caption, each example's loop numbers, and the errata
+    /// of Theorem A.
+    Paper(crate::paper::PaperArgs),
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]

@@ -394,7 +394,7 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
 }
 
 /// `(u, y°)` along the arc `[rho0, rho1]`: evenly spaced points and the turning points inside.
-fn arc_points(hl: &HysteresisLoop, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
+pub(crate) fn arc_points(hl: &HysteresisLoop, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
     let mut rhos: Vec<f64> = (0..=POINTS_PER_ARC)
         .map(|i| rho0 + (rho1 - rho0) * (i as f64 / POINTS_PER_ARC as f64))
         .collect();

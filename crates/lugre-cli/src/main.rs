@@ -10,6 +10,8 @@ mod fmt;
 mod json_out;
 mod loop_cmd;
 mod numbers;
+mod paper;
+mod paper_html;
 mod plot;
 mod simulate_cmd;
 
@@ -64,6 +66,7 @@ fn run(cli: cli::Cli) -> anyhow::Result<()> {
         cli::Command::Loop(args) => loop_cmd::run(&args),
         cli::Command::Cycles(args) => cycles_cmd::run(&args),
         cli::Command::Simulate(args) => simulate_cmd::run(&args),
+        cli::Command::Paper(args) => paper::run(&args),
     }
 }
 

@@ -20,6 +20,7 @@ use crate::cli::{ModelArgs, PeriodicInputArgs};
 use crate::fmt::sig;
 use crate::json_out::JsonOut;
 use crate::numbers::parse_list;
+use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
 /// Output times per period when none are asked for (piecewise-linear inputs also get their
 /// kinks; sampled data get exactly their samples).
@@ -107,6 +108,10 @@ pub struct SimulateArgs {
     /// Write the columns t,u,z,dz,y to this CSV file.
     #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
     pub csv: Option<PathBuf>,
+    /// Draw the response to an SVG or PNG file: y against t (left panel) and y against u
+    /// (right panel), side by side.
+    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
+    pub plot: Option<PathBuf>,
 }
 
 /// What drives the simulation.
@@ -137,6 +142,10 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     let tol =
         Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
     let (drive, input_text) = build_drive(args)?;
+    if let Some(path) = &args.plot {
+        // Before a possibly long run, not after it.
+        crate::plot::check_path(path)?;
+    }
     let sim = Simulator::new(&model, gamma, x0).map_err(|e| anyhow!("--x0: {e}"))?;
 
     let (start, period) = drive.period();
@@ -208,6 +217,14 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     if let Some(path) = &args.csv {
         write_atomic(path, |w| write_csv(w, &out))?;
     }
+    if let Some(path) = &args.plot {
+        let what = if gamma.is_infinite() {
+            "y⋆ᵤ (γ = ∞)".to_string()
+        } else {
+            format!("γ = {}", sig(gamma.value(), 6))
+        };
+        response_figure(&out, &what).save(path)?;
+    }
     let stdout = std::io::stdout();
     if args.json {
         let mut j = JsonOut::new(stdout.lock());
@@ -243,6 +260,9 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
                 out.len(),
                 path.display()
             )?;
+        }
+        if let Some(path) = &args.plot {
+            writeln!(w, "Drew y against t and y against u to {}", path.display())?;
         }
         w.flush()?;
     }
@@ -317,6 +337,60 @@ fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
         }
     );
     Ok((Drive::TurningPoints(pl), text))
+}
+
+/// Points drawn per panel at most: beyond this, buckets of consecutive samples are reduced to
+/// their first, lowest, highest and last points (in order), which keeps every peak and jump a
+/// plot can show at its resolution.
+const MAX_DRAWN_BUCKETS: usize = 20_000;
+
+/// The response as two panels: y against t, and y against u.
+fn response_figure(out: &Trajectory, what: &str) -> Panels {
+    let keep = envelope_indices(&out.y, MAX_DRAWN_BUCKETS);
+    let pick = |x: &[f64]| -> Vec<(f64, f64)> { keep.iter().map(|&i| (x[i], out.y[i])).collect() };
+    let time = Figure::new("time t", "output y")
+        .title(format!("y against t, {what}"))
+        .curve(Curve::new(pick(&out.t), LineStyle::Solid, BLUE));
+    let input = Figure::new("input u", "output y")
+        .title(format!("y against u, {what}"))
+        .curve(Curve::new(pick(&out.u), LineStyle::Solid, BLUE));
+    Panels {
+        title: None,
+        panels: vec![time, input],
+        cols: 2,
+        size: (1600, 650),
+    }
+}
+
+/// Indices of the samples to draw: all of them when there are at most `4 buckets`, else per
+/// bucket of consecutive samples the first, the lowest, the highest and the last of `y`.
+fn envelope_indices(y: &[f64], buckets: usize) -> Vec<usize> {
+    let n = y.len();
+    if n <= 4 * buckets {
+        return (0..n).collect();
+    }
+    let size = n.div_ceil(buckets);
+    let mut keep = Vec::with_capacity(4 * buckets);
+    for start in (0..n).step_by(size) {
+        let end = (start + size).min(n);
+        let (mut lo, mut hi) = (start, start);
+        for i in start..end {
+            if y[i] < y[lo] {
+                lo = i;
+            }
+            if y[i] > y[hi] {
+                hi = i;
+            }
+        }
+        let mut four = [start, lo, hi, end - 1];
+        four.sort_unstable();
+        for i in four {
+            if keep.last() != Some(&i) {
+                keep.push(i);
+            }
+        }
+    }
+    keep
 }
 
 fn parse_scalar(flag: &str, text: &str) -> Result<f64> {
@@ -498,5 +572,25 @@ impl Progress {
         if let Some(bar) = self.bar.take() {
             bar.finish_and_clear();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_drawn_envelope_keeps_every_extreme_in_order() {
+        let y: Vec<f64> = (0..100_000)
+            .map(|i| ((i as f64) * 0.01).sin() + if i == 54_321 { 5.0 } else { 0.0 })
+            .collect();
+        let keep = envelope_indices(&y, 1000);
+        assert!(keep.len() <= 4000 && keep.len() > 1000);
+        assert!(keep.windows(2).all(|w| w[0] < w[1]));
+        assert!(keep.contains(&54_321) && keep[0] == 0 && keep[keep.len() - 1] == 99_999);
+        assert_eq!(
+            envelope_indices(&y[..10], 1000),
+            (0..10).collect::<Vec<_>>()
+        );
     }
 }

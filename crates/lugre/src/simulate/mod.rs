@@ -338,7 +338,10 @@ pub(crate) fn check_output_times(times: &[f64], start: f64, end: f64) -> Result<
                 value,
             });
         }
-        if value < start || value > end {
+        // The run's end is computed (e.g. 3 x 4.6 = 13.799999999999999): a time the user wrote
+        // as the end is within a few ulps of it and belongs to the run.
+        let slack = 8.0 * f64::EPSILON * start.abs().max(end.abs()).max(end - start);
+        if value < start - slack || value > end + slack {
             return Err(SimulateError::TimeOutOfRange {
                 index,
                 value,
