@@ -32,6 +32,10 @@ pub enum Command {
     /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
     /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
     Simulate(crate::simulate_cmd::SimulateArgs),
+    /// Parameter identification from a measured record: sigma0 and g(0) from a slow loop
+    /// (--fit slow, columns u,F), or the full LuGre set from rate-dependent data (--fit full,
+    /// columns t,u,F), with standard errors and 95 % confidence intervals.
+    Fit(crate::fit_cmd::FitArgs),
     /// Redraw the paper's Figures 3-17 (SVG, PNG, the CSV of every curve) and write
     /// index.html: every figure with its caption, each example's loop numbers, and the errata
     /// of Theorem A.

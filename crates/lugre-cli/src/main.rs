@@ -6,6 +6,7 @@ mod atomic;
 mod cli;
 mod csv_in;
 mod cycles_cmd;
+mod fit_cmd;
 mod fmt;
 mod json_out;
 mod loop_cmd;
@@ -66,6 +67,7 @@ fn run(cli: cli::Cli) -> anyhow::Result<()> {
         cli::Command::Loop(args) => loop_cmd::run(&args),
         cli::Command::Cycles(args) => cycles_cmd::run(&args),
         cli::Command::Simulate(args) => simulate_cmd::run(&args),
+        cli::Command::Fit(args) => fit_cmd::run(&args),
         cli::Command::Paper(args) => paper::run(&args),
     }
 }

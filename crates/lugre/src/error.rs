@@ -75,3 +75,136 @@ pub enum HistoryError {
     #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]")]
     BadBounds { min: f64, max: f64 },
 }
+
+/// A parameter-identification request that cannot be carried out, or whose answer the data do
+/// not determine ([`crate::fit`]).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FitError {
+    #[error("the data columns have different lengths: {what} has {got} values, u has {u}")]
+    LengthMismatch {
+        what: &'static str,
+        got: usize,
+        u: usize,
+    },
+    #[error("{what}[{index}] must be a finite number, got {value}")]
+    NotFinite {
+        what: &'static str,
+        index: usize,
+        value: f64,
+    },
+    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1)]
+    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    #[error("too few samples: {samples} for {parameters} free parameter(s); the fit needs at least {needed}")]
+    TooFewSamples {
+        samples: usize,
+        parameters: usize,
+        needed: usize,
+    },
+    #[error("the input u has no reversal (it only rises or only falls, or is constant): the {fit} fit needs at least one turning point inside the data")]
+    NoReversal { fit: &'static str },
+    #[error("the force F is 0 at every sample: there is nothing to fit")]
+    ZeroForce,
+    #[error("unknown parameter '{name}' for the {model} model (its parameters: {known})")]
+    UnknownParameter {
+        name: String,
+        model: &'static str,
+        known: &'static str,
+    },
+    #[error("{name} does not enter the slow loop: the rate-independent limit depends only on sigma0 and g(0) = Fs (Dahl: rho and Fc), so {name} cannot be identified from quasi-static data (use a full fit of rate-dependent data)")]
+    NotInSlowLoop { name: &'static str },
+    #[error("{name} is both fixed and freed")]
+    FixedAndFree { name: &'static str },
+    #[error("nothing to fit: every parameter of the {fit} fit is fixed")]
+    NothingToFit { fit: &'static str },
+    #[error("the bounds of {name} must satisfy 0 <= lo < hi (hi may be inf), got [{lo}, {hi}]")]
+    BadBounds {
+        name: &'static str,
+        lo: f64,
+        hi: f64,
+    },
+    #[error("the bounds [{lo}, {hi}] of {name} exclude its start value {start} (it must lie strictly inside)")]
+    StartOutsideBounds {
+        name: &'static str,
+        start: f64,
+        lo: f64,
+        hi: f64,
+    },
+    #[error("the start value of {name} must be a finite number > 0, got {value}")]
+    BadStart { name: &'static str, value: f64 },
+    #[error("the number of starts must be at least 1, got {starts}")]
+    BadStarts { starts: usize },
+    #[error("x0 must be a finite number, got {value}")]
+    BadX0 { value: f64 },
+    #[error("{} cannot be identified from this data: {}", names_of(.parameters), reasons(.parameters))]
+    Unidentifiable { parameters: Vec<Unidentified> },
+    #[error("the fit did not converge ({reason}); best point found: {} (residual RMS {rms})", list(.best))]
+    NotConverged {
+        reason: String,
+        best: Vec<(&'static str, f64)>,
+        rms: f64,
+    },
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Simulate(#[from] crate::simulate::SimulateError),
+}
+
+/// A parameter the data do not determine, and why ([`crate::fit`] module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unidentified {
+    pub name: &'static str,
+    /// Where the fit left it.
+    pub value: f64,
+    pub why: Why,
+}
+
+/// Why a parameter cannot be identified.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Why {
+    /// Its column of the Jacobian, times its value, is negligible against the force
+    /// (`sensitivity = |p J_p| / |F|`): it does not act on the output, or the fit drove it to 0.
+    NoEffect { sensitivity: f64 },
+    /// Its effect is nearly a combination of the others' (`condition` of the scaled normal
+    /// matrix above `limit`).
+    Collinear { condition: f64, limit: f64 },
+    /// Its 95 % confidence interval reaches 0: `t se >= |value|`
+    /// (`relative_half_width = t se / |value|`).
+    WideInterval {
+        stderr: f64,
+        relative_half_width: f64,
+    },
+}
+
+fn names_of(p: &[Unidentified]) -> String {
+    p.iter().map(|u| u.name).collect::<Vec<_>>().join(", ")
+}
+
+fn reasons(p: &[Unidentified]) -> String {
+    p.iter()
+        .map(|u| match u.why {
+            Why::NoEffect { sensitivity } => format!(
+                "{} = {:.4e} has no effect on the output (relative sensitivity {:.1e})",
+                u.name, u.value, sensitivity
+            ),
+            Why::Collinear { condition, limit } => format!(
+                "{} = {:.4e} acts nearly as a combination of the others (condition number {:.2e} of the scaled normal matrix, limit {:.0e})",
+                u.name, u.value, condition, limit
+            ),
+            Why::WideInterval {
+                stderr,
+                relative_half_width,
+            } => format!(
+                "{} = {:.4e} with standard error {:.2e}: its 95 % interval reaches 0 (half-width {:.3}x the value)",
+                u.name, u.value, stderr, relative_half_width
+            ),
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+fn list(best: &[(&'static str, f64)]) -> String {
+    best.iter()
+        .map(|(n, v)| format!("{n} = {v:e}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}

@@ -22,6 +22,7 @@
 mod arc_energy;
 pub mod cycles;
 pub mod error;
+pub mod fit;
 pub mod hysteresis;
 pub mod input;
 pub mod minor;
@@ -35,7 +36,8 @@ pub use cycles::{
     count_cycles, count_cycles_with_energy, Closure, Cycle, CycleCounter, CycleEnergy, CycleSink,
     CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy, Reversal,
 };
-pub use error::{HistoryError, InputError, LoopError, ModelError};
+pub use error::{FitError, HistoryError, InputError, LoopError, ModelError};
+pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use hysteresis::{HysteresisLoop, LoopPoint};
 pub use input::{Bimodal, TurningPoints};
 pub use minor::{minor_loops, Loop, LoopKind};
@@ -59,6 +61,8 @@ pub enum Error {
     History(#[from] HistoryError),
     #[error(transparent)]
     Simulate(#[from] SimulateError),
+    #[error(transparent)]
+    Fit(#[from] FitError),
 }
 
 impl HysteresisLoop {

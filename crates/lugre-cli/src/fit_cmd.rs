@@ -1,0 +1,785 @@
+//! `lugre fit`: parameter identification from a measured record (`lugre::fit`).
+//!
+//! * `--fit slow` (default): `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`) from one or more
+//!   periods of a slow periodic test, columns `u,F` (or `t,u,F`; `t` is then only checked);
+//! * `--fit full`: `sigma0, sigma1, sigma2, Fc, Fs, vs` (`--free beta` adds `beta`) from
+//!   rate-dependent data, columns `t,u,F`, on the exact simulation from `--x0`.
+//!
+//! Fixed parameters keep the values of the usual model flags (defaults: the paper's); a model
+//! flag given for a free parameter is its start value (else the start comes from the data).
+//! Everything is computed and checked before anything is printed or written.
+//!
+//! A fit that ran out of evaluations at a usable point (finite, every parameter identifiable)
+//! is reported with a warning on stderr and exit status 0; every other failure, including a
+//! parameter the data cannot determine, is one line and status 2.
+
+use anyhow::{anyhow, bail, Context, Result};
+use clap::{Args, ValueEnum};
+use lugre::fit::{
+    fit_full, fit_slow, Family, FitError, FitKind, FitProgress, FitReport, FitSpec, FullOptions,
+};
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::atomic::write_atomic;
+use crate::cli::{ModelArgs, ModelKind};
+use crate::fmt::sig;
+use crate::json_out::JsonOut;
+use crate::numbers::parse_number;
+use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
+
+/// Vertical strokes in the residual figure (at most).
+const RESIDUAL_BINS: usize = 600;
+
+/// A fit shorter than this shows no progress bar.
+const PROGRESS_AFTER: Duration = Duration::from_secs(1);
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FitChoice {
+    /// The slow loop (rate-independent limit): sigma0 and g(0) = Fs (Dahl: rho, Fc).
+    Slow,
+    /// The exact simulation of rate-dependent data: sigma0, sigma1, sigma2, Fc, Fs, vs.
+    Full,
+}
+
+#[derive(Args, Debug)]
+pub struct FitArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// The measured record: columns 'u,F' or 't,u,F' (header optional, in this order without
+    /// one; '#' comments allowed). Times, when given, must be strictly increasing.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
+    pub input: Option<PathBuf>,
+    /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
+    /// (rate-dependent t,u,F data, exact simulation).
+    #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
+    pub fit: FitChoice,
+    /// Parameters held at the model flags' values (e.g. --fix sigma2,fs).
+    #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
+    pub fix: Option<String>,
+    /// Parameters fitted besides the default ones (e.g. --free beta in a full fit).
+    #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
+    pub free: Option<String>,
+    /// Bounds on fitted parameters, 0 <= LO < HI (HI may be 'inf'); default (0, inf).
+    #[arg(
+        long,
+        value_name = "NAME=LO:HI,...",
+        allow_hyphen_values = true,
+        help_heading = "Fit"
+    )]
+    pub bounds: Option<String>,
+    /// Full fit: the initial state x0 = x(0) of eq. 1 (not fitted; default 0).
+    #[arg(
+        long,
+        value_name = "X",
+        allow_hyphen_values = true,
+        help_heading = "Fit"
+    )]
+    pub x0: Option<String>,
+    /// Full fit: the number of starts (the first from the data, then sigma0 and vs scaled by 4
+    /// or 1/4; default 3).
+    #[arg(long, value_name = "N", help_heading = "Fit")]
+    pub starts: Option<usize>,
+    /// Print one JSON document instead of the table.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// Write the data with the fitted curve and the residuals ([t,]u,F,fit,residual) to this CSV
+    /// file.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
+    pub csv: Option<PathBuf>,
+    /// Draw the data and the fit in the (u, F) plane, and beside them the residuals, to an SVG
+    /// or PNG file.
+    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The measured record.
+struct Record {
+    t: Option<Vec<f64>>,
+    u: Vec<f64>,
+    f: Vec<f64>,
+}
+
+pub fn run(args: &FitArgs) -> Result<()> {
+    let Some(path) = &args.input else {
+        bail!("no data: give --input FILE.csv (columns u,F or t,u,F)");
+    };
+    let spec = build_spec(args)?;
+    let kind = match args.fit {
+        FitChoice::Slow => FitKind::Slow,
+        FitChoice::Full => FitKind::Full,
+    };
+    if kind == FitKind::Slow {
+        if args.x0.is_some() {
+            bail!("--x0 applies to the full fit (add --fit full)");
+        }
+        if args.starts.is_some() {
+            bail!("--starts applies to the full fit (add --fit full)");
+        }
+    }
+    if let Some(plot) = &args.plot {
+        crate::plot::check_path(plot)?;
+    }
+    let record = read_record(path)?;
+    let with_file = |e: FitError| -> anyhow::Error {
+        match e {
+            FitError::TooFewSamples { .. }
+            | FitError::NoReversal { .. }
+            | FitError::ZeroForce
+            | FitError::LengthMismatch { .. }
+            | FitError::NotFinite { .. }
+            | FitError::TimesNotIncreasing { .. } => anyhow!("{}: {e}", path.display()),
+            other => explain(other),
+        }
+    };
+    let report = match kind {
+        FitKind::Slow => {
+            // Times, if any, were checked when read; the slow loop depends on the turning
+            // points alone.
+            fit_slow(&spec, &record.u, &record.f).map_err(with_file)?
+        }
+        FitKind::Full => {
+            let Some(t) = &record.t else {
+                bail!(
+                    "{}: a full fit needs the samples' times: columns t,u,F (this file has u,F)",
+                    path.display()
+                );
+            };
+            let x0 = match &args.x0 {
+                Some(text) => parse_number("--x0", 1, text)?,
+                None => 0.0,
+            };
+            let options = FullOptions {
+                x0,
+                starts: args.starts.unwrap_or(FullOptions::default().starts),
+            };
+            if options.starts == 0 {
+                bail!("--starts must be at least 1, got 0");
+            }
+            let mut progress = Progress::new();
+            let result = fit_full(&spec, t, &record.u, &record.f, &options, &mut |p| {
+                progress.update(p)
+            });
+            progress.finish();
+            result.map_err(with_file)?
+        }
+    };
+
+    let residuals = report.residuals(&record.f);
+    if let Some(csv) = &args.csv {
+        write_atomic(csv, |w| write_csv(w, &record, &report, &residuals))?;
+    }
+    if let Some(plot) = &args.plot {
+        figure(&record, &report, &residuals).save(plot)?;
+    }
+    if !report.converged {
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: warning: the fit did not converge ({}); the best point found is reported",
+            report.termination
+        );
+    }
+    let stdout = std::io::stdout();
+    if args.json {
+        write_json(JsonOut::new(stdout.lock()), &report, path)?;
+    } else {
+        let mut out = std::io::BufWriter::new(stdout.lock());
+        print_table(&mut out, &report, path)?;
+        if let Some(csv) = &args.csv {
+            writeln!(
+                out,
+                "\nWrote the data, fit and residuals ({}u,F,fit,residual) to {}",
+                if record.t.is_some() { "t," } else { "" },
+                csv.display()
+            )?;
+        }
+        if let Some(plot) = &args.plot {
+            writeln!(
+                out,
+                "Drew the data, the fit and the residuals to {}",
+                plot.display()
+            )?;
+        }
+        out.flush()?;
+    }
+    Ok(())
+}
+
+/// The request from the flags: family, given values, fixed and freed names, bounds.
+fn build_spec(args: &FitArgs) -> Result<FitSpec> {
+    // The same checks as every command (flags of the other model, invalid values).
+    args.model.build()?;
+    let m = &args.model;
+    let (family, given): (Family, Vec<(&str, Option<f64>)>) = match m.model {
+        ModelKind::Lugre => (
+            Family::LuGre,
+            vec![
+                ("sigma0", m.sigma0),
+                ("sigma1", m.sigma1),
+                ("sigma2", m.sigma2),
+                ("fc", m.fc),
+                ("fs", m.fs),
+                ("vs", m.vs),
+                ("beta", m.beta),
+            ],
+        ),
+        ModelKind::Dahl => (Family::Dahl, vec![("rho", m.rho), ("fc", m.fc)]),
+    };
+    let mut spec = FitSpec::new(family);
+    for (name, value) in given {
+        if let Some(v) = value {
+            spec = spec.set(name, v).map_err(explain)?;
+        }
+    }
+    for name in names("--fix", args.fix.as_deref())? {
+        spec = spec.fix(name).map_err(|e| anyhow!("--fix: {e}"))?;
+    }
+    for name in names("--free", args.free.as_deref())? {
+        spec = spec.free(name).map_err(|e| anyhow!("--free: {e}"))?;
+    }
+    if let Some(text) = &args.bounds {
+        for item in text.split(',') {
+            let Some((name, range)) = item.split_once('=') else {
+                bail!("--bounds: '{}' is not NAME=LO:HI", item.trim());
+            };
+            let Some((lo, hi)) = range.split_once(':') else {
+                bail!("--bounds: '{}' is not NAME=LO:HI", item.trim());
+            };
+            let lo = parse_number("--bounds", 1, lo)?;
+            let hi = match hi.trim().to_ascii_lowercase().as_str() {
+                "inf" | "+inf" | "infinity" => f64::INFINITY,
+                _ => parse_number("--bounds", 2, hi)?,
+            };
+            spec = spec
+                .bounds(name, lo, hi)
+                .map_err(|e| anyhow!("--bounds: {e}"))?;
+        }
+    }
+    Ok(spec)
+}
+
+/// The names of a comma-separated list (none for an absent flag).
+fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
+    let Some(text) = text else {
+        return Ok(Vec::new());
+    };
+    let items: Vec<&str> = text.split(',').map(str::trim).collect();
+    if items.iter().any(|s| s.is_empty()) {
+        bail!("{flag}: empty name in '{text}' (expected names separated by commas)");
+    }
+    Ok(items)
+}
+
+/// A core error as one line, with what to do about it where the CLI knows.
+fn explain(e: FitError) -> anyhow::Error {
+    match &e {
+        FitError::Unidentifiable { parameters } => {
+            let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
+            anyhow!(
+                "{e}; fix {} (--fix {} with the values from the model flags) or fit data that excite {}",
+                if names.len() == 1 { "it" } else { "them" },
+                names.join(","),
+                if names.len() == 1 { "it" } else { "them" }
+            )
+        }
+        FitError::NotInSlowLoop { .. } => anyhow!("{e}"),
+        FitError::StartOutsideBounds { name, .. } => {
+            anyhow!("{e}: change --{name} or --bounds")
+        }
+        FitError::BadStart { name, .. } => {
+            anyhow!("--{name}: {e} (to hold it at that value, add --fix {name})")
+        }
+        _ => anyhow!("{e}"),
+    }
+}
+
+/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order).
+fn read_record(path: &Path) -> Result<Record> {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read '{}'", path.display()))?;
+    parse_record(&bytes).with_context(|| path.display().to_string())
+}
+
+fn parse_record(bytes: &[u8]) -> Result<Record> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .comment(Some(b'#'))
+        .trim(csv::Trim::All)
+        .from_reader(bytes);
+    let mut record = csv::StringRecord::new();
+    // Column positions of (t, u, F) and the width.
+    let mut layout: Option<(Option<usize>, usize, usize, usize)> = None;
+    let (mut t, mut u, mut f) = (Vec::new(), Vec::new(), Vec::new());
+    loop {
+        let more = reader.read_record(&mut record);
+        let line = record.position().map_or(0, |p| p.line());
+        match more {
+            Ok(false) => break,
+            Ok(true) => {}
+            Err(e) => bail!("line {line}: {e}"),
+        }
+        if record.iter().all(str::is_empty) {
+            continue;
+        }
+        let (tc, uc, fc, width) = match layout {
+            Some(l) => l,
+            None => {
+                let numeric = record.iter().all(|x| x.parse::<f64>().is_ok());
+                let l = if numeric {
+                    match record.len() {
+                        2 => (None, 0, 1, 2),
+                        3 => (Some(0), 1, 2, 3),
+                        n => bail!(
+                            "line {line}: expected 2 columns (u,F) or 3 columns (t,u,F), found {n}"
+                        ),
+                    }
+                } else {
+                    let names: Vec<String> =
+                        record.iter().map(|x| x.to_ascii_lowercase()).collect();
+                    let find = |n: &str| names.iter().position(|x| x == n);
+                    let header = record.iter().collect::<Vec<_>>().join(",");
+                    let ok = matches!(names.len(), 2 | 3)
+                        && find("u").is_some()
+                        && find("f").is_some()
+                        && (names.len() == 2 || find("t").is_some());
+                    if !ok {
+                        bail!(
+                            "line {line}: unexpected header '{header}': expected 'u,F' or 't,u,F'"
+                        );
+                    }
+                    (
+                        find("t"),
+                        find("u").unwrap_or(0),
+                        find("f").unwrap_or(1),
+                        names.len(),
+                    )
+                };
+                layout = Some(l);
+                if !numeric {
+                    continue;
+                }
+                l
+            }
+        };
+        if record.len() != width {
+            let header = if width == 2 { "u,F" } else { "t,u,F" };
+            bail!(
+                "line {line}: expected {width} values ({header}), found {}",
+                record.len()
+            );
+        }
+        let value = |k: usize, name: &str| -> Result<f64> {
+            let s = &record[k];
+            if s.is_empty() {
+                bail!("line {line}: empty value for {name}");
+            }
+            match s.parse::<f64>() {
+                Ok(v) if v.is_finite() => Ok(v),
+                Ok(_) => bail!("line {line}: {name} = '{s}' is not a finite number"),
+                Err(_) => bail!("line {line}: {name} = '{s}' is not a number"),
+            }
+        };
+        if let Some(k) = tc {
+            let tv = value(k, "t")?;
+            if let Some(&prev) = t.last() {
+                if tv <= prev {
+                    bail!("line {line}: times must be strictly increasing, t = {tv} follows t = {prev}");
+                }
+            }
+            t.push(tv);
+        }
+        u.push(value(uc, "u")?);
+        f.push(value(fc, "F")?);
+    }
+    if u.is_empty() {
+        bail!("no data rows");
+    }
+    Ok(Record {
+        t: layout.and_then(|l| l.0).map(|_| t),
+        u,
+        f,
+    })
+}
+
+fn write_csv(w: &mut dyn Write, record: &Record, report: &FitReport, res: &[f64]) -> Result<()> {
+    let mut buf = zmij::Buffer::new();
+    let mut num = |w: &mut dyn Write, x: f64, end: u8| -> std::io::Result<()> {
+        let s = buf.format_finite(x);
+        w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
+        w.write_all(&[end])
+    };
+    match &record.t {
+        Some(_) => writeln!(w, "t,u,F,fit,residual")?,
+        None => writeln!(w, "u,F,fit,residual")?,
+    }
+    for i in 0..record.u.len() {
+        if let Some(t) = &record.t {
+            num(w, t[i], b',')?;
+        }
+        num(w, record.u[i], b',')?;
+        num(w, record.f[i], b',')?;
+        num(w, report.fitted[i], b',')?;
+        num(w, res[i], b'\n')?;
+    }
+    Ok(())
+}
+
+/// Two panels: the data with the fit in the (u, F) plane, and the residuals against t (or the
+/// sample).
+fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
+    let what = match report.kind {
+        FitKind::Slow => "slow-loop fit",
+        FitKind::Full => "full fit",
+    };
+    let data: Vec<(f64, f64)> = record
+        .u
+        .iter()
+        .copied()
+        .zip(record.f.iter().copied())
+        .collect();
+    let fit: Vec<(f64, f64)> = record
+        .u
+        .iter()
+        .copied()
+        .zip(report.fitted.iter().copied())
+        .collect();
+    let fit_fig = Figure::new("input u", "friction force F")
+        .title(format!(
+            "{} {what}: residual RMS {}",
+            report.family.label(),
+            sig(report.rms, 4)
+        ))
+        .curve(
+            Curve::new(data, LineStyle::Solid, BLUE)
+                .width(1)
+                .label("data"),
+        )
+        .curve(Curve::new(fit, LineStyle::Dashed, RED).label("fit"));
+    let (x_label, xs): (&str, Vec<f64>) = match &record.t {
+        Some(t) => ("time t", t.clone()),
+        None => ("sample", (0..res.len()).map(|i| i as f64).collect()),
+    };
+    // Noise drawn as one polyline zigzags at sharp angles, which the bitmap backend renders
+    // with long miter spikes: draw separate vertical strokes instead, from 0 to each residual
+    // (few samples) or over the range of each of RESIDUAL_BINS consecutive groups.
+    let n = res.len();
+    let bins = n.min(RESIDUAL_BINS);
+    let mut res_fig = Figure::new(x_label, "residual F - fit").title(if bins < n {
+        format!(
+            "Residuals, min to max of each {}-sample group",
+            n.div_ceil(bins)
+        )
+    } else {
+        "Residuals".to_string()
+    });
+    for b in 0..bins {
+        let (lo, hi) = (b * n / bins, ((b + 1) * n / bins).max(b * n / bins + 1));
+        let x = 0.5 * (xs[lo] + xs[hi - 1]);
+        let (mut r0, mut r1) = if bins < n {
+            (f64::INFINITY, f64::NEG_INFINITY)
+        } else {
+            (0.0, 0.0)
+        };
+        for &r in &res[lo..hi] {
+            r0 = r0.min(r);
+            r1 = r1.max(r);
+        }
+        res_fig =
+            res_fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
+    }
+    res_fig = res_fig.curve(Curve::new(
+        vec![(xs[0], 0.0), (xs[n - 1], 0.0)],
+        LineStyle::Dashed,
+        RED,
+    ));
+    Panels {
+        title: None,
+        panels: vec![fit_fig, res_fig],
+        cols: 2,
+        size: (1600, 650),
+    }
+}
+
+/// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit).
+fn label(report: &FitReport, name: &str) -> String {
+    if report.kind == FitKind::Slow && report.family == Family::LuGre && name == "fs" {
+        "fs = g(0)".into()
+    } else {
+        name.into()
+    }
+}
+
+fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Result<()> {
+    let what = match r.kind {
+        FitKind::Slow => "slow-loop fit (the hysteresis loop y°, eqs. 8-10)".to_string(),
+        FitKind::Full => format!(
+            "full fit (exact simulation of eq. 1, {} start{})",
+            r.starts,
+            if r.starts == 1 { "" } else { "s" }
+        ),
+    };
+    writeln!(
+        w,
+        "{} {what} to {} samples from {}{}",
+        r.family.label(),
+        r.samples,
+        path.display(),
+        match r.turning_points {
+            Some(n) => format!(" ({n} turning points)"),
+            None => String::new(),
+        }
+    )?;
+    writeln!(w)?;
+    writeln!(
+        w,
+        "{:<12} {:>16} {:>14}   {:<36}",
+        "parameter", "value", "std. error", "95 % confidence interval"
+    )?;
+    for e in &r.estimates {
+        writeln!(
+            w,
+            "{:<12} {:>16} {:>14}   [{}, {}]{}",
+            label(r, e.name),
+            sig(e.value, 10),
+            sig(e.stderr, 4),
+            sig(e.ci95[0], 8),
+            sig(e.ci95[1], 8),
+            if e.at_bound { "  (at its bound)" } else { "" }
+        )?;
+    }
+    if !r.fixed.is_empty() {
+        let fixed: Vec<String> = r
+            .fixed
+            .iter()
+            .map(|(n, v)| format!("{} = {}", label(r, n), sig(*v, 10)))
+            .collect();
+        writeln!(w, "fixed: {}", fixed.join(", "))?;
+    }
+    writeln!(w)?;
+    writeln!(
+        w,
+        "residual RMS {}   ({} degrees of freedom; intervals: value -+ {} standard errors, Student's t)",
+        sig(r.rms, 6),
+        r.dof,
+        sig(r.t_quantile, 6)
+    )?;
+    writeln!(
+        w,
+        "{} iterations, {} model evaluations: {}",
+        r.iterations, r.evaluations, r.termination
+    )?;
+    if r.estimates.len() > 1 {
+        writeln!(
+            w,
+            "correlation of the estimates (condition number of the scaled J^T J: {}):",
+            sig(r.condition_number, 3)
+        )?;
+        for (i, row) in r.correlation.iter().enumerate() {
+            let cells: Vec<String> = row.iter().map(|c| format!("{c:>7.3}")).collect();
+            writeln!(
+                w,
+                "  {:<12} {}",
+                label(r, r.estimates[i].name),
+                cells.join(" ")
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// `{"parameters": {name: {"value", "stderr", "ci95": [lo, hi], "at_bound"}}, "rms",
+/// "iterations", ...}` (keys may be added, never renamed).
+fn write_json<W: Write>(mut j: JsonOut<W>, r: &FitReport, path: &Path) -> std::io::Result<()> {
+    let q = |s: &str| serde_json::Value::from(s).to_string();
+    let num = |j: &mut JsonOut<W>, x: f64| {
+        if x.is_finite() {
+            j.num(x)
+        } else {
+            j.raw("null")
+        }
+    };
+    j.raw("{\"parameters\":{")?;
+    for (k, e) in r.estimates.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&q(e.name))?;
+        j.raw(":{\"value\":")?;
+        num(&mut j, e.value)?;
+        j.raw(",\"stderr\":")?;
+        num(&mut j, e.stderr)?;
+        j.raw(",\"ci95\":[")?;
+        num(&mut j, e.ci95[0])?;
+        j.raw(",")?;
+        num(&mut j, e.ci95[1])?;
+        j.raw(&format!("],\"at_bound\":{}}}", e.at_bound))?;
+    }
+    j.raw("},\"rms\":")?;
+    num(&mut j, r.rms)?;
+    j.raw(",\"iterations\":")?;
+    j.int(r.iterations)?;
+    j.raw(",\"evaluations\":")?;
+    j.int(r.evaluations)?;
+    j.raw(",\"starts\":")?;
+    j.int(r.starts)?;
+    j.raw(&format!(
+        ",\"converged\":{},\"termination\":{}",
+        r.converged,
+        q(&r.termination)
+    ))?;
+    j.raw(&format!(
+        ",\"model\":{},\"fit\":{}",
+        q(&r.family.label().to_ascii_lowercase()),
+        q(match r.kind {
+            FitKind::Slow => "slow",
+            FitKind::Full => "full",
+        })
+    ))?;
+    j.raw(",\"fixed\":{")?;
+    for (k, (n, v)) in r.fixed.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&q(n))?;
+        j.raw(":")?;
+        num(&mut j, *v)?;
+    }
+    j.raw("},\"samples\":")?;
+    j.int(r.samples)?;
+    j.raw(",\"dof\":")?;
+    j.int(r.dof)?;
+    j.raw(",\"t_quantile\":")?;
+    num(&mut j, r.t_quantile)?;
+    j.raw(",\"condition_number\":")?;
+    num(&mut j, r.condition_number)?;
+    j.raw(",\"correlation\":[")?;
+    for (k, row) in r.correlation.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw("[")?;
+        for (c, &x) in row.iter().enumerate() {
+            if c > 0 {
+                j.raw(",")?;
+            }
+            num(&mut j, x)?;
+        }
+        j.raw("]")?;
+    }
+    j.raw("]")?;
+    if let Some(n) = r.turning_points {
+        j.raw(",\"turning_points\":")?;
+        j.int(n)?;
+    }
+    j.raw(",\"input\":")?;
+    j.raw(&q(&path.display().to_string()))?;
+    j.raw("}\n")?;
+    j.finish()
+}
+
+/// A progress bar on stderr for the full fit, only on a terminal and only after a second.
+struct Progress {
+    start: Instant,
+    terminal: bool,
+    bar: Option<indicatif::ProgressBar>,
+    last: Instant,
+}
+
+impl Progress {
+    fn new() -> Self {
+        let now = Instant::now();
+        Self {
+            start: now,
+            terminal: std::io::stderr().is_terminal(),
+            bar: None,
+            last: now,
+        }
+    }
+
+    fn update(&mut self, p: &FitProgress) {
+        if !self.terminal {
+            return;
+        }
+        let now = Instant::now();
+        // The callback comes after every evaluation: redraw at most 20 times a second.
+        if now.duration_since(self.last) < Duration::from_millis(50) {
+            return;
+        }
+        self.last = now;
+        if self.bar.is_none() && self.start.elapsed() >= PROGRESS_AFTER {
+            // Elapsed from the start of the fit, not from when the bar appears.
+            let bar = indicatif::ProgressBar::new_spinner().with_elapsed(self.start.elapsed());
+            if let Ok(style) =
+                indicatif::ProgressStyle::with_template("{spinner} fitting: {msg} ({elapsed})")
+            {
+                bar.set_style(style);
+            }
+            self.bar = Some(bar);
+        }
+        if let Some(bar) = &self.bar {
+            bar.set_message(format!(
+                "start {}/{}, {} evaluations, residual RMS {}",
+                p.start,
+                p.starts,
+                p.evaluations,
+                sig(p.rms, 4)
+            ));
+            bar.tick();
+        }
+    }
+
+    fn finish(&mut self) {
+        if let Some(bar) = self.bar.take() {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn records_in_the_usual_shapes() {
+        let r = parse_record(b"\xEF\xBB\xBFu,F\r\n# c\r\n0,1\r\n\r\n1, 2\r\n").unwrap();
+        assert!(r.t.is_none());
+        assert_eq!((r.u, r.f), (vec![0.0, 1.0], vec![1.0, 2.0]));
+        let r = parse_record(b"0,1,2\n1,2,3\n").unwrap();
+        assert_eq!(r.t.unwrap(), vec![0.0, 1.0]);
+        assert_eq!((r.u, r.f), (vec![1.0, 2.0], vec![2.0, 3.0]));
+        // Named columns in any order.
+        let r = parse_record(b"F,t,u\n5,0,1\n6,1,2\n").unwrap();
+        assert_eq!(
+            (r.t.unwrap(), r.u, r.f),
+            (vec![0.0, 1.0], vec![1.0, 2.0], vec![5.0, 6.0])
+        );
+    }
+
+    #[test]
+    fn record_errors_name_the_line() {
+        let cases: [(&[u8], &str); 7] = [
+            (b"u,F\n0,1\n1\n", "line 3: expected 2 values (u,F), found 1"),
+            (b"x,y\n0,1\n", "line 1: unexpected header 'x,y'"),
+            (
+                b"t,u,F\n0,1,2\n0,1,2\n",
+                "line 3: times must be strictly increasing",
+            ),
+            (b"u,F\n0,nan\n", "line 2: F = 'nan' is not a finite number"),
+            (b"u,F\n0,abc\n", "line 2: F = 'abc' is not a number"),
+            (
+                b"1,2,3,4\n",
+                "line 1: expected 2 columns (u,F) or 3 columns (t,u,F), found 4",
+            ),
+            (b"u,F\n", "no data rows"),
+        ];
+        for (input, want) in cases {
+            let e = match parse_record(input) {
+                Ok(_) => panic!("{want}: accepted"),
+                Err(e) => e.to_string(),
+            };
+            assert!(e.contains(want), "{e} (wanted {want})");
+        }
+    }
+}

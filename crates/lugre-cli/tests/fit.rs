@@ -1,0 +1,427 @@
+//! `lugre fit` run as a user would: the real binary on CSV files made by the project's own
+//! simulator plus 1 % Gaussian noise (fixed seed), its stdout, stderr, files and exit status.
+
+use lugre::simulate::{merge_times, uniform_times};
+use lugre::{Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator, Trajectory, TurningPoints};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn lugre(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lugre"))
+        .args(args)
+        .env("RUST_BACKTRACE", "1")
+        .output()
+        .expect("the binary runs")
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let out = lugre(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "no progress bar or warning: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON")
+}
+
+/// Bad input: exit status 2, one line on stderr containing `want`, nothing on stdout.
+#[track_caller]
+fn rejects(args: &[&str], want: &str) {
+    let out = lugre(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line, got {err}");
+    assert!(err.contains(want), "{args:?}: wanted '{want}' in {err}");
+    assert!(
+        !err.contains("panicked") && !err.contains("backtrace"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty(), "{args:?}");
+}
+
+/// A scratch directory of its own for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lugre-fit-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+/// Adds Gaussian noise of standard deviation 1 % of the RMS of `f` (Box-Muller on an LCG).
+fn noisy(f: &[f64], mut state: u64) -> Vec<f64> {
+    let mut unit = move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let rms = (f.iter().map(|v| v * v).sum::<f64>() / f.len() as f64).sqrt();
+    f.iter()
+        .map(|v| {
+            let r = (-2.0 * (1.0 - unit()).ln()).sqrt();
+            v + 0.01 * rms * r * (std::f64::consts::TAU * unit()).cos()
+        })
+        .collect()
+}
+
+/// Writes the columns with a header.
+fn write_csv(path: &Path, header: &str, columns: &[&[f64]]) {
+    let mut text = format!("{header}\n");
+    for i in 0..columns[0].len() {
+        let row: Vec<String> = columns.iter().map(|c| format!("{:?}", c[i])).collect();
+        text.push_str(&row.join(","));
+        text.push('\n');
+    }
+    std::fs::write(path, text).expect("write the data");
+}
+
+/// Two periods of the slow loop (gamma = inf, after a decayed transient) with noise: `u,F`.
+fn slow_file(dir: &Path, model: &LuGre, turning: &[f64]) -> PathBuf {
+    let tp = TurningPoints::new(turning).unwrap();
+    let input = PiecewiseLinear::from_turning_points(&tp, 1.0).unwrap();
+    let p = input.period();
+    let times = merge_times(&uniform_times(0.0, p, 6, 500), &input.knot_times(6));
+    let mut out = Trajectory::default();
+    Simulator::new(model, Gamma::INFINITE, 0.0)
+        .unwrap()
+        .at_times(&input, 6, &times, &mut out, &mut |_| {})
+        .unwrap();
+    let from = out.range_between(4.0 * p, f64::INFINITY).start;
+    let f = noisy(&out.y[from..], 11);
+    let path = dir.join("slow.csv");
+    write_csv(&path, "u,F", &[&out.u[from..], &f]);
+    path
+}
+
+/// Triangles between -amp and amp at each speed (two sweeps each), the exact simulation of
+/// eq. 1 from x0 = 0, with noise: `t,u,F`.
+fn rate_file(dir: &Path, name: &str, model: &LuGre, amp: f64, speeds: &[f64]) -> PathBuf {
+    let (mut t, mut u) = (vec![0.0], vec![-amp]);
+    for &v in speeds {
+        for target in [amp, -amp] {
+            let (t0, u0) = (t[t.len() - 1], u[u.len() - 1]);
+            let dur = f64::abs(target - u0) / v;
+            for j in 1..=300 {
+                let x = f64::from(j) / 300.0;
+                t.push(t0 + dur * x);
+                u.push(u0 + (target - u0) * x);
+            }
+        }
+    }
+    let input = PiecewiseLinear::new(t.clone(), u.clone()).unwrap();
+    let mut out = Trajectory::default();
+    Simulator::new(model, Gamma::ONE, 0.0)
+        .unwrap()
+        .at_knots(&input, 1, &mut out, &mut |_| {})
+        .unwrap();
+    let f = noisy(&out.y, 12);
+    let path = dir.join(name);
+    write_csv(&path, "t,u,F", &[&t, &u, &f]);
+    path
+}
+
+/// The estimate of `name` within `tol` of `want`, and `want` inside its interval.
+#[track_caller]
+fn recovered(doc: &serde_json::Value, name: &str, want: f64, tol: f64) {
+    let p = &doc["parameters"][name];
+    let value = p["value"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{name}: {doc}"));
+    let ci = [
+        p["ci95"][0].as_f64().unwrap(),
+        p["ci95"][1].as_f64().unwrap(),
+    ];
+    assert!(
+        ((value - want) / want).abs() <= tol,
+        "{name}: {value} vs {want}"
+    );
+    assert!(
+        ci[0] <= want && want <= ci[1],
+        "{name}: {want} outside {ci:?}"
+    );
+    assert!(p["stderr"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn slow_fit_json_has_the_documented_shape_and_recovers_example_4() {
+    let dir = scratch("slow-json");
+    let file = slow_file(
+        &dir,
+        &LuGre::paper().with_sigma0(6.0).unwrap(),
+        &[0.0, 1.0, 0.5, 1.5],
+    );
+    let f = file.to_str().unwrap();
+    let doc = json(&["fit", "--input", f, "--json"]);
+    recovered(&doc, "sigma0", 6.0, 0.02);
+    recovered(&doc, "fs", 2.0, 0.02);
+    let params = doc["parameters"].as_object().unwrap();
+    assert_eq!(params.len(), 2);
+    for p in params.values() {
+        for key in ["value", "stderr", "ci95"] {
+            assert!(p.get(key).is_some(), "{key} in {p}");
+        }
+        assert_eq!(p["ci95"].as_array().unwrap().len(), 2);
+    }
+    assert!(doc["rms"].as_f64().unwrap() > 0.0);
+    assert!(doc["iterations"].as_u64().unwrap() >= 1);
+    assert_eq!(doc["fit"], "slow");
+    assert_eq!(doc["model"], "lugre");
+    assert_eq!(doc["converged"], true);
+    assert_eq!(doc["turning_points"], 8);
+}
+
+#[test]
+fn slow_fit_table_and_fixed_parameters() {
+    let dir = scratch("slow-table");
+    let file = slow_file(
+        &dir,
+        &LuGre::paper().with_sigma0(6.0).unwrap(),
+        &[0.0, 1.0, 0.5, 1.5],
+    );
+    let f = file.to_str().unwrap();
+    let out = lugre(&["fit", "--input", f]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    for want in [
+        "LuGre slow-loop fit",
+        "95 % confidence interval",
+        "sigma0",
+        "fs = g(0)",
+        "residual RMS",
+        "converged",
+    ] {
+        assert!(text.contains(want), "{want} in\n{text}");
+    }
+    // Fs held at 2 (the truth): only sigma0 is fitted.
+    let doc = json(&["fit", "--input", f, "--fix", "fs", "--fs", "2", "--json"]);
+    assert_eq!(doc["parameters"].as_object().unwrap().len(), 1);
+    recovered(&doc, "sigma0", 6.0, 0.02);
+    assert_eq!(doc["fixed"]["fs"], 2.0);
+    // A start value from the flags is only a start.
+    let doc = json(&["fit", "--input", f, "--sigma0", "50", "--json"]);
+    recovered(&doc, "sigma0", 6.0, 0.02);
+}
+
+#[test]
+fn slow_fit_of_dahl() {
+    let dir = scratch("dahl");
+    let dahl = lugre::Dahl::new(2.0, 0.8).unwrap();
+    let file = slow_file(&dir, &dahl.to_lugre(), &[-1.0, 1.0]);
+    let doc = json(&[
+        "fit",
+        "--model",
+        "dahl",
+        "--input",
+        file.to_str().unwrap(),
+        "--json",
+    ]);
+    recovered(&doc, "rho", 2.0, 0.02);
+    recovered(&doc, "fc", 0.8, 0.02);
+    assert_eq!(doc["model"], "dahl");
+}
+
+#[test]
+fn full_fit_recovers_canudas_de_wit_1995() {
+    let dir = scratch("full");
+    let p = LuGreParams::canudas_de_wit_1995();
+    let speeds = [1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1];
+    let file = rate_file(
+        &dir,
+        "full.csv",
+        &LuGre::from_params(p).unwrap(),
+        1e-3,
+        &speeds,
+    );
+    let doc = json(&[
+        "fit",
+        "--fit",
+        "full",
+        "--beta",
+        "2",
+        "--input",
+        file.to_str().unwrap(),
+        "--json",
+    ]);
+    for (name, want) in [
+        ("sigma0", p.sigma0),
+        ("sigma1", p.sigma1),
+        ("sigma2", p.sigma2),
+        ("fc", p.fc),
+        ("fs", p.fs),
+        ("vs", p.vs),
+    ] {
+        recovered(&doc, name, want, 0.05);
+    }
+    assert_eq!(doc["fixed"]["beta"], 2.0);
+    assert_eq!(doc["fit"], "full");
+    assert_eq!(doc["starts"], 3);
+}
+
+#[test]
+fn csv_and_plots_are_written() {
+    let dir = scratch("outputs");
+    let file = slow_file(
+        &dir,
+        &LuGre::paper().with_sigma0(6.0).unwrap(),
+        &[0.0, 1.0, 0.5, 1.5],
+    );
+    let csv = dir.join("fit.csv");
+    let svg = dir.join("fit.svg");
+    let out = lugre(&[
+        "fit",
+        "--input",
+        file.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("u,F,fit,residual"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 500);
+    for r in &rows {
+        assert!(
+            (r[1] - r[2] - r[3]).abs() <= 1e-12 * r[1].abs().max(1.0),
+            "{r:?}"
+        );
+    }
+    let s = std::fs::read_to_string(&svg).unwrap();
+    assert!(s.starts_with("<svg") && s.contains("polyline"));
+    assert!(s.contains("residual F - fit") && s.contains("friction force F"));
+    let png = dir.join("fit.png");
+    let out = lugre(&[
+        "fit",
+        "--input",
+        file.to_str().unwrap(),
+        "--plot",
+        png.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    // A wrong extension is refused before any work.
+    rejects(
+        &[
+            "fit",
+            "--input",
+            file.to_str().unwrap(),
+            "--plot",
+            "fit.pdf",
+        ],
+        "must end in .svg or .png",
+    );
+}
+
+#[test]
+fn sigma1_from_quasi_static_data_is_an_error() {
+    let dir = scratch("unidentifiable");
+    // The paper's model 1000 times slower than vs: sigma1 z' is far below the noise.
+    let file = rate_file(&dir, "qs.csv", &LuGre::paper(), 6.0, &[1e-3]);
+    let f = file.to_str().unwrap();
+    rejects(
+        &[
+            "fit",
+            "--fit",
+            "full",
+            "--input",
+            f,
+            "--fix",
+            "sigma0,sigma2,fc,fs,vs",
+        ],
+        "sigma1 cannot be identified from this data",
+    );
+    rejects(
+        &["fit", "--fit", "full", "--input", f, "--fix", "sigma2"],
+        "sigma1",
+    );
+    rejects(
+        &["fit", "--input", f, "--free", "sigma1"],
+        "sigma1 does not enter the slow loop",
+    );
+}
+
+#[test]
+fn bad_input_is_one_line_and_status_2() {
+    let dir = scratch("errors");
+    let file = slow_file(
+        &dir,
+        &LuGre::paper().with_sigma0(6.0).unwrap(),
+        &[0.0, 1.0, 0.5, 1.5],
+    );
+    let f = file.to_str().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let ramp = write(
+        "ramp.csv",
+        &(0..20).map(|i| format!("{i},{i}\n")).collect::<String>(),
+    );
+    rejects(&["fit", "--input", &ramp], "has no reversal");
+    let few = write("few.csv", "u,F\n0,0\n1,1\n0,0\n");
+    rejects(&["fit", "--input", &few], "too few samples: 3");
+    let nan = write("nan.csv", "u,F\n0,0\n1,nan\n");
+    rejects(
+        &["fit", "--input", &nan],
+        "line 3: F = 'nan' is not a finite number",
+    );
+    let header = write("header.csv", "x,y\n0,0\n");
+    rejects(&["fit", "--input", &header], "unexpected header 'x,y'");
+    let times = write("times.csv", "t,u,F\n0,0,0\n1,1,1\n1,0,0\n");
+    rejects(
+        &["fit", "--fit", "full", "--input", &times],
+        "line 4: times must be strictly increasing",
+    );
+    rejects(
+        &["fit", "--fit", "full", "--input", f],
+        "a full fit needs the samples' times",
+    );
+    rejects(
+        &[
+            "fit",
+            "--input",
+            f,
+            "--sigma0",
+            "0.5",
+            "--bounds",
+            "sigma0=1:10",
+        ],
+        "exclude its start value 0.5",
+    );
+    rejects(
+        &["fit", "--input", f, "--bounds", "sigma0=5:1"],
+        "must satisfy 0 <= lo < hi",
+    );
+    rejects(
+        &["fit", "--input", f, "--fix", "rho"],
+        "unknown parameter 'rho'",
+    );
+    rejects(
+        &["fit", "--input", f, "--fix", "sigma0,fs"],
+        "nothing to fit",
+    );
+    rejects(
+        &["fit", "--input", f, "--x0", "1"],
+        "--x0 applies to the full fit",
+    );
+    rejects(&["fit"], "no data");
+    rejects(
+        &["fit", "--input", f, "--model", "dahl", "--sigma0", "3"],
+        "--sigma0 is a LuGre parameter",
+    );
+}

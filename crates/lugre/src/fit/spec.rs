@@ -1,0 +1,535 @@
+//! What to fit: the model family, which parameters are free, their start values and bounds, and
+//! the map from bounded parameters to the unconstrained variables the optimizer moves.
+
+use crate::error::FitError;
+use crate::model::LuGreParams;
+
+/// The LuGre parameters, in the order of [`LuGreParams`].
+pub const LUGRE_PARAMETERS: [&str; 7] = ["sigma0", "sigma1", "sigma2", "fc", "fs", "vs", "beta"];
+
+/// The Dahl parameters.
+pub const DAHL_PARAMETERS: [&str; 2] = ["rho", "fc"];
+
+/// The model whose parameters are identified.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Family {
+    /// LuGre with the Stribeck `g` and viscous `f`: `sigma0, sigma1, sigma2, fc, fs, vs, beta`.
+    LuGre,
+    /// Dahl: `rho, fc` (LuGre with `g = Fc`, `sigma0 = rho Fc`, `sigma1 = 0`, `f = 0`).
+    Dahl,
+}
+
+impl Family {
+    /// The parameter names, in a fixed order.
+    pub fn parameters(self) -> &'static [&'static str] {
+        match self {
+            Family::LuGre => &LUGRE_PARAMETERS,
+            Family::Dahl => &DAHL_PARAMETERS,
+        }
+    }
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Family::LuGre => "LuGre",
+            Family::Dahl => "Dahl",
+        }
+    }
+
+    fn known(self) -> &'static str {
+        match self {
+            Family::LuGre => "sigma0, sigma1, sigma2, fc, fs, vs, beta",
+            Family::Dahl => "rho, fc",
+        }
+    }
+
+    /// The index of `name` (case-insensitive).
+    pub fn index(self, name: &str) -> Result<usize, FitError> {
+        let lower = name.trim().to_ascii_lowercase();
+        self.parameters()
+            .iter()
+            .position(|p| *p == lower)
+            .ok_or_else(|| FitError::UnknownParameter {
+                name: name.to_string(),
+                model: self.label(),
+                known: self.known(),
+            })
+    }
+
+    /// The two parameters the slow loop depends on: `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`).
+    pub(crate) fn slow_parameters(self) -> [usize; 2] {
+        match self {
+            Family::LuGre => [0, 4],
+            Family::Dahl => [0, 1],
+        }
+    }
+
+    /// The parameters a full fit frees unless told otherwise (`beta` stays fixed).
+    fn full_default(self) -> &'static [usize] {
+        match self {
+            Family::LuGre => &[0, 1, 2, 3, 4, 5],
+            Family::Dahl => &[0, 1],
+        }
+    }
+}
+
+/// Which fit: the slow loop (rate-independent limit) or the exact simulation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FitKind {
+    Slow,
+    Full,
+}
+
+impl FitKind {
+    pub fn label(self) -> &'static str {
+        match self {
+            FitKind::Slow => "slow",
+            FitKind::Full => "full",
+        }
+    }
+}
+
+/// Bounds `0 <= lo < hi <= inf` on a parameter. Every parameter of the models is positive, so
+/// the default is `(0, inf)`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Bounds {
+    pub lo: f64,
+    pub hi: f64,
+}
+
+impl Bounds {
+    pub const POSITIVE: Bounds = Bounds {
+        lo: 0.0,
+        hi: f64::INFINITY,
+    };
+
+    fn check(self, name: &'static str) -> Result<Self, FitError> {
+        let ok = self.lo >= 0.0 && self.lo.is_finite() && self.hi > self.lo && !self.hi.is_nan();
+        if ok {
+            Ok(self)
+        } else {
+            Err(FitError::BadBounds {
+                name,
+                lo: self.lo,
+                hi: self.hi,
+            })
+        }
+    }
+
+    /// Strictly inside.
+    pub(crate) fn contains(self, p: f64) -> bool {
+        p > self.lo && p < self.hi
+    }
+
+    /// A start from the data moved strictly inside (a start the user gave is never moved: it
+    /// is an error instead).
+    pub(crate) fn pull_inside(self, p: f64) -> f64 {
+        if self.contains(p) {
+            return p;
+        }
+        if self.hi.is_finite() {
+            // 5 % in from the violated bound: inside, and not where the logistic map is flat.
+            let span = self.hi - self.lo;
+            if p <= self.lo {
+                self.lo + 0.05 * span
+            } else {
+                self.hi - 0.05 * span
+            }
+        } else if self.lo > 0.0 {
+            2.0 * self.lo
+        } else {
+            // Only a start of 0 or below with bounds (0, inf): data starts are positive, but
+            // keep the map defined.
+            f64::MIN_POSITIVE.max(p.abs())
+        }
+    }
+
+    /// Where `p` sits relative to the bounds: within `1e-6` of the span (relative) of one of
+    /// them, the optimizer's variable has run off to infinity and the estimate is the bound.
+    pub(crate) fn at_bound(self, p: f64) -> bool {
+        let near = |b: f64| (p - b).abs() <= 1e-6 * b.abs().max(p.abs());
+        (self.lo > 0.0 && near(self.lo)) || (self.hi.is_finite() && near(self.hi))
+    }
+}
+
+/// The map between a bounded parameter `p` and the unconstrained variable `theta` the
+/// Levenberg-Marquardt iteration moves: `p = lo + exp(theta + shift)` for `hi = inf` (the
+/// log-parametrisation for positive parameters), `p = lo + (hi - lo) / (1 + exp(-theta -
+/// shift))` otherwise. The optimizer then needs no constraint handling, and a parameter that
+/// the data push to a bound goes there asymptotically. The shift puts the start at
+/// `theta = 1`: MINPACK's step test is relative to `|theta|`, which must not be near 0.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Transform {
+    bounds: Bounds,
+    shift: f64,
+}
+
+impl Transform {
+    /// The map with `theta(start) = 1`.
+    pub fn new(bounds: Bounds, start: f64) -> Self {
+        let unshifted = Self { bounds, shift: 0.0 };
+        Self {
+            bounds,
+            shift: unshifted.to_theta(start) - 1.0,
+        }
+    }
+
+    pub fn to_theta(self, p: f64) -> f64 {
+        let Bounds { lo, hi } = self.bounds;
+        let raw = if hi.is_infinite() {
+            (p - lo).ln()
+        } else {
+            ((p - lo) / (hi - p)).ln()
+        };
+        raw - self.shift
+    }
+
+    pub fn to_p(self, theta: f64) -> f64 {
+        let Bounds { lo, hi } = self.bounds;
+        let raw = theta + self.shift;
+        if hi.is_infinite() {
+            lo + raw.exp()
+        } else {
+            lo + (hi - lo) / (1.0 + (-raw).exp())
+        }
+    }
+
+    /// `dp / dtheta` at `p`.
+    pub fn slope(self, p: f64) -> f64 {
+        let Bounds { lo, hi } = self.bounds;
+        if hi.is_infinite() {
+            p - lo
+        } else {
+            (p - lo) * (hi - p) / (hi - lo)
+        }
+    }
+}
+
+/// The request: the model, the value of every parameter (fixed ones keep it), which parameters
+/// are free, start values and bounds.
+///
+/// A free parameter starts from the value given with [`FitSpec::set`], else from the data (see
+/// the module docs): no guess is needed. The parameters a fit frees by default are `sigma0`
+/// and `fs = g(0)` (slow fit; Dahl: `rho`, `fc`) and `sigma0, sigma1, sigma2, fc, fs, vs`
+/// (full fit; `beta` stays fixed unless freed; Dahl: `rho`, `fc`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FitSpec {
+    family: Family,
+    values: Vec<f64>,
+    start_given: Vec<bool>,
+    fixed: Vec<bool>,
+    freed: Vec<bool>,
+    bounds: Vec<Bounds>,
+}
+
+/// A spec resolved for one kind of fit.
+#[derive(Debug, Clone)]
+pub(crate) struct Resolved {
+    pub family: Family,
+    /// Every parameter of the family (free ones: their start, once chosen).
+    pub values: Vec<f64>,
+    /// Indices of the free parameters, in the family's order.
+    pub free: Vec<usize>,
+    /// Whether the user gave each free parameter's start.
+    pub given: Vec<bool>,
+    pub bounds: Vec<Bounds>,
+}
+
+impl Resolved {
+    pub fn names(&self) -> Vec<&'static str> {
+        self.free
+            .iter()
+            .map(|&i| self.family.parameters()[i])
+            .collect()
+    }
+
+    /// The maps of the free parameters, `theta = 1` at `start`.
+    pub fn transforms(&self, start: &[f64]) -> Vec<Transform> {
+        self.bounds
+            .iter()
+            .zip(start)
+            .map(|(&b, &p)| Transform::new(b, p))
+            .collect()
+    }
+
+    /// Data starts for the free parameters without a given one, pulled inside their bounds.
+    pub fn fill_starts(&mut self, data_start: &[f64]) {
+        for (j, &i) in self.free.iter().enumerate() {
+            if !self.given[j] {
+                self.values[i] = self.bounds[j].pull_inside(data_start[i]);
+            }
+        }
+    }
+
+    pub fn free_values(&self) -> Vec<f64> {
+        self.free_values_of(&self.values)
+    }
+
+    /// The free entries of a family parameter vector.
+    pub fn free_values_of(&self, values: &[f64]) -> Vec<f64> {
+        self.free.iter().map(|&i| values[i]).collect()
+    }
+
+    /// The LuGre parameters these values stand for (Dahl: `sigma0 = rho Fc`, `g = Fc`).
+    pub fn lugre(&self, values: &[f64]) -> LuGreParams {
+        lugre_params(self.family, values)
+    }
+}
+
+/// The LuGre parameters of a family's parameter vector.
+pub(crate) fn lugre_params(family: Family, v: &[f64]) -> LuGreParams {
+    match family {
+        Family::LuGre => LuGreParams {
+            sigma0: v[0],
+            sigma1: v[1],
+            sigma2: v[2],
+            fc: v[3],
+            fs: v[4],
+            vs: v[5],
+            beta: v[6],
+        },
+        Family::Dahl => LuGreParams {
+            sigma0: v[0] * v[1],
+            sigma1: 0.0,
+            sigma2: 0.0,
+            fc: v[1],
+            fs: v[1],
+            vs: 1.0,
+            beta: 1.0,
+        },
+    }
+}
+
+impl FitSpec {
+    /// The LuGre model with these values (for the fixed parameters; free ones start from the
+    /// data).
+    pub fn lugre(p: LuGreParams) -> Self {
+        let values = vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta];
+        Self::with_values(Family::LuGre, values)
+    }
+
+    /// The Dahl model with these values (for the fixed parameter; free ones start from the data).
+    pub fn dahl(rho: f64, fc: f64) -> Self {
+        Self::with_values(Family::Dahl, vec![rho, fc])
+    }
+
+    /// The family with its defaults: the paper's LuGre parameters ([`LuGreParams::default`]),
+    /// Dahl `rho = 1`, `Fc = 1`.
+    pub fn new(family: Family) -> Self {
+        match family {
+            Family::LuGre => Self::lugre(LuGreParams::default()),
+            Family::Dahl => Self::dahl(1.0, 1.0),
+        }
+    }
+
+    fn with_values(family: Family, values: Vec<f64>) -> Self {
+        let n = values.len();
+        Self {
+            family,
+            values,
+            start_given: vec![false; n],
+            fixed: vec![false; n],
+            freed: vec![false; n],
+            bounds: vec![Bounds::POSITIVE; n],
+        }
+    }
+
+    pub fn family(&self) -> Family {
+        self.family
+    }
+
+    /// The value of parameter `name`: kept if it is fixed, the start if it is free.
+    pub fn set(mut self, name: &str, value: f64) -> Result<Self, FitError> {
+        let i = self.family.index(name)?;
+        self.values[i] = value;
+        self.start_given[i] = true;
+        Ok(self)
+    }
+
+    /// Keeps `name` at its value.
+    pub fn fix(mut self, name: &str) -> Result<Self, FitError> {
+        let i = self.family.index(name)?;
+        self.fixed[i] = true;
+        Ok(self)
+    }
+
+    /// Fits `name` too (e.g. `beta` in a full fit).
+    pub fn free(mut self, name: &str) -> Result<Self, FitError> {
+        let i = self.family.index(name)?;
+        self.freed[i] = true;
+        Ok(self)
+    }
+
+    /// Bounds `0 <= lo < hi <= inf` on `name`.
+    pub fn bounds(mut self, name: &str, lo: f64, hi: f64) -> Result<Self, FitError> {
+        let i = self.family.index(name)?;
+        self.bounds[i] = Bounds { lo, hi }.check(self.family.parameters()[i])?;
+        Ok(self)
+    }
+
+    /// The value of `name` (its start, if it is free and was given).
+    pub fn value(&self, name: &str) -> Result<f64, FitError> {
+        Ok(self.values[self.family.index(name)?])
+    }
+
+    /// The free parameters of a fit of this kind, checked.
+    pub(crate) fn resolve(&self, kind: FitKind) -> Result<Resolved, FitError> {
+        let names = self.family.parameters();
+        let mut free = Vec::new();
+        for (i, &name) in names.iter().enumerate() {
+            if self.fixed[i] && self.freed[i] {
+                return Err(FitError::FixedAndFree { name });
+            }
+            let possible = match kind {
+                FitKind::Slow => self.family.slow_parameters().contains(&i),
+                FitKind::Full => true,
+            };
+            if self.freed[i] && !possible {
+                return Err(FitError::NotInSlowLoop { name: names[i] });
+            }
+            let default = match kind {
+                FitKind::Slow => possible,
+                FitKind::Full => self.family.full_default().contains(&i),
+            };
+            if (default || self.freed[i]) && !self.fixed[i] {
+                free.push(i);
+            }
+        }
+        if free.is_empty() {
+            return Err(FitError::NothingToFit { fit: kind.label() });
+        }
+        let mut given = Vec::with_capacity(free.len());
+        let mut bounds = Vec::with_capacity(free.len());
+        for &i in &free {
+            let b = self.bounds[i].check(names[i])?;
+            let v = self.values[i];
+            if self.start_given[i] {
+                if !(v.is_finite() && v > 0.0) {
+                    return Err(FitError::BadStart {
+                        name: names[i],
+                        value: v,
+                    });
+                }
+                if !b.contains(v) {
+                    return Err(FitError::StartOutsideBounds {
+                        name: names[i],
+                        start: v,
+                        lo: b.lo,
+                        hi: b.hi,
+                    });
+                }
+            }
+            given.push(self.start_given[i]);
+            bounds.push(b);
+        }
+        Ok(Resolved {
+            family: self.family,
+            values: self.values.clone(),
+            free,
+            given,
+            bounds,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transforms_round_trip_and_stay_inside() {
+        for b in [
+            Bounds::POSITIVE,
+            Bounds {
+                lo: 2.0,
+                hi: f64::INFINITY,
+            },
+            Bounds { lo: 0.5, hi: 3.0 },
+        ] {
+            let t = Transform::new(b, 2.5);
+            assert!((t.to_theta(2.5) - 1.0).abs() < 1e-15);
+            for p in [0.6, 1.0, 2.5, 2.9] {
+                if !b.contains(p) {
+                    continue;
+                }
+                let theta = t.to_theta(p);
+                assert!((t.to_p(theta) - p).abs() <= 1e-15 * p.max(1.0) * 4.0);
+                let h = 1e-6;
+                let fd = (t.to_p(theta + h) - t.to_p(theta - h)) / (2.0 * h);
+                assert!((fd - t.slope(p)).abs() < 1e-8 * t.slope(p).max(1.0));
+            }
+            for theta in [-1e3, -30.0, 0.0, 30.0] {
+                let p = t.to_p(theta);
+                assert!(p >= b.lo && p <= b.hi, "{p} outside {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn free_sets_by_kind() {
+        let s = FitSpec::new(Family::LuGre);
+        assert_eq!(s.resolve(FitKind::Slow).unwrap().free, vec![0, 4]);
+        assert_eq!(
+            s.resolve(FitKind::Full).unwrap().free,
+            vec![0, 1, 2, 3, 4, 5]
+        );
+        let s = s.fix("sigma2").unwrap().free("beta").unwrap();
+        assert_eq!(
+            s.resolve(FitKind::Full).unwrap().free,
+            vec![0, 1, 3, 4, 5, 6]
+        );
+        assert_eq!(
+            s.resolve(FitKind::Slow).unwrap_err(),
+            FitError::NotInSlowLoop { name: "beta" }
+        );
+        let s = FitSpec::new(Family::Dahl)
+            .fix("rho")
+            .unwrap()
+            .fix("FC")
+            .unwrap();
+        assert_eq!(
+            s.resolve(FitKind::Slow).unwrap_err(),
+            FitError::NothingToFit { fit: "slow" }
+        );
+        assert!(matches!(
+            FitSpec::new(Family::Dahl).fix("sigma0"),
+            Err(FitError::UnknownParameter { .. })
+        ));
+        let both = FitSpec::new(Family::Dahl)
+            .fix("rho")
+            .unwrap()
+            .free("rho")
+            .unwrap();
+        assert_eq!(
+            both.resolve(FitKind::Full).unwrap_err(),
+            FitError::FixedAndFree { name: "rho" }
+        );
+    }
+
+    #[test]
+    fn starts_and_bounds_are_checked() {
+        let s = FitSpec::new(Family::LuGre).set("sigma0", 5.0).unwrap();
+        let s2 = s.clone().bounds("sigma0", 10.0, 100.0).unwrap();
+        assert_eq!(
+            s2.resolve(FitKind::Slow).unwrap_err(),
+            FitError::StartOutsideBounds {
+                name: "sigma0",
+                start: 5.0,
+                lo: 10.0,
+                hi: 100.0
+            }
+        );
+        assert!(matches!(
+            s.clone().bounds("sigma0", 3.0, 1.0),
+            Err(FitError::BadBounds { .. })
+        ));
+        assert!(matches!(
+            s.bounds("sigma0", -1.0, 1.0),
+            Err(FitError::BadBounds { .. })
+        ));
+        let b = Bounds { lo: 1.0, hi: 2.0 };
+        assert_eq!(b.pull_inside(5.0), 1.95);
+        assert_eq!(b.pull_inside(0.1), 1.05);
+    }
+}
