@@ -164,16 +164,16 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
             while i < n - 1 {
                 let stop = (i + CHUNK).min(n - 1);
                 let base = out.len();
-                let rows = out.grow(stop - i);
                 // Non-zero (NaN) once any of z, z', y is not finite: one check per block, made
                 // while the rows are in L1 rather than in a second pass over the output.
                 let mut bad = 0.0;
-                for (row, i) in rows.zip(i..stop) {
+                for i in i..stop {
                     let seg = self.segment(u[i + 1] - u[i], t[i + 1] - t[i]);
                     // `+ 0.0` in the first period leaves the user's times exact.
                     let s = self.sample(&seg, t[i] + shift, u[i], z);
                     bad += (s.z + s.dz + s.y) * 0.0;
-                    (*row.0, *row.1, *row.2, *row.3, *row.4) = (s.t, s.u, s.z, s.dz, s.y);
+                    // Pushed into reserved capacity: no zero-filling pass before the writes.
+                    out.push(s);
                     z = relax_toward(z, seg.c, seg.z_inf);
                 }
                 if bad != 0.0 {

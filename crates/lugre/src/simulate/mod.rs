@@ -268,31 +268,6 @@ impl Trajectory {
         lo..hi.max(lo)
     }
 
-    /// Appends `rows` zero rows and returns them for filling, column by column.
-    #[allow(clippy::type_complexity)]
-    pub(crate) fn grow(
-        &mut self,
-        rows: usize,
-    ) -> impl Iterator<Item = (&mut f64, &mut f64, &mut f64, &mut f64, &mut f64)> + '_ {
-        let base = self.len();
-        for column in [
-            &mut self.t,
-            &mut self.u,
-            &mut self.z,
-            &mut self.dz,
-            &mut self.y,
-        ] {
-            column.resize(base + rows, 0.0);
-        }
-        self.t[base..]
-            .iter_mut()
-            .zip(&mut self.u[base..])
-            .zip(&mut self.z[base..])
-            .zip(&mut self.dz[base..])
-            .zip(&mut self.y[base..])
-            .map(|((((t, u), z), dz), y)| (t, u, z, dz, y))
-    }
-
     /// The first sample whose `z`, `z'` or `y` is not finite, as an error.
     pub(crate) fn check_finite(&self, from: usize) -> Result<(), SimulateError> {
         for i in from..self.len() {
