@@ -5,6 +5,7 @@
 
 mod convert;
 mod cycles;
+mod fit;
 mod loops;
 mod models;
 mod simulate;
@@ -23,5 +24,6 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<loops::PyTheoremA>()?;
     m.add_class::<loops::PyCurve>()?;
     m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     Ok(())
 }

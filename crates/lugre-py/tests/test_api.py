@@ -113,6 +113,7 @@ def test_docstrings_are_visible_in_help():
         (lugre.LuGre.simulate, "eq. 5"),
         (lugre.Dahl.simulate, "eq. 5"),
         (lugre.cycles, "rainflow"),
+        (lugre.fit, "standard errors"),
     ):
         assert obj.__doc__ and words in obj.__doc__, obj
     r = subprocess.run([sys.executable, "-c", "import lugre; help(lugre.LuGre)"], capture_output=True, text=True,
@@ -127,8 +128,8 @@ def test_type_stubs_are_shipped():
     assert files.joinpath("py.typed").is_file()
     stub = files.joinpath("__init__.pyi").read_text()
     for name in lugre.__all__:
-        if name == "cycles":
-            assert "def cycles(" in stub
+        if name in ("cycles", "fit"):
+            assert f"def {name}(" in stub, name
         elif name != "__version__":
             assert f"class {name}" in stub, name
     assert stub.count("def simulate(") == 2

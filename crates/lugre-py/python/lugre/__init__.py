@@ -14,10 +14,18 @@ package converts numpy arrays in and out.
 >>> rho, u, y = hl.sample(1001)                  # the loop, for plotting y against u
 >>> r = model.simulate([0, 1, 0.5, 1.5], gamma=10, periods=3)   # eq. 5: t, u, z, dz, y
 >>> c = lugre.cycles([-2, 1, -3, 5, -1, 3, -4, 4, -2])        # rainflow cycles of a history
+>>> p = lugre.fit(u, y)["parameters"]             # sigma0 and g(0) = fs from (u, F) samples
+>>> round(p["sigma0"]["value"], 6), round(p["fs"]["value"], 6)
+(6.0, 2.0)
 
 Models: LuGre(sigma0=1, sigma1=1, sigma2=0, fc=1, fs=2, vs=1, beta=1) and Dahl(rho=1, fc=1)
 (keyword arguments; the defaults are the paper's). Invalid values raise ValueError with the
 message the ``lugre`` command prints; arguments of the wrong type raise TypeError.
+
+Parameter identification (``lugre fit``): ``lugre.fit(u, f, *, t=None, model="lugre",
+kind="slow", fix=(), free=(), start=None, bounds=None, x0=None, starts=None)`` returns a dict of
+the estimates with standard errors, 95 % intervals and correlations, and the fitted curve (see
+``help(lugre.fit)``).
 """
 
 from ._lugre import (
@@ -30,6 +38,7 @@ from ._lugre import (
     TheoremA,
     __version__,
     cycles,
+    fit,
 )
 
 __all__ = [
@@ -42,4 +51,5 @@ __all__ = [
     "TheoremA",
     "__version__",
     "cycles",
+    "fit",
 ]

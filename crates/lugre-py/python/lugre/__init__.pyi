@@ -1,6 +1,21 @@
 """Type stubs of the package `lugre` (defined in the compiled module `lugre._lugre`)."""
 
-from typing import Any, Iterator, Literal, Optional, Sequence, SupportsFloat, SupportsIndex, Tuple, Union, overload
+from typing import (
+    Any,
+    Iterable,
+    Iterator,
+    Literal,
+    Mapping,
+    Optional,
+    Sequence,
+    SupportsFloat,
+    SupportsIndex,
+    Tuple,
+    TypedDict,
+    Union,
+    overload,
+    type_check_only,
+)
 
 import numpy as np
 import numpy.typing as npt
@@ -205,4 +220,55 @@ def cycles(
 ) -> dict[str, dict[str, Any]]:
     """Reversals and ASTM E1049-85 rainflow cycles of a measured history, with loop closure and,
     with a model, the energy of each full cycle."""
+    ...
+
+@type_check_only
+class FitEstimate(TypedDict):
+    """One fitted parameter of lugre.fit (a dict at runtime)."""
+
+    value: float
+    stderr: float
+    ci95: Tuple[float, float]
+    at_bound: bool
+
+@type_check_only
+class FitResult(TypedDict):
+    """The result of lugre.fit (a dict at runtime)."""
+
+    parameters: dict[str, FitEstimate]
+    fixed: dict[str, float]
+    values: dict[str, float]
+    rms: float
+    samples: int
+    dof: int
+    t_quantile: float
+    condition_number: float
+    correlation: _Floats
+    iterations: int
+    evaluations: int
+    starts: int
+    converged: bool
+    termination: str
+    turning_points: Optional[int]
+    model: Literal["lugre", "dahl"]
+    kind: Literal["slow", "full"]
+    fitted: _Floats
+    residuals: _Floats
+
+def fit(
+    u: _Reals,
+    f: _Reals,
+    *,
+    t: Optional[_Reals] = None,
+    model: Union[Literal["lugre", "dahl"], str, LuGre, Dahl] = "lugre",
+    kind: Union[Literal["slow", "full"], str] = "slow",
+    fix: Union[str, Iterable[str], Mapping[str, _Real]] = (),
+    free: Union[str, Iterable[str]] = (),
+    start: Optional[Mapping[str, _Real]] = None,
+    bounds: Optional[Mapping[str, Tuple[Optional[_Real], Optional[_Real]]]] = None,
+    x0: Optional[_Real] = None,
+    starts: Optional[SupportsIndex] = None,
+) -> FitResult:
+    """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
+    errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
     ...

@@ -1,0 +1,529 @@
+//! `lugre.fit`: parameter identification from measured data (core `lugre::fit`, the engine of
+//! `lugre fit`), as a dict of numbers and numpy arrays.
+//!
+//! The request is built the way the command builds it from its flags: the model's values (the
+//! paper's defaults, or those of a `LuGre`/`Dahl` object), start values (`FitSpec::set`), fixed
+//! and freed parameters, bounds; the fit then runs detached from the interpreter.
+
+use std::ffi::CString;
+
+use lugre::fit::{fit_full, fit_slow, Family, FitError, FitKind, FitReport, FitSpec, FullOptions};
+use pyo3::exceptions::{PyRuntimeWarning, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyMapping, PyString, PyTuple};
+
+use crate::convert::{
+    array_out, count, float_repr, floats, real, try_vec, type_name, value_error, vec_out,
+};
+use crate::models::{PyDahl, PyLuGre};
+
+/// A rough upper estimate of the fit's working memory per sample, in floats (the Jacobian of
+/// up to 7 columns and the optimizer's copies of it, the output, residuals and the simulation's
+/// state), reserved once before the core allocates: a failed allocation there would abort the
+/// interpreter.
+const FLOATS_PER_SAMPLE: usize = 48;
+
+/// Identifies the parameters of the LuGre or Dahl model from measured samples: the engine of
+/// `lugre fit`.
+///
+/// * kind="slow" (default): sigma0 and g(0) = fs (Dahl: rho and fc) from one or more periods
+///   of a slow periodic test, samples (u, f) (the record closes from its last sample back to
+///   its first: trim start-up transients; sample the reversals themselves). The fit runs on
+///   the closed-form hysteresis loop y° (eqs. 8-10) with the data's turning points; `t` is
+///   optional and only checked (the loop depends on the turning points alone).
+/// * kind="full": sigma0, sigma1, sigma2, fc, fs, vs (Dahl: rho, fc; beta stays fixed unless
+///   freed) from rate-dependent samples (t, u, f), on the exact simulation of eq. 1 from the
+///   initial state x0 (given, not fitted), from `starts` start points (the first from the
+///   data, then sigma0 and vs scaled by 4 or 1/4); the best end point wins.
+///
+/// Arguments:
+///
+/// * u, f: the input and the measured friction force, equal-length sequences or arrays of
+///   real numbers; t (keyword): the sample times, strictly increasing (needed by the full fit).
+/// * model: "lugre" (default) or "dahl", or a lugre.LuGre / lugre.Dahl whose values the
+///   parameters that are not fitted keep (default: the paper's, Dahl rho = fc = 1). Free
+///   parameters start from the data either way.
+/// * fix: parameter names held at the model's value (a name or a sequence of names), or a dict
+///   name -> value held at that value (e.g. fix={"sigma2": 0}: a parameter whose value is 0
+///   must be fixed, fitted parameters are positive).
+/// * free: names fitted besides the default ones (e.g. free=["beta"] in a full fit).
+/// * start: dict name -> start value of a free parameter (else it starts from the data, so no
+///   guess is needed); a value given for a parameter that is not fitted is the value it keeps.
+/// * bounds: dict name -> (lo, hi) with 0 <= lo < hi; hi may be math.inf (None: no bound on
+///   that side). Default (0, inf): every parameter is positive.
+/// * x0 (full fit only): the initial bristle deflection x(0) (Dahl: w(0) / rho); None: 0.
+/// * starts (full fit only): the number of start points; None: 3.
+///
+/// Parameter names are those of the models' keyword arguments (sigma0, sigma1, sigma2, fc, fs,
+/// vs, beta; Dahl rho, fc), case-insensitive.
+///
+/// Returns a dict:
+///
+/// * "parameters": {name: {"value", "stderr", "ci95": (lo, hi), "at_bound"}} for the fitted
+///   parameters in the model's order (standard errors from the linearised covariance
+///   s^2 (J^T J)^-1, 95 % intervals value -+ t_quantile * stderr with Student's t on dof
+///   degrees of freedom; at_bound: the estimate sits on one of its bounds);
+/// * "fixed": {name: value} of the parameters held (slow fit: only those of the loop);
+/// * "values": every parameter of the fitted model, estimates included (for a slow LuGre fit
+///   the parameters the loop does not depend on keep the model's values), so
+///   lugre.LuGre(**r["values"]) (or lugre.Dahl) is the fitted model;
+/// * "rms" (residual RMS), "samples", "dof", "t_quantile", "condition_number" (of the scaled
+///   J^T J), "correlation" (float64 array, one row and column per fitted parameter, in the
+///   order of "parameters"), "iterations", "evaluations", "starts", "converged",
+///   "termination" (why the iteration stopped), "turning_points" (how many a slow fit found in
+///   the data; None for a full fit), "model" ("lugre" or "dahl"), "kind" ("slow" or "full");
+/// * "fitted": the model's output at every sample and "residuals" = f - fitted (float64
+///   arrays).
+///
+/// A fit that ran out of evaluations at a usable point is returned with converged = False and
+/// a RuntimeWarning. Every other failure raises ValueError with the message of `lugre fit`,
+/// among them a parameter the data cannot determine (e.g. sigma1 from quasi-static data): the
+/// message names every such parameter and why, and the exception's `parameters` attribute
+/// holds their names. Arguments of the wrong type raise TypeError. The interpreter lock is
+/// released while the fit runs.
+///
+/// >>> import numpy as np, lugre
+/// >>> hl = lugre.LuGre(sigma0=6).loop_bimodal(0, 0.5, 1, 1.5)   # the paper's Example 4
+/// >>> rho = np.linspace(0, hl.period, 401)
+/// >>> r = lugre.fit(hl.u_at(rho), hl.y_at(rho))
+/// >>> round(r["parameters"]["sigma0"]["value"], 9), round(r["parameters"]["fs"]["value"], 9)
+/// (6.0, 2.0)
+#[pyfunction]
+#[pyo3(
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None)"
+)]
+#[allow(clippy::too_many_arguments)]
+pub fn fit<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    t: Option<&Bound<'py, PyAny>>,
+    model: Option<&Bound<'py, PyAny>>,
+    kind: Option<&Bound<'py, PyAny>>,
+    fix: Option<&Bound<'py, PyAny>>,
+    free: Option<&Bound<'py, PyAny>>,
+    start: Option<&Bound<'py, PyAny>>,
+    bounds: Option<&Bound<'py, PyAny>>,
+    x0: Option<&Bound<'py, PyAny>>,
+    starts: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
+    let u = floats(u, "u")?.one_dimensional("u", u)?;
+    let f = floats(f, "f")?.one_dimensional("f", f)?;
+    let t = match given(t) {
+        Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
+        None => None,
+    };
+    let kind = match given(kind) {
+        Some(k) => kind_arg(&k)?,
+        None => FitKind::Slow,
+    };
+    let spec = build_spec(
+        given(model),
+        given(fix),
+        given(free),
+        given(start),
+        given(bounds),
+    )?;
+
+    let x0 = given(x0).map(|x| real(&x, "x0")).transpose()?;
+    let starts = given(starts).map(|s| count(&s, "starts")).transpose()?;
+    let options = match kind {
+        FitKind::Slow => {
+            // As `lugre fit` refuses --x0 and --starts without --fit full.
+            for (name, set) in [("x0", x0.is_some()), ("starts", starts.is_some())] {
+                if set {
+                    return Err(PyValueError::new_err(format!(
+                        "{name} applies to the full fit (add kind='full')"
+                    )));
+                }
+            }
+            if let Some(t) = &t {
+                check_times(t, u.len()).map_err(|e| explain(py, e))?;
+            }
+            None
+        }
+        FitKind::Full => {
+            if t.is_none() {
+                return Err(PyValueError::new_err(
+                    "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
+                ));
+            }
+            let starts = match starts {
+                Some(n) => usize::try_from(n)
+                    .map_err(|_| PyValueError::new_err(format!("starts is too large, got {n}")))?,
+                None => FullOptions::default().starts,
+            };
+            Some(FullOptions {
+                x0: x0.unwrap_or(0.0),
+                starts,
+            })
+        }
+    };
+    drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
+
+    let report = py
+        // `options` is set for the full fit only, which has times.
+        .detach(|| match (&options, &t) {
+            (Some(options), Some(t)) => fit_full(&spec, t, &u, &f, options, &mut |_| {}),
+            _ => fit_slow(&spec, &u, &f),
+        })
+        .map_err(|e| explain(py, e))?;
+
+    if !report.converged {
+        // `lugre fit` warns on stderr and reports the point; Python's way is a warning.
+        let message = CString::new(format!(
+            "the fit did not converge ({}); the best point found is reported",
+            report.termination
+        ))
+        .unwrap_or_default();
+        PyErr::warn(py, &py.get_type::<PyRuntimeWarning>(), &message, 1)?;
+    }
+    report_dict(py, &report, &spec, &f)
+}
+
+/// `kind`: "slow" or "full" (case-insensitive).
+fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
+    let s = text(obj, "kind", "'slow' or 'full'")?;
+    match s.trim().to_ascii_lowercase().as_str() {
+        "slow" => Ok(FitKind::Slow),
+        "full" => Ok(FitKind::Full),
+        _ => Err(PyValueError::new_err(format!(
+            "kind must be 'slow' or 'full', got {}",
+            obj.repr()?
+        ))),
+    }
+}
+
+/// A `str` argument, else a `TypeError` saying what was expected.
+fn text(obj: &Bound<'_, PyAny>, name: &str, expected: &str) -> PyResult<String> {
+    match obj.cast::<PyString>() {
+        Ok(s) => Ok(s.to_cow()?.into_owned()),
+        Err(_) => Err(PyTypeError::new_err(format!(
+            "{name} must be {expected}, got {}",
+            type_name(obj)
+        ))),
+    }
+}
+
+/// The model's family and values: a name (the defaults) or a model object (its values).
+fn model_spec(model: Option<Bound<'_, PyAny>>) -> PyResult<FitSpec> {
+    const EXPECTED: &str = "'lugre', 'dahl', a lugre.LuGre or a lugre.Dahl";
+    let Some(m) = model else {
+        return Ok(FitSpec::new(Family::LuGre));
+    };
+    if let Ok(l) = m.cast::<PyLuGre>() {
+        return Ok(FitSpec::lugre(l.get().inner.params()));
+    }
+    if let Ok(d) = m.cast::<PyDahl>() {
+        let d = &d.get().inner;
+        return Ok(FitSpec::dahl(d.rho(), d.fc()));
+    }
+    let s = text(&m, "model", EXPECTED)?;
+    match s.trim().to_ascii_lowercase().as_str() {
+        "lugre" => Ok(FitSpec::new(Family::LuGre)),
+        "dahl" => Ok(FitSpec::new(Family::Dahl)),
+        _ => Err(PyValueError::new_err(format!(
+            "model must be {EXPECTED}, got {}",
+            m.repr()?
+        ))),
+    }
+}
+
+/// Parameter names: one `str` or an iterable of them (not a dict: `fix` handles those).
+fn names(obj: &Bound<'_, PyAny>, arg: &str) -> PyResult<Vec<String>> {
+    let bad = |what: String| {
+        PyTypeError::new_err(format!(
+            "{arg} must be a parameter name or a sequence of names, got {what}"
+        ))
+    };
+    if let Ok(s) = obj.cast::<PyString>() {
+        return Ok(vec![s.to_cow()?.into_owned()]);
+    }
+    let mut out = Vec::new();
+    for item in obj.try_iter().map_err(|_| bad(type_name(obj)))? {
+        let item = item?;
+        match item.cast::<PyString>() {
+            Ok(s) => out.push(s.to_cow()?.into_owned()),
+            Err(_) => return Err(bad(format!("an element of type {}", type_name(&item)))),
+        }
+    }
+    Ok(out)
+}
+
+/// The `(key, value)` pairs of a mapping argument, keys `str`.
+fn items<'py>(
+    obj: &Bound<'py, PyAny>,
+    arg: &str,
+    what: &str,
+) -> PyResult<Vec<(String, Bound<'py, PyAny>)>> {
+    let mapping = obj.cast::<PyMapping>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{arg} must be a dict of parameter name -> {what}, got {}",
+            type_name(obj)
+        ))
+    })?;
+    let mut out = Vec::new();
+    for pair in mapping.items()?.iter() {
+        let (key, value): (Bound<'py, PyAny>, Bound<'py, PyAny>) = pair.extract()?;
+        let name = text(&key, &format!("each key of {arg}"), "a parameter name")?;
+        out.push((name, value));
+    }
+    Ok(out)
+}
+
+/// `(lo, hi)`: two real numbers, `None` for no bound on that side.
+fn bound_pair(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<(f64, f64)> {
+    let arg = format!("bounds['{name}']");
+    let bad = || {
+        PyTypeError::new_err(format!(
+            "{arg} must be a pair (lo, hi) of real numbers, got {}",
+            type_name(obj)
+        ))
+    };
+    if obj.is_instance_of::<PyString>() || obj.cast::<PyMapping>().is_ok() {
+        return Err(bad());
+    }
+    let pair: Vec<Bound<'_, PyAny>> = obj
+        .try_iter()
+        .map_err(|_| bad())?
+        .collect::<PyResult<_>>()?;
+    if pair.len() != 2 {
+        return Err(PyValueError::new_err(format!(
+            "{arg} must be a pair (lo, hi), got {} values",
+            pair.len()
+        )));
+    }
+    let side = |o: &Bound<'_, PyAny>, which: &str, none: f64| {
+        if o.is_none() {
+            Ok(none)
+        } else {
+            real(o, &format!("{arg} {which}"))
+        }
+    };
+    Ok((
+        side(&pair[0], "lo", 0.0)?,
+        side(&pair[1], "hi", f64::INFINITY)?,
+    ))
+}
+
+/// The request, as `lugre fit` builds it from the model flags, --fix, --free and --bounds.
+fn build_spec(
+    model: Option<Bound<'_, PyAny>>,
+    fix: Option<Bound<'_, PyAny>>,
+    free: Option<Bound<'_, PyAny>>,
+    start: Option<Bound<'_, PyAny>>,
+    bounds: Option<Bound<'_, PyAny>>,
+) -> PyResult<FitSpec> {
+    let mut spec = model_spec(model)?;
+    let family = spec.family();
+    // The canonical name of a parameter, or the core's error with the argument's name.
+    let canonical = |arg: &str, name: &str| -> PyResult<&'static str> {
+        family
+            .index(name)
+            .map(|i| family.parameters()[i])
+            .map_err(|e| PyValueError::new_err(format!("{arg}: {e}")))
+    };
+
+    let mut started = Vec::new();
+    if let Some(start) = &start {
+        for (name, value) in items(start, "start", "start value")? {
+            let canon = canonical("start", &name)?;
+            let v = real(&value, &format!("start['{name}']"))?;
+            spec = spec.set(canon, v).map_err(value_error)?;
+            started.push(canon);
+        }
+    }
+    if let Some(fix) = &fix {
+        if fix.cast::<PyMapping>().is_ok() {
+            for (name, value) in items(fix, "fix", "value")? {
+                let canon = canonical("fix", &name)?;
+                if started.contains(&canon) {
+                    return Err(PyValueError::new_err(format!(
+                        "{canon} is given both in start and in fix (a fixed parameter keeps the value in fix)"
+                    )));
+                }
+                let v = real(&value, &format!("fix['{name}']"))?;
+                spec = spec
+                    .set(canon, v)
+                    .and_then(|s| s.fix(canon))
+                    .map_err(value_error)?;
+            }
+        } else {
+            for name in names(fix, "fix")? {
+                spec = spec.fix(canonical("fix", &name)?).map_err(value_error)?;
+            }
+        }
+    }
+    if let Some(free) = &free {
+        for name in names(free, "free")? {
+            spec = spec.free(canonical("free", &name)?).map_err(value_error)?;
+        }
+    }
+    if let Some(bounds) = &bounds {
+        for (name, value) in items(bounds, "bounds", "(lo, hi)")? {
+            let canon = canonical("bounds", &name)?;
+            let (lo, hi) = bound_pair(&value, &name)?;
+            spec = spec
+                .bounds(canon, lo, hi)
+                .map_err(|e| PyValueError::new_err(format!("bounds: {e}")))?;
+        }
+    }
+    check_model(&spec)?;
+    Ok(spec)
+}
+
+/// The values given must make a valid model (as `lugre fit` checks its model flags first):
+/// the model's own message otherwise, e.g. "fs must be > 0, got 0".
+fn check_model(spec: &FitSpec) -> PyResult<()> {
+    let v = |name: &str| spec.value(name).map_err(value_error);
+    match spec.family() {
+        Family::LuGre => {
+            let p = lugre::LuGreParams {
+                sigma0: v("sigma0")?,
+                sigma1: v("sigma1")?,
+                sigma2: v("sigma2")?,
+                fc: v("fc")?,
+                fs: v("fs")?,
+                vs: v("vs")?,
+                beta: v("beta")?,
+            };
+            lugre::LuGre::from_params(p).map_err(value_error)?;
+        }
+        Family::Dahl => {
+            lugre::Dahl::new(v("rho")?, v("fc")?).map_err(value_error)?;
+        }
+    }
+    Ok(())
+}
+
+/// The checks of the full fit's times, for a slow fit given `t` (as `lugre fit` checks the
+/// times of a `t,u,F` file): the core's errors.
+fn check_times(t: &[f64], n: usize) -> Result<(), FitError> {
+    if t.len() != n {
+        return Err(FitError::LengthMismatch {
+            what: "t",
+            got: t.len(),
+            u: n,
+        });
+    }
+    if let Some(index) = t.iter().position(|v| !v.is_finite()) {
+        return Err(FitError::NotFinite {
+            what: "t",
+            index,
+            value: t[index],
+        });
+    }
+    match (1..n).find(|&i| t[i] <= t[i - 1]) {
+        Some(index) => Err(FitError::TimesNotIncreasing {
+            index,
+            prev: t[index - 1],
+            value: t[index],
+        }),
+        None => Ok(()),
+    }
+}
+
+/// A core error as a `ValueError`, with what to do about it where `lugre fit` says so (in the
+/// terms of this function's arguments rather than the command's flags).
+fn explain(py: Python<'_>, e: FitError) -> PyErr {
+    match &e {
+        FitError::Unidentifiable { parameters } => {
+            let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
+            let (it, example) = if names.len() == 1 {
+                ("it", format!("fix={{'{}': value}}", names[0]))
+            } else {
+                ("them", format!("fix={{'{}': value, ...}}", names[0]))
+            };
+            let quoted: Vec<String> = names.iter().map(|n| format!("'{n}'")).collect();
+            let err = PyValueError::new_err(format!(
+                "{e}; fix {it} ({example}, or fix=[{}] for the model's values) or fit data that excite {it}",
+                quoted.join(", ")
+            ));
+            let attached =
+                PyTuple::new(py, &names).and_then(|n| err.value(py).setattr("parameters", n));
+            match attached {
+                Ok(()) => err,
+                Err(other) => other,
+            }
+        }
+        FitError::StartOutsideBounds { name, .. } => {
+            PyValueError::new_err(format!("{e}: change start['{name}'] or bounds['{name}']"))
+        }
+        FitError::BadStart { name, value } => PyValueError::new_err(format!(
+            "start['{name}']: {e} (to hold it at that value, give fix={{'{name}': {}}})",
+            float_repr(py, *value)
+        )),
+        _ => value_error(e),
+    }
+}
+
+/// The report as a dict (the keys of `lugre fit --json`, with "kind" for its "fit", plus the
+/// fitted values and curve).
+fn report_dict<'py>(
+    py: Python<'py>,
+    r: &FitReport,
+    spec: &FitSpec,
+    f: &[f64],
+) -> PyResult<Bound<'py, PyDict>> {
+    let parameters = PyDict::new(py);
+    for e in &r.estimates {
+        let d = PyDict::new(py);
+        d.set_item("value", e.value)?;
+        d.set_item("stderr", e.stderr)?;
+        d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
+        d.set_item("at_bound", e.at_bound)?;
+        parameters.set_item(e.name, d)?;
+    }
+    let fixed = PyDict::new(py);
+    for (name, v) in &r.fixed {
+        fixed.set_item(*name, *v)?;
+    }
+    let values = PyDict::new(py);
+    match r.family {
+        Family::LuGre => {
+            let p = r.lugre_params(spec);
+            for (name, v) in [
+                ("sigma0", p.sigma0),
+                ("sigma1", p.sigma1),
+                ("sigma2", p.sigma2),
+                ("fc", p.fc),
+                ("fs", p.fs),
+                ("vs", p.vs),
+                ("beta", p.beta),
+            ] {
+                values.set_item(name, v)?;
+            }
+        }
+        Family::Dahl => {
+            for (name, v) in r.values() {
+                values.set_item(name, v)?;
+            }
+        }
+    }
+    let p = r.estimates.len();
+    let correlation: Vec<f64> = r.correlation.iter().flatten().copied().collect();
+
+    let d = PyDict::new(py);
+    d.set_item("parameters", parameters)?;
+    d.set_item("fixed", fixed)?;
+    d.set_item("values", values)?;
+    d.set_item("rms", r.rms)?;
+    d.set_item("samples", r.samples)?;
+    d.set_item("dof", r.dof)?;
+    d.set_item("t_quantile", r.t_quantile)?;
+    d.set_item("condition_number", r.condition_number)?;
+    d.set_item("correlation", array_out(py, correlation, &[p, p])?)?;
+    d.set_item("iterations", r.iterations)?;
+    d.set_item("evaluations", r.evaluations)?;
+    d.set_item("starts", r.starts)?;
+    d.set_item("converged", r.converged)?;
+    d.set_item("termination", &r.termination)?;
+    d.set_item("turning_points", r.turning_points)?;
+    d.set_item("model", r.family.label().to_ascii_lowercase())?;
+    d.set_item("kind", r.kind.label())?;
+    d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
+    d.set_item("residuals", vec_out(py, r.residuals(f)))?;
+    Ok(d)
+}
