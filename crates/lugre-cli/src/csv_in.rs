@@ -68,7 +68,7 @@ struct Layout {
 
 /// Streams the rows of a CSV file.
 pub struct SampleReader<R: Read> {
-    reader: csv::Reader<SkipBom<R>>,
+    reader: csv::Reader<LineLimit<SkipBom<R>>>,
     record: csv::ByteRecord,
     column: Option<String>,
     layout: Option<Layout>,
@@ -95,7 +95,7 @@ impl<R: Read> SampleReader<R> {
             .comment(Some(b'#'))
             .trim(csv::Trim::All)
             .buffer_capacity(1 << 16)
-            .from_reader(SkipBom::new(inner));
+            .from_reader(LineLimit::new(SkipBom::new(inner)));
         Self {
             reader,
             record: csv::ByteRecord::new(),
@@ -157,7 +157,9 @@ impl<R: Read> SampleReader<R> {
                     if let Some(prev) = self.prev_t {
                         if t <= prev {
                             bail!(
-                                "line {line}: times must be strictly increasing, t = {t} follows t = {prev}"
+                                "line {line}: times must be strictly increasing, t = {} follows t = {}",
+                                crate::fmt::exact(t),
+                                crate::fmt::exact(prev)
                             );
                         }
                     }
@@ -251,6 +253,45 @@ fn number(field: &[u8], name: &str, line: u64) -> Result<f64> {
     }
 }
 
+/// The longest line accepted, in bytes. A row of numbers is a few dozen bytes; without a
+/// limit, a file with no line breaks (a binary file, `/dev/zero`) would be read into memory
+/// as one record until the memory runs out.
+const MAX_LINE: usize = 1 << 20;
+
+/// Fails the stream once a line grows longer than [`MAX_LINE`].
+struct LineLimit<R> {
+    inner: R,
+    /// Bytes since the last line break.
+    since_break: usize,
+}
+
+impl<R> LineLimit<R> {
+    fn new(inner: R) -> Self {
+        Self {
+            inner,
+            since_break: 0,
+        }
+    }
+}
+
+impl<R: Read> Read for LineLimit<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        // `\r` alone ends a line too (the CSV reader takes old Mac files).
+        self.since_break = match buf[..n].iter().rposition(|&b| b == b'\n' || b == b'\r') {
+            Some(k) => n - 1 - k,
+            None => self.since_break + n,
+        };
+        if self.since_break > MAX_LINE {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!("a line is longer than {MAX_LINE} bytes (not a CSV file of numbers?)"),
+            ));
+        }
+        Ok(n)
+    }
+}
+
 /// Drops a UTF-8 byte-order mark at the start of a stream.
 struct SkipBom<R> {
     inner: R,
@@ -315,6 +356,22 @@ mod tests {
         // A mark alone, or a file shorter than one.
         assert!(parse_series(b"\xEF\xBB\xBF").is_err());
         assert_eq!(parse_series(b"7").unwrap().u, vec![7.0]);
+    }
+
+    #[test]
+    fn a_file_without_line_breaks_is_refused_early() {
+        // As /dev/zero would be, without reading it all into one record.
+        let zeros = std::io::repeat(0).take(64 * MAX_LINE as u64);
+        let mut r = SampleReader::new(zeros, None);
+        let e = r.next_sample().unwrap_err().to_string();
+        assert!(e.contains("a line is longer than 1048576 bytes"), "{e}");
+        // A long line just under the limit is read.
+        let mut text = vec![b' '; MAX_LINE - 10];
+        text.extend_from_slice(b"1\n2\n");
+        assert_eq!(parse_series(&text).unwrap().u, vec![1.0, 2.0]);
+        // Lines ended by CR alone are lines: a long file of them is read.
+        let text = "0.5\r".repeat(MAX_LINE);
+        assert_eq!(parse_series(text.as_bytes()).unwrap().u.len(), MAX_LINE);
     }
 
     #[test]

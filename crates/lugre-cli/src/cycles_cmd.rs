@@ -239,8 +239,20 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
         _ => bail!("no input: give --input FILE.csv or --values V0,V1,..."),
     };
     let source_error = |e: lugre::HistoryError| anyhow!("{}: {e}", source.name());
+    let new_counter = || -> Result<Counter> {
+        Ok(match &energy {
+            Some(e) => Counter::Energy(Box::new(EnergyCycleCounter::new(
+                gate,
+                e.model.rate_independent(),
+                e.x0,
+            )?)),
+            None => Counter::Plain(CycleCounter::new(gate)?),
+        })
+    };
 
-    // First pass (JSON, histogram): validate, find the span, collect the reversals.
+    // First pass (JSON, histogram): validate, find the span, collect the reversals. With a
+    // model it follows the energies too, so that an overflow there is reported before the
+    // second pass streams anything to stdout.
     let first = if args.json || args.histogram {
         let mut spool = Spool::new(SPOOL_IN_MEMORY);
         let mut pass = FirstPass {
@@ -250,13 +262,14 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
             max: f64::NEG_INFINITY,
             error: None,
         };
-        let mut counter = CycleCounter::new(gate)?;
+        let mut counter = new_counter()?;
         source.each_block(|block| {
             counter.push_all(block, &mut pass).map_err(source_error)?;
             pass.check()
         })?;
-        counter.finish(&mut pass).map_err(source_error)?;
+        let summary = counter.finish(&mut pass).map_err(source_error)?;
         pass.check()?;
+        check_history(&summary)?;
         if let Some(j) = pass.json.take() {
             j.finish()?;
         }
@@ -272,17 +285,6 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
         }
         _ => None,
     };
-    let new_counter = || -> Result<Counter> {
-        Ok(match &energy {
-            Some(e) => Counter::Energy(Box::new(EnergyCycleCounter::new(
-                gate,
-                e.model.rate_independent(),
-                e.x0,
-            )?)),
-            None => Counter::Plain(CycleCounter::new(gate)?),
-        })
-    };
-
     let stdout = io::stdout();
     let mut json = if args.json {
         let mut j = JsonOut::new(stdout.lock());
@@ -323,6 +325,8 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
         })?;
         let summary = counter.finish(&mut pass).map_err(source_error)?;
         pass.check()?;
+        // Before the table is printed and the CSV renamed into place.
+        check_history(&summary)?;
         Ok::<_, anyhow::Error>(Report {
             summary,
             table: pass.table,
@@ -539,7 +543,6 @@ impl Report {
                 j.field(",\"x0\":", e.x0)?;
                 j.field(",\"g0\":", ri.g0())?;
                 j.field(",\"a\":", ri.a())?;
-                check_finite(&[h.work, h.stored_energy_change, h.dissipation, h.y_end])?;
                 j.field(",\"history\":{\"y_start\":", h.y_start)?;
                 j.field(",\"y_end\":", h.y_end)?;
                 j.field(",\"work\":", h.work)?;
@@ -669,7 +672,6 @@ impl Report {
             )?;
         }
         if let Some(h) = s.energy {
-            check_finite(&[h.work, h.stored_energy_change, h.dissipation, h.y_end])?;
             writeln!(
                 out,
                 "\nAlong the whole history: work W = {}, stored dV = {}, dissipation D = {}; y* at the end = {}",
@@ -727,8 +729,15 @@ fn print_histogram(out: &mut impl Write, h: &Histogram) -> Result<()> {
     Ok(())
 }
 
-fn check_finite(xs: &[f64]) -> Result<()> {
-    if xs.iter().all(|x| x.is_finite()) {
+/// The totals along the history are finite (checked before anything is printed).
+fn check_history(summary: &CycleSummary) -> Result<()> {
+    let Some(h) = summary.energy else {
+        return Ok(());
+    };
+    if [h.work, h.stored_energy_change, h.dissipation, h.y_end]
+        .iter()
+        .all(|x| x.is_finite())
+    {
         Ok(())
     } else {
         bail!("the energies along the history overflow f64 for this model and input (values too large)")

@@ -18,6 +18,9 @@ const MAX_TABLE_ROWS: usize = 40;
 /// Samples written by `--csv` when neither `--samples` nor `--at` is given.
 const DEFAULT_CSV_SAMPLES: usize = 1001;
 
+/// The most points `--samples` may ask for (24 bytes each in memory, more as text).
+const MAX_SAMPLES: usize = 10_000_000;
+
 pub fn run(args: &LoopArgs) -> Result<()> {
     let model = args.model.build()?;
     let input = args.input.build()?;
@@ -28,6 +31,9 @@ pub fn run(args: &LoopArgs) -> Result<()> {
     if let Some(n) = args.samples {
         if n < 2 {
             bail!("--samples must be at least 2 (both ends of the period are included), got {n}");
+        }
+        if n > MAX_SAMPLES {
+            bail!("--samples must be at most {MAX_SAMPLES}, got {n}");
         }
     }
 

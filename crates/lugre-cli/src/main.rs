@@ -2,21 +2,8 @@
 //!
 //! Exit status: 0 success, 2 bad input or usage, 1 internal error (a bug).
 
-mod atomic;
-mod cli;
-mod csv_in;
-mod cycles_cmd;
-mod fit_cmd;
-mod fmt;
-mod json_out;
-mod loop_cmd;
-mod numbers;
-mod paper;
-mod paper_html;
-mod plot;
-mod simulate_cmd;
-
 use clap::Parser;
+use lugre_cli::{cli, cycles_cmd, fit_cmd, loop_cmd, paper, simulate_cmd};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -112,6 +99,19 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
     })
 }
 
+/// `s` on one line: runs of whitespace become one space, and other control characters (a NUL
+/// or an escape sequence from a file's contents) are shown escaped, not sent to the terminal.
 fn one_line(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
+    s.split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+        .chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }

@@ -156,13 +156,15 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
         (Some(text), _) => Some(parse_list("--times", text)?),
         (None, Some(0)) => bail!("--samples-per-period must be at least 1, got 0"),
         (None, Some(n)) => {
-            check_rows(periods as usize * n + 1)?;
+            check_rows((periods as usize).saturating_mul(n).saturating_add(1))?;
             Some(uniform_times(start, period, periods, n))
         }
         (None, None) => match &drive {
             Drive::Samples(_) => None,
             Drive::TurningPoints(pl) => {
-                check_rows(periods as usize * (DEFAULT_SAMPLES_PER_PERIOD + pl.len()))?;
+                check_rows(
+                    (periods as usize).saturating_mul(DEFAULT_SAMPLES_PER_PERIOD + pl.len()),
+                )?;
                 Some(merge_times(
                     &uniform_times(start, period, periods, DEFAULT_SAMPLES_PER_PERIOD),
                     &pl.knot_times(periods),

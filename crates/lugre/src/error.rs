@@ -3,27 +3,37 @@
 
 use thiserror::Error;
 
+/// `x` as a message shows it: as Rust prints it from 1e-5 to 1e16, in exponent notation
+/// beyond (where the plain form runs to hundreds of digits: `1e-300` rather than `0.000...1`).
+pub(crate) fn num(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-5..1e16).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 /// An invalid model parameter.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
-    #[error("{name} must be a finite number, got {value}")]
+    #[error("{name} must be a finite number, got {value}", value = num(*.value))]
     NotFinite { name: &'static str, value: f64 },
-    #[error("{name} must be > 0, got {value}")]
+    #[error("{name} must be > 0, got {value}", value = num(*.value))]
     NotPositive { name: &'static str, value: f64 },
-    #[error("{name} must be >= 0, got {value}")]
+    #[error("{name} must be >= 0, got {value}", value = num(*.value))]
     Negative { name: &'static str, value: f64 },
-    #[error("g(0) must be finite and > 0, got {value}")]
+    #[error("g(0) must be finite and > 0, got {value}", value = num(*.value))]
     BadG0 { value: f64 },
-    #[error("f(0) must be 0, got {value}")]
+    #[error("f(0) must be 0, got {value}", value = num(*.value))]
     BadF0 { value: f64 },
-    #[error("a = sigma0 / g(0) = {sigma0} / {g0} is not a finite positive number")]
+    #[error("a = sigma0 / g(0) = {sigma0} / {g0} is not a finite positive number", sigma0 = num(*.sigma0), g0 = num(*.g0))]
     BadRatio { sigma0: f64, g0: f64 },
 }
 
 /// An invalid input signal.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum InputError {
-    #[error("{what}[{index}] must be a finite number, got {value}")]
+    #[error("{what}[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite {
         what: &'static str,
         index: usize,
@@ -38,7 +48,7 @@ pub enum InputError {
         inequality: &'static str,
         detail: String,
     },
-    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1)]
+    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
     TimesNotIncreasing { index: usize, prev: f64, value: f64 },
     #[error("t and u have different lengths ({t} and {u})")]
     LengthMismatch { t: usize, u: usize },
@@ -60,19 +70,19 @@ pub enum HistoryError {
     Empty,
     #[error("a history needs at least 2 samples, got {samples}")]
     TooShort { samples: u64 },
-    #[error("u[{index}] must be a finite number, got {value}")]
+    #[error("u[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite { index: u64, value: f64 },
     #[error("u[{index}] = {value:e} is too large: |u| must be at most {limit:e} so that ranges and means stay finite", limit = f64::MAX / 2.0)]
     TooLarge { index: u64, value: f64 },
-    #[error("the gate must be a finite number >= 0, got {value}")]
+    #[error("the gate must be a finite number >= 0, got {value}", value = num(*.value))]
     BadGate { value: f64 },
-    #[error("x0 must satisfy |sigma0 x0| <= g(0) (the bristle deflection the model can hold), got x0 = {x0} with sigma0 = {sigma0}, g(0) = {g0}")]
+    #[error("x0 must satisfy |sigma0 x0| <= g(0) (the bristle deflection the model can hold), got x0 = {x0} with sigma0 = {sigma0}, g(0) = {g0}", x0 = num(*.x0), sigma0 = num(*.sigma0), g0 = num(*.g0))]
     BadInitialState { x0: f64, sigma0: f64, g0: f64 },
     #[error("the energies of the cycle closing at u[{index}] overflow f64 (values too large)")]
     EnergyOverflow { index: u64 },
     #[error("a histogram needs at least 1 bin, got {bins}")]
     NoBins { bins: usize },
-    #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]")]
+    #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]", min = num(*.min), max = num(*.max))]
     BadBounds { min: f64, max: f64 },
 }
 

@@ -107,7 +107,15 @@ fn expm1_pade(x: f64) -> f64 {
 pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
     // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above g0.
     let g0 = model.g0();
-    relax(y_k, model.a() * l, s * model.sigma0() * l).clamp(-g0, g0)
+    let (z, d) = (model.a() * l, s * model.sigma0() * l);
+    let y = if z.is_finite() && d.is_finite() {
+        relax(y_k, z, d)
+    } else {
+        // A long piece at a huge stiffness, where `a l` or `sigma0 l` overflows:
+        // `s sigma0 l phi(z) = s g0 (1 - exp(-z))` needs neither.
+        relax_toward(y_k, z, s * g0)
+    };
+    y.clamp(-g0, g0)
 }
 
 /// The two terms of the work over a piece of length `l`: `(c, e) = (l phi(a l), l^2 h(a l))`,
@@ -117,7 +125,17 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
 #[inline]
 pub(crate) fn piece_terms(model: RateIndependent, l: f64) -> (f64, f64) {
     let z = model.a() * l;
-    (l * phi(z), l * l * h(z))
+    let (c, e) = (l * phi(z), l * l * h(z));
+    if z.is_finite() && e.is_finite() {
+        (c, e)
+    } else {
+        // `a l` or `l^2` overflows (then `z > 1`): the same terms in units of `1/a`,
+        // `l phi(z) = (1 - exp(-z)) / a` and `l^2 h(z) = (l - l phi(z)) / a`, finite wherever
+        // the results are.
+        let inv_a = model.g0() / model.sigma0();
+        let c = one_minus_exp(z) * inv_a;
+        (c, (l - c) * inv_a)
+    }
 }
 
 /// Dissipation `(1/g0) integral y^2 drho` over a piece of length `l`, direction `s`, from
@@ -132,6 +150,19 @@ pub(crate) fn piece_dissipation(model: RateIndependent, y_k: f64, s: f64, l: f64
     let d = a * y_k * y_k * l * phi(2.0 * z) / sigma0
         + 2.0 * s * y_k * l * phi_minus_phi2(z)
         + sigma0 * l * l * q_over_z(z);
+    let d = if z.is_finite() && d.is_finite() {
+        d
+    } else {
+        // `a l`, `sigma0 l` or `l^2` overflows (then `z > 1`): the same three terms in units of
+        // `1/a` (`c = l phi(z)`, `c2 = l phi(2z)`); the piece is saturated, `D = g0 l` to
+        // rounding.
+        let inv_a = model.g0() / sigma0;
+        let c = one_minus_exp(z) * inv_a;
+        let c2 = 0.5 * one_minus_exp(2.0 * z) * inv_a;
+        y_k * y_k * one_minus_exp(2.0 * z) / (2.0 * sigma0)
+            + 2.0 * s * y_k * (c - c2)
+            + model.g0() * (l - 2.0 * c + c2)
+    };
     d.max(0.0)
 }
 
@@ -272,15 +303,20 @@ impl HysteresisLoop {
             }
             c / one_minus_exp(ap)
         } else {
+            // The sum's terms are products of two lengths: with the lengths scaled by a power
+            // of two near 1/P they neither underflow (P = 1e-300) nor overflow, and elsewhere
+            // the result is bit for bit what it is unscaled.
+            let scale = 2f64.powi(-(p.log2().floor().clamp(-1000.0, 1000.0) as i32));
             let mut tail = 0.0; // R_k = P - rho_{k+1}, summed from the end
-            let mut sum = 0.0;
+            let mut sum = 0.0; // scale^2 times the sum of the module docs
             for k in (0..n).rev() {
                 let l = self.segment_length(k);
                 let at = a * tail;
-                sum += self.direction(k) * l * (tail * phi(at) + l * h(a * l) * (-at).exp());
+                let (ls, ts) = (l * scale, tail * scale);
+                sum += self.direction(k) * ls * (ts * phi(at) + ls * h(a * l) * (-at).exp());
                 tail += l;
             }
-            -sigma0 * sum / (p * phi(ap))
+            -sigma0 * sum / (p * scale * phi(ap) * scale)
         };
         let mut y = Vec::with_capacity(n + 1);
         y.push(y0);
@@ -330,7 +366,13 @@ impl HysteresisLoop {
     #[inline]
     fn piece_drift(&self, k: usize, l: f64) -> (f64, f64) {
         let z = self.model.a() * l;
-        (self.y[k] * l * phi(z), self.direction(k) * l * l * h(z))
+        let drift = (self.y[k] * l * phi(z), self.direction(k) * l * l * h(z));
+        if z.is_finite() && drift.0.is_finite() && drift.1.is_finite() {
+            drift
+        } else {
+            let (c, e) = piece_terms(self.model, l);
+            (self.y[k] * c, self.direction(k) * e)
+        }
     }
 
     /// The work `integral y° dpsi` over one period: the energy dissipated per cycle (the stored

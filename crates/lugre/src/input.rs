@@ -9,7 +9,7 @@
 //!   keeps its direction through them) are dropped, cyclically;
 //! * rho is measured from the first listed point that is a turning point.
 
-use crate::error::InputError;
+use crate::error::{num, InputError};
 
 /// One period of a periodic input as its cyclic sequence of turning points (alternating local
 /// maxima and minima, at least two, all finite).
@@ -136,22 +136,29 @@ impl Bimodal {
         if umin1 > umin2 {
             return fail(
                 "umin1 <= umin2",
-                format!("umin1 = {umin1}, umin2 = {umin2}"),
+                format!("umin1 = {}, umin2 = {}", num(umin1), num(umin2)),
             );
         }
         if umin2 >= umax1 {
-            return fail("umin2 < umax1", format!("umin2 = {umin2}, umax1 = {umax1}"));
+            return fail(
+                "umin2 < umax1",
+                format!("umin2 = {}, umax1 = {}", num(umin2), num(umax1)),
+            );
         }
         if umax1 > umax2 {
             return fail(
                 "umax1 <= umax2",
-                format!("umax1 = {umax1}, umax2 = {umax2}"),
+                format!("umax1 = {}, umax2 = {}", num(umax1), num(umax2)),
             );
         }
         if umin1 == umin2 && umax1 == umax2 {
             return fail(
                 "umin1 != umin2 or umax1 != umax2",
-                format!("umin1 = umin2 = {umin1} and umax1 = umax2 = {umax1}"),
+                format!(
+                    "umin1 = umin2 = {} and umax1 = umax2 = {}",
+                    num(umin1),
+                    num(umax1)
+                ),
             );
         }
         let b = Self {

@@ -330,3 +330,49 @@ fn narrow_loop_near_saturation_keeps_its_work() {
     );
     assert!(loops[1].dissipation > 0.0);
 }
+
+/// The ends of the f64 range, where the robustness catalogue (`lugre-cli/tests/catalogue.rs`)
+/// found wrong answers or needless errors: each value here is exact in closed form.
+#[test]
+fn the_ends_of_the_f64_range() {
+    // A period of 4e-308: the sum behind y°(0) multiplies two lengths, which underflowed to 0
+    // (y° came out as 0 and 2e-308). Elastic: y° = sigma0 (u - mean) = +-1e-308 to rounding.
+    let hl = common::loop_of(1.0, 2.0, &[-1e-308, 1e-308]);
+    assert_eq!(hl.turning_y(), &[-1e-308, 1e-308]);
+    // sigma0 u overflows (1e600) but the loop is saturated: y° = +-g0 and W = 4 g0 A (this
+    // was "y° overflows f64"; then, with sigma0 l guarded alone, W = 0).
+    let hl = common::loop_of(1e300, 2.0, &[0.0, 1e300]);
+    assert_eq!(hl.turning_y(), &[-2.0, 2.0]);
+    assert_eq!(hl.work_per_period(), 4e300);
+    let loops = hl.loops();
+    assert_eq!((loops[0].work, loops[0].dissipation), (4e300, 4e300));
+    // a l overflows for every piece (a = 5e307): W = 4 g0 (A - 1/a) = 4.
+    assert_eq!(
+        common::loop_of(1e308, 2.0, &[0.0, 1.0]).work_per_period(),
+        4.0
+    );
+    // Fs far below Fc: g(0) = Fs exactly, where Fc + (Fs - Fc) exp(0) rounds to 0.
+    let m = LuGre::from_params(LuGreParams {
+        fs: 1e-300,
+        ..LuGreParams::default()
+    })
+    .unwrap();
+    assert_eq!(m.g0(), 1e-300);
+    assert!(m.g(1e-20) > 1e-300 && m.g(1e-20) < 2e-20, "{}", m.g(1e-20));
+    assert_eq!(m.g(1e3), 1.0);
+    // A subnormal vs: 1 / vs overflows, and g(0) would be 0 * inf = NaN.
+    let e = LuGre::from_params(LuGreParams {
+        vs: 4e-309,
+        ..LuGreParams::default()
+    })
+    .unwrap_err();
+    assert_eq!(e.to_string(), "1 / vs must be a finite number, got inf");
+    // Messages show extreme values in exponent notation, not as 300 digits.
+    let e = LuGre::paper().with_sigma0(-1e-300).unwrap_err();
+    assert_eq!(e.to_string(), "sigma0 must be > 0, got -1e-300");
+    let e = RateIndependent::new(1e-300, 1e300).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "a = sigma0 / g(0) = 1e-300 / 1e300 is not a finite positive number"
+    );
+}

@@ -31,12 +31,20 @@ impl Stribeck {
     /// Validated: `Fc, Fs, vs, beta` finite and `> 0`.
     pub fn new(fc: f64, fs: f64, vs: f64, beta: f64) -> Result<Self, ModelError> {
         let vs = check_positive("vs", vs)?;
+        let inv_vs = 1.0 / vs;
+        if !inv_vs.is_finite() {
+            // A subnormal vs: g(0) would be 0 * inf.
+            return Err(ModelError::NotFinite {
+                name: "1 / vs",
+                value: inv_vs,
+            });
+        }
         Ok(Self {
             fc: check_positive("fc", fc)?,
             fs: check_positive("fs", fs)?,
             vs,
             beta: check_positive("beta", beta)?,
-            inv_vs: 1.0 / vs,
+            inv_vs,
         })
     }
 
@@ -58,15 +66,23 @@ impl VelocityFn for Stribeck {
     #[inline]
     fn eval(&self, v: f64) -> f64 {
         let r = (v * self.inv_vs).abs();
-        // exp(-r^beta) with the common exponents done without powf.
-        let e = if self.beta == 1.0 {
-            (-r).exp()
+        // r^beta with the common exponents done without powf.
+        let x = if self.beta == 1.0 {
+            r
         } else if self.beta == 2.0 {
-            (-r * r).exp()
+            r * r
         } else {
-            (-r.powf(self.beta)).exp()
+            r.powf(self.beta)
         };
-        self.fc + (self.fs - self.fc) * e
+        if self.fs >= self.fc {
+            self.fc + (self.fs - self.fc) * (-x).exp()
+        } else {
+            // g rises from Fs to Fc: `Fs + (Fc - Fs)(1 - exp(-x))`, two terms >= 0, so g(0) is
+            // Fs exactly and g never rounds to 0 (`Fc + (Fs - Fc) exp(-x)` cancels, to 0 when
+            // Fs < Fc eps).
+            let (_, one_minus_e) = crate::hysteresis::decay(x);
+            self.fs + (self.fc - self.fs) * one_minus_e
+        }
     }
 }
 

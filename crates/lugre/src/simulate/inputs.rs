@@ -58,6 +58,10 @@ impl PiecewiseLinear {
             u.push(v);
             rho.push(r);
         }
+        if !r.is_finite() {
+            // Named as the loop names it, not as a bad time the user never gave.
+            return Err(InputError::VariationOverflow.into());
+        }
         let t = if speed == 1.0 {
             rho
         } else {
@@ -144,6 +148,9 @@ impl PiecewiseLinear {
     }
 }
 
+/// The largest `|phase|` a [`Sine`] takes, in radians.
+const MAX_PHASE: f64 = 1e6;
+
 /// `u(t) = A sin(2 pi t / T + phase) + offset`, from `t = 0`.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Sine {
@@ -154,8 +161,8 @@ pub struct Sine {
 }
 
 impl Sine {
-    /// Validated: `A > 0` and `T > 0` finite, `phase` and `offset` finite, and `A 2 pi / T`
-    /// (the largest speed) finite.
+    /// Validated: `A > 0` and `T > 0` finite, `phase` finite with `|phase| <= 1e6`, `offset`
+    /// finite, and `A 2 pi / T` (the largest speed) finite.
     pub fn new(
         amplitude: f64,
         period: f64,
@@ -184,6 +191,16 @@ impl Sine {
                 })
             }
         };
+        // An angle beyond this has lost its fraction of a turn to rounding (the ulp of 1e6 is
+        // 1e-10 rad), and past ~1e16 the reversal search cannot step from one extreme to the
+        // next.
+        if phase.is_finite() && phase.abs() > MAX_PHASE {
+            return Err(SimulateError::BadSine {
+                name: "phase",
+                requirement: "at most 1e6 radians in magnitude (reduce it modulo 2 pi)",
+                value: phase,
+            });
+        }
         let s = Self {
             amplitude: positive("amplitude", amplitude)?,
             period: positive("period", period)?,
@@ -256,5 +273,34 @@ impl Sine {
             out.push(next);
             t = next;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_phase_beyond_1e6_is_refused() {
+        // The reversal search stepped m -> m + 1 with m ~ 1e16, where m + 1 == m: it hung.
+        let e = Sine::new(1.0, 1.0, 1e17, 0.0).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("the sine's phase must be at most 1e6"),
+            "{e}"
+        );
+        let s = Sine::new(1.0, 1.0, -1e6, 0.0).unwrap();
+        let (t, _) = s.next_reversal(0.0);
+        assert!(t > 0.0 && t <= 1.0);
+    }
+
+    #[test]
+    fn turning_points_whose_variation_overflows() {
+        // Named as the loop names it, not as a time t[1] = inf the user never gave.
+        let tp = TurningPoints::new(&[1e308, -1e308]).unwrap();
+        assert_eq!(
+            PiecewiseLinear::from_turning_points(&tp, 1.0),
+            Err(SimulateError::Input(InputError::VariationOverflow))
+        );
     }
 }
