@@ -47,9 +47,9 @@ fn dahl_symmetric_triangle_matches_the_closed_form() {
     }
 }
 
-/// FAILS at the time of writing for `rho A = 2e-6` only (`a P = 8e-6`): the crate's `W` loses
-/// relative accuracy like `1e-16 / (a P)` (see `stability.rs`, the energy sweeps): got
-/// 3.2000000014e-11, closed form 3.1999999999949e-11.
+/// Regression: at `rho A = 2e-6` (`a P = 8e-6`) the first version's `W` lost relative accuracy
+/// like `1e-16 / (a P)` (got 3.2000000014e-11, closed form 3.1999999999949e-11); `W` now comes
+/// from the form that rounds less (`arc_energy.rs`).
 #[test]
 fn dahl_work_per_period_matches_the_closed_form() {
     for &(rho, fc, amp, _, work, _) in DAHL {

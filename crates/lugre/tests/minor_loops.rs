@@ -115,9 +115,9 @@ fn theorem_a_with_umin1_equal_to_umin2() {
     }
 }
 
-/// FAILS at the time of writing: with `umax1 == umax2` the crate reports a second minor loop,
-/// the arc `[rho_3, rho_4] = [2.6, 4.6]` (1 -> 0 -> 1, turning at the global minimum), which
-/// is the rest of the major loop, not a minor loop of Theorem A.
+/// Regression: with `umax1 == umax2` the first version reported a second minor loop, the arc
+/// `[rho_3, rho_4] = [2.6, 4.6]` (1 -> 0 -> 1, turning at the global minimum), which is the rest
+/// of the major loop, not a minor loop of Theorem A.
 #[test]
 fn theorem_a_with_umax1_equal_to_umax2() {
     for sigma0 in [1.0, 6.0, 1e5] {
@@ -167,7 +167,7 @@ fn random_definition_1_inputs_have_theorem_a_minor_loop() {
     }
 }
 
-/// FAILS at the time of writing, for the same reason as `theorem_a_with_umax1_equal_to_umax2`.
+/// Regression, as `theorem_a_with_umax1_equal_to_umax2`, over random tuples.
 #[test]
 fn random_definition_1_inputs_with_umax1_equal_to_umax2_have_theorem_a_minor_loop() {
     let mut rng = Lcg(0x5eed_0002);

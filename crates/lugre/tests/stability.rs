@@ -268,7 +268,7 @@ fn realistic_stiffness_where_eq_13_overflows_f64() {
 
 /// `|y°| < g0` holds exactly (eqs. 13-16: `y°` relaxes towards `+-g0` and never reaches it); in
 /// f64 the correctly rounded value can be `g0` itself once `g0 - |y°|` is below half an ulp, but
-/// never more. FAILS at the time of writing: e.g. `sigma0 = 1e3`, `g0 = 1.5`, triangle `0 -> 1`:
+/// never more. Regression: the first version exceeded it by an ulp, e.g. `sigma0 = 1e3`, `g0 = 1.5`, triangle `0 -> 1`:
 /// `y_at(0.058) = 1.5000000000000002` (exact: `1.5 - 4.8e-17`, which rounds to 1.5), and 406 of
 /// 1001 evenly spaced samples exceed `g0` by an ulp.
 #[test]
