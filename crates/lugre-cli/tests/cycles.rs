@@ -2,15 +2,9 @@
 //! status.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
-fn lugre(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lugre"))
-        .args(args)
-        .env("RUST_BACKTRACE", "1")
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::{lugre, rejects};
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = lugre(args);
@@ -20,20 +14,6 @@ fn json(args: &[&str]) -> serde_json::Value {
         String::from_utf8_lossy(&out.stderr)
     );
     serde_json::from_slice(&out.stdout).expect("valid JSON")
-}
-
-/// Bad input: exit status 2, one line on stderr containing `want`, nothing on stdout.
-fn rejects(args: &[&str], want: &str) {
-    let out = lugre(args);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-    assert_eq!(err.lines().count(), 1, "{args:?}: one line, got {err}");
-    assert!(err.contains(want), "{args:?}: wanted '{want}' in {err}");
-    assert!(
-        !err.contains("panicked") && !err.contains("backtrace"),
-        "{err}"
-    );
-    assert!(out.stdout.is_empty(), "{args:?}");
 }
 
 /// A file in a fresh directory under the target's temporary directory.

@@ -5,16 +5,10 @@
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-fn lugre(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lugre"))
-        .args(args)
-        .env("RUST_BACKTRACE", "1")
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::lugre;
 
 /// A fresh directory under cargo's scratch space for integration tests (target/tmp): the
 /// shared run's files stay there for inspection after the tests and are replaced next time.

@@ -1,15 +1,8 @@
 //! `--plot` of `lugre simulate` run as a user would: y against t and y against u, side by side
 //! in one SVG or PNG file.
 
-use std::process::{Command, Output};
-
-fn lugre(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lugre"))
-        .args(args)
-        .env("RUST_BACKTRACE", "1")
-        .output()
-        .expect("the binary runs")
-}
+mod common;
+use common::lugre;
 
 #[test]
 fn simulate_draws_y_against_t_and_against_u() {

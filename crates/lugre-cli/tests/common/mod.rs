@@ -16,6 +16,7 @@ pub fn lugre(args: &[&str]) -> Output {
 
 /// Bad input: exit status 2, one line on stderr containing `want` (no panic message, no
 /// backtrace), nothing on stdout.
+#[track_caller]
 pub fn rejects(args: &[&str], want: &str) {
     let out = lugre(args);
     let err = String::from_utf8_lossy(&out.stderr);
