@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-cargo test --workspace --exclude lugre-py
+cargo test --workspace --exclude lugre-py --no-fail-fast
 
 venv=${LUGRE_VENV:-.venv}
 case "$venv" in /*) ;; *) venv="$PWD/$venv" ;; esac
