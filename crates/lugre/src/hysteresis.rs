@@ -38,13 +38,13 @@
 //!
 //! with `z = a l` and `q(z) = 1 - 2 phi(z) + phi(2z)`, summed in double-double prefix sums so
 //! that any arc's `D` costs O(1). `dV` needs the closure gap `y_end - y_start`, which is `O(a)`
-//! on loops shorter than `1/a`; [`HysteresisLoop::closure_gap`] computes it without taking the
+//! on loops shorter than `1/a`; `HysteresisLoop::arc` computes it without taking the
 //! difference of the two values.
 
 use crate::error::{InputError, LoopError};
 use crate::input::TurningPoints;
 use crate::model::RateIndependent;
-use crate::numerics::{h, one_minus_exp, phi, phi_minus_phi2, q_over_z, DoubleDouble};
+use crate::numerics::{h, one_minus_exp, phi, DoubleDouble, PhiFamily};
 
 /// The exact solution of `w' = -r w + q` with constant `r >= 0` and `q` over a duration
 /// `tau`, from `w0`: `w0 exp(-c) + d phi(c)` with `c = r tau`, `d = q tau` and
@@ -124,46 +124,85 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
 /// sums the work relative to a loop's start value this way, without cancellation).
 #[inline]
 pub(crate) fn piece_terms(model: RateIndependent, l: f64) -> (f64, f64) {
-    let z = model.a() * l;
-    let (c, e) = (l * phi(z), l * l * h(z));
-    if z.is_finite() && e.is_finite() {
-        (c, e)
-    } else {
-        // `a l` or `l^2` overflows (then `z > 1`): the same terms in units of `1/a`,
-        // `l phi(z) = (1 - exp(-z)) / a` and `l^2 h(z) = (l - l phi(z)) / a`, finite wherever
-        // the results are.
-        let inv_a = model.g0() / model.sigma0();
-        let c = one_minus_exp(z) * inv_a;
-        (c, (l - c) * inv_a)
-    }
+    let p = piece(model, 0.0, 1.0, l);
+    (p.c, p.e)
 }
 
 /// Dissipation `(1/g0) integral y^2 drho` over a piece of length `l`, direction `s`, from
 /// `y_k` (never < 0).
 #[inline]
 pub(crate) fn piece_dissipation(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
-    if l == 0.0 {
-        return 0.0;
-    }
-    let (a, sigma0) = (model.a(), model.sigma0());
+    piece(model, y_k, s, l).dissipation
+}
+
+/// Everything about one piece of the loop (direction `s`, length `l`, from `y_k`): `y` at its
+/// end, the dissipation over it, and the work terms `(c, e)` of [`piece_terms`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Piece {
+    pub y_end: f64,
+    pub dissipation: f64,
+    pub c: f64,
+    pub e: f64,
+}
+
+/// [`Piece`] from a single [`PhiFamily`] (at most one exponential for all of it):
+///
+/// ```text
+/// y_end = y_k exp(-z) + s sigma0 l phi(z)
+/// D     = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z
+/// ```
+///
+/// with `z = a l`. Where `a l`, `sigma0 l` or `l^2` overflows (a long piece at a huge
+/// stiffness; then `z > 1`) the same terms are taken in units of `1/a`.
+#[inline]
+pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
+    let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
     let z = a * l;
-    let d = a * y_k * y_k * l * phi(2.0 * z) / sigma0
-        + 2.0 * s * y_k * l * phi_minus_phi2(z)
-        + sigma0 * l * l * q_over_z(z);
-    let d = if z.is_finite() && d.is_finite() {
-        d
+    let f = PhiFamily::new(z);
+    let (c, e) = (l * f.phi, l * l * f.h);
+    // Short pieces (`exp(-z) > 1/2`) add the small change to `y_k` rather than scaling it by
+    // the rounded `exp(-z)`: the same form as the closure gap's (`y_end - y_k = s sigma0 c -
+    // y_k (1 - exp(-z))`), so that the two agree to an ulp of `y`.
+    let y_end = if f.e > 0.5 {
+        y_k + (s * sigma0 * c - y_k * f.one_minus_e)
     } else {
-        // `a l`, `sigma0 l` or `l^2` overflows (then `z > 1`): the same three terms in units of
-        // `1/a` (`c = l phi(z)`, `c2 = l phi(2z)`); the piece is saturated, `D = g0 l` to
-        // rounding.
-        let inv_a = model.g0() / sigma0;
-        let c = one_minus_exp(z) * inv_a;
-        let c2 = 0.5 * one_minus_exp(2.0 * z) * inv_a;
-        y_k * y_k * one_minus_exp(2.0 * z) / (2.0 * sigma0)
-            + 2.0 * s * y_k * (c - c2)
-            + model.g0() * (l - 2.0 * c + c2)
+        y_k * f.e + s * sigma0 * c
     };
-    d.max(0.0)
+    let d = a * y_k * y_k * l * f.phi2 / sigma0
+        + 2.0 * s * y_k * l * f.phi_minus_phi2
+        + sigma0 * l * l * f.q_over_z;
+    if z.is_finite() && e.is_finite() && y_end.is_finite() && d.is_finite() {
+        // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above.
+        Piece {
+            y_end: y_end.clamp(-g0, g0),
+            dissipation: d.max(0.0),
+            c,
+            e,
+        }
+    } else {
+        saturated_piece(model, y_k, s, l)
+    }
+}
+
+/// [`piece`] in units of `1/a`: `l phi(z) = (1 - exp(-z)) / a`, `l^2 h(z) = (l - l phi(z)) / a`,
+/// `l phi(2z) = (1 - exp(-2z)) / (2a)`, finite wherever the results are. The piece is saturated:
+/// `y` relaxes to `s g0` and `D = g0 l` to rounding.
+#[cold]
+fn saturated_piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
+    let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
+    let z = a * l;
+    let inv_a = g0 / sigma0;
+    let c = one_minus_exp(z) * inv_a;
+    let c2 = 0.5 * one_minus_exp(2.0 * z) * inv_a;
+    let d = y_k * y_k * one_minus_exp(2.0 * z) / (2.0 * sigma0)
+        + 2.0 * s * y_k * (c - c2)
+        + g0 * (l - 2.0 * c + c2);
+    Piece {
+        y_end: relax_toward(y_k, z, s * g0).clamp(-g0, g0),
+        dissipation: if l == 0.0 { 0.0 } else { d.max(0.0) },
+        c,
+        e: (l - c) * inv_a,
+    }
 }
 
 /// A point of the loop: the normalized variable, the input and the output there.
@@ -183,6 +222,54 @@ pub(crate) struct Position {
     pub offset: f64,
 }
 
+/// Sums from `rho = 0` along the loop: the dissipation and the closure gap's two terms
+/// (`sum y_j L_j phi(a L_j)`, `sum s_j L_j^2 h(a L_j)`, see [`HysteresisLoop::arc`]). One
+/// record per turning point, so that an arc's end costs one cache line, not three.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+struct Prefix {
+    dissipation: DoubleDouble,
+    drift_y: DoubleDouble,
+    drift_l: DoubleDouble,
+}
+
+impl Prefix {
+    #[inline]
+    fn add_piece(self, dissipation: f64, drift_y: f64, drift_l: f64) -> Self {
+        Self {
+            dissipation: self.dissipation.add_f64(dissipation),
+            drift_y: self.drift_y.add_f64(drift_y),
+            drift_l: self.drift_l.add_f64(drift_l),
+        }
+    }
+}
+
+impl std::ops::Add for Prefix {
+    type Output = Self;
+    #[inline]
+    fn add(self, o: Self) -> Self {
+        Self {
+            dissipation: self.dissipation + o.dissipation,
+            drift_y: self.drift_y + o.drift_y,
+            drift_l: self.drift_l + o.drift_l,
+        }
+    }
+}
+
+/// A point of the loop with the prefix sums up to it ([`HysteresisLoop::arc`]).
+struct PositionSums {
+    point: LoopPoint,
+    prefix: Prefix,
+}
+
+/// An arc of the loop on which the input returns to its start value.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Arc {
+    pub start: LoopPoint,
+    pub end: LoopPoint,
+    pub dissipation: f64,
+    pub closure_gap: f64,
+}
+
 /// The periodic steady state `y°` in the rate-independent limit, for one model and input.
 #[derive(Debug, Clone)]
 pub struct HysteresisLoop {
@@ -193,12 +280,8 @@ pub struct HysteresisLoop {
     rho: Vec<f64>,
     /// `y°(rho_k)`, `k = 0..=n`; `y_n = y_0`.
     y: Vec<f64>,
-    /// Dissipation `(1/g0) integral y^2 drho` from `rho = 0` to `rho_k`, `k = 0..=n`.
-    dissipation: Vec<DoubleDouble>,
-    /// `sum y_j L_j phi(a L_j)` and `sum s_j L_j^2 h(a L_j)` over `j < k`, `k = 0..=n`: the
-    /// pieces of the closure gap (see [`HysteresisLoop::closure_gap`]).
-    drift_y: Vec<DoubleDouble>,
-    drift_l: Vec<DoubleDouble>,
+    /// The sums up to `rho_k`, `k = 0..=n`.
+    prefix: Vec<Prefix>,
 }
 
 impl HysteresisLoop {
@@ -219,12 +302,9 @@ impl HysteresisLoop {
             u,
             rho,
             y: Vec::new(),
-            dissipation: Vec::new(),
-            drift_y: Vec::new(),
-            drift_l: Vec::new(),
+            prefix: Vec::new(),
         };
-        hl.y = hl.turning_point_values();
-        hl.accumulate_energy();
+        hl.walk_period(hl.periodic_start());
         Ok(hl)
     }
 
@@ -272,10 +352,20 @@ impl HysteresisLoop {
             .collect()
     }
 
+    /// `k + 1` around the period (a compare, not an integer division, on the per-loop path).
+    #[inline]
+    fn next(&self, k: usize) -> usize {
+        if k + 1 == self.len() {
+            0
+        } else {
+            k + 1
+        }
+    }
+
     /// `s_k`, the direction of segment `k`.
     #[inline]
     pub(crate) fn direction(&self, k: usize) -> f64 {
-        let next = self.u[(k + 1) % self.len()];
+        let next = self.u[self.next(k)];
         if next > self.u[k] {
             1.0
         } else {
@@ -286,17 +376,17 @@ impl HysteresisLoop {
     /// `L_k`, the length of segment `k`.
     #[inline]
     pub(crate) fn segment_length(&self, k: usize) -> f64 {
-        (self.u[(k + 1) % self.len()] - self.u[k]).abs()
+        (self.u[self.next(k)] - self.u[k]).abs()
     }
 
-    /// `y°(0)` (eq. 10) by the stable forms of the module docs, then `y°` at every turning point.
-    fn turning_point_values(&self) -> Vec<f64> {
+    /// `y°(0)` (eq. 10) by the stable forms of the module docs.
+    fn periodic_start(&self) -> f64 {
         let n = self.len();
         let a = self.model.a();
         let sigma0 = self.model.sigma0();
         let p = self.period();
         let ap = a * p;
-        let y0 = if ap > 1.0 {
+        if ap > 1.0 {
             let mut c = 0.0;
             for k in 0..n {
                 c = self.advance(c, k, self.segment_length(k));
@@ -317,14 +407,7 @@ impl HysteresisLoop {
                 tail += l;
             }
             -sigma0 * sum / (p * scale * phi(ap) * scale)
-        };
-        let mut y = Vec::with_capacity(n + 1);
-        y.push(y0);
-        for k in 0..n - 1 {
-            y.push(self.advance(y[k], k, self.segment_length(k)));
         }
-        y.push(y0);
-        y
     }
 
     /// `y°` a length `l` into segment `k`, from `y_k` there.
@@ -333,52 +416,31 @@ impl HysteresisLoop {
         advance(self.model, y_k, self.direction(k), l)
     }
 
-    /// Dissipation `(1/g0) integral y^2 drho` over the first `l` of segment `k` (never < 0).
-    #[inline]
-    fn piece_dissipation(&self, k: usize, l: f64) -> f64 {
-        piece_dissipation(self.model, self.y[k], self.direction(k), l)
-    }
-
-    fn accumulate_energy(&mut self) {
+    /// `y°` at every turning point from `y°(0)`, and the prefix sums of the dissipation and of
+    /// the closure gap's two terms: one [`piece`] (one exponential) per segment.
+    fn walk_period(&mut self, y0: f64) {
         let n = self.len();
-        let mut d = DoubleDouble::ZERO;
-        let (mut dy, mut dl) = (DoubleDouble::ZERO, DoubleDouble::ZERO);
-        self.dissipation = Vec::with_capacity(n + 1);
-        self.drift_y = Vec::with_capacity(n + 1);
-        self.drift_l = Vec::with_capacity(n + 1);
-        self.dissipation.push(d);
-        self.drift_y.push(dy);
-        self.drift_l.push(dl);
+        let mut y = Vec::with_capacity(n + 1);
+        let mut prefix = Vec::with_capacity(n + 1);
+        let mut sums = Prefix::default();
+        let mut y_k = y0;
         for k in 0..n {
-            let l = self.segment_length(k);
-            d = d.add_f64(self.piece_dissipation(k, l));
-            let (y_term, l_term) = self.piece_drift(k, l);
-            dy = dy.add_f64(y_term);
-            dl = dl.add_f64(l_term);
-            self.dissipation.push(d);
-            self.drift_y.push(dy);
-            self.drift_l.push(dl);
+            y.push(y_k);
+            prefix.push(sums);
+            let s = self.direction(k);
+            let p = piece(self.model, y_k, s, self.segment_length(k));
+            sums = sums.add_piece(p.dissipation, y_k * p.c, s * p.e);
+            y_k = p.y_end;
         }
-    }
-
-    /// The two terms of the closure gap over the first `l` of segment `k`:
-    /// `(y_k l phi(a l), s_k l^2 h(a l))`.
-    #[inline]
-    fn piece_drift(&self, k: usize, l: f64) -> (f64, f64) {
-        let z = self.model.a() * l;
-        let drift = (self.y[k] * l * phi(z), self.direction(k) * l * l * h(z));
-        if z.is_finite() && drift.0.is_finite() && drift.1.is_finite() {
-            drift
-        } else {
-            let (c, e) = piece_terms(self.model, l);
-            (self.y[k] * c, self.direction(k) * e)
-        }
+        y.push(y0);
+        prefix.push(sums);
+        (self.y, self.prefix) = (y, prefix);
     }
 
     /// The work `integral y° dpsi` over one period: the energy dissipated per cycle (the stored
     /// energy returns to its start, so it equals the dissipation over the period).
     pub fn work_per_period(&self) -> f64 {
-        self.dissipation[self.len()].to_f64()
+        self.prefix[self.len()].dissipation.to_f64()
     }
 
     /// The segment holding `rho` (reduced to `[0, P)`) and the offset into it.
@@ -451,65 +513,69 @@ impl HysteresisLoop {
     }
 
     pub(crate) fn position_point(&self, pos: Position) -> LoopPoint {
-        LoopPoint {
-            rho: self.position_rho(pos),
-            u: self.u[pos.k] + self.direction(pos.k) * pos.offset,
-            y: self.advance(self.y[pos.k], pos.k, pos.offset),
-        }
+        self.position_sums(pos).point
     }
 
-    fn cumulative(&self, table: &[DoubleDouble], pos: Position, piece: f64) -> DoubleDouble {
-        let mut acc = table[pos.k].add_f64(piece);
+    /// The point at `pos` and the prefix sums up to it (dissipation, the closure gap's two
+    /// terms): table look-ups at a turning point, one [`piece`] inside a segment.
+    #[inline]
+    fn position_sums(&self, pos: Position) -> PositionSums {
+        let k = pos.k;
+        let mut prefix = self.prefix[k];
+        let y = if pos.offset == 0.0 {
+            self.y[k]
+        } else {
+            let s = self.direction(k);
+            let p = piece(self.model, self.y[k], s, pos.offset);
+            prefix = prefix.add_piece(p.dissipation, self.y[k] * p.c, s * p.e);
+            p.y_end
+        };
         for _ in 0..pos.wraps {
-            acc = acc + table[self.len()];
+            prefix = prefix + self.prefix[self.len()];
         }
-        acc
+        PositionSums {
+            point: LoopPoint {
+                rho: self.position_rho(pos),
+                u: self.u[k] + self.direction(k) * pos.offset,
+                y,
+            },
+            prefix,
+        }
     }
 
-    /// Dissipation `(1/g0) integral y°^2 drho` from `from` to `to` (`to` not before `from`).
-    /// Its terms are all positive, so the double-double prefix sums give it to rounding.
-    pub(crate) fn dissipation_between(&self, from: Position, to: Position) -> f64 {
-        let d = self.cumulative(
-            &self.dissipation,
-            to,
-            self.piece_dissipation(to.k, to.offset),
-        ) - self.cumulative(
-            &self.dissipation,
-            from,
-            self.piece_dissipation(from.k, from.offset),
-        );
-        d.to_f64().max(0.0)
-    }
-
-    /// `y°(to) - y°(from)` over an arc on which the input returns to its start value
-    /// (`psi(to) = psi(from)`, as on every loop's arc).
+    /// The arc from `from` to `to` (`to` not before `from`, `psi(to) = psi(from)` as on every
+    /// loop's arc): its end points, the dissipation `(1/g0) integral y°^2 drho` over it (all
+    /// terms positive, so the double-double prefix sums give it to rounding) and the closure
+    /// gap `y°(to) - y°(from)`.
     ///
     /// On a piece, `y_end - y_k = s sigma0 l - a (s sigma0 l^2 h(a l) + y_k l phi(a l))`; the
     /// first terms add up to `sigma0 (psi(to) - psi(from)) = 0`, which leaves
     /// `gap = -a sum (s sigma0 l^2 h + y_k l phi)`: no cancellation when `a` times the arc's
     /// length is small, where the plain difference of the two values would lose everything
     /// (the gap is `O(a)`, the values `O(sigma0 P)`). Longer arcs use the plain difference.
-    pub(crate) fn closure_gap(&self, from: Position, to: Position) -> f64 {
+    pub(crate) fn arc(&self, from: Position, to: Position) -> Arc {
+        let (a, c) = (self.position_sums(from), self.position_sums(to));
         let whole_periods = to.k == from.k && to.offset == from.offset;
-        if whole_periods {
-            return 0.0;
-        }
-        let cumulative = |pos: Position| {
-            let (py, pl) = self.piece_drift(pos.k, pos.offset);
-            (
-                self.cumulative(&self.drift_y, pos, py),
-                self.cumulative(&self.drift_l, pos, pl),
+        let closure_gap = if whole_periods {
+            0.0
+        } else {
+            crate::arc_energy::closure_gap(
+                self.model,
+                c.point.rho - a.point.rho,
+                (c.prefix.drift_y - a.prefix.drift_y).to_f64(),
+                (c.prefix.drift_l - a.prefix.drift_l).to_f64(),
+                a.point.y,
+                c.point.y,
             )
         };
-        let ((y1, l1), (y0, l0)) = (cumulative(to), cumulative(from));
-        crate::arc_energy::closure_gap(
-            self.model,
-            self.position_rho(to) - self.position_rho(from),
-            (y1 - y0).to_f64(),
-            (l1 - l0).to_f64(),
-            self.position_point(from).y,
-            self.position_point(to).y,
-        )
+        Arc {
+            start: a.point,
+            end: c.point,
+            dissipation: (c.prefix.dissipation - a.prefix.dissipation)
+                .to_f64()
+                .max(0.0),
+            closure_gap,
+        }
     }
 
     /// The sums of [`crate::arc_energy`] over the pieces from `from` to `to`, when the arc
@@ -537,7 +603,7 @@ impl HysteresisLoop {
                 let y = self.advance(self.y[k], k, offset);
                 sums.add_piece(self.model, y, self.direction(k), stop - offset);
             }
-            k = (k + 1) % n;
+            k = self.next(k);
             offset = 0.0;
         }
         Some(sums)

@@ -21,7 +21,7 @@
 //! lexicographically greatest, so the set of loops does not depend on where the user's
 //! period begins, even with repeated extreme values.
 //!
-//! Energies over an arc ([`crate::arc_energy`]): short arcs are summed piece by piece, long ones
+//! Energies over an arc (`arc_energy.rs`): short arcs are summed piece by piece, long ones
 //! from double-double prefix sums, and the work is taken from whichever of its two forms
 //! (`integral (y - y_A) dpsi` or `dV + D`) rounds less.
 
@@ -145,7 +145,7 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
     let n = hl.len();
     let u = hl.turning_points();
     let start = canonical_start(u);
-    let v: Vec<f64> = (0..=n).map(|j| u[(start + j) % n]).collect();
+    let v: Vec<f64> = u[start..].iter().chain(&u[..=start]).copied().collect();
 
     let mut cycles = rainflow_cycles(&v);
     // The major loop turns at the first global minimum: nothing goes strictly below it, so it
@@ -164,20 +164,31 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
         end: (n, 0.0),
     };
     cycles.swap_remove(major_at);
-    cycles.sort_by(|p, q| {
-        p.a.cmp(&q.a)
-            .then(q.end.0.cmp(&p.end.0))
-            .then(q.end.1.total_cmp(&p.end.1))
-    });
+    // Every turning point starts at most one minor cycle: ordering them by where their arcs
+    // start is a counting sort.
+    let mut by_start = vec![usize::MAX; n];
+    for (i, c) in cycles.iter().enumerate() {
+        by_start[c.a] = i;
+    }
+    let ordered = by_start
+        .iter()
+        .filter(|&&i| i != usize::MAX)
+        .map(|&i| &cycles[i]);
 
-    let position = |j: usize, offset: f64| Position {
-        k: (start + j) % n,
-        wraps: ((start + j) / n) as u32,
-        offset,
+    // `start + j < 2n + 1` for every index of the closed sequence: at most two subtractions
+    // rather than an integer division per point.
+    let position = |j: usize, offset: f64| {
+        let (mut k, mut wraps) = (start + j, 0u32);
+        while k >= n {
+            k -= n;
+            wraps += 1;
+        }
+        Position { k, wraps, offset }
     };
+    let model = hl.model();
     let mut loops = Vec::with_capacity(cycles.len() + 1);
     let mut open: Vec<(usize, (usize, f64))> = Vec::new(); // (loop index, arc end)
-    for (i, c) in std::iter::once(&major).chain(cycles.iter()).enumerate() {
+    for (i, c) in std::iter::once(&major).chain(ordered).enumerate() {
         while let Some(&(_, end)) = open.last() {
             if end.0 < c.a || (end.0 == c.a && end.1 == 0.0) {
                 open.pop();
@@ -200,28 +211,23 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
             pb.wraps -= 1;
             pc.wraps -= 1;
         }
-        let (start, reversal, end) = (
-            hl.position_point(pa),
-            hl.position_point(pb),
-            hl.position_point(pc),
-        );
-        let model = hl.model();
         // O(1) from the prefix sums; the arc is summed piece by piece only when the direct
         // form of the work rounds less than dV + D (narrow loops far from y = 0).
-        let dissipation = hl.dissipation_between(pa, pc);
-        let closure_gap = hl.closure_gap(pa, pc);
-        let dv = stored_energy_change(model, closure_gap, start.y, end.y);
+        let arc = hl.arc(pa, pc);
+        let (start, end) = (arc.start, arc.end);
+        let reversal = hl.position_point(pb);
+        let dv = stored_energy_change(model, arc.closure_gap, start.y, end.y);
         let length = end.rho - start.rho;
-        let energy = match (i > 0 && direct_work_is_better(model, length, dv, dissipation))
+        let energy = match (i > 0 && direct_work_is_better(model, length, dv, arc.dissipation))
             .then(|| hl.arc_sums(pa, pc, DIRECT_WORK_MAX_SEGMENTS))
             .flatten()
         {
             Some(sums) => arc_energy(model, &sums, start.y, end.y),
             None => ArcEnergy {
-                work: dv + dissipation,
+                work: dv + arc.dissipation,
                 stored_energy_change: dv,
-                dissipation,
-                closure_gap,
+                dissipation: arc.dissipation,
+                closure_gap: arc.closure_gap,
             },
         };
         loops.push(Loop {

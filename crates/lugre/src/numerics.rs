@@ -74,10 +74,28 @@ const Q_SERIES: [f64; 19] = [
     2.052367710260443e-14,
 ];
 
-/// Horner evaluation of `sum_i c[i] z^i`.
-#[inline]
-fn horner(c: &[f64], z: f64) -> f64 {
-    c.iter().rev().fold(0.0, |acc, &ci| acc * z + ci)
+/// `sum_i c[i] z^i` by Estrin's scheme: pairs `c[2i] + c[2i+1] z`, then pairs of those with
+/// `z^2`, `z^4`, ...: the same few roundings as Horner's rule on these alternating series with
+/// fast-falling terms, but a dependency chain of `log2(N)` steps instead of `N` (the series
+/// are on the critical path of every piece of the loop).
+#[inline(always)]
+fn polynomial<const N: usize>(c: &[f64; N], z: f64) -> f64 {
+    let mut terms = *c;
+    let (mut len, mut x) = (N, z);
+    while len > 1 {
+        let half = len.div_ceil(2);
+        for i in 0..half {
+            let odd = if 2 * i + 1 < len {
+                terms[2 * i + 1]
+            } else {
+                0.0
+            };
+            terms[i] = terms[2 * i] + odd * x;
+        }
+        len = half;
+        x *= x;
+    }
+    terms[0]
 }
 
 /// `h(z) = (1 - phi(z)) / z = (z - 1 + exp(-z)) / z^2` for `z >= 0` (1/2 at 0, `~1/z` at
@@ -85,7 +103,7 @@ fn horner(c: &[f64], z: f64) -> f64 {
 #[inline]
 pub fn h(z: f64) -> f64 {
     if z < SERIES_BELOW {
-        horner(&H_SERIES, z)
+        polynomial(&H_SERIES, z)
     } else {
         (1.0 - phi(z)) / z
     }
@@ -116,9 +134,62 @@ pub fn phi_minus_phi2(z: f64) -> f64 {
 #[inline]
 pub fn q_over_z(z: f64) -> f64 {
     if z < SERIES_BELOW {
-        z * horner(&Q_SERIES, z)
+        z * polynomial(&Q_SERIES, z)
     } else {
         (1.0 - 2.0 * phi(z) + phi(2.0 * z)) / z
+    }
+}
+
+/// The whole family at one `z >= 0` from at most one exponential, for the per-piece closed
+/// forms that need several members at the same `z` (the loop's energies, [`crate::hysteresis`]).
+///
+/// Below `z = 1/2` `h` and `q/z` come from their series and the rest from the identities
+/// `phi = 1 - z h` and `exp(-z) = 1 - z phi` (no exponential at all); above, from `exp(-z)`.
+/// Everywhere `phi(2z) = phi (1 + exp(-z)) / 2` and `phi(z) - phi(2z) = (1 - exp(-z)) phi / 2`,
+/// which are exact identities without cancellation. `z = inf` gives `exp(-z) = phi = h = 0`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PhiFamily {
+    /// `exp(-z)`
+    pub e: f64,
+    /// `1 - exp(-z)`, without cancellation.
+    pub one_minus_e: f64,
+    pub phi: f64,
+    pub h: f64,
+    /// `phi(2z)`
+    pub phi2: f64,
+    /// `phi(z) - phi(2z)`
+    pub phi_minus_phi2: f64,
+    /// `q(z) / z`
+    pub q_over_z: f64,
+}
+
+impl PhiFamily {
+    #[inline]
+    pub fn new(z: f64) -> Self {
+        let (e, one_minus_e, phi, h, q_over_z);
+        if z < SERIES_BELOW {
+            h = polynomial(&H_SERIES, z);
+            phi = 1.0 - z * h;
+            one_minus_e = z * phi;
+            e = 1.0 - one_minus_e;
+            q_over_z = z * polynomial(&Q_SERIES, z);
+        } else {
+            e = (-z).exp();
+            one_minus_e = 1.0 - e;
+            let inv_z = 1.0 / z;
+            phi = one_minus_e * inv_z;
+            h = (1.0 - phi) * inv_z;
+            q_over_z = (1.0 - 2.0 * phi + 0.5 * phi * (1.0 + e)) * inv_z;
+        }
+        Self {
+            e,
+            one_minus_e,
+            phi,
+            h,
+            phi2: 0.5 * phi * (1.0 + e),
+            phi_minus_phi2: 0.5 * one_minus_e * phi,
+            q_over_z,
+        }
     }
 }
 
@@ -287,6 +358,37 @@ mod tests {
             let got = phi_minus_phi2(z);
             assert!(rel(got, want) < 1e-14, "phi({z}) - phi(2z) = {got}");
         }
+    }
+
+    /// The one-exponential family against the same mpmath values (and `exp(-z)` against
+    /// `1 - z phi`'s reference: `1 - exp(-z) = z phi`).
+    #[test]
+    fn phi_family_from_one_exponential_matches_mpmath() {
+        for (((z, p), (_, omp)), ((_, q), (_, pmp))) in PHI.iter().zip(&OMP).zip(Q.iter().zip(&PMP))
+        {
+            let f = PhiFamily::new(*z);
+            assert!(rel(f.phi, *p) < 4e-15, "phi({z}) = {}", f.phi);
+            assert!(rel(f.h * z, *omp) < 4e-15, "z h({z}) = {}", f.h * z);
+            assert!(rel(f.one_minus_e, z * p) < 4e-15, "1 - exp(-{z})");
+            assert!(
+                rel(f.q_over_z * z, *q) < 1e-14,
+                "q({z}) = {}",
+                f.q_over_z * z
+            );
+            assert!(rel(f.phi_minus_phi2, *pmp) < 4e-15, "phi - phi2 at {z}");
+            assert!(rel(f.phi2, p - pmp) < 4e-15, "phi(2 {z})");
+        }
+        let inf = PhiFamily::new(f64::INFINITY);
+        assert_eq!((inf.e, inf.phi, inf.h, inf.q_over_z), (0.0, 0.0, 0.0, 0.0));
+        assert_eq!(
+            (inf.one_minus_e, inf.phi2, inf.phi_minus_phi2),
+            (1.0, 0.0, 0.0)
+        );
+        let zero = PhiFamily::new(0.0);
+        assert_eq!(
+            (zero.e, zero.phi, zero.h, zero.q_over_z),
+            (1.0, 1.0, 0.5, 0.0)
+        );
     }
 
     #[test]

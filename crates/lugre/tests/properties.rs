@@ -46,8 +46,6 @@ fn config() -> ProptestConfig {
     ProptestConfig {
         cases,
         rng_seed,
-        // Failures are kept as explicit regression tests (see the end of this file).
-        failure_persistence: None,
         ..default
     }
 }
