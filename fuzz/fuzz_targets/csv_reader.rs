@@ -1,29 +1,33 @@
-//! The CSV reader (`lugre_cli::csv_in::SampleReader`) on arbitrary bytes, with and without a
-//! named column: no panic; every row it returns has finite values and, when the file has
-//! times, strictly increasing finite times; every error names a line or the file's emptiness.
+//! The CSV reader (`lugre_cli::csv_in::SampleReader`) on arbitrary bytes, for a series (with
+//! and without a named column) and a `u,F` record: no panic; every row it returns has as many
+//! values as the columns asked for, all finite, and, when the file has times, strictly
+//! increasing finite times; every error names a line.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use lugre_cli::csv_in::SampleReader;
+use lugre_cli::csv_in::{Columns, SampleReader};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&mode, bytes)) = data.split_first() else {
         return;
     };
-    let column = match mode % 4 {
-        0 => None,
-        1 => Some("u"),
-        2 => Some("force"),
-        _ => Some("t"),
+    let (columns, width) = match mode % 5 {
+        0 => (Columns::Series, 1),
+        1 => (Columns::Named("u"), 1),
+        2 => (Columns::Named("force"), 1),
+        3 => (Columns::Named("t"), 1),
+        _ => (Columns::Record, 2),
     };
-    let mut reader = SampleReader::new(bytes, column);
+    let mut reader = SampleReader::new(bytes, columns);
     let mut prev_t: Option<f64> = None;
     loop {
-        match reader.next_sample() {
+        match reader.next_row() {
             Ok(Some(s)) => {
-                assert!(s.u.is_finite(), "{s:?}");
-                assert_eq!(s.t.is_some(), reader.has_time());
-                if let Some(t) = s.t {
+                assert_eq!(s.values.len(), width, "{s:?}");
+                assert!(s.values.iter().all(|v| v.is_finite()), "{s:?}");
+                let t = s.t;
+                assert_eq!(t.is_some(), reader.has_time());
+                if let Some(t) = t {
                     assert!(t.is_finite());
                     if let Some(p) = prev_t {
                         assert!(t > p, "times increase: {p} then {t}");

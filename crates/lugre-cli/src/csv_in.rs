@@ -1,14 +1,18 @@
-//! Reading a series from CSV: header `t,u`, or a single column `u`; the header is optional.
-//! A UTF-8 byte-order mark, `#` comments, blank lines, CRLF line ends and spaces around values
-//! are accepted. Every problem is reported with the file's line number.
+//! Reading sampled data from CSV: the value columns a command wants (`u`, or `u,F` for
+//! `lugre fit`), each row optionally led by a time `t`. A header is optional; it names the
+//! columns in any order (case-insensitive). A UTF-8 byte-order mark, `#` comments, blank lines,
+//! CRLF (or CR) line ends and spaces around values are accepted; a line longer than a megabyte
+//! is refused. Every problem is reported with the file's line number.
 //!
 //! [`SampleReader`] streams the file one row at a time (a measured history may not fit in
-//! memory); [`read_series`] collects it. Both share the per-row parsing and validation.
-//! With a column name (`lugre cycles --column NAME`), any header naming that column is
-//! accepted, a column `t` is read as times, and other columns are ignored.
+//! memory); [`read_series`] and [`read_table`] collect it. All share the per-row parsing and
+//! validation. With a column name (`lugre cycles --column NAME`), any header naming that column
+//! is accepted, a column `t` is read as times, and other columns are ignored.
 
 use anyhow::{bail, Context, Result};
 use std::io::Read;
+
+use crate::fmt::{excerpt, quoted};
 use std::path::Path;
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
@@ -18,40 +22,88 @@ pub struct Series {
     pub u: Vec<f64>,
 }
 
+/// Every row of a file: optional times (strictly increasing) and each value column (all
+/// finite), in the order of [`Columns`].
+#[derive(Debug, Clone)]
+pub struct Table {
+    pub t: Option<Vec<f64>>,
+    pub columns: Vec<Vec<f64>>,
+}
+
+/// Which columns a file holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Columns<'a> {
+    /// `u` or `t,u`.
+    Series,
+    /// `u,F` or `t,u,F` (`lugre fit`).
+    Record,
+    /// The column of this name in any header (a file without a header has the columns `u` or
+    /// `t,u`).
+    Named(&'a str),
+}
+
+impl Columns<'_> {
+    /// The value columns' names (without a header, or in the order they are returned).
+    fn names(self) -> &'static [&'static str] {
+        match self {
+            Columns::Series | Columns::Named(_) => &["u"],
+            Columns::Record => &["u", "F"],
+        }
+    }
+}
+
+impl From<Table> for Series {
+    /// The first value column (the only one of [`Columns::Series`] and [`Columns::Named`]).
+    fn from(Table { t, columns }: Table) -> Self {
+        Series {
+            t,
+            u: columns.into_iter().next().unwrap_or_default(),
+        }
+    }
+}
+
 pub fn read_series(path: &Path) -> Result<Series> {
-    let file =
-        std::fs::File::open(path).with_context(|| format!("cannot read '{}'", path.display()))?;
-    collect(SampleReader::new(file, None)).with_context(|| path.display().to_string())
+    read_table(path, Columns::Series).map(Series::from)
 }
 
-#[cfg(test)]
-pub fn parse_series(bytes: &[u8]) -> Result<Series> {
-    collect(SampleReader::new(bytes, None))
+/// Reads every row of `path` (at least one).
+pub fn read_table(path: &Path, columns: Columns) -> Result<Table> {
+    collect(SampleReader::open(path, columns)?).with_context(|| path.display().to_string())
 }
 
-fn collect<R: Read>(mut reader: SampleReader<R>) -> Result<Series> {
+fn collect<R: Read>(mut reader: SampleReader<'_, R>) -> Result<Table> {
     let mut t: Vec<f64> = Vec::new();
-    let mut u: Vec<f64> = Vec::new();
-    while let Some(s) = reader.next_sample()? {
-        if let Some(ts) = s.t {
+    let mut columns: Vec<Vec<f64>> = Vec::new();
+    while let Some(row) = reader.next_row()? {
+        if let Some(ts) = row.t {
             t.push(ts);
         }
-        u.push(s.u);
+        columns.resize_with(row.values.len(), Vec::new);
+        for (column, &v) in columns.iter_mut().zip(row.values) {
+            column.push(v);
+        }
     }
-    if u.is_empty() {
+    if columns.is_empty() {
         bail!("no data rows");
     }
-    Ok(Series {
+    Ok(Table {
         t: reader.has_time().then_some(t),
-        u,
+        columns,
     })
 }
 
-/// One row: its time (if the file has times) and value.
+/// One row of a single-value file: its time (if the file has times) and value.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
     pub t: Option<f64>,
     pub u: f64,
+}
+
+/// One row: its time (if the file has times) and values, in the order of [`Columns`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Row<'a> {
+    pub t: Option<f64>,
+    pub values: &'a [f64],
 }
 
 /// Where the values are, from the first row.
@@ -59,36 +111,35 @@ pub struct Sample {
 struct Layout {
     width: usize,
     t: Option<usize>,
-    u: usize,
-    /// The value column's name, for messages.
-    name: String,
+    /// The value columns' positions and names (for messages), in the order returned.
+    values: Vec<(usize, String)>,
     /// The columns, for messages (`t,u`).
     header: String,
 }
 
 /// Streams the rows of a CSV file.
-pub struct SampleReader<R: Read> {
+pub struct SampleReader<'c, R: Read> {
     reader: csv::Reader<LineLimit<SkipBom<R>>>,
     record: csv::ByteRecord,
-    column: Option<String>,
+    columns: Columns<'c>,
     layout: Option<Layout>,
+    values: Vec<f64>,
     prev_t: Option<f64>,
     line: u64,
 }
 
-impl SampleReader<std::fs::File> {
-    /// Opens `path`; `column` as in [`SampleReader::new`].
-    pub fn open(path: &Path, column: Option<&str>) -> Result<Self> {
+impl<'c> SampleReader<'c, std::fs::File> {
+    /// Opens `path`; `columns` as in [`SampleReader::new`].
+    pub fn open(path: &Path, columns: Columns<'c>) -> Result<Self> {
         let file = std::fs::File::open(path)
             .with_context(|| format!("cannot read '{}'", path.display()))?;
-        Ok(Self::new(file, column))
+        Ok(Self::new(file, columns))
     }
 }
 
-impl<R: Read> SampleReader<R> {
-    /// `column`: `None` for a header `t,u` or `u` (or none); `Some(name)` for the column of
-    /// that name in any header (a file without a header has the columns `u` or `t,u`).
-    pub fn new(inner: R, column: Option<&str>) -> Self {
+impl<'c, R: Read> SampleReader<'c, R> {
+    /// A reader of the `columns` of `inner`.
+    pub fn new(inner: R, columns: Columns<'c>) -> Self {
         let reader = csv::ReaderBuilder::new()
             .has_headers(false)
             .flexible(true)
@@ -99,8 +150,9 @@ impl<R: Read> SampleReader<R> {
         Self {
             reader,
             record: csv::ByteRecord::new(),
-            column: column.map(str::to_string),
+            columns,
             layout: None,
+            values: Vec::new(),
             prev_t: None,
             line: 0,
         }
@@ -116,8 +168,17 @@ impl<R: Read> SampleReader<R> {
         self.line
     }
 
-    /// The next row, or `None` at the end of the file.
+    /// The next row of a single-value file ([`Columns::Series`] or [`Columns::Named`]), or
+    /// `None` at the end of the file.
     pub fn next_sample(&mut self) -> Result<Option<Sample>> {
+        Ok(self.next_row()?.map(|row| Sample {
+            t: row.t,
+            u: row.values.first().copied().unwrap_or_default(),
+        }))
+    }
+
+    /// The next row, or `None` at the end of the file.
+    pub fn next_row(&mut self) -> Result<Option<Row<'_>>> {
         loop {
             let more = self.reader.read_byte_record(&mut self.record);
             self.line = self.record.position().map_or(0, |p| p.line());
@@ -132,7 +193,7 @@ impl<R: Read> SampleReader<R> {
             }
             if self.layout.is_none() {
                 let fields = utf8_fields(&self.record, line)?;
-                let (first, is_header) = layout(&fields, self.column.as_deref(), line)?;
+                let (first, is_header) = layout(&fields, self.columns, line)?;
                 self.layout = Some(first);
                 if is_header {
                     continue;
@@ -150,7 +211,6 @@ impl<R: Read> SampleReader<R> {
                     self.record.len()
                 );
             }
-            let u = number(&self.record[layout.u], &layout.name, line)?;
             let t = match layout.t {
                 Some(k) => {
                     let t = number(&self.record[k], "t", line)?;
@@ -168,7 +228,14 @@ impl<R: Read> SampleReader<R> {
                 }
                 None => None,
             };
-            return Ok(Some(Sample { t, u }));
+            self.values.clear();
+            for (k, name) in &layout.values {
+                self.values.push(number(&self.record[*k], name, line)?);
+            }
+            return Ok(Some(Row {
+                t,
+                values: &self.values,
+            }));
         }
     }
 }
@@ -182,60 +249,107 @@ fn utf8_fields(record: &csv::ByteRecord, line: u64) -> Result<Vec<&str>> {
 }
 
 /// The layout from the first row (a header, or numbers), and whether that row is a header.
-fn layout(fields: &[&str], column: Option<&str>, line: u64) -> Result<(Layout, bool)> {
+fn layout(fields: &[&str], columns: Columns, line: u64) -> Result<(Layout, bool)> {
+    let wanted = columns.names();
+    let listed = wanted.join(",");
     let numeric = fields.iter().all(|f| f.parse::<f64>().is_ok());
-    let unnamed = |width: usize| Layout {
-        width,
-        t: (width == 2).then_some(0),
-        u: width - 1,
-        name: "u".into(),
-        header: if width == 2 { "t,u" } else { "u" }.into(),
-    };
     if numeric {
-        if let Some(name) = column {
+        if let Columns::Named(name) = columns {
             if !name.eq_ignore_ascii_case("u") {
                 bail!("line {line}: no header line, so no column '{name}' (a file without a header has the columns u or t,u)");
             }
         }
-        return match fields.len() {
-            1 | 2 => Ok((unnamed(fields.len()), false)),
-            n => bail!("line {line}: expected 1 column (u) or 2 columns (t,u), found {n}"),
-        };
+        // Without a header, the values in order, after the time if there is one more column.
+        let k = wanted.len();
+        let n = fields.len();
+        if n != k && n != k + 1 {
+            let s = if k == 1 { "" } else { "s" };
+            bail!("line {line}: expected {k} column{s} ({listed}) or {} columns (t,{listed}), found {n}", k + 1);
+        }
+        let t = (n == k + 1).then_some(0);
+        let first = usize::from(t.is_some());
+        return Ok((
+            Layout {
+                width: n,
+                t,
+                values: (first..)
+                    .zip(wanted)
+                    .map(|(k, name)| (k, name.to_string()))
+                    .collect(),
+                header: if t.is_some() {
+                    format!("t,{listed}")
+                } else {
+                    listed
+                },
+            },
+            false,
+        ));
     }
     let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
     let header = fields.join(",");
-    match column {
-        None => match names
+    let find = |n: &str| names.iter().position(|x| x.eq_ignore_ascii_case(n));
+    if let Columns::Named(name) = columns {
+        let Some(u) = find(name) else {
+            bail!(
+                "line {line}: no column '{name}' in the header {}",
+                quoted(&header)
+            );
+        };
+        if names
             .iter()
-            .map(String::as_str)
-            .collect::<Vec<_>>()
-            .as_slice()
+            .filter(|x| x.eq_ignore_ascii_case(name))
+            .count()
+            > 1
         {
-            ["t", "u"] => Ok((unnamed(2), true)),
-            ["u"] => Ok((unnamed(1), true)),
-            _ => bail!("line {line}: unexpected header '{header}': expected 't,u' or 'u'"),
-        },
-        Some(name) => {
-            let wanted = name.to_ascii_lowercase();
-            let find = |n: &str| names.iter().position(|x| x == n);
-            let Some(u) = find(&wanted) else {
-                bail!("line {line}: no column '{name}' in the header '{header}'");
+            bail!(
+                "line {line}: the header {} names '{name}' more than once",
+                quoted(&header)
+            );
+        }
+        let t = find("t").filter(|&k| k != u);
+        return Ok((
+            Layout {
+                width: fields.len(),
+                t,
+                values: vec![(u, fields[u].to_string())],
+                header: excerpt(&header),
+            },
+            true,
+        ));
+    }
+    // Exactly the value columns, and perhaps `t`, each once, in any order.
+    let t = find("t");
+    let values: Option<Vec<(usize, String)>> = wanted
+        .iter()
+        .map(|&name| find(name).map(|k| (k, name.to_string())))
+        .collect();
+    let distinct = {
+        let mut sorted = names.clone();
+        sorted.sort();
+        sorted.dedup();
+        sorted.len() == names.len()
+    };
+    match values {
+        Some(values) if distinct && names.len() == wanted.len() + usize::from(t.is_some()) => {
+            let header = if t.is_some() {
+                format!("t,{listed}")
+            } else {
+                listed
             };
-            if names.iter().filter(|x| **x == wanted).count() > 1 {
-                bail!("line {line}: the header '{header}' names '{name}' more than once");
-            }
-            let t = find("t").filter(|&k| k != u);
             Ok((
                 Layout {
-                    width: fields.len(),
+                    width: names.len(),
                     t,
-                    u,
-                    name: fields[u].to_string(),
+                    values,
                     header,
                 },
                 true,
             ))
         }
+        _ => bail!(
+            "line {line}: unexpected header {}: expected '{listed}' or 't,{listed}'",
+            quoted(&header)
+        ),
     }
 }
 
@@ -248,8 +362,11 @@ fn number(field: &[u8], name: &str, line: u64) -> Result<f64> {
     }
     match field.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => bail!("line {line}: {name} = '{field}' is not a finite number"),
-        Err(_) => bail!("line {line}: {name} = '{field}' is not a number"),
+        Ok(_) => bail!(
+            "line {line}: {name} = {} is not a finite number",
+            quoted(field)
+        ),
+        Err(_) => bail!("line {line}: {name} = {} is not a number", quoted(field)),
     }
 }
 
@@ -342,6 +459,10 @@ impl<R: Read> Read for SkipBom<R> {
 mod tests {
     use super::*;
 
+    fn parse_series(bytes: &[u8]) -> Result<Series> {
+        collect(SampleReader::new(bytes, Columns::Series)).map(Series::from)
+    }
+
     #[test]
     fn accepts_the_usual_shapes() {
         let s = parse_series(b"\xEF\xBB\xBFt,u\r\n# comment\r\n0, 0\r\n1,1\r\n\r\n2,0.5\r\n\n")
@@ -362,7 +483,7 @@ mod tests {
     fn a_file_without_line_breaks_is_refused_early() {
         // As /dev/zero would be, without reading it all into one record.
         let zeros = std::io::repeat(0).take(64 * MAX_LINE as u64);
-        let mut r = SampleReader::new(zeros, None);
+        let mut r = SampleReader::new(zeros, Columns::Series);
         let e = r.next_sample().unwrap_err().to_string();
         assert!(e.contains("a line is longer than 1048576 bytes"), "{e}");
         // A long line just under the limit is read.
@@ -395,8 +516,87 @@ mod tests {
         }
     }
 
+    fn parse_record(bytes: &[u8]) -> Result<Table> {
+        collect(SampleReader::new(bytes, Columns::Record))
+    }
+
+    #[test]
+    fn records_in_the_usual_shapes() {
+        let r = parse_record(b"\xEF\xBB\xBFu,F\r\n# c\r\n0,1\r\n\r\n1, 2\r\n").unwrap();
+        assert!(r.t.is_none());
+        assert_eq!(r.columns, vec![vec![0.0, 1.0], vec![1.0, 2.0]]);
+        let r = parse_record(b"0,1,2\n1,2,3\n").unwrap();
+        assert_eq!(r.t.unwrap(), vec![0.0, 1.0]);
+        assert_eq!(r.columns, vec![vec![1.0, 2.0], vec![2.0, 3.0]]);
+        // Named columns in any order, any case.
+        let r = parse_record(b"F,t,U\n5,0,1\n6,1,2\n").unwrap();
+        assert_eq!(r.t.unwrap(), vec![0.0, 1.0]);
+        assert_eq!(r.columns, vec![vec![1.0, 2.0], vec![5.0, 6.0]]);
+        let r = parse_record(b"f,u\n5,1\n").unwrap();
+        assert_eq!((r.t, r.columns), (None, vec![vec![1.0], vec![5.0]]));
+        // A series header in any order too.
+        let s = parse_series(b"u,t\n5,0\n6,1\n").unwrap();
+        assert_eq!((s.t.unwrap(), s.u), (vec![0.0, 1.0], vec![5.0, 6.0]));
+    }
+
+    #[test]
+    fn record_errors_name_the_line() {
+        let cases: [(&[u8], &str); 14] = [
+            (b"u,F\n0,1\n1\n", "line 3: expected 2 values (u,F), found 1"),
+            (
+                b"F,t,u\n0,1,2\n1,2\n",
+                "line 3: expected 3 values (t,u,F), found 2",
+            ),
+            (
+                b"x,y\n0,1\n",
+                "line 1: unexpected header 'x,y': expected 'u,F' or 't,u,F'",
+            ),
+            (b"u,F,F\n0,1,2\n", "line 1: unexpected header 'u,F,F'"),
+            (b"u,F,x\n0,1,2\n", "line 1: unexpected header 'u,F,x'"),
+            (b"t,u,F,t\n0,1,2,3\n", "line 1: unexpected header"),
+            (b"u\n0\n", "line 1: unexpected header 'u'"),
+            (
+                b"t,u,F\n0,1,2\n0,1,2\n",
+                "line 3: times must be strictly increasing, t = 0 follows t = 0",
+            ),
+            // Times as the shortest text that reads back, never hundreds of digits.
+            (
+                b"t,u,F\n1e300,1,2\n1e299,1,2\n",
+                "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300",
+            ),
+            (b"u,F\n0,nan\n", "line 2: F = 'nan' is not a finite number"),
+            (b"u,F\n0,abc\n", "line 2: F = 'abc' is not a number"),
+            (
+                b"1,2,3,4\n",
+                "line 1: expected 2 columns (u,F) or 3 columns (t,u,F), found 4",
+            ),
+            (
+                b"1\n",
+                "line 1: expected 2 columns (u,F) or 3 columns (t,u,F), found 1",
+            ),
+            (b"u,F\n", "no data rows"),
+        ];
+        for (input, want) in cases {
+            let e = match parse_record(input) {
+                Ok(_) => panic!("{want}: accepted"),
+                Err(e) => e.to_string(),
+            };
+            assert!(e.contains(want), "{e} (wanted {want})");
+        }
+        let e = parse_series(b"1,2,3\n").unwrap_err().to_string();
+        assert!(
+            e.contains("line 1: expected 1 column (u) or 2 columns (t,u), found 3"),
+            "{e}"
+        );
+        let e = parse_series(b"t,u,u\n").unwrap_err().to_string();
+        assert!(
+            e.contains("line 1: unexpected header 't,u,u': expected 'u' or 't,u'"),
+            "{e}"
+        );
+    }
+
     fn named(bytes: &[u8], column: &str) -> Result<Vec<Sample>> {
-        let mut r = SampleReader::new(bytes, Some(column));
+        let mut r = SampleReader::new(bytes, Columns::Named(column));
         let mut out = Vec::new();
         while let Some(s) = r.next_sample()? {
             out.push(s);

@@ -25,10 +25,10 @@ use std::path::{Path, PathBuf};
 
 use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, ModelChoice, ModelKind};
-use crate::csv_in::SampleReader;
+use crate::csv_in::{Columns, SampleReader};
 use crate::fmt::{exact, sig};
 use crate::json_out::JsonOut;
-use crate::numbers::parse_list;
+use crate::numbers::{flag_value, parse_list};
 
 /// Rows of the cycle table printed before the rest is summarised (all of it is in --json and
 /// --csv).
@@ -69,7 +69,8 @@ pub struct CyclesArgs {
     #[arg(
         long,
         value_name = "H",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
+        value_parser = flag_value::<f64>,
         help_heading = "Counting"
     )]
     pub gate: Option<f64>,
@@ -83,7 +84,8 @@ pub struct CyclesArgs {
     #[arg(
         long,
         value_name = "X",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
+        value_parser = flag_value::<f64>,
         help_heading = "Energy"
     )]
     pub x0: Option<f64>,
@@ -103,6 +105,8 @@ pub struct CyclesArgs {
     #[arg(
         long,
         value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = flag_value::<usize>,
         requires = "histogram",
         help_heading = "Output"
     )]
@@ -145,7 +149,7 @@ impl Source<'_> {
             Source::Values(v) => v.chunks(BLOCK).try_for_each(f),
             Source::File { path, column } => {
                 let name = || path.display().to_string();
-                let mut reader = SampleReader::open(path, Some(column))?;
+                let mut reader = SampleReader::open(path, Columns::Named(column))?;
                 let mut block = Vec::with_capacity(BLOCK);
                 while let Some(s) = reader.next_sample().with_context(name)? {
                     // Finite already (the reader checks).

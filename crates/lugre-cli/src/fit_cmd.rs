@@ -13,7 +13,7 @@
 //! is reported with a warning on stderr and exit status 0; every other failure, including a
 //! parameter the data cannot determine, is one line and status 2.
 
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use lugre::fit::{
     fit_full, fit_slow, Family, FitError, FitKind, FitProgress, FitReport, FitSpec, FullOptions,
@@ -24,9 +24,10 @@ use std::time::{Duration, Instant};
 
 use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, ModelKind};
+use crate::csv_in::{read_table, Columns};
 use crate::fmt::sig;
 use crate::json_out::JsonOut;
-use crate::numbers::parse_number;
+use crate::numbers::{flag_value, parse_number};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
 
 /// Vertical strokes in the residual figure (at most).
@@ -79,7 +80,13 @@ pub struct FitArgs {
     pub x0: Option<String>,
     /// Full fit: the number of starts (the first from the data, then sigma0 and vs scaled by 4
     /// or 1/4; default 3).
-    #[arg(long, value_name = "N", help_heading = "Fit")]
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = flag_value::<usize>,
+        help_heading = "Fit"
+    )]
     pub starts: Option<usize>,
     /// Print one JSON document instead of the table.
     #[arg(long, help_heading = "Output")]
@@ -296,110 +303,12 @@ fn explain(e: FitError) -> anyhow::Error {
 
 /// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order).
 fn read_record(path: &Path) -> Result<Record> {
-    let bytes = std::fs::read(path).with_context(|| format!("cannot read '{}'", path.display()))?;
-    parse_record(&bytes).with_context(|| path.display().to_string())
-}
-
-fn parse_record(bytes: &[u8]) -> Result<Record> {
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .comment(Some(b'#'))
-        .trim(csv::Trim::All)
-        .from_reader(bytes);
-    let mut record = csv::StringRecord::new();
-    // Column positions of (t, u, F) and the width.
-    let mut layout: Option<(Option<usize>, usize, usize, usize)> = None;
-    let (mut t, mut u, mut f) = (Vec::new(), Vec::new(), Vec::new());
-    loop {
-        let more = reader.read_record(&mut record);
-        let line = record.position().map_or(0, |p| p.line());
-        match more {
-            Ok(false) => break,
-            Ok(true) => {}
-            Err(e) => bail!("line {line}: {e}"),
-        }
-        if record.iter().all(str::is_empty) {
-            continue;
-        }
-        let (tc, uc, fc, width) = match layout {
-            Some(l) => l,
-            None => {
-                let numeric = record.iter().all(|x| x.parse::<f64>().is_ok());
-                let l = if numeric {
-                    match record.len() {
-                        2 => (None, 0, 1, 2),
-                        3 => (Some(0), 1, 2, 3),
-                        n => bail!(
-                            "line {line}: expected 2 columns (u,F) or 3 columns (t,u,F), found {n}"
-                        ),
-                    }
-                } else {
-                    let names: Vec<String> =
-                        record.iter().map(|x| x.to_ascii_lowercase()).collect();
-                    let find = |n: &str| names.iter().position(|x| x == n);
-                    let header = record.iter().collect::<Vec<_>>().join(",");
-                    let ok = matches!(names.len(), 2 | 3)
-                        && find("u").is_some()
-                        && find("f").is_some()
-                        && (names.len() == 2 || find("t").is_some());
-                    if !ok {
-                        bail!(
-                            "line {line}: unexpected header '{header}': expected 'u,F' or 't,u,F'"
-                        );
-                    }
-                    (
-                        find("t"),
-                        find("u").unwrap_or(0),
-                        find("f").unwrap_or(1),
-                        names.len(),
-                    )
-                };
-                layout = Some(l);
-                if !numeric {
-                    continue;
-                }
-                l
-            }
-        };
-        if record.len() != width {
-            let header = if width == 2 { "u,F" } else { "t,u,F" };
-            bail!(
-                "line {line}: expected {width} values ({header}), found {}",
-                record.len()
-            );
-        }
-        let value = |k: usize, name: &str| -> Result<f64> {
-            let s = &record[k];
-            if s.is_empty() {
-                bail!("line {line}: empty value for {name}");
-            }
-            match s.parse::<f64>() {
-                Ok(v) if v.is_finite() => Ok(v),
-                Ok(_) => bail!("line {line}: {name} = '{s}' is not a finite number"),
-                Err(_) => bail!("line {line}: {name} = '{s}' is not a number"),
-            }
-        };
-        if let Some(k) = tc {
-            let tv = value(k, "t")?;
-            if let Some(&prev) = t.last() {
-                if tv <= prev {
-                    bail!("line {line}: times must be strictly increasing, t = {tv} follows t = {prev}");
-                }
-            }
-            t.push(tv);
-        }
-        u.push(value(uc, "u")?);
-        f.push(value(fc, "F")?);
-    }
-    if u.is_empty() {
-        bail!("no data rows");
-    }
+    let table = read_table(path, Columns::Record)?;
+    let mut columns = table.columns.into_iter();
     Ok(Record {
-        t: layout.and_then(|l| l.0).map(|_| t),
-        u,
-        f,
+        t: table.t,
+        u: columns.next().unwrap_or_default(),
+        f: columns.next().unwrap_or_default(),
     })
 }
 
@@ -733,53 +642,6 @@ impl Progress {
     fn finish(&mut self) {
         if let Some(bar) = self.bar.take() {
             bar.finish_and_clear();
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn records_in_the_usual_shapes() {
-        let r = parse_record(b"\xEF\xBB\xBFu,F\r\n# c\r\n0,1\r\n\r\n1, 2\r\n").unwrap();
-        assert!(r.t.is_none());
-        assert_eq!((r.u, r.f), (vec![0.0, 1.0], vec![1.0, 2.0]));
-        let r = parse_record(b"0,1,2\n1,2,3\n").unwrap();
-        assert_eq!(r.t.unwrap(), vec![0.0, 1.0]);
-        assert_eq!((r.u, r.f), (vec![1.0, 2.0], vec![2.0, 3.0]));
-        // Named columns in any order.
-        let r = parse_record(b"F,t,u\n5,0,1\n6,1,2\n").unwrap();
-        assert_eq!(
-            (r.t.unwrap(), r.u, r.f),
-            (vec![0.0, 1.0], vec![1.0, 2.0], vec![5.0, 6.0])
-        );
-    }
-
-    #[test]
-    fn record_errors_name_the_line() {
-        let cases: [(&[u8], &str); 7] = [
-            (b"u,F\n0,1\n1\n", "line 3: expected 2 values (u,F), found 1"),
-            (b"x,y\n0,1\n", "line 1: unexpected header 'x,y'"),
-            (
-                b"t,u,F\n0,1,2\n0,1,2\n",
-                "line 3: times must be strictly increasing",
-            ),
-            (b"u,F\n0,nan\n", "line 2: F = 'nan' is not a finite number"),
-            (b"u,F\n0,abc\n", "line 2: F = 'abc' is not a number"),
-            (
-                b"1,2,3,4\n",
-                "line 1: expected 2 columns (u,F) or 3 columns (t,u,F), found 4",
-            ),
-            (b"u,F\n", "no data rows"),
-        ];
-        for (input, want) in cases {
-            let e = match parse_record(input) {
-                Ok(_) => panic!("{want}: accepted"),
-                Err(e) => e.to_string(),
-            };
-            assert!(e.contains(want), "{e} (wanted {want})");
         }
     }
 }

@@ -42,6 +42,36 @@ pub fn exact(x: f64) -> String {
     s.strip_suffix(".0").unwrap_or(s).to_string()
 }
 
+/// Text from a file, quoted for a message: whole up to [`QUOTE_CHARS`] characters, else its
+/// start, '...' and its length (a cell or a header may run to a megabyte).
+pub fn quoted(text: &str) -> String {
+    match shortened(text) {
+        (start, None) => format!("'{start}'"),
+        (start, Some(n)) => format!("'{start}...' ({n} characters)"),
+    }
+}
+
+/// [`quoted`] without the quotes.
+pub fn excerpt(text: &str) -> String {
+    match shortened(text) {
+        (start, None) => start,
+        (start, Some(n)) => format!("{start}... ({n} characters)"),
+    }
+}
+
+/// `text` whole, or its start and its length in characters.
+fn shortened(text: &str) -> (String, Option<usize>) {
+    let n = text.chars().count();
+    if n <= QUOTE_CHARS {
+        (text.to_string(), None)
+    } else {
+        (text.chars().take(QUOTE_CHARS - 8).collect(), Some(n))
+    }
+}
+
+/// The longest text [`quoted`] and [`excerpt`] show whole.
+const QUOTE_CHARS: usize = 40;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -62,5 +92,27 @@ mod tests {
             assert_eq!(exact(x).parse::<f64>().unwrap(), x);
         }
         assert_eq!(exact(2.0), "2");
+    }
+
+    #[test]
+    fn quoted_text_is_short() {
+        assert_eq!(quoted("1e999"), "'1e999'");
+        let forty = "x".repeat(40);
+        assert_eq!(quoted(&forty), format!("'{forty}'"));
+        let digits = format!("1{}", "0".repeat(400));
+        assert_eq!(
+            quoted(&digits),
+            format!("'1{}...' (401 characters)", "0".repeat(31))
+        );
+        // Characters, not bytes: never a split UTF-8 sequence.
+        assert_eq!(
+            quoted(&"µ".repeat(41)),
+            format!("'{}...' (41 characters)", "µ".repeat(32))
+        );
+        assert_eq!(excerpt("t,u"), "t,u");
+        assert_eq!(
+            excerpt(&"x,".repeat(30)),
+            format!("{}... (60 characters)", "x,".repeat(16))
+        );
     }
 }

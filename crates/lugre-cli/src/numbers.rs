@@ -27,6 +27,20 @@ pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
     }
 }
 
+/// The value of a numeric flag that takes values starting with '-' (`--fc -inf`, clap's
+/// `allow_hyphen_values`): a flag in its place (`--fc --json`, the value left out) is named as
+/// one, not read as a bad number.
+pub fn flag_value<T>(text: &str) -> Result<T, String>
+where
+    T: std::str::FromStr,
+    T::Err: std::fmt::Display,
+{
+    if text.len() > 2 && text.starts_with("--") {
+        return Err("expected a value, found a flag".into());
+    }
+    text.parse::<T>().map_err(|e| e.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -41,5 +55,17 @@ mod tests {
             let e = parse_list("--x", bad).unwrap_err().to_string();
             assert!(e.starts_with("--x:"), "{bad}: {e}");
         }
+    }
+
+    #[test]
+    fn flag_values() {
+        assert_eq!(flag_value::<f64>("-inf"), Ok(f64::NEG_INFINITY));
+        assert_eq!(flag_value::<f64>("-0.5"), Ok(-0.5));
+        assert!(flag_value::<usize>("-1").is_err());
+        assert_eq!(
+            flag_value::<f64>("--json"),
+            Err("expected a value, found a flag".to_string())
+        );
+        assert!(flag_value::<f64>("--").is_err());
     }
 }

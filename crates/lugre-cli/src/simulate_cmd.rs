@@ -19,7 +19,7 @@ use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, PeriodicInputArgs};
 use crate::fmt::sig;
 use crate::json_out::JsonOut;
-use crate::numbers::parse_list;
+use crate::numbers::{flag_value, parse_list};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
 /// Output times per period when none are asked for (piecewise-linear inputs also get their
@@ -100,7 +100,13 @@ pub struct SimulateArgs {
     pub times: Option<String>,
     /// N >= 1 evenly spaced output times per period, both ends of the run included. Default:
     /// the samples of an --input file; 200 per period plus every turning point otherwise.
-    #[arg(long, value_name = "N", help_heading = "Output")]
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = flag_value::<usize>,
+        help_heading = "Output"
+    )]
     pub samples_per_period: Option<usize>,
     /// Print {"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]} instead of the table.
     #[arg(long, help_heading = "Output")]

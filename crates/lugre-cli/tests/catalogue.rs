@@ -353,7 +353,7 @@ fn csv_files_good_and_bad() {
         (
             "wrong-header.csv",
             b"time,value\n0,1\n1,2\n",
-            "line 1: unexpected header 'time,value': expected 't,u' or 'u'",
+            "line 1: unexpected header 'time,value': expected 'u' or 't,u'",
         ),
         (
             "three-columns.csv",
@@ -441,16 +441,348 @@ fn csv_files_good_and_bad() {
     );
     let path = dir.file("nul.csv", b"u\n0\n1\x00\n");
     rejects(&["cycles", "--input", &path], "line 3");
-    // fit: the same reader rules for its columns.
-    let path = dir.file("fit-header.csv", "u,G\n0,0\n");
+    // Times far apart are named in a few characters, not hundreds of digits.
+    let path = dir.file("huge-times.csv", "t,u\n1e300,0\n1e299,1\n");
+    for cmd in ["loop", "simulate", "cycles"] {
+        rejects(
+            &[cmd, "--input", &path],
+            "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300",
+        );
+    }
+}
+
+/// `lugre fit` reads its `u,F` or `t,u,F` file with the same reader as the other commands: the
+/// same tolerance (BOM, CRLF, CR, comments, blank lines, spaces, columns in any order), the
+/// same limits (a line of at most a megabyte) and messages of a few dozen characters whatever
+/// the file holds.
+#[test]
+fn fit_csv_files_good_and_bad() {
+    let dir = TempDir::new("catalogue-fit-csv");
+    let clean = std::fs::read_to_string(slow_loop_data(&dir)).unwrap();
+    let (header, rows) = clean.split_once('\n').unwrap();
+    assert_eq!(header, "u,F");
+    let swapped: String = rows
+        .lines()
+        .map(|l| {
+            let (u, f) = l.split_once(',').unwrap();
+            format!("{f},{u}\n")
+        })
+        .collect();
+    let variants = [
+        ("crlf.csv", clean.replace('\n', "\r\n")),
+        ("cr-only.csv", clean.replace('\n', "\r")),
+        ("bom.csv", format!("\u{feff}{clean}")),
+        (
+            "comments.csv",
+            format!("# slow loop\n{header}\n# u,F\n{rows}"),
+        ),
+        ("blank-lines.csv", format!("\n{header}\n\n{rows}\n\n")),
+        ("no-header.csv", rows.to_string()),
+        ("spaces.csv", clean.replace(',', " , ")),
+        ("swapped.csv", format!("f,U\n{swapped}")),
+    ];
+    let want = accepts_json(&["fit", "--json", "--input", &dir.file("clean.csv", &clean)]);
+    for (name, text) in &variants {
+        let mut j = accepts_json(&["fit", "--json", "--input", &dir.file(name, text)]);
+        // The file's name is part of the report.
+        j["input"] = want["input"].clone();
+        assert_eq!(j, want, "{name} differs from clean.csv");
+    }
+
+    let huge_number = format!("1{}", "0".repeat(400));
+    let garbage = "x".repeat(100_000);
+    let bad: Vec<(&str, Vec<u8>, String)> = vec![
+        (
+            "wrong-header.csv",
+            b"time,force\n0,1\n".to_vec(),
+            "line 1: unexpected header 'time,force': expected 'u,F' or 't,u,F'".into(),
+        ),
+        (
+            "series-header.csv",
+            b"t,u\n0,1\n".to_vec(),
+            "line 1: unexpected header 't,u': expected 'u,F' or 't,u,F'".into(),
+        ),
+        (
+            "repeated-column.csv",
+            b"u,F,F\n0,1,2\n".to_vec(),
+            "line 1: unexpected header 'u,F,F'".into(),
+        ),
+        (
+            "four-columns.csv",
+            b"0,1,2,3\n".to_vec(),
+            "line 1: expected 2 columns (u,F) or 3 columns (t,u,F), found 4".into(),
+        ),
+        (
+            "missing-cell.csv",
+            b"u,F\n0,0\n1,\n".to_vec(),
+            "line 3: empty value for F".into(),
+        ),
+        (
+            "short-row.csv",
+            b"t,u,F\n0,0,0\n1,1\n".to_vec(),
+            "line 3: expected 3 values (t,u,F), found 2".into(),
+        ),
+        (
+            "non-utf8.csv",
+            b"u,F\n0,0\n1,\xff\xfe\n".to_vec(),
+            "line 3: not valid UTF-8 text".into(),
+        ),
+        (
+            "inf.csv",
+            b"u,F\n0,0\n1,-inf\n".to_vec(),
+            "line 3: F = '-inf' is not a finite number".into(),
+        ),
+        (
+            "huge-number.csv",
+            format!("u,F\n0,0\n1,{huge_number}\n").into_bytes(),
+            format!(
+                "line 3: F = '1{}...' (401 characters) is not a finite number",
+                "0".repeat(31)
+            ),
+        ),
+        (
+            "huge-garbage.csv",
+            format!("u,F\n{garbage},0\n").into_bytes(),
+            "line 2: u = 'xxxxxxxx".into(),
+        ),
+        (
+            "huge-header.csv",
+            format!("u,{garbage}\n0,0\n").into_bytes(),
+            "line 1: unexpected header 'u,xxxxx".into(),
+        ),
+        (
+            "huge-times.csv",
+            b"t,u,F\n1e300,0,0\n1e299,1,1\n".to_vec(),
+            "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300".into(),
+        ),
+        (
+            "one-long-line.csv",
+            vec![b'7'; 3 << 20],
+            "line 1: a line is longer than 1048576 bytes (not a CSV file of numbers?)".into(),
+        ),
+        (
+            "bom-only.csv",
+            b"\xef\xbb\xbf".to_vec(),
+            "no data rows".into(),
+        ),
+        (
+            "only-comments.csv",
+            b"# nothing\n\n".to_vec(),
+            "no data rows".into(),
+        ),
+    ];
+    for (name, text, want) in bad {
+        let path = dir.file(name, text);
+        for fit in ["slow", "full"] {
+            let err = rejects(&["fit", "--fit", fit, "--input", &path], &want);
+            assert!(err.starts_with(&format!("lugre: error: {path}: ")), "{err}");
+            assert!(
+                err.len() < 200 + path.len(),
+                "{name}: a short line, got {err}"
+            );
+        }
+    }
+    // /dev/zero (no line break, no end): refused at its first megabyte, not read forever.
+    #[cfg(unix)]
+    for fit in ["slow", "full"] {
+        rejects(
+            &["fit", "--fit", fit, "--input", "/dev/zero"],
+            "/dev/zero: line 1: a line is longer than 1048576 bytes",
+        );
+    }
+    #[cfg(unix)]
     rejects(
-        &["fit", "--input", &path],
-        "line 1: unexpected header 'u,G'",
+        &["fit", "--input", dir.path().to_str().unwrap()],
+        "Is a directory",
     );
-    let path = dir.file("fit-nan.csv", "u,F\n0,0\n1,nan\n");
+    rejects(&["fit", "--input", &dir.join("missing.csv")], "cannot read");
+    // Numbers of the flags, named briefly too (the core's messages).
+    let data = slow_loop_data(&dir);
     rejects(
-        &["fit", "--input", &path],
-        "line 3: F = 'nan' is not a finite number",
+        &["fit", "--input", &data, "--bounds", "sigma0=1e300:1"],
+        "--bounds: the bounds of sigma0 must satisfy 0 <= lo < hi (hi may be inf), got [1e300, 1]",
+    );
+    rejects(
+        &[
+            "fit",
+            "--input",
+            &data,
+            "--sigma0",
+            "1e300",
+            "--bounds",
+            "sigma0=0:1",
+        ],
+        "the bounds [0, 1] of sigma0 exclude its start value 1e300 (it must lie strictly inside)",
+    );
+    rejects(
+        &[
+            "fit",
+            "--input",
+            &data,
+            "--fs",
+            "1e-300",
+            "--bounds",
+            "fs=1e-200:inf",
+        ],
+        "the bounds [1e-200, inf] of fs exclude its start value 1e-300",
+    );
+}
+
+/// Every numeric flag takes a value starting with '-' after a space (`--fc -inf`, not only
+/// `--fc=-inf`) and says what is wrong with it; an unknown flag is still named as one, and a
+/// flag where a value belongs is not taken for a number.
+#[test]
+fn numeric_flags_take_values_starting_with_a_minus() {
+    let dir = TempDir::new("catalogue-minus");
+    let data = slow_loop_data(&dir);
+    let timed = dir.file("timed.csv", "t,u,F\n0,0,0\n1,1,1\n2,0,0\n");
+    let commands: [&[&str]; 4] = [
+        &["loop", "--turning-points", "0,1"],
+        &["simulate", "--turning-points", "0,1"],
+        &["cycles", "--values", "0,1,0", "--energy"],
+        &["fit", "--input", &data],
+    ];
+    let model: [(&[&str], &str, &str); 8] = [
+        (&[], "--sigma0", "sigma0 must be > 0, got"),
+        (&[], "--sigma1", "sigma1 must be >= 0, got"),
+        (&[], "--sigma2", "sigma2 must be >= 0, got"),
+        (&[], "--fc", "fc must be > 0, got"),
+        (&[], "--fs", "fs must be > 0, got"),
+        (&[], "--vs", "vs must be > 0, got"),
+        (&[], "--beta", "beta must be > 0, got"),
+        (&["--model", "dahl"], "--rho", "rho must be > 0, got"),
+    ];
+    for cmd in commands {
+        for (head, flag, negative) in model {
+            let name = &flag[2..];
+            for (value, want) in [
+                ("-1", format!("{negative} -1")),
+                ("-0.5", format!("{negative} -0.5")),
+                ("-.5", format!("{negative} -0.5")),
+                ("-1e-3", format!("{negative} -0.001")),
+                ("-inf", format!("{name} must be a finite number, got -inf")),
+                (
+                    "-Infinity",
+                    format!("{name} must be a finite number, got -inf"),
+                ),
+            ] {
+                let mut args = cmd.to_vec();
+                args.extend_from_slice(head);
+                args.extend_from_slice(&[flag, value]);
+                rejects(&args, &want);
+            }
+        }
+    }
+    // Other numeric flags: a negative value is read and judged.
+    for (args, want) in [
+        (
+            &["simulate", "--sine", "-1,2"][..],
+            "--sine: the sine's amplitude must be a finite number > 0, got -1",
+        ),
+        (
+            &["simulate", "--sine", "1,2", "--x0", "-inf"],
+            "--x0 must be a finite number, got '-inf'",
+        ),
+        (
+            &["simulate", "--sine", "1,2", "--gamma", "-1"],
+            "--gamma: gamma must be > 0 (a positive number or inf), got -1",
+        ),
+        (
+            &["simulate", "--sine", "1,2", "--periods", "-1"],
+            "--periods must be at least 1, got -1",
+        ),
+        (
+            &["simulate", "--sine", "1,2", "--tol", "-1e-3"],
+            "--tol: the tolerance must be a number in [1e-14, 1), got -0.001",
+        ),
+        (
+            &["simulate", "--sine", "1,1", "--times", "-1"],
+            "--times: output time t[0] = -1 is outside the simulated interval [0, 1]",
+        ),
+        (
+            &["simulate", "--sine", "1,1", "--samples-per-period", "-5"],
+            "invalid value '-5' for '--samples-per-period <N>': invalid digit",
+        ),
+        (
+            &["loop", "--turning-points", "0,1", "--samples", "-1"],
+            "invalid value '-1' for '--samples <N>': invalid digit",
+        ),
+        (
+            &["cycles", "--values", "0,2,1", "--gate", "-1"],
+            "--gate: the gate must be a finite number >= 0, got -1",
+        ),
+        (
+            &["cycles", "--values", "0,2,1", "--gate", "-inf"],
+            "--gate: the gate must be a finite number >= 0, got -inf",
+        ),
+        (
+            &["cycles", "--values", "0,2,1", "--x0", "-1e300"],
+            "--x0: x0 must satisfy |sigma0 x0| <= g(0)",
+        ),
+        (
+            &["cycles", "--values", "0,2,1", "--histogram", "--bins", "-1"],
+            "invalid value '-1' for '--bins <N>': invalid digit",
+        ),
+        (
+            &["fit", "--input", &data, "--fit", "full", "--starts", "-1"],
+            "invalid value '-1' for '--starts <N>': invalid digit",
+        ),
+        (
+            &["fit", "--input", &timed, "--fit", "full", "--x0", "-inf"],
+            "--x0: item 1 is '-inf', which is not a finite number",
+        ),
+        (
+            &["fit", "--input", &data, "--bounds", "-1"],
+            "--bounds: '-1' is not NAME=LO:HI",
+        ),
+    ] {
+        rejects(args, want);
+    }
+    // Valid negative values are accepted after a space.
+    accepts(&["simulate", "--sine", "1,2,-1,-0.5", "--x0", "-0.5"]);
+    accepts(&["simulate", "--turning-points", "-1,1", "--x0", "-0.5"]);
+    let j = accepts_json(&["cycles", "--values", "-2,1,-3", "--x0", "-0.5", "--json"]);
+    assert_eq!(j["half_cycles"], 2);
+    accepts(&["loop", "--turning-points", "-1,1", "--at", "-0.5"]);
+    // An unknown flag is still one, before or after a negative value.
+    for args in [
+        &["loop", "--turning-points", "0,1", "--bogus", "-1"][..],
+        &["loop", "--turning-points", "0,1", "--fc", "-1", "--bogus"],
+        &["loop", "--turning-points", "0,1", "--fcc", "-1"],
+        &["cycles", "--values", "0,1", "--gate", "1", "--x1", "-1"],
+    ] {
+        let bogus = args.iter().rev().find(|a| a.starts_with("--")).unwrap();
+        rejects(args, &format!("unexpected argument '{bogus}' found"));
+    }
+    // A flag where the value belongs is named, not read as a number; the value missing at
+    // the end is said so.
+    for (args, flag) in [
+        (
+            &["loop", "--turning-points", "0,1", "--fc", "--json"][..],
+            "--fc <FC>",
+        ),
+        (
+            &["loop", "--turning-points", "0,1", "--sigma0", "--bogus"],
+            "--sigma0 <SIGMA0>",
+        ),
+        (
+            &["loop", "--turning-points", "0,1", "--samples", "--json"],
+            "--samples <N>",
+        ),
+        (
+            &["cycles", "--values", "0,1", "--gate", "--json"],
+            "--gate <H>",
+        ),
+    ] {
+        let next = args[args.len() - 1];
+        rejects(
+            args,
+            &format!("invalid value '{next}' for '{flag}': expected a value, found a flag"),
+        );
+    }
+    rejects(
+        &["loop", "--turning-points", "0,1", "--fc"],
+        "a value is required for '--fc <FC>' but none was supplied",
     );
 }
 
@@ -929,11 +1261,11 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--histogram", "--bins", "-3"],
-            "'-3'",
+            "invalid value '-3' for '--bins <N>': invalid digit",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--samples", "-2"],
-            "'-2'",
+            "invalid value '-2' for '--samples <N>': invalid digit",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--plot", "x.pdf"],

@@ -96,13 +96,13 @@ pub enum FitError {
         got: usize,
         u: usize,
     },
-    #[error("{what}[{index}] must be a finite number, got {value}")]
+    #[error("{what}[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite {
         what: &'static str,
         index: usize,
         value: f64,
     },
-    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1)]
+    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
     TimesNotIncreasing { index: usize, prev: f64, value: f64 },
     #[error("too few samples: {samples} for {parameters} free parameter(s); the fit needs at least {needed}")]
     TooFewSamples {
@@ -126,28 +126,28 @@ pub enum FitError {
     FixedAndFree { name: &'static str },
     #[error("nothing to fit: every parameter of the {fit} fit is fixed")]
     NothingToFit { fit: &'static str },
-    #[error("the bounds of {name} must satisfy 0 <= lo < hi (hi may be inf), got [{lo}, {hi}]")]
+    #[error("the bounds of {name} must satisfy 0 <= lo < hi (hi may be inf), got [{lo}, {hi}]", lo = num(*.lo), hi = num(*.hi))]
     BadBounds {
         name: &'static str,
         lo: f64,
         hi: f64,
     },
-    #[error("the bounds [{lo}, {hi}] of {name} exclude its start value {start} (it must lie strictly inside)")]
+    #[error("the bounds [{lo}, {hi}] of {name} exclude its start value {start} (it must lie strictly inside)", lo = num(*.lo), hi = num(*.hi), start = num(*.start))]
     StartOutsideBounds {
         name: &'static str,
         start: f64,
         lo: f64,
         hi: f64,
     },
-    #[error("the start value of {name} must be a finite number > 0, got {value}")]
+    #[error("the start value of {name} must be a finite number > 0, got {value}", value = num(*.value))]
     BadStart { name: &'static str, value: f64 },
     #[error("the number of starts must be at least 1, got {starts}")]
     BadStarts { starts: usize },
-    #[error("x0 must be a finite number, got {value}")]
+    #[error("x0 must be a finite number, got {value}", value = num(*.value))]
     BadX0 { value: f64 },
     #[error("{} cannot be identified from this data: {}", names_of(.parameters), reasons(.parameters))]
     Unidentifiable { parameters: Vec<Unidentified> },
-    #[error("the fit did not converge ({reason}); best point found: {} (residual RMS {rms})", list(.best))]
+    #[error("the fit did not converge ({reason}); best point found: {} (residual RMS {rms})", list(.best), rms = num(*.rms))]
     NotConverged {
         reason: String,
         best: Vec<(&'static str, f64)>,

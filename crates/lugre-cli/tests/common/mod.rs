@@ -15,9 +15,9 @@ pub fn lugre(args: &[&str]) -> Output {
 }
 
 /// Bad input: exit status 2, one line on stderr containing `want` (no panic message, no
-/// backtrace), nothing on stdout.
+/// backtrace), nothing on stdout. Returns the line.
 #[track_caller]
-pub fn rejects(args: &[&str], want: &str) {
+pub fn rejects(args: &[&str], want: &str) -> String {
     let out = lugre(args);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
@@ -28,6 +28,7 @@ pub fn rejects(args: &[&str], want: &str) {
         "{err}"
     );
     assert!(out.stdout.is_empty(), "{args:?}");
+    err.into_owned()
 }
 
 /// Valid input, however extreme: exit status 0, nothing on stderr, no NaN or infinity on
