@@ -1,12 +1,16 @@
 //! Rainflow counting of a measured history (issue: >= 100 M samples/s per core on a random
 //! walk), with reversals, cycles and closures, and the same with y* and energies. Throughput
-//! is in samples per second.
+//! is in samples per second; the lengths 10^3 to 10^7 show that the time is linear in the
+//! length (the same throughput at every size).
 
-use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use criterion::{
+    criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
+};
 use lugre::{Cycle, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal};
 use std::hint::black_box;
 
-const SAMPLES: usize = 10_000_000;
+/// The history lengths: the walk's first `n` samples.
+const SIZES: [usize; 5] = [1_000, 10_000, 100_000, 1_000_000, 10_000_000];
 
 /// A random walk with uniform steps in [-0.5, 0.5) from a fixed LCG (about one reversal every
 /// 2 samples, the worst case for the counter).
@@ -43,46 +47,56 @@ impl CycleSink for Checksum {
 }
 
 fn cycles(c: &mut Criterion) {
-    let u = random_walk(SAMPLES);
+    let walk = random_walk(SIZES[SIZES.len() - 1]);
+    let model = LuGre::paper().rate_independent();
     let mut group = c.benchmark_group("cycles_random_walk");
     group.sample_size(10);
-    group.throughput(Throughput::Elements(SAMPLES as u64));
-    // Blocks of 4096 samples, as `lugre cycles` feeds the counter while it reads a file.
-    group.bench_function("count", |b| {
-        b.iter(|| {
-            let mut sink = Checksum::default();
-            let mut counter = CycleCounter::new(0.0).expect("valid gate");
-            for block in black_box(&u).chunks(4096) {
-                counter.push_all(block, &mut sink).expect("finite");
-            }
-            let s = counter.finish(&mut sink).expect("long enough");
-            black_box((s, sink.sum, sink.reversals))
-        })
-    });
-    // One sample at a time.
-    group.bench_function("count_per_sample", |b| {
-        b.iter(|| {
-            let mut sink = Checksum::default();
-            let mut counter = CycleCounter::new(0.0).expect("valid gate");
-            for &x in black_box(&u) {
-                counter.push(x, &mut sink).expect("finite");
-            }
-            let s = counter.finish(&mut sink).expect("long enough");
-            black_box((s, sink.sum, sink.reversals))
-        })
-    });
-    let model = LuGre::paper().rate_independent();
-    group.bench_function("count_with_energy", |b| {
-        b.iter(|| {
-            let mut sink = Checksum::default();
-            let mut counter = EnergyCycleCounter::new(0.0, model, 0.0).expect("valid");
-            for block in black_box(&u).chunks(4096) {
-                counter.push_all(block, &mut sink).expect("finite");
-            }
-            let s = counter.finish(&mut sink).expect("long enough");
-            black_box((s, sink.sum, sink.reversals))
-        })
-    });
+    for n in SIZES {
+        let u = &walk[..n];
+        group.throughput(Throughput::Elements(n as u64));
+        // From 10^6 samples an iteration takes milliseconds: the same number of iterations in
+        // each sample rather than a growing one.
+        group.sampling_mode(if n >= 1_000_000 {
+            SamplingMode::Flat
+        } else {
+            SamplingMode::Auto
+        });
+        // Blocks of 4096 samples, as `lugre cycles` feeds the counter while it reads a file.
+        group.bench_with_input(BenchmarkId::new("count", n), u, |b, u| {
+            b.iter(|| {
+                let mut sink = Checksum::default();
+                let mut counter = CycleCounter::new(0.0).expect("valid gate");
+                for block in black_box(u).chunks(4096) {
+                    counter.push_all(block, &mut sink).expect("finite");
+                }
+                let s = counter.finish(&mut sink).expect("long enough");
+                black_box((s, sink.sum, sink.reversals))
+            })
+        });
+        // One sample at a time.
+        group.bench_with_input(BenchmarkId::new("count_per_sample", n), u, |b, u| {
+            b.iter(|| {
+                let mut sink = Checksum::default();
+                let mut counter = CycleCounter::new(0.0).expect("valid gate");
+                for &x in black_box(u) {
+                    counter.push(x, &mut sink).expect("finite");
+                }
+                let s = counter.finish(&mut sink).expect("long enough");
+                black_box((s, sink.sum, sink.reversals))
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("count_with_energy", n), u, |b, u| {
+            b.iter(|| {
+                let mut sink = Checksum::default();
+                let mut counter = EnergyCycleCounter::new(0.0, model, 0.0).expect("valid");
+                for block in black_box(u).chunks(4096) {
+                    counter.push_all(block, &mut sink).expect("finite");
+                }
+                let s = counter.finish(&mut sink).expect("long enough");
+                black_box((s, sink.sum, sink.reversals))
+            })
+        });
+    }
     group.finish();
 }
 
