@@ -3,13 +3,15 @@
 //! Arrays in are anything numpy turns into an array of real numbers (lists, tuples, numpy
 //! arrays of any float or integer dtype, contiguous or not); they are copied into a `Vec<f64>`
 //! in C order while attached to the interpreter, so the computation can then run detached
-//! without another thread mutating the data under it. Arrays out are float64 numpy arrays that
-//! take ownership of the `Vec` (no copy).
+//! without another thread mutating the data under it. The exception is [`series`] (long
+//! measured histories): a contiguous float64 array is read in place, as numpy's own functions
+//! read their arguments with the GIL released. Arrays out are numpy arrays that take ownership
+//! of the `Vec` (no copy).
 
 use numpy::ndarray::{ArrayD, IxDyn};
 use numpy::{
-    IntoPyArray, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyUntypedArray,
-    PyUntypedArrayMethods,
+    IntoPyArray, PyArray1, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArray1,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyMemoryError, PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -184,6 +186,78 @@ pub fn floats(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
         was_array,
     })
 }
+
+/// A one-dimensional series of real numbers (see [`series`]).
+pub enum Series<'py> {
+    /// A contiguous, aligned, native float64 numpy array, read in place.
+    Borrowed(PyReadonlyArray1<'py, f64>),
+    /// Anything else, converted as [`floats`] does.
+    Owned(Vec<f64>),
+}
+
+impl Series<'_> {
+    pub fn as_slice(&self) -> &[f64] {
+        match self {
+            // `series` only borrows arrays whose slice exists.
+            Series::Borrowed(a) => a.as_slice().unwrap_or(&[]),
+            Series::Owned(v) => v,
+        }
+    }
+}
+
+/// A one-dimensional array-like argument of real numbers, as [`floats`] takes it, but without a
+/// copy when it is a contiguous, aligned, native float64 numpy array: the array is then read
+/// in place (borrowed read-only, so other Rust code cannot write it meanwhile; Python code
+/// must not modify it during the call, as for numpy's own functions that release the GIL).
+pub fn series<'py>(obj: &Bound<'py, PyAny>, name: &str) -> PyResult<Series<'py>> {
+    if let Ok(a) = obj.cast::<PyArray1<f64>>() {
+        if let Ok(view) = a.try_readonly() {
+            if view.as_slice().is_ok() {
+                return Ok(Series::Borrowed(view));
+            }
+        }
+    }
+    Ok(Series::Owned(
+        floats(obj, name)?.one_dimensional(name, obj)?,
+    ))
+}
+
+/// An empty vector with room for `n` elements when that much address space can be had (else
+/// an empty vector that grows as usual), with the kernel asked to back it with huge pages:
+/// for outputs of unknown length bounded by `n`, filled once and handed to numpy. Only the
+/// pages written are ever backed; the rest is given back by `shrink_to_fit`.
+pub fn column<T>(n: usize) -> Vec<T> {
+    let mut v = Vec::new();
+    if v.try_reserve_exact(n).is_ok() {
+        advise_huge_pages(&mut v);
+    }
+    v
+}
+
+/// Asks for transparent huge pages over the capacity of a large vector (as numpy does for its
+/// arrays of 4 MiB or more): filling fresh memory then takes one page fault per 2 MiB rather
+/// than per 4 KiB, which for large outputs is most of the time spent writing them.
+#[cfg(target_os = "linux")]
+fn advise_huge_pages<T>(v: &mut Vec<T>) {
+    const PAGE: usize = 4096;
+    let bytes = v.capacity().saturating_mul(std::mem::size_of::<T>());
+    if bytes < 1 << 22 {
+        return;
+    }
+    let start = v.as_mut_ptr() as usize;
+    let (lo, hi) = (start.next_multiple_of(PAGE), (start + bytes) / PAGE * PAGE);
+    if hi > lo {
+        // SAFETY: `lo..hi` lies within the vector's allocation (whole pages of it); the advice
+        // changes how the kernel backs those pages, never their contents. A failure (no THP
+        // support) leaves the memory as it was.
+        unsafe {
+            libc::madvise(lo as *mut libc::c_void, hi - lo, libc::MADV_HUGEPAGE);
+        }
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn advise_huge_pages<T>(_v: &mut Vec<T>) {}
 
 fn dtype_name(array: &Bound<'_, PyAny>) -> String {
     array

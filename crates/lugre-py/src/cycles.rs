@@ -1,12 +1,13 @@
 //! `lugre.cycles`: reversals, ASTM E1049 rainflow cycles, loop closure and energies of a
 //! measured history (core `lugre::cycles`), as columns of numpy arrays.
 
+use lugre::CycleColumns;
 use numpy::IntoPyArray;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyBool, PyDict};
 
-use crate::convert::{floats, real, type_name, value_error, vec_out};
+use crate::convert::{self, column, real, type_name, value_error, vec_out};
 use crate::models::{PyDahl, PyLuGre};
 
 /// Reversals and ASTM E1049-85 rainflow cycles of a measured history `series` (samples joined
@@ -20,30 +21,41 @@ use crate::models::{PyDahl, PyLuGre};
 ///
 /// Returns a dict:
 ///
-/// * "reversals": {"index": int64 array, "u": float64 array};
+/// * "reversals": {"index": int64 array, "u": float64 array}, or None with
+///   `reversals=False`;
 /// * "cycles": float64 columns "range", "mean", "count" (1.0 full, 0.5 half), int64 columns
-///   "start", "end" (sample indices of the cycle's reversals) and "closure" (the first sample
-///   index back at the start value, -1 for half cycles), float64 "closure_position" (the
-///   interpolated position there, NaN for half cycles) and, with a model, "work",
-///   "stored_energy_change", "dissipation", "closure_gap" (NaN for half cycles);
+///   "start", "end" (sample indices of the cycle's reversals) and, unless `closures=False`,
+///   "closure" (the first sample index back at the start value, -1 for half cycles) and
+///   float64 "closure_position" (the interpolated position there, NaN for half cycles); with a
+///   model, "work", "stored_energy_change", "dissipation", "closure_gap" (NaN for half
+///   cycles). Row k of the columns is the k-th cycle: `zip(*(c[k] for k in ("range", "mean",
+///   "count", "start", "end")))` gives the tuples `rainflow.extract_cycles` yields;
 /// * "summary": {"samples", "reversals", "full_cycles", "half_cycles", "energy"}, "energy"
 ///   being None without a model, else a dict of the totals along the whole history
 ///   ("y_start", "y_end", "work", "stored_energy_change", "dissipation").
 ///
+/// A contiguous float64 array is read in place (not copied) and the count runs with the GIL
+/// released: do not modify the array from another thread during the call. Columns are built
+/// in Rust and handed to numpy without a copy; `reversals=False` and `closures=False` skip
+/// what is not needed (less memory and time for long histories).
+///
 /// Invalid input raises ValueError with the message of `lugre cycles`.
 #[pyfunction]
 #[pyo3(
-    signature = (series, gate=None, model=None, x0=None),
-    text_signature = "(series, gate=0.0, model=None, x0=0.0)"
+    signature = (series, gate=None, model=None, x0=None, *, reversals=None, closures=None),
+    text_signature = "(series, gate=0.0, model=None, x0=0.0, *, reversals=True, closures=True)"
 )]
+#[allow(clippy::too_many_arguments)]
 pub fn cycles<'py>(
     py: Python<'py>,
     series: &Bound<'py, PyAny>,
     gate: Option<&Bound<'py, PyAny>>,
     model: Option<&Bound<'py, PyAny>>,
     x0: Option<&Bound<'py, PyAny>>,
+    reversals: Option<&Bound<'py, PyAny>>,
+    closures: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = floats(series, "series")?.one_dimensional("series", series)?;
+    let u = convert::series(series, "series")?;
     let gate = match gate.filter(|g| !g.is_none()) {
         Some(g) => real(g, "gate")?,
         None => 0.0,
@@ -52,6 +64,8 @@ pub fn cycles<'py>(
         Some(x) => real(x, "x0")?,
         None => 0.0,
     };
+    let keep_reversals = flag(reversals, "reversals")?;
+    let keep_closures = flag(closures, "closures")?;
     let model = match model.filter(|m| !m.is_none()) {
         None => None,
         Some(m) => Some(if let Ok(l) = m.cast::<PyLuGre>() {
@@ -65,47 +79,127 @@ pub fn cycles<'py>(
             )));
         }),
     };
-    let history = py
-        .detach(|| match model {
-            Some(m) => lugre::count_cycles_with_energy(&u, gate, m, x0),
-            None => lugre::count_cycles(&u, gate),
-        })
+    let u = u.as_slice();
+    let (columns, summary) = py
+        .detach(|| count(u, gate, model, x0, keep_reversals, keep_closures))
         .map_err(value_error)?;
+    to_dict(py, columns, &summary, model.is_some())
+}
 
-    let reversals = PyDict::new(py);
-    let index: Vec<i64> = history.reversals.iter().map(|r| r.index as i64).collect();
-    reversals.set_item("index", index.into_pyarray(py))?;
-    let ru: Vec<f64> = history.reversals.iter().map(|r| r.u).collect();
-    reversals.set_item("u", vec_out(py, ru))?;
+/// A keyword that must be a `bool` (`TypeError` otherwise); `True` when not given.
+fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
+    let Some(obj) = obj.filter(|o| !o.is_none()) else {
+        return Ok(true);
+    };
+    obj.cast::<PyBool>().map(|b| b.is_true()).map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{name} must be True or False, got {}",
+            type_name(obj)
+        ))
+    })
+}
 
-    let c = &history.cycles;
-    let col = |f: &dyn Fn(&lugre::Cycle) -> f64| vec_out(py, c.iter().map(f).collect());
-    let icol = |f: &dyn Fn(&lugre::Cycle) -> i64| c.iter().map(f).collect::<Vec<i64>>();
-    let cycles = PyDict::new(py);
-    cycles.set_item("range", col(&|c| c.range))?;
-    cycles.set_item("mean", col(&|c| c.mean))?;
-    cycles.set_item("count", col(&|c| c.count))?;
-    cycles.set_item("start", icol(&|c| c.start as i64).into_pyarray(py))?;
-    cycles.set_item("end", icol(&|c| c.end as i64).into_pyarray(py))?;
-    cycles.set_item(
-        "closure",
-        icol(&|c| c.closure.map_or(-1, |k| k.index as i64)).into_pyarray(py),
-    )?;
-    cycles.set_item(
-        "closure_position",
-        col(&|c| c.closure.map_or(f64::NAN, |k| k.position)),
-    )?;
+/// Counts `u` into columns with room for every reversal and cycle there can be (one per
+/// sample): they are filled once, without reallocation, and trimmed at the end.
+fn count(
+    u: &[f64],
+    gate: f64,
+    model: Option<lugre::RateIndependent>,
+    x0: f64,
+    keep_reversals: bool,
+    keep_closures: bool,
+) -> Result<(CycleColumns, lugre::CycleSummary), lugre::HistoryError> {
+    let n = u.len();
+    let mut c = CycleColumns::new()
+        .with_reversals(keep_reversals)
+        .with_closures(keep_closures)
+        .with_energy(model.is_some());
+    if keep_reversals {
+        (c.reversal_index, c.reversal_u) = (column(n), column(n));
+    }
+    (c.range, c.mean, c.count) = (column(n), column(n), column(n));
+    (c.start, c.end) = (column(n), column(n));
+    if keep_closures {
+        (c.closure, c.closure_position) = (column(n), column(n));
+    }
     if model.is_some() {
-        let energy = |f: fn(&lugre::CycleEnergy) -> f64| {
-            col(&|c: &lugre::Cycle| c.energy.as_ref().map_or(f64::NAN, f))
-        };
-        cycles.set_item("work", energy(|e| e.work))?;
-        cycles.set_item("stored_energy_change", energy(|e| e.stored_energy_change))?;
-        cycles.set_item("dissipation", energy(|e| e.dissipation))?;
-        cycles.set_item("closure_gap", energy(|e| e.closure_gap))?;
+        c.work = column(n);
+        c.stored_energy_change = column(n);
+        c.dissipation = column(n);
+        c.closure_gap = column(n);
+    }
+    let summary = match model {
+        Some(m) => {
+            let mut counter = lugre::EnergyCycleCounter::new(gate, m, x0)?;
+            counter.push_all(u, &mut c)?;
+            counter.finish(&mut c)?
+        }
+        None => {
+            let mut counter = lugre::CycleCounter::new(gate)?;
+            counter.push_all(u, &mut c)?;
+            counter.finish(&mut c)?
+        }
+    };
+    for v in [
+        &mut c.reversal_index,
+        &mut c.start,
+        &mut c.end,
+        &mut c.closure,
+    ] {
+        v.shrink_to_fit();
+    }
+    for v in [
+        &mut c.reversal_u,
+        &mut c.range,
+        &mut c.mean,
+        &mut c.count,
+        &mut c.closure_position,
+        &mut c.work,
+        &mut c.stored_energy_change,
+        &mut c.dissipation,
+        &mut c.closure_gap,
+    ] {
+        v.shrink_to_fit();
+    }
+    Ok((c, summary))
+}
+
+/// The result dict of [`cycles`]; the columns become numpy arrays without a copy.
+fn to_dict<'py>(
+    py: Python<'py>,
+    c: CycleColumns,
+    s: &lugre::CycleSummary,
+    with_energy: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let keep_closures = c.keeps_closures();
+    let out = PyDict::new(py);
+    if c.keeps_reversals() {
+        let reversals = PyDict::new(py);
+        reversals.set_item("index", c.reversal_index.into_pyarray(py))?;
+        reversals.set_item("u", vec_out(py, c.reversal_u))?;
+        out.set_item("reversals", reversals)?;
+    } else {
+        out.set_item("reversals", py.None())?;
     }
 
-    let s = &history.summary;
+    let cycles = PyDict::new(py);
+    cycles.set_item("range", vec_out(py, c.range))?;
+    cycles.set_item("mean", vec_out(py, c.mean))?;
+    cycles.set_item("count", vec_out(py, c.count))?;
+    cycles.set_item("start", c.start.into_pyarray(py))?;
+    cycles.set_item("end", c.end.into_pyarray(py))?;
+    if keep_closures {
+        cycles.set_item("closure", c.closure.into_pyarray(py))?;
+        cycles.set_item("closure_position", vec_out(py, c.closure_position))?;
+    }
+    if with_energy {
+        cycles.set_item("work", vec_out(py, c.work))?;
+        cycles.set_item("stored_energy_change", vec_out(py, c.stored_energy_change))?;
+        cycles.set_item("dissipation", vec_out(py, c.dissipation))?;
+        cycles.set_item("closure_gap", vec_out(py, c.closure_gap))?;
+    }
+    out.set_item("cycles", cycles)?;
+
     let summary = PyDict::new(py);
     summary.set_item("samples", s.samples)?;
     summary.set_item("reversals", s.reversals)?;
@@ -123,10 +217,6 @@ pub fn cycles<'py>(
             summary.set_item("energy", d)?;
         }
     }
-
-    let out = PyDict::new(py);
-    out.set_item("reversals", reversals)?;
-    out.set_item("cycles", cycles)?;
     out.set_item("summary", summary)?;
     Ok(out)
 }

@@ -33,8 +33,9 @@ pub mod simulate;
 pub mod theorem_a;
 
 pub use cycles::{
-    count_cycles, count_cycles_with_energy, Closure, Cycle, CycleCounter, CycleEnergy, CycleSink,
-    CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy, Reversal,
+    count_cycles, count_cycles_with_energy, Closure, Cycle, CycleColumns, CycleCounter,
+    CycleEnergy, CycleSink, CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy,
+    Reversal,
 };
 pub use error::{FitError, HistoryError, InputError, LoopError, ModelError};
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};

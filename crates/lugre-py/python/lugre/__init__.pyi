@@ -212,14 +212,55 @@ class Curve:
     def y(self) -> _Floats: ...
     def __iter__(self) -> Iterator[_Floats]: ...
 
+@type_check_only
+class CycleReversals(TypedDict):
+    """The reversals of lugre.cycles (a dict at runtime)."""
+
+    index: npt.NDArray[np.int64]
+    u: _Floats
+
+@type_check_only
+class CycleTotals(TypedDict):
+    """The energy totals along the whole history (a dict at runtime)."""
+
+    y_start: float
+    y_end: float
+    work: float
+    stored_energy_change: float
+    dissipation: float
+
+@type_check_only
+class CycleSummary(TypedDict):
+    """The summary of lugre.cycles (a dict at runtime)."""
+
+    samples: int
+    reversals: int
+    full_cycles: int
+    half_cycles: int
+    energy: Optional[CycleTotals]
+
+@type_check_only
+class CyclesResult(TypedDict):
+    """The result of lugre.cycles (a dict at runtime). "cycles" maps each column name to a
+    numpy array (one row per cycle): float64 "range", "mean", "count"; int64 "start", "end";
+    unless closures=False, int64 "closure" and float64 "closure_position"; with a model,
+    float64 "work", "stored_energy_change", "dissipation", "closure_gap"."""
+
+    reversals: Optional[CycleReversals]
+    cycles: dict[str, npt.NDArray[Any]]
+    summary: CycleSummary
+
 def cycles(
     series: _Reals,
     gate: _Real = 0.0,
     model: Optional[Union[LuGre, Dahl]] = None,
     x0: _Real = 0.0,
-) -> dict[str, dict[str, Any]]:
+    *,
+    reversals: bool = True,
+    closures: bool = True,
+) -> CyclesResult:
     """Reversals and ASTM E1049-85 rainflow cycles of a measured history, with loop closure and,
-    with a model, the energy of each full cycle."""
+    with a model, the energy of each full cycle, as columns of numpy arrays."""
     ...
 
 @type_check_only

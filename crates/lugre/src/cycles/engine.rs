@@ -34,7 +34,8 @@
 //! recorded before the block's samples are let go. The per-sample walk above does the same
 //! work one sample at a time and serves the gate and the energies.
 
-use super::{Closure, Cycle, CycleEnergy, CycleSink, Reversal};
+use super::columns::FullCycle;
+use super::{Closure, Cycle, CycleColumns, CycleEnergy, CycleSink, Reversal};
 use crate::error::HistoryError;
 
 /// `|u|` above this could make a range or a mean overflow.
@@ -156,6 +157,9 @@ pub(crate) struct Engine<T: Track> {
     w_depth: usize,
     /// The block path's reversal buffer (`BLOCK + 1` slots).
     buf: Vec<(u64, f64)>,
+    /// [`Engine::count_fast`]'s full cycles and the room it makes on the stack.
+    full_buf: Vec<FullCycle>,
+    room: usize,
     reversals: u64,
     full: u64,
     half: u64,
@@ -183,6 +187,8 @@ impl<T: Track> Engine<T> {
             w_y: f64::INFINITY,
             w_depth: 0,
             buf: Vec::new(),
+            full_buf: Vec::new(),
+            room: MIN_ROOM,
             reversals: 0,
             full: 0,
             half: 0,
@@ -355,7 +361,7 @@ impl<T: Track> Engine<T> {
         &mut self,
         r: Open<T::State, T::Energy>,
         sink: &mut impl CycleSink,
-        mut find: impl FnMut(&[Open<T::State, T::Energy>], usize) -> Option<Closure>,
+        find: impl FnMut(&[Open<T::State, T::Energy>], usize) -> Option<Closure>,
     ) {
         self.reversals += 1;
         sink.reversal(Reversal {
@@ -363,6 +369,16 @@ impl<T: Track> Engine<T> {
             u: r.u,
         });
         self.stack.push(r);
+        self.settle(sink, find);
+    }
+
+    /// Counts the cycles the top of the stack completes (see [`Self::push_reversal`]).
+    #[inline]
+    fn settle(
+        &mut self,
+        sink: &mut impl CycleSink,
+        mut find: impl FnMut(&[Open<T::State, T::Energy>], usize) -> Option<Closure>,
+    ) {
         let mut counted = 0;
         loop {
             let m = self.stack.len();
@@ -392,9 +408,10 @@ impl<T: Track> Engine<T> {
                     // counts, so this cannot happen; should rounding ever disagree, close at
                     // the reversal.
                     debug_assert!(false, "closure not found");
+                    let p = self.stack[m - 1].index;
                     let closure = Closure {
-                        index: r.index,
-                        position: r.index as f64,
+                        index: p,
+                        position: p as f64,
                     };
                     (closure, None)
                 };
@@ -442,6 +459,14 @@ impl<T: Track> Engine<T> {
 /// Samples per block of the block path, and the fewest worth a block.
 const BLOCK: usize = 2048;
 const BLOCK_MIN: usize = 64;
+/// The stack depth from which [`Engine::count_fast`] takes over (it needs two entries below
+/// the top three; shallower, a half cycle may be due).
+const FAST_DEPTH: usize = 5;
+/// Full cycles [`Engine::count_fast`] holds before writing them out.
+const FULL_CAP: usize = 1024;
+/// Room [`Engine::count_fast`] makes on the stack for its pushes: at first, and at most.
+const MIN_ROOM: usize = 32;
+const MAX_ROOM: usize = 4096;
 
 impl<T: Track> Engine<T> {
     /// The block path (no gate, nothing tracked, first run started): see the module docs.
@@ -453,14 +478,7 @@ impl<T: Track> Engine<T> {
         }
         let base = self.n;
         let before = self.prev;
-        // The sample before index `i` of this block (or before it).
-        let prev_of = |i: u64| {
-            if i > base {
-                good[(i - base - 1) as usize]
-            } else {
-                before
-            }
-        };
+        let samples = Samples { good, base, before };
 
         // Reversals, branch-free. Without a gate every sample becomes the candidate (it is
         // at or beyond the old one, or it turns), so a reversal is the previous sample exactly
@@ -480,28 +498,12 @@ impl<T: Track> Engine<T> {
         let (c, ci) = (o * last, base + good.len() as u64 - 1);
 
         // Count them; a full cycle's closure lies on the run into the reversal that closes it.
-        for j in 0..found {
-            let (index, u) = self.buf[j];
-            let run_start = self.stack.last().map_or(0, |q| q.index + 1).max(base);
-            let mut from = run_start;
-            self.push_reversal(Open::new(index, u, self.c_state), sink, |stack, start| {
-                if index < base {
-                    // A run that ended with the previous block: its closures are recorded.
-                    return None;
-                }
-                let (a, b) = (stack[start].u, stack[start + 1].u);
-                let y = (b - a).abs();
-                let lo = (from - base) as usize;
-                let hi = (index - base) as usize + 1;
-                let k = lo + good[lo..hi].partition_point(|&w| (w - b).abs() < y);
-                if k == hi {
-                    return None;
-                }
-                let i = base + k as u64;
-                from = i;
-                Some(closure_at(i, good[k], prev_of(i), a).0)
-            });
-            self.w_depth = 0;
+        if let Some(columns) = sink.columns() {
+            self.count_into(found, samples, columns);
+        } else {
+            for j in 0..found {
+                self.push_found(j, samples, sink);
+            }
         }
 
         // The run still open: record the pending pairs its samples here already reach.
@@ -516,7 +518,7 @@ impl<T: Track> Engine<T> {
             }
             let i = base + k as u64;
             let start = self.stack.len() - 2 - 2 * self.w_depth;
-            self.stack[start].closure = closure_at(i, good[k], prev_of(i), self.stack[start].u).0;
+            self.stack[start].closure = samples.closure(i, self.stack[start].u);
             self.w_depth += 1;
             from = i;
         }
@@ -528,6 +530,181 @@ impl<T: Track> Engine<T> {
             Some(k) => Err(bad_sample(self.n, block[k])),
             None => Ok(()),
         }
+    }
+}
+
+impl<T: Track> Engine<T> {
+    /// Pushes the block's reversal `self.buf[j]` and counts what it completes, the closures
+    /// searched on the block's samples.
+    fn push_found(&mut self, j: usize, s: Samples<'_>, sink: &mut impl CycleSink) {
+        let (index, u) = self.buf[j];
+        let mut from = self.stack.last().map_or(0, |q| q.index + 1).max(s.base);
+        self.push_reversal(Open::new(index, u, self.c_state), sink, |stack, start| {
+            if index < s.base {
+                // A run that ended with the previous block: its closures are recorded.
+                return None;
+            }
+            let (a, b) = (stack[start].u, stack[start + 1].u);
+            let i = s.first_reaching(from, index, b, (b - a).abs())?;
+            from = i;
+            Some(s.closure(i, a))
+        });
+        self.w_depth = 0;
+    }
+
+    /// Counts the block's reversals `self.buf[..found]` into columns. The first (whose run may
+    /// have begun in the previous block) and those met while the stack is shallow go one by
+    /// one as [`Self::push_found`]; stretches of the others go through [`Self::count_fast`].
+    fn count_into(&mut self, found: usize, s: Samples<'_>, columns: &mut CycleColumns) {
+        let mut j = 0;
+        while j < found {
+            if j == 0 || self.stack.len() < FAST_DEPTH {
+                self.push_found(j, s, columns);
+                j += 1;
+            } else {
+                j = self.count_fast(j, found, s, columns);
+            }
+        }
+    }
+
+    /// The three-point test over a stretch of reversals `self.buf[j..found]` without a branch
+    /// on its outcome (which on a noisy history is a coin toss, and a mispredicted branch costs
+    /// more than the test): each step either takes the top pair off as a full cycle or pushes
+    /// the next reversal, chosen by masks. The top three entries live in registers and the
+    /// rest of the stack is written by index. The full cycles are kept with the run where each
+    /// one closes and written to the columns in bulk at the end. The stretch ends when the
+    /// stack gets shallow (a half cycle may be due), runs out of room, or the block ends; the
+    /// stack is then settled as usual. Returns the next reversal to push.
+    ///
+    /// Called with a settled stack at least `FAST_DEPTH` deep.
+    fn count_fast(
+        &mut self,
+        mut j: usize,
+        found: usize,
+        s: Samples<'_>,
+        columns: &mut CycleColumns,
+    ) -> usize {
+        let j0 = j;
+        let state = self.c_state;
+        let m = self.stack.len();
+        let lim = m + self.room;
+        self.stack.resize(lim, Open::new(0, 0.0, state));
+        self.full_buf.resize(FULL_CAP, FullCycle::default());
+        let stack = &mut self.stack[..lim];
+        let full_buf = &mut self.full_buf[..FULL_CAP];
+        let buf = &self.buf[..found];
+        let mut l = m - 3;
+        let (mut i1, mut u1) = (stack[l].index, stack[l].u.to_bits());
+        let (mut i2, mut u2) = (stack[l + 1].index, stack[l + 1].u.to_bits());
+        let (mut i3, mut u3) = (stack[l + 2].index, stack[l + 2].u.to_bits());
+        // First index of the run into the top reversal (set by the first step, a push: the
+        // stack is settled).
+        let mut run = 0;
+        let mut nf = 0;
+        while l >= 2 && l + 3 < lim && j < found && nf < FULL_CAP {
+            let (a, b, p) = (f64::from_bits(u1), f64::from_bits(u2), f64::from_bits(u3));
+            // The test of `settle` (and `rainflow`): `(a, b)` is a full cycle.
+            let full = (p - b).abs() >= (b - a).abs();
+            full_buf[nf] = FullCycle {
+                a_index: i1,
+                a_u: a,
+                b_index: i2,
+                b_u: b,
+                run,
+                p_index: i3,
+            };
+            nf += usize::from(full);
+            let (below2, below1) = (stack[l - 2], stack[l - 1]);
+            let next = buf[j];
+            stack[l] = Open::new(i1, a, state);
+            let mask = 0u64.wrapping_sub(u64::from(full));
+            let pick = |x: u64, y: u64| (x & mask) | (y & !mask);
+            // Full: `a, b` leave, the two entries below come up, `p` stays on top. Otherwise
+            // `a` goes to memory and `next` comes on top.
+            let n1 = (pick(below2.index, i2), pick(below2.u.to_bits(), u2));
+            let n2 = (pick(below1.index, i3), pick(below1.u.to_bits(), u3));
+            let n3 = (pick(i3, next.0), pick(u3, next.1.to_bits()));
+            run = pick(run, i3 + 1);
+            l = l + 1 - 3 * usize::from(full);
+            j += usize::from(!full);
+            ((i1, u1), (i2, u2), (i3, u3)) = (n1, n2, n3);
+        }
+        if l + 3 >= lim {
+            // Out of room: more next time (resizing costs `room` writes).
+            self.room = (2 * self.room).min(MAX_ROOM);
+        }
+        self.stack[l] = Open::new(i1, f64::from_bits(u1), state);
+        self.stack[l + 1] = Open::new(i2, f64::from_bits(u2), state);
+        self.stack[l + 2] = Open::new(i3, f64::from_bits(u3), state);
+        self.stack.truncate(l + 3);
+
+        columns.extend_reversals(&self.buf[j0..j]);
+        self.reversals += (j - j0) as u64;
+        self.full += nf as u64;
+        columns.extend_full(&self.full_buf[..nf], |c| {
+            let y = (c.b_u - c.a_u).abs();
+            match s.first_reaching(c.run, c.p_index, c.b_u, y) {
+                Some(i) => s.closure(i, c.a_u),
+                None => {
+                    // `p` itself passes the test: see `settle`.
+                    debug_assert!(false, "closure not found");
+                    Closure {
+                        index: c.p_index,
+                        position: c.p_index as f64,
+                    }
+                }
+            }
+        });
+
+        // The last step took a pair off or pushed: the top may complete more.
+        let top = i3;
+        let mut from = run;
+        self.settle(columns, |stack, start| {
+            let (a, b) = (stack[start].u, stack[start + 1].u);
+            let i = s.first_reaching(from, top, b, (b - a).abs())?;
+            from = i;
+            Some(s.closure(i, a))
+        });
+        j
+    }
+}
+
+/// The samples of a block: `good[k]` is sample `base + k`, `before` the sample before it.
+#[derive(Debug, Clone, Copy)]
+struct Samples<'a> {
+    good: &'a [f64],
+    base: u64,
+    before: f64,
+}
+
+impl Samples<'_> {
+    /// The sample before sample `i` (in this block, or the one before it).
+    fn prev_of(&self, i: u64) -> f64 {
+        match i.checked_sub(self.base + 1) {
+            Some(k) => self.good[k as usize],
+            None => self.before,
+        }
+    }
+
+    /// The first sample in `from..=to` (one run: monotone) back at `b`'s distance `y`, by the
+    /// test that counts a cycle: `|u - b| >= y`.
+    fn first_reaching(&self, from: u64, to: u64, b: f64, y: f64) -> Option<u64> {
+        let lo = from.checked_sub(self.base)? as usize;
+        let hi = to.checked_sub(self.base)? as usize + 1;
+        let run = self.good.get(lo..hi)?;
+        // The runs of a noisy history are a few samples long: look at those first.
+        let short = run.len().min(4);
+        let k = match run[..short].iter().position(|&w| (w - b).abs() >= y) {
+            Some(k) => k,
+            None => short + run[short..].partition_point(|&w| (w - b).abs() < y),
+        };
+        (k < run.len()).then(|| self.base + (lo + k) as u64)
+    }
+
+    /// The closure at sample `i` (of this block) of a cycle starting at `ua`.
+    fn closure(&self, i: u64, ua: f64) -> Closure {
+        let u = self.good[(i - self.base) as usize];
+        closure_at(i, u, self.prev_of(i), ua).0
     }
 }
 

@@ -68,12 +68,14 @@
 //! assert_eq!((closure.index, closure.position), (6, 5.0 + 4.0 / 7.0));
 //! ```
 
+mod columns;
 mod energy;
 mod engine;
 mod histogram;
 #[cfg(test)]
 mod tests;
 
+pub use columns::CycleColumns;
 pub use histogram::Histogram;
 
 /// The largest `|u|` a sample may have: ranges and means of any two samples stay finite.
@@ -147,6 +149,11 @@ impl Cycle {
 pub trait CycleSink {
     fn reversal(&mut self, r: Reversal);
     fn cycle(&mut self, c: Cycle);
+    /// The sink as columns, if it is [`CycleColumns`]: the counter then writes whole blocks of
+    /// cycles into them (see [`CycleColumns`]). Other sinks keep the default, `None`.
+    fn columns(&mut self) -> Option<&mut CycleColumns> {
+        None
+    }
 }
 
 /// Keeps the cycles, drops the reversals.

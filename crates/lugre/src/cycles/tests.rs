@@ -574,25 +574,33 @@ fn histogram_bins_every_cycle() {
     assert!(Histogram::new(4, 1.0, 0.0).is_err());
 }
 
-/// `(range, mean, count, start, end, closure)` without energies.
-fn counted(h: &History) -> Vec<(f64, f64, f64, u64, u64, Option<Closure>)> {
-    h.cycles
-        .iter()
-        .map(|c| (c.range, c.mean, c.count, c.start, c.end, c.closure))
-        .collect()
-}
-
-#[test]
-fn block_path_agrees_with_the_per_sample_walk() {
-    // Counting alone goes through blocks of samples (branch-free reversals, closures by binary
-    // search); with energies every sample goes through the walk. Long histories so that runs,
-    // cycles and closures straddle block boundaries, fed in chunks of several sizes.
-    let model = crate::RateIndependent::new(1.0, 1.0).unwrap();
+/// Long histories whose runs, cycles and closures straddle block boundaries: random walks
+/// (deep stacks), integer steps (ties, plateaus), a slow sine (long runs, nested wiggles), the
+/// reference series one after another, a growing then decaying oscillation (shallow stacks and
+/// half cycles, then a deep draining one), a ramp longer than two blocks and back with wiggles.
+fn long_histories() -> Vec<Vec<f64>> {
     let mut rng = Lcg(17);
     let mut histories: Vec<Vec<f64>> = Vec::new();
-    // Integer random walk (ties, plateaus).
+    // Random walks: uniform steps, and nearly Gaussian ones (sums of four uniforms).
     histories.push(
-        (0..20_000)
+        (0..40_000)
+            .scan(0.0, |x, _| {
+                *x += rng.next_f64() - 0.5;
+                Some(*x)
+            })
+            .collect(),
+    );
+    histories.push(
+        (0..40_000)
+            .scan(0.0, |x, _| {
+                *x += (0..4).map(|_| rng.next_f64()).sum::<f64>() - 2.0;
+                Some(*x)
+            })
+            .collect(),
+    );
+    // Integer random walk (ties, plateaus, equal ranges).
+    histories.push(
+        (0..30_000)
             .scan(0.0, |x, _| {
                 *x += ((rng.next_u64() >> 33) % 5) as f64 - 2.0;
                 Some(*x)
@@ -608,41 +616,202 @@ fn block_path_agrees_with_the_per_sample_walk() {
             })
             .collect(),
     );
+    // The reference series one after another.
+    let mut joined = Vec::new();
+    for case in 0..400 {
+        joined.extend(reference_series(&mut rng, case));
+    }
+    histories.push(joined);
+    // Growing, then decaying oscillation, then a random walk with a sine.
+    let sign = |k: usize| [1.0, -1.0][k % 2];
+    let mut osc: Vec<f64> = (0..6000).map(|k| k as f64 * sign(k)).collect();
+    osc.extend((0..20_000).map(|k| (20_000 - k) as f64 * sign(k)));
+    let mut x = 0.0;
+    osc.extend((0..10_000).map(|k| {
+        x += rng.next_f64() - 0.5;
+        x + 50.0 * (k as f64 / 30.0).sin()
+    }));
+    histories.push(osc);
     // A ramp longer than two blocks, then a ramp back with wiggles (cycles nested along one
     // long run of the large scale), then a decaying oscillation (a converging residue).
     let mut ramp: Vec<f64> = (0..5000).map(|k| k as f64).collect();
     ramp.extend((0..5000).map(|k| 5000.0 - k as f64 + 30.0 * (k as f64 / 20.0).sin()));
     ramp.extend((0..3000).map(|k| 1000.0 * (k as f64 / 50.0).cos() * (-(k as f64) / 800.0).exp()));
     histories.push(ramp);
-    for u in &histories {
-        let walk = count_cycles_with_energy(u, 0.0, model, 0.0).unwrap();
-        // Chunks below 64 samples take the walk too; the mixed pattern alternates the paths.
-        let mixed = [1, 3000, 7, 100, 2049, 63, 64];
+    histories
+}
+
+/// Counts `u` without a gate into `sink`, fed in pieces of `chunk` samples; 0 alternates
+/// pieces below 64 samples (which take the per-sample walk) and longer ones (blocks).
+fn count_in_pieces(u: &[f64], chunk: usize, sink: &mut impl CycleSink) -> CycleSummary {
+    let mixed = [1, 3000, 7, 100, 2049, 63, 64];
+    let mut counter = CycleCounter::new(0.0).unwrap();
+    let mut rest = u;
+    let mut k = 0;
+    while !rest.is_empty() {
+        let n = if chunk == 0 {
+            mixed[k % mixed.len()]
+        } else {
+            chunk
+        };
+        let (c, r) = rest.split_at(n.min(rest.len()));
+        counter.push_all(c, sink).unwrap();
+        rest = r;
+        k += 1;
+    }
+    counter.finish(sink).unwrap()
+}
+
+/// The per-sample walk's reversals and cycles of `u` without a gate (energies make every
+/// sample go through it), the energies dropped.
+fn walked(u: &[f64]) -> History {
+    let model = crate::RateIndependent::new(1.0, 1.0).unwrap();
+    let h = count_cycles_with_energy(u, 0.0, model, 0.0).unwrap();
+    History {
+        cycles: h
+            .cycles
+            .iter()
+            .map(|c| Cycle { energy: None, ..*c })
+            .collect(),
+        summary: CycleSummary {
+            energy: None,
+            ..h.summary
+        },
+        ..h
+    }
+}
+
+#[test]
+fn block_path_agrees_with_the_per_sample_walk() {
+    // Counting alone goes through blocks of samples (branch-free reversals, closures by binary
+    // search); with energies every sample goes through the walk. Fed in chunks of several
+    // sizes.
+    for (n, u) in long_histories().iter().enumerate() {
+        let walk = walked(u);
+        assert!(walk.summary.full_cycles > 10, "history {n}");
         for chunk in [0, 1, 7, 64, 2048, 2049, 5000, u.len()] {
-            let mut counter = CycleCounter::new(0.0).unwrap();
             let mut sink = Collect::default();
-            let mut rest = &u[..];
-            let mut k = 0;
-            while !rest.is_empty() {
-                let n = if chunk == 0 {
-                    mixed[k % mixed.len()]
-                } else {
-                    chunk
-                };
-                let (c, r) = rest.split_at(n.min(rest.len()));
-                counter.push_all(c, &mut sink).unwrap();
-                rest = r;
-                k += 1;
-            }
-            let summary = counter.finish(&mut sink).unwrap();
-            let h = History {
-                reversals: sink.reversals,
-                cycles: sink.cycles,
-                summary,
-            };
-            assert_eq!(h.reversals, walk.reversals, "chunk {chunk}");
-            assert_eq!(counted(&h), counted(&walk), "chunk {chunk}");
-            assert!(h.summary.full_cycles > 10);
+            let summary = count_in_pieces(u, chunk, &mut sink);
+            assert_eq!(summary, walk.summary, "history {n}, chunk {chunk}");
+            assert_eq!(sink.reversals, walk.reversals, "history {n}, chunk {chunk}");
+            assert!(sink.cycles == walk.cycles, "history {n}, chunk {chunk}");
         }
     }
+}
+
+/// Every column of `c` row by row, NaN compared by its bits.
+type ColumnRow = (f64, f64, f64, i64, i64, i64, u64, [u64; 4]);
+
+fn column_rows(c: &CycleColumns) -> Vec<ColumnRow> {
+    let energy = |v: &Vec<f64>, k: usize| v.get(k).map_or(0, |x| x.to_bits());
+    (0..c.len())
+        .map(|k| {
+            (
+                c.range[k],
+                c.mean[k],
+                c.count[k],
+                c.start[k],
+                c.end[k],
+                c.closure.get(k).copied().unwrap_or(-2),
+                c.closure_position.get(k).map_or(0, |x| x.to_bits()),
+                [
+                    energy(&c.work, k),
+                    energy(&c.stored_energy_change, k),
+                    energy(&c.dissipation, k),
+                    energy(&c.closure_gap, k),
+                ],
+            )
+        })
+        .collect()
+}
+
+/// The columns of a history counted one cycle at a time.
+fn expected_columns(h: &History, template: &CycleColumns) -> CycleColumns {
+    let mut c = template.clone();
+    for r in &h.reversals {
+        c.reversal(*r);
+    }
+    for cy in &h.cycles {
+        c.cycle(*cy);
+    }
+    c
+}
+
+#[test]
+fn columns_agree_with_the_cycle_sink() {
+    // Counting into columns takes the branch-free stretches of `count_fast` between the
+    // reversals pushed one by one: compare every column with the per-sample walk, for every
+    // choice of columns, fed in pieces of several sizes.
+    let templates = [
+        CycleColumns::new(),
+        CycleColumns::new().with_reversals(false),
+        CycleColumns::new().with_closures(false),
+        CycleColumns::new()
+            .with_reversals(false)
+            .with_closures(false),
+        CycleColumns::new().with_energy(true),
+    ];
+    for (n, u) in long_histories().iter().enumerate() {
+        let walk = walked(u);
+        for chunk in [0, 1, 64, 2048, 5000, u.len()] {
+            for template in &templates {
+                let want = expected_columns(&walk, template);
+                let mut columns = template.clone();
+                let summary = count_in_pieces(u, chunk, &mut columns);
+                assert_eq!(summary, walk.summary, "history {n}, chunk {chunk}");
+                assert!(columns.reversal_index == want.reversal_index, "history {n}");
+                assert!(columns.reversal_u == want.reversal_u, "history {n}");
+                let (got, want_rows) = (column_rows(&columns), column_rows(&want));
+                assert_eq!(got.len(), want_rows.len(), "history {n}, chunk {chunk}");
+                if let Some(k) = (0..got.len()).find(|&k| got[k] != want_rows[k]) {
+                    panic!(
+                        "history {n}, chunk {chunk}, cycle {k}: {:?} instead of {:?}",
+                        got[k], want_rows[k]
+                    );
+                }
+                let rows = columns.len();
+                assert_eq!(rows, walk.cycles.len());
+                let kept = |keep: bool| if keep { rows } else { 0 };
+                assert_eq!(columns.closure.len(), kept(template.keeps_closures()));
+                assert_eq!(columns.work.len(), kept(template.keeps_energy()));
+                assert_eq!(
+                    columns.reversal_u.len() as u64,
+                    summary.reversals * u64::from(template.keeps_reversals())
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn columns_with_energies() {
+    // With a model the energies go to their columns (NaN for half cycles).
+    let mut rng = Lcg(31);
+    let u: Vec<f64> = (0..3000)
+        .scan(0.0, |x, _| {
+            *x += rng.next_f64() - 0.5;
+            Some(*x)
+        })
+        .collect();
+    let model = crate::LuGre::paper().rate_independent();
+    let h = count_cycles_with_energy(&u, 0.05, model, 0.1).unwrap();
+    let mut columns = CycleColumns::new().with_energy(true);
+    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    counter.push_all(&u, &mut columns).unwrap();
+    assert_eq!(counter.finish(&mut columns).unwrap(), h.summary);
+    let want = expected_columns(&h, &CycleColumns::new().with_energy(true));
+    assert_eq!(column_rows(&columns), column_rows(&want));
+    assert_eq!(columns.reversal_index, want.reversal_index);
+    for (k, c) in h.cycles.iter().enumerate() {
+        match c.energy {
+            Some(e) => {
+                assert_eq!(columns.work[k], e.work);
+                assert_eq!(columns.dissipation[k], e.dissipation);
+                assert_eq!(columns.stored_energy_change[k], e.stored_energy_change);
+                assert_eq!(columns.closure_gap[k], e.closure_gap);
+            }
+            None => assert!(columns.work[k].is_nan() && c.count == 0.5),
+        }
+    }
+    assert!(h.summary.full_cycles > 100);
 }
