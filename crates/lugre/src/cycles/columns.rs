@@ -174,16 +174,16 @@ impl CycleColumns {
     }
 }
 
-/// A full cycle found by the block path: its start `A`, its turn `B`, and the run into the
-/// reversal that closed it (sample indices `run..=p_index`), where its closure lies.
+/// A full cycle found by the block path: its start `A`, its turn `B`, and where the reversal
+/// `P` that closed it is in the block's reversal buffer (`closer`; the run into `P`, where the
+/// closure lies, begins after the reversal before it there).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct FullCycle {
     pub a_index: u64,
     pub a_u: f64,
     pub b_index: u64,
     pub b_u: f64,
-    pub run: u64,
-    pub p_index: u64,
+    pub closer: usize,
 }
 
 impl CycleSink for CycleColumns {

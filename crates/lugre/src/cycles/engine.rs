@@ -593,72 +593,79 @@ impl<T: Track> Engine<T> {
         let stack = &mut self.stack[..lim];
         let full_buf = &mut self.full_buf[..FULL_CAP];
         let buf = &self.buf[..found];
+        // The top three `a, b, p` live in registers; `p` is always `buf[j - 1]` (the last
+        // reversal pushed stays on top), so its index is read from there when needed.
         let mut l = m - 3;
-        let (mut i1, mut u1) = (stack[l].index, stack[l].u.to_bits());
-        let (mut i2, mut u2) = (stack[l + 1].index, stack[l + 1].u.to_bits());
-        let (mut i3, mut u3) = (stack[l + 2].index, stack[l + 2].u.to_bits());
-        // First index of the run into the top reversal (set by the first step, a push: the
-        // stack is settled).
-        let mut run = 0;
+        let (mut ia, mut ua) = (stack[l].index, stack[l].u.to_bits());
+        let (mut ib, mut ub) = (stack[l + 1].index, stack[l + 1].u.to_bits());
+        let mut up = stack[l + 2].u.to_bits();
+        debug_assert_eq!(stack[l + 2].index, buf[j - 1].0);
         let mut nf = 0;
+        // The test of `settle` (and `rainflow`) on the top three: `(a, b)` is a full cycle.
+        // Each step works out the next step's test for both of its outcomes, so that the
+        // chain from one test to the next spans two steps.
+        let test = |a: f64, b: f64, p: f64| (p - b).abs() >= (b - a).abs();
+        let mut full = test(f64::from_bits(ua), f64::from_bits(ub), f64::from_bits(up));
         while l >= 2 && l + 3 < lim && j < found && nf < FULL_CAP {
-            let (a, b, p) = (f64::from_bits(u1), f64::from_bits(u2), f64::from_bits(u3));
-            // The test of `settle` (and `rainflow`): `(a, b)` is a full cycle.
-            let full = (p - b).abs() >= (b - a).abs();
+            let (a, b, p) = (f64::from_bits(ua), f64::from_bits(ub), f64::from_bits(up));
             full_buf[nf] = FullCycle {
-                a_index: i1,
+                a_index: ia,
                 a_u: a,
-                b_index: i2,
+                b_index: ib,
                 b_u: b,
-                run,
-                p_index: i3,
+                closer: j - 1,
             };
             nf += usize::from(full);
             let (below2, below1) = (stack[l - 2], stack[l - 1]);
-            let next = buf[j];
-            stack[l] = Open::new(i1, a, state);
+            let (ip, next) = (buf[j - 1].0, buf[j]);
+            stack[l] = Open::new(ia, a, state);
+            let then_full = test(below2.u, below1.u, p);
+            let then_push = test(b, p, next.1);
             let mask = 0u64.wrapping_sub(u64::from(full));
             let pick = |x: u64, y: u64| (x & mask) | (y & !mask);
             // Full: `a, b` leave, the two entries below come up, `p` stays on top. Otherwise
             // `a` goes to memory and `next` comes on top.
-            let n1 = (pick(below2.index, i2), pick(below2.u.to_bits(), u2));
-            let n2 = (pick(below1.index, i3), pick(below1.u.to_bits(), u3));
-            let n3 = (pick(i3, next.0), pick(u3, next.1.to_bits()));
-            run = pick(run, i3 + 1);
+            (ia, ua) = (pick(below2.index, ib), pick(below2.u.to_bits(), ub));
+            (ib, ub) = (pick(below1.index, ip), pick(below1.u.to_bits(), up));
+            up = pick(up, next.1.to_bits());
             l = l + 1 - 3 * usize::from(full);
             j += usize::from(!full);
-            ((i1, u1), (i2, u2), (i3, u3)) = (n1, n2, n3);
+            full = (full & then_full) | (!full & then_push);
         }
         if l + 3 >= lim {
             // Out of room: more next time (resizing costs `room` writes).
             self.room = (2 * self.room).min(MAX_ROOM);
         }
-        self.stack[l] = Open::new(i1, f64::from_bits(u1), state);
-        self.stack[l + 1] = Open::new(i2, f64::from_bits(u2), state);
-        self.stack[l + 2] = Open::new(i3, f64::from_bits(u3), state);
+        let top = self.buf[j - 1].0;
+        self.stack[l] = Open::new(ia, f64::from_bits(ua), state);
+        self.stack[l + 1] = Open::new(ib, f64::from_bits(ub), state);
+        self.stack[l + 2] = Open::new(top, f64::from_bits(up), state);
         self.stack.truncate(l + 3);
 
         columns.extend_reversals(&self.buf[j0..j]);
         self.reversals += (j - j0) as u64;
         self.full += nf as u64;
+        let buf = &self.buf;
         columns.extend_full(&self.full_buf[..nf], |c| {
+            // The run into `P` starts after the reversal before it (both in this block: the
+            // stretch starts after the block's first reversal).
+            let (p, run) = (buf[c.closer].0, buf[c.closer.saturating_sub(1)].0 + 1);
             let y = (c.b_u - c.a_u).abs();
-            match s.first_reaching(c.run, c.p_index, c.b_u, y) {
+            match s.first_reaching(run, p, c.b_u, y) {
                 Some(i) => s.closure(i, c.a_u),
                 None => {
-                    // `p` itself passes the test: see `settle`.
+                    // `P` itself passes the test: see `settle`.
                     debug_assert!(false, "closure not found");
                     Closure {
-                        index: c.p_index,
-                        position: c.p_index as f64,
+                        index: p,
+                        position: p as f64,
                     }
                 }
             }
         });
 
         // The last step took a pair off or pushed: the top may complete more.
-        let top = i3;
-        let mut from = run;
+        let mut from = self.buf[j.saturating_sub(2)].0 + 1;
         self.settle(columns, |stack, start| {
             let (a, b) = (stack[start].u, stack[start + 1].u);
             let i = s.first_reaching(from, top, b, (b - a).abs())?;
