@@ -443,11 +443,19 @@ def cycles_rows(n: int, args, rows: list, summary: list, tmpdir: str) -> None:
     x = rng.standard_normal(n).cumsum()
     xs = x.tolist()  # rainflow's fastest input: a list of Python floats (not timed)
 
-    t_lugre, res = best_of(lambda: lugre.cycles(x), repeats=10, budget=2.0)
+    # The table rainflow yields (range, mean, count, start, end per cycle), as numpy columns:
+    # the same information, the primary row. Then everything lugre.cycles gives by default
+    # (also the reversals and each full cycle's closure, which rainflow does not find).
+    t_lugre, res = best_of(lambda: lugre.cycles(x, reversals=False, closures=False), repeats=30, budget=2.0)
     cyc = res["cycles"]
     nl = len(cyc["range"])
-    rows.append((case, "lugre.cycles (Python binding)", fmt_time(t_lugre),
+    rows.append((case, "lugre.cycles(x, reversals=False, closures=False)", fmt_time(t_lugre),
                  f"{nl} cycles ({res['summary']['full_cycles']} full)", fmt_ratio(1.0)))
+    t_all, res_all = best_of(lambda: lugre.cycles(x), repeats=30, budget=2.0)
+    same_all = all(np.array_equal(res_all["cycles"][k], cyc[k]) for k in ("range", "mean", "count", "start", "end"))
+    del res_all
+    rows.append((case, "lugre.cycles(x): + reversals, closures", fmt_time(t_all),
+                 "same cycles" if same_all else "DIFFERENT cycles", fmt_ratio(t_all / t_lugre)))
 
     log(f"{case}: rainflow.extract_cycles ...")
     t0 = time.perf_counter()
@@ -489,8 +497,9 @@ def cycles_rows(n: int, args, rows: list, summary: list, tmpdir: str) -> None:
     rows.append((case, "rainflow.extract_cycles, numpy array in", fmt_time(t_np),
                  f"{n_np} cycles" + (" (same count)" if n_np == nl else " (DIFFERENT count)"),
                  fmt_ratio(t_np / t_lugre)))
-    summary.append(f"{case}: lugre.cycles {fmt_time(t_lugre)}, rainflow {fmt_time(t_rf)}: "
-                   f"{t_rf / t_lugre:,.0f}x faster; cycles {'identical' if same else 'DIFFERENT'}")
+    summary.append(f"{case}: lugre.cycles {fmt_time(t_lugre)} (cycle table; {fmt_time(t_all)} with reversals "
+                   f"and closures), rainflow {fmt_time(t_rf)}: {t_rf / t_lugre:,.0f}x faster "
+                   f"({t_rf / t_all:,.0f}x with everything); cycles {'identical' if same else 'DIFFERENT'}")
 
     if not args.no_cli:
         path = os.path.join(tmpdir, f"walk_{n}.csv")
@@ -556,18 +565,22 @@ def compare(args: argparse.Namespace) -> None:
     summary: list = []
     periods_ex3 = 10 if args.quick else 100
     periods_stiff = 2 if args.quick else 10
-    ex3 = Case(f"Example 3 (gamma=10, {periods_ex3} periods)",
-               dict(sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0),
-               gamma=10.0, periods=periods_ex3, turning_points=[0.0, 1.0, 0.2, 1.5], z_scale=1.0)
-    stiff = Case(f"stiff (sigma0=1e5, {periods_stiff} periods)",
-                 dict(sigma0=1e5, sigma1=math.sqrt(1e5), sigma2=0.4, fc=1.0, fs=1.5, vs=1e-3, beta=2.0),
-                 gamma=1.0, periods=periods_stiff,
-                 t=[0.0, 0.8, 1.2, 1.8, 2.8], u=[0.0, 0.008, 0.004, 0.010, 0.0], z_scale=1e-5)
+    cases = []
+    if args.only in (None, "simulation"):
+        ex3 = Case(f"Example 3 (gamma=10, {periods_ex3} periods)",
+                   dict(sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0),
+                   gamma=10.0, periods=periods_ex3, turning_points=[0.0, 1.0, 0.2, 1.5], z_scale=1.0)
+        stiff = Case(f"stiff (sigma0=1e5, {periods_stiff} periods)",
+                     dict(sigma0=1e5, sigma1=math.sqrt(1e5), sigma2=0.4, fc=1.0, fs=1.5, vs=1e-3, beta=2.0),
+                     gamma=1.0, periods=periods_stiff,
+                     t=[0.0, 0.8, 1.2, 1.8, 2.8], u=[0.0, 0.008, 0.004, 0.010, 0.0], z_scale=1e-5)
+        cases = [ex3, stiff]
     with tempfile.TemporaryDirectory(prefix="lugre-bench-") as tmpdir:
-        for case in (ex3, stiff):
+        for case in cases:
             simulation_rows(case, args, rows, summary, tmpdir)
-        for n in args.sizes:
-            cycles_rows(n, args, rows, summary, tmpdir)
+        if args.only in (None, "rainflow"):
+            for n in args.sizes:
+                cycles_rows(n, args, rows, summary, tmpdir)
     elapsed = time.perf_counter() - start
     end_load = machine_info()["load"]
 
@@ -601,6 +614,8 @@ def parse_args(argv):
                     help="use the environment as it is (no pip install, no build)")
     ap.add_argument("--no-build", action="store_true", help="install the PyPI packages but do not rebuild lugre")
     ap.add_argument("--no-cli", action="store_true", help="skip the `lugre` CLI rows (and its build)")
+    ap.add_argument("--only", choices=("simulation", "rainflow"),
+                    help="run only the simulation cases or only the rainflow counting")
     ap.add_argument("--quick", action="store_true",
                     help="a smoke test: 10 / 2 periods, 10^5 and 10^6 samples, rtol 1e-6 and 1e-10")
     ap.add_argument("--rtols", type=lambda s: [float(v) for v in s.split(",")], default=None,

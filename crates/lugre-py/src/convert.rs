@@ -222,28 +222,29 @@ pub fn series<'py>(obj: &Bound<'py, PyAny>, name: &str) -> PyResult<Series<'py>>
     ))
 }
 
-/// An empty vector with room for `n` elements when that much address space can be had (else
-/// an empty vector that grows as usual), with the kernel asked to back it with huge pages:
-/// for outputs of unknown length bounded by `n`, filled once and handed to numpy. Only the
-/// pages written are ever backed; the rest is given back by `shrink_to_fit`.
+/// An empty vector for an output of at most `n` elements, filled once and handed to numpy.
+///
+/// A large one (32 MiB or more, above which glibc's malloc always maps fresh memory) gets room
+/// for all `n` at once, when that much address space can be had, and the kernel is asked to
+/// back it with huge pages: only the pages written are ever backed, there is no reallocation,
+/// and writing fresh memory takes one page fault per 2 MiB rather than per 4 KiB (most of the
+/// time spent writing tens of MB of output). Smaller ones grow as usual, in memory malloc
+/// reuses from call to call. Trim with `shrink_to_fit` once filled.
 pub fn column<T>(n: usize) -> Vec<T> {
     let mut v = Vec::new();
-    if v.try_reserve_exact(n).is_ok() {
+    if n.saturating_mul(std::mem::size_of::<T>()) >= 32 << 20 && v.try_reserve_exact(n).is_ok() {
         advise_huge_pages(&mut v);
     }
     v
 }
 
-/// Asks for transparent huge pages over the capacity of a large vector (as numpy does for its
+/// Asks for transparent huge pages over the capacity of a vector (as numpy does for its
 /// arrays of 4 MiB or more): filling fresh memory then takes one page fault per 2 MiB rather
 /// than per 4 KiB, which for large outputs is most of the time spent writing them.
 #[cfg(target_os = "linux")]
 fn advise_huge_pages<T>(v: &mut Vec<T>) {
     const PAGE: usize = 4096;
     let bytes = v.capacity().saturating_mul(std::mem::size_of::<T>());
-    if bytes < 1 << 22 {
-        return;
-    }
     let start = v.as_mut_ptr() as usize;
     let (lo, hi) = (start.next_multiple_of(PAGE), (start + bytes) / PAGE * PAGE);
     if hi > lo {

@@ -99,8 +99,8 @@ fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
     })
 }
 
-/// Counts `u` into columns with room for every reversal and cycle there can be (one per
-/// sample): they are filled once, without reallocation, and trimmed at the end.
+/// Counts `u` into columns (see [`column`]: for long histories, room for every reversal and
+/// cycle there can be, one per sample), trimmed at the end.
 fn count(
     u: &[f64],
     gate: f64,

@@ -33,6 +33,12 @@
 //! it); for a run still open at the end of the block, the pending pairs it already reaches are
 //! recorded before the block's samples are let go. The per-sample walk above does the same
 //! work one sample at a time and serves the gate and the energies.
+//!
+//! Counting a block's reversals has the same problem: whether the three-point test counts a
+//! cycle is a coin toss on a noisy history. Into [`CycleColumns`] (which takes whole blocks of
+//! cycles at once), stretches of reversals are therefore counted without a branch on the test
+//! ([`Engine::count_fast`]): each step pops a pair or pushes the next reversal, chosen by masks,
+//! and the full cycles are written out afterwards, their closures searched as above.
 
 use super::columns::FullCycle;
 use super::{Closure, Cycle, CycleColumns, CycleEnergy, CycleSink, Reversal};
@@ -571,12 +577,14 @@ impl<T: Track> Engine<T> {
     /// on its outcome (which on a noisy history is a coin toss, and a mispredicted branch costs
     /// more than the test): each step either takes the top pair off as a full cycle or pushes
     /// the next reversal, chosen by masks. The top three entries live in registers and the
-    /// rest of the stack is written by index. The full cycles are kept with the run where each
-    /// one closes and written to the columns in bulk at the end. The stretch ends when the
+    /// rest of the stack is written by index. The full cycles are kept with the reversal that
+    /// closes each (on whose run the closure lies) and written to the columns in bulk at the
+    /// end, closures included. The stretch ends when the
     /// stack gets shallow (a half cycle may be due), runs out of room, or the block ends; the
     /// stack is then settled as usual. Returns the next reversal to push.
     ///
-    /// Called with a settled stack at least `FAST_DEPTH` deep.
+    /// Called with a settled stack at least `FAST_DEPTH` deep whose top is `self.buf[j - 1]`,
+    /// and only on the block path (nothing tracked: the entries carry no state to merge).
     fn count_fast(
         &mut self,
         mut j: usize,

@@ -5,8 +5,8 @@
 //! computed in one streaming pass with memory bounded by the rainflow stack (the open
 //! reversals), so histories of any length can be fed as they are read ([`CycleCounter`],
 //! [`EnergyCycleCounter`]; blocks of a few thousand samples through `push_all` are fastest,
-//! over 100 M samples/s without gate and energies); [`count_cycles`] and
-//! [`count_cycles_with_energy`] take a slice.
+//! over 100 M samples/s without gate and energies, more into [`CycleColumns`]);
+//! [`count_cycles`] and [`count_cycles_with_energy`] take a slice.
 //!
 //! Conventions (those of the Python package `rainflow` 3.x, so results compare row by row with
 //! its `extract_cycles`):
