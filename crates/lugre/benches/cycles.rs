@@ -6,7 +6,9 @@
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
-use lugre::{Cycle, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal};
+use lugre::{
+    Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal,
+};
 use std::hint::black_box;
 
 /// The history lengths: the walk's first `n` samples.
@@ -85,6 +87,28 @@ fn cycles(c: &mut Criterion) {
                 black_box((s, sink.sum, sink.reversals))
             })
         });
+        // Into columns (what the Python binding does): every reversal, cycle and closure kept
+        // in memory, the columns' memory reused from one iteration to the next (the time of
+        // counting and writing, not of getting fresh memory); then the cycle table alone.
+        for (name, keep) in [
+            ("count_into_columns", true),
+            ("count_into_columns_table", false),
+        ] {
+            let mut columns = CycleColumns::new()
+                .with_reversals(keep)
+                .with_closures(keep);
+            group.bench_with_input(BenchmarkId::new(name, n), u, |b, u| {
+                b.iter(|| {
+                    columns.clear();
+                    let mut counter = CycleCounter::new(0.0).expect("valid gate");
+                    counter
+                        .push_all(black_box(u), &mut columns)
+                        .expect("finite");
+                    let s = counter.finish(&mut columns).expect("long enough");
+                    black_box((s, columns.range.len()))
+                })
+            });
+        }
         group.bench_with_input(BenchmarkId::new("count_with_energy", n), u, |b, u| {
             b.iter(|| {
                 let mut sink = Checksum::default();

@@ -121,6 +121,32 @@ impl CycleColumns {
         self.keep_energy
     }
 
+    /// Empties every column, keeping its memory (to count another history, or to take the
+    /// next piece of a long one after writing this one out).
+    pub fn clear(&mut self) {
+        for v in [
+            &mut self.reversal_u,
+            &mut self.range,
+            &mut self.mean,
+            &mut self.count,
+            &mut self.closure_position,
+            &mut self.work,
+            &mut self.stored_energy_change,
+            &mut self.dissipation,
+            &mut self.closure_gap,
+        ] {
+            v.clear();
+        }
+        for v in [
+            &mut self.reversal_index,
+            &mut self.start,
+            &mut self.end,
+            &mut self.closure,
+        ] {
+            v.clear();
+        }
+    }
+
     /// The number of cycles held.
     pub fn len(&self) -> usize {
         self.range.len()

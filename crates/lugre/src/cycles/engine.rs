@@ -542,6 +542,7 @@ impl<T: Track> Engine<T> {
 impl<T: Track> Engine<T> {
     /// Pushes the block's reversal `self.buf[j]` and counts what it completes, the closures
     /// searched on the block's samples.
+    #[inline(always)]
     fn push_found(&mut self, j: usize, s: Samples<'_>, sink: &mut impl CycleSink) {
         let (index, u) = self.buf[j];
         let mut from = self.stack.last().map_or(0, |q| q.index + 1).max(s.base);
@@ -694,6 +695,7 @@ struct Samples<'a> {
 
 impl Samples<'_> {
     /// The sample before sample `i` (in this block, or the one before it).
+    #[inline]
     fn prev_of(&self, i: u64) -> f64 {
         match i.checked_sub(self.base + 1) {
             Some(k) => self.good[k as usize],
@@ -703,20 +705,17 @@ impl Samples<'_> {
 
     /// The first sample in `from..=to` (one run: monotone) back at `b`'s distance `y`, by the
     /// test that counts a cycle: `|u - b| >= y`.
+    #[inline]
     fn first_reaching(&self, from: u64, to: u64, b: f64, y: f64) -> Option<u64> {
         let lo = from.checked_sub(self.base)? as usize;
         let hi = to.checked_sub(self.base)? as usize + 1;
         let run = self.good.get(lo..hi)?;
-        // The runs of a noisy history are a few samples long: look at those first.
-        let short = run.len().min(4);
-        let k = match run[..short].iter().position(|&w| (w - b).abs() >= y) {
-            Some(k) => k,
-            None => short + run[short..].partition_point(|&w| (w - b).abs() < y),
-        };
+        let k = run.partition_point(|&w| (w - b).abs() < y);
         (k < run.len()).then(|| self.base + (lo + k) as u64)
     }
 
     /// The closure at sample `i` (of this block) of a cycle starting at `ua`.
+    #[inline]
     fn closure(&self, i: u64, ua: f64) -> Closure {
         let u = self.good[(i - self.base) as usize];
         closure_at(i, u, self.prev_of(i), ua).0

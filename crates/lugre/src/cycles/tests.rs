@@ -802,6 +802,14 @@ fn columns_with_energies() {
     let want = expected_columns(&h, &CycleColumns::new().with_energy(true));
     assert_eq!(column_rows(&columns), column_rows(&want));
     assert_eq!(columns.reversal_index, want.reversal_index);
+    // Emptied, the same columns count again from scratch.
+    let filled = column_rows(&columns);
+    columns.clear();
+    assert!(columns.is_empty() && columns.reversal_u.is_empty() && columns.work.is_empty());
+    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    counter.push_all(&u, &mut columns).unwrap();
+    counter.finish(&mut columns).unwrap();
+    assert_eq!(column_rows(&columns), filled);
     for (k, c) in h.cycles.iter().enumerate() {
         match c.energy {
             Some(e) => {
