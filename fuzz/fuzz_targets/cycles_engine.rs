@@ -1,11 +1,13 @@
 //! The streaming rainflow engine on arbitrary f64 sequences: no panic; the block path, the
-//! per-sample walk and the energy-tracking walk find the same reversals and cycles; the
-//! counts add up (reversals = 2 full + half + 1).
+//! per-sample walk, the energy-tracking walk and the count into columns (branch-free, as the
+//! Python binding does it) find the same reversals and cycles; the counts add up
+//! (reversals = 2 full + half + 1).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use lugre::{
-    Cycle, CycleCounter, CycleSink, EnergyCycleCounter, HistoryError, RateIndependent, Reversal,
+    Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, HistoryError,
+    RateIndependent, Reversal,
 };
 
 #[derive(Default, PartialEq, Debug)]
@@ -36,6 +38,47 @@ fn count(u: &[f64], gate: f64, chunk: usize) -> Result<(All, u64, u64, u64), His
     }
     let s = c.finish(&mut sink)?;
     Ok((sink, s.reversals, s.full_cycles, s.half_cycles))
+}
+
+/// Counts `u` into columns in slices of `chunk`.
+fn count_columns(u: &[f64], gate: f64, chunk: usize) -> Result<CycleColumns, HistoryError> {
+    let mut columns = CycleColumns::new();
+    let mut c = CycleCounter::new(gate)?;
+    for part in u.chunks(chunk.max(1)) {
+        c.push_all(part, &mut columns)?;
+    }
+    c.finish(&mut columns)?;
+    Ok(columns)
+}
+
+/// The columns of `sink`'s reversals and cycles (closure -1 / NaN for half cycles), NaN
+/// compared by its bits.
+fn as_columns(sink: &All) -> (Vec<(i64, u64)>, Vec<(u64, u64, u64, i64, i64, i64, u64)>) {
+    let reversals = sink
+        .reversals
+        .iter()
+        .map(|r| (r.index as i64, r.u.to_bits()))
+        .collect();
+    let cycles = sink
+        .cycles
+        .iter()
+        .map(|c| {
+            let (k, pos) = c
+                .closure
+                .map_or((-1, f64::NAN), |k| (k.index as i64, k.position));
+            let (range, mean, count) = (c.range.to_bits(), c.mean.to_bits(), c.count.to_bits());
+            (
+                range,
+                mean,
+                count,
+                c.start as i64,
+                c.end as i64,
+                k,
+                pos.to_bits(),
+            )
+        })
+        .collect();
+    (reversals, cycles)
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -82,6 +125,38 @@ fuzz_target!(|data: &[u8]| {
             assert_eq!(format!("{a:?}"), format!("{c:?}"));
         }
         _ => panic!("the paths disagree: {whole:?} {each:?} {odd:?}"),
+    }
+
+    // Into columns: the same reversals and cycles, closures included.
+    for chunk in [u.len(), 67] {
+        match (count_columns(&u, gate, chunk), &whole) {
+            (Ok(c), Ok((plain, ..))) => {
+                let reversals: Vec<(i64, u64)> = c
+                    .reversal_index
+                    .iter()
+                    .zip(&c.reversal_u)
+                    .map(|(&i, u)| (i, u.to_bits()))
+                    .collect();
+                let cycles: Vec<_> = (0..c.len())
+                    .map(|k| {
+                        let bits = |v: &Vec<f64>| v[k].to_bits();
+                        let (start, end) = (c.start[k], c.end[k]);
+                        (
+                            bits(&c.range),
+                            bits(&c.mean),
+                            bits(&c.count),
+                            start,
+                            end,
+                            c.closure[k],
+                            bits(&c.closure_position),
+                        )
+                    })
+                    .collect();
+                assert_eq!((reversals, cycles), as_columns(plain), "columns agree");
+            }
+            (Err(a), Err(b)) => assert_eq!(format!("{a:?}"), format!("{b:?}")),
+            (c, p) => panic!("columns and plain counts disagree: {c:?} {p:?}"),
+        }
     }
 
     // The energy walk counts the same cycles.
