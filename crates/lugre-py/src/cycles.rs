@@ -45,7 +45,6 @@ use crate::models::{PyDahl, PyLuGre};
     signature = (series, gate=None, model=None, x0=None, *, reversals=None, closures=None),
     text_signature = "(series, gate=0.0, model=None, x0=0.0, *, reversals=True, closures=True)"
 )]
-#[allow(clippy::too_many_arguments)]
 pub fn cycles<'py>(
     py: Python<'py>,
     series: &Bound<'py, PyAny>,
