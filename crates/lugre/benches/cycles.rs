@@ -6,9 +6,7 @@
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
-use lugre::{
-    Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal,
-};
+use lugre::{Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal};
 use std::hint::black_box;
 
 /// The history lengths: the walk's first `n` samples.
@@ -94,9 +92,7 @@ fn cycles(c: &mut Criterion) {
             ("count_into_columns", true),
             ("count_into_columns_table", false),
         ] {
-            let mut columns = CycleColumns::new()
-                .with_reversals(keep)
-                .with_closures(keep);
+            let mut columns = CycleColumns::new().with_reversals(keep).with_closures(keep);
             group.bench_with_input(BenchmarkId::new(name, n), u, |b, u| {
                 b.iter(|| {
                     columns.clear();
