@@ -872,10 +872,13 @@ fn a_failing_run_leaves_no_partial_or_temporary_file() {
     for extra in [&[][..], &["--json"][..], &["--histogram"][..]] {
         let mut args = vec![
             "cycles",
-            "--values",
-            "0,1e300,1,1e300,0",
+            "--values=0,8e307,-8e307,8e307,-8e307,0",
             "--sigma0",
-            "1e-300",
+            "1e10",
+            "--fc",
+            "1e10",
+            "--fs",
+            "1e10",
             "--energy",
             "--csv",
             &csv,
@@ -1030,13 +1033,36 @@ fn values_near_1e308_and_1e_minus_308() {
         "--json",
     ]);
     assert_eq!(f(&j["cycles"][0]["range"]), 1.78e308);
+    // u ~ 1e300 with sigma0 ~ 1e-300: every energy is ~ g0 u and fits (this was an overflow
+    // error: l^2 overflowed inside the closed forms).
+    let j = accepts_json(&[
+        "cycles",
+        "--values",
+        "0,1e300,1,1e300,0",
+        "--sigma0",
+        "1e-300",
+        "--energy",
+        "--json",
+    ]);
+    let h = &j["history"];
+    let (w, dv, d) = (
+        f(&h["work"]),
+        f(&h["stored_energy_change"]),
+        f(&h["dissipation"]),
+    );
+    assert!(w > 1e299 && d > 0.0, "{h}");
+    assert!((w - dv - d).abs() <= 1e-12 * w, "W = dV + D: {h}");
+    // Where the energies really overflow (g0 = 1e10 over a variation of ~5e308):
     rejects(
         &[
             "cycles",
-            "--values",
-            "0,1e300,1,1e300,0",
+            "--values=0,8e307,-8e307,8e307,-8e307,0",
             "--sigma0",
-            "1e-300",
+            "1e10",
+            "--fc",
+            "1e10",
+            "--fs",
+            "1e10",
             "--energy",
         ],
         "the energies along the history overflow f64",

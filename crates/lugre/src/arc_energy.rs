@@ -7,7 +7,8 @@
 //! magnitude depending on the loop:
 //!
 //! * directly, as `integral (y - y_A) dpsi` (equal to `W` because `integral dpsi = 0`): per
-//!   piece `s (y_k - y_A) c + (sigma0 - s a y_A) e` with `(c, e) = (l phi(a l), l^2 h(a l))`.
+//!   piece `s (y_k - y_A) c + (1 - s y_A / g0) e` with
+//!   `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`.
 //!   Its terms are at most about `sigma0 L min(L, 2/a)` over an arc of length `L`: accurate for
 //!   loops narrower than `1/a` far from `y = 0`, where `D ~ |dV| >> W`;
 //! * as `dV + D`: its terms are `|dV|` and `D`: accurate in the elastic regime (`a L << 1`
@@ -15,8 +16,8 @@
 //!
 //! [`arc_energy`] returns the one with the smaller rounding bound. The closure gap
 //! `y_C - y_A` is `O(a)` on arcs shorter than `1/a`, so it is not taken as a difference there:
-//! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s sigma0 e)`, and the first terms add up
-//! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sigma0 sum s e)`.
+//! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s e)`, and the first terms add up
+//! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sum s e)`.
 
 use crate::hysteresis::{piece_dissipation, piece_terms};
 use crate::model::RateIndependent;
@@ -64,7 +65,7 @@ impl Sums {
         self.s5 = self.s5 + yc;
         self.length = self.length.add_f64(l);
         self.d = self.d.add_f64(d);
-        (syc.add_f64(model.sigma0() * e), d)
+        (syc.add_f64(e), d)
     }
 
     /// The dissipation over the pieces added.
@@ -129,7 +130,7 @@ pub(crate) fn closure_gap(
     if model.a() * length > 1.0 {
         y_c - y_a
     } else {
-        -model.a() * (sum_yc + model.sigma0() * sum_se)
+        -model.a() * (sum_yc + sum_se)
     }
 }
 
@@ -176,8 +177,8 @@ pub(crate) fn arc_energy(model: RateIndependent, sums: &Sums, y_a: f64, y_c: f64
     let gap = closure_gap(model, length, sums.s5.to_f64(), sums.s4.to_f64(), y_a, y_c);
     let dv = stored_energy_change(model, gap, y_a, y_c);
     let d = sums.dissipation();
-    let direct = sums.s1.to_f64() - y_a * sums.s2.to_f64() + model.sigma0() * sums.s3.to_f64()
-        - model.a() * y_a * sums.s4.to_f64();
+    let direct = sums.s1.to_f64() - y_a * sums.s2.to_f64() + sums.s3.to_f64()
+        - y_a / model.g0() * sums.s4.to_f64();
     ArcEnergy {
         work: best_work(model, length, Some(direct), dv, d),
         stored_energy_change: dv,

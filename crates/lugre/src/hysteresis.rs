@@ -118,10 +118,12 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
     y.clamp(-g0, g0)
 }
 
-/// The two terms of the work over a piece of length `l`: `(c, e) = (l phi(a l), l^2 h(a l))`,
-/// so that `integral y dpsi = s y_k c + sigma0 e` from `y_k`, and
-/// `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (sigma0 - s a y_ref) e` ([`crate::cycles`]
-/// sums the work relative to a loop's start value this way, without cancellation).
+/// The two terms of the work over a piece of length `l`:
+/// `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`, so that `integral y dpsi = s y_k c + e` from
+/// `y_k`, and `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (1 - s y_ref / g0) e`
+/// ([`crate::cycles`] sums the work relative to a loop's start value this way, without
+/// cancellation). `e` is an energy, `sigma0` already applied: `l^2` alone overflows long before
+/// `sigma0 l^2 h <= g0 l` does when `sigma0` is tiny.
 #[inline]
 pub(crate) fn piece_terms(model: RateIndependent, l: f64) -> (f64, f64) {
     let p = piece(model, 0.0, 1.0, l);
@@ -159,7 +161,7 @@ pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
     let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
     let z = a * l;
     let f = PhiFamily::new(z);
-    let (c, e) = (l * f.phi, l * l * f.h);
+    let (c, e) = (l * f.phi, sigma0 * l * l * f.h);
     // Short pieces (`exp(-z) > 1/2`) add the small change to `y_k` rather than scaling it by
     // the rounded `exp(-z)`: the same form as the closure gap's (`y_end - y_k = s sigma0 c -
     // y_k (1 - exp(-z))`), so that the two agree to an ulp of `y`.
@@ -184,7 +186,8 @@ pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
     }
 }
 
-/// [`piece`] in units of `1/a`: `l phi(z) = (1 - exp(-z)) / a`, `l^2 h(z) = (l - l phi(z)) / a`,
+/// [`piece`] in units of `1/a`: `l phi(z) = (1 - exp(-z)) / a`,
+/// `sigma0 l^2 h(z) = sigma0 (l - l phi(z)) / a = g0 (l - l phi(z))`,
 /// `l phi(2z) = (1 - exp(-2z)) / (2a)`, finite wherever the results are. The piece is saturated:
 /// `y` relaxes to `s g0` and `D = g0 l` to rounding.
 #[cold]
@@ -201,7 +204,7 @@ fn saturated_piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
         y_end: relax_toward(y_k, z, s * g0).clamp(-g0, g0),
         dissipation: if l == 0.0 { 0.0 } else { d.max(0.0) },
         c,
-        e: (l - c) * inv_a,
+        e: g0 * (l - c),
     }
 }
 
@@ -223,7 +226,7 @@ pub(crate) struct Position {
 }
 
 /// Sums from `rho = 0` along the loop: the dissipation and the closure gap's two terms
-/// (`sum y_j L_j phi(a L_j)`, `sum s_j L_j^2 h(a L_j)`, see [`HysteresisLoop::arc`]). One
+/// (`sum y_j L_j phi(a L_j)`, `sum s_j sigma0 L_j^2 h(a L_j)`, see [`HysteresisLoop::arc`]). One
 /// record per turning point, so that an arc's end costs one cache line, not three.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 struct Prefix {

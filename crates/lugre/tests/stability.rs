@@ -351,6 +351,33 @@ fn the_ends_of_the_f64_range() {
         common::loop_of(1e308, 2.0, &[0.0, 1.0]).work_per_period(),
         4.0
     );
+    // u ~ 1e300 with sigma0 ~ 1e-300: every energy is ~ g0 u and fits, but the piece's
+    // l^2 h(a l) overflows (the energies came out as "overflow"). u -> lambda u,
+    // sigma0 -> sigma0 / lambda leaves y° as it is and multiplies each energy by lambda (the
+    // property tests' scaling law; lambda a power of two, so the inputs scale exactly).
+    let lambda = 2f64.powi(996);
+    let u = [0.0, 1.0, 0.2, 1.5];
+    let big: Vec<f64> = u.iter().map(|x| x * lambda).collect();
+    let (h1, h2) = (
+        common::loop_of(1.0, 2.0, &u),
+        common::loop_of(1.0 / lambda, 2.0, &big),
+    );
+    for (y1, y2) in h1.turning_y().iter().zip(h2.turning_y()) {
+        assert!((y1 - y2).abs() <= LOOP * 2.0, "{y1:e} vs {y2:e}");
+    }
+    for (a, b) in h1.loops().iter().zip(&h2.loops()) {
+        for (x, y) in [
+            (a.work, b.work),
+            (a.stored_energy_change, b.stored_energy_change),
+            (a.dissipation, b.dissipation),
+        ] {
+            assert!(
+                (x * lambda - y).abs() <= IDENTITY * y.abs(),
+                "{x:e} * 2^996 vs {y:e}"
+            );
+        }
+        assert!((a.closure_gap - b.closure_gap).abs() <= LOOP * 2.0);
+    }
     // Fs far below Fc: g(0) = Fs exactly, where Fc + (Fs - Fc) exp(0) rounds to 0.
     let m = LuGre::from_params(LuGreParams {
         fs: 1e-300,

@@ -3,7 +3,7 @@
 //!
 //! Samples are joined by straight lines, so each step is one piece of the normalized input
 //! (direction `s`, length `l = |du|`) and `y*` advances exactly, at any stiffness. Over a piece
-//! from `y_k` the work is `s y_k c + sigma0 e` with `(c, e) = piece_terms(l)`. The sums over
+//! from `y_k` the work is `s y_k c + e` with `(c, e) = piece_terms(l)`. The sums over
 //! an arc's pieces ([`crate::arc_energy::Sums`]) give its work, stored-energy change,
 //! dissipation and closure gap in O(1) per cycle without keeping samples, each in the form
 //! that rounds least ([`crate::arc_energy`]).
