@@ -88,8 +88,9 @@ pub(crate) fn canonical_start(u: &[f64]) -> usize {
     let n = u.len();
     let (mut i, mut j, mut k) = (0usize, 1usize, 0usize);
     while i < n && j < n && k < n {
-        let x = u[(i + k) % n];
-        let y = u[(j + k) % n];
+        // `i, j, k < n`: one conditional subtraction instead of an integer division.
+        let wrap = |m: usize| if m >= n { m - n } else { m };
+        let (x, y) = (u[wrap(i + k)], u[wrap(j + k)]);
         if x == y {
             k += 1;
             continue;
