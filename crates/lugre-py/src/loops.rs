@@ -2,6 +2,7 @@
 
 use std::sync::OnceLock;
 
+use numpy::IntoPyArray;
 use pyo3::exceptions::{PyIndexError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
@@ -10,6 +11,9 @@ use crate::convert::{
     count, float_repr, floats, list_repr, map_floats, try_vec, value_error, vec_out,
 };
 use crate::models::reals;
+
+/// One float column of `HysteresisLoop.loop_table`.
+type LoopField = fn(&lugre::Loop) -> f64;
 
 /// The hysteresis loop y° of a model for one periodic input (the rate-independent limit,
 /// paper eqs. 8-10), with all its minor loops and their energies.
@@ -20,7 +24,8 @@ use crate::models::reals;
 /// point, and the loop is periodic in rho with period `period`.
 ///
 /// Attributes: rho, u, y (float64 arrays at the turning points), period, work_per_period,
-/// model, theorem_a (bimodal inputs; None otherwise), loops.
+/// model, theorem_a (bimodal inputs; None otherwise), loops, loop_table (the loops as numpy
+/// columns).
 /// Methods: y_at(rho), u_at(rho), sample(n).
 #[pyclass(frozen, module = "lugre", name = "HysteresisLoop")]
 pub struct PyHysteresisLoop {
@@ -168,6 +173,48 @@ impl PyHysteresisLoop {
     fn loops<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         let loops = self.rust_loops(py);
         PyList::new(py, loops.iter().map(|l| PyLoop { inner: l.clone() }))
+    }
+
+    /// Every loop of `loops` as numpy columns, one row per loop in the same order: a dict
+    /// with `kind` (0 for the major loop, 1 for a minor one), `start_rho`, `start_u`,
+    /// `start_y`, `reversal_rho`, ..., `end_y`, `work`, `stored_energy_change`,
+    /// `dissipation`, `closure_gap` (float64), `parent` (int64, -1 for the major loop) and
+    /// `depth` (int64). Built without a Python object per loop: for inputs with many
+    /// turning points (`pandas.DataFrame(hl.loop_table)` gives a table).
+    #[getter]
+    fn loop_table<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let loops = self.rust_loops(py);
+        let out = PyDict::new(py);
+        let int_column =
+            |f: &dyn Fn(&lugre::Loop) -> i64| -> Vec<i64> { loops.iter().map(f).collect() };
+        out.set_item(
+            "kind",
+            int_column(&|l| i64::from(l.kind == lugre::LoopKind::Minor)).into_pyarray(py),
+        )?;
+        let columns: [(&str, LoopField); 13] = [
+            ("start_rho", |l| l.start.rho),
+            ("start_u", |l| l.start.u),
+            ("start_y", |l| l.start.y),
+            ("reversal_rho", |l| l.reversal.rho),
+            ("reversal_u", |l| l.reversal.u),
+            ("reversal_y", |l| l.reversal.y),
+            ("end_rho", |l| l.end.rho),
+            ("end_u", |l| l.end.u),
+            ("end_y", |l| l.end.y),
+            ("work", |l| l.work),
+            ("stored_energy_change", |l| l.stored_energy_change),
+            ("dissipation", |l| l.dissipation),
+            ("closure_gap", |l| l.closure_gap),
+        ];
+        for (name, value) in columns {
+            out.set_item(name, vec_out(py, loops.iter().map(value).collect()))?;
+        }
+        out.set_item(
+            "parent",
+            int_column(&|l| l.parent.map_or(-1, |p| p as i64)).into_pyarray(py),
+        )?;
+        out.set_item("depth", int_column(&|l| l.depth as i64).into_pyarray(py))?;
+        Ok(out)
     }
 
     /// y°(rho), elementwise and periodic in rho: a float for a number, a float64 array of the

@@ -140,6 +140,8 @@ class HysteresisLoop:
     def theorem_a(self) -> Optional[TheoremA]: ...
     @property
     def loops(self) -> list[Loop]: ...
+    @property
+    def loop_table(self) -> LoopTable: ...
     @overload
     def y_at(self, rho: float) -> float: ...
     @overload
@@ -211,6 +213,27 @@ class Curve:
     @property
     def y(self) -> _Floats: ...
     def __iter__(self) -> Iterator[_Floats]: ...
+
+@type_check_only
+class LoopTable(TypedDict):
+    """HysteresisLoop.loop_table: every loop as columns (a dict at runtime), rows as in .loops."""
+
+    kind: npt.NDArray[np.int64]  # 0 major, 1 minor
+    start_rho: _Floats
+    start_u: _Floats
+    start_y: _Floats
+    reversal_rho: _Floats
+    reversal_u: _Floats
+    reversal_y: _Floats
+    end_rho: _Floats
+    end_u: _Floats
+    end_y: _Floats
+    work: _Floats
+    stored_energy_change: _Floats
+    dissipation: _Floats
+    closure_gap: _Floats
+    parent: npt.NDArray[np.int64]  # -1 for the major loop
+    depth: npt.NDArray[np.int64]
 
 @type_check_only
 class CycleReversals(TypedDict):
