@@ -390,8 +390,17 @@ impl HysteresisLoop {
         let p = self.period();
         let ap = a * p;
         if ap > 1.0 {
+            // The recursion forgets its start like exp(-a rho): what it carries from before the
+            // last stretch of `a rho > 750` is scaled by exp(-750) = 0 in f64, so it starts
+            // there (for a long period that is a few segments, not all n).
+            let mut first = n;
+            let mut tail = 0.0;
+            while first > 0 && a * tail <= 750.0 {
+                first -= 1;
+                tail += self.segment_length(first);
+            }
             let mut c = 0.0;
-            for k in 0..n {
+            for k in first..n {
                 c = self.advance(c, k, self.segment_length(k));
             }
             c / one_minus_exp(ap)
