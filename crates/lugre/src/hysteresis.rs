@@ -525,7 +525,23 @@ impl HysteresisLoop {
     }
 
     pub(crate) fn position_point(&self, pos: Position) -> LoopPoint {
-        self.position_sums(pos).point
+        let (k, offset) = (pos.k, pos.offset);
+        let y = if offset == 0.0 {
+            self.y[k]
+        } else {
+            piece(self.model, self.y[k], self.direction(k), offset).y_end
+        };
+        self.point_with(pos, y)
+    }
+
+    /// The point at `pos` where `y°` is already known.
+    #[inline]
+    fn point_with(&self, pos: Position, y: f64) -> LoopPoint {
+        LoopPoint {
+            rho: self.position_rho(pos),
+            u: self.u[pos.k] + self.direction(pos.k) * pos.offset,
+            y,
+        }
     }
 
     /// The point at `pos` and the prefix sums up to it (dissipation, the closure gap's two
@@ -546,11 +562,7 @@ impl HysteresisLoop {
             prefix = prefix + self.prefix[self.len()];
         }
         PositionSums {
-            point: LoopPoint {
-                rho: self.position_rho(pos),
-                u: self.u[k] + self.direction(k) * pos.offset,
-                y,
-            },
+            point: self.point_with(pos, y),
             prefix,
         }
     }
