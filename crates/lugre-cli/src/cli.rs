@@ -5,7 +5,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use std::path::PathBuf;
 
-use crate::numbers::{flag_value, parse_list};
+use crate::numbers::{parse_list, Real, Whole};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -55,28 +55,28 @@ pub struct ModelArgs {
     #[arg(long, value_enum, default_value = "lugre", help_heading = "Model")]
     pub model: ModelKind,
     /// LuGre bristle stiffness sigma0 > 0 [N/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub sigma0: Option<f64>,
     /// LuGre micro-damping sigma1 >= 0 [N s/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub sigma1: Option<f64>,
     /// LuGre viscous coefficient sigma2 >= 0 [N s/m], f(v) = sigma2 v (default 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub sigma2: Option<f64>,
     /// Coulomb force Fc > 0 [N] (LuGre and Dahl; default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub fc: Option<f64>,
     /// LuGre stiction force Fs > 0 [N]; g(0) = Fs (default 2).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub fs: Option<f64>,
     /// LuGre Stribeck velocity vs > 0 [m/s] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub vs: Option<f64>,
     /// LuGre Stribeck exponent beta > 0: g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta) (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub beta: Option<f64>,
     /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
-    #[arg(long, allow_hyphen_values = true, value_parser = flag_value::<f64>, help_heading = "Model")]
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub rho: Option<f64>,
 }
 
@@ -299,7 +299,7 @@ pub struct LoopArgs {
         long,
         value_name = "N",
         allow_hyphen_values = true,
-        value_parser = flag_value::<usize>,
+        value_parser = Whole(2),
         help_heading = "Output"
     )]
     pub samples: Option<usize>,

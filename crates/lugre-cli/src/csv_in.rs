@@ -12,7 +12,7 @@
 use anyhow::{bail, Context, Result};
 use std::io::Read;
 
-use crate::fmt::{excerpt, quoted};
+use crate::fmt::{excerpt, num, quoted};
 use std::path::Path;
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
@@ -218,8 +218,8 @@ impl<'c, R: Read> SampleReader<'c, R> {
                         if t <= prev {
                             bail!(
                                 "line {line}: times must be strictly increasing, t = {} follows t = {}",
-                                crate::fmt::exact(t),
-                                crate::fmt::exact(prev)
+                                num(t),
+                                num(prev)
                             );
                         }
                     }
@@ -562,7 +562,7 @@ mod tests {
             // Times as the shortest text that reads back, never hundreds of digits.
             (
                 b"t,u,F\n1e300,1,2\n1e299,1,2\n",
-                "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300",
+                "line 3: times must be strictly increasing, t = 1e299 follows t = 1e300",
             ),
             (b"u,F\n0,nan\n", "line 2: F = 'nan' is not a finite number"),
             (b"u,F\n0,abc\n", "line 2: F = 'abc' is not a number"),

@@ -26,9 +26,9 @@ use std::path::{Path, PathBuf};
 use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, ModelChoice, ModelKind};
 use crate::csv_in::{Columns, SampleReader};
-use crate::fmt::{exact, sig};
+use crate::fmt::{exact, num, sig};
 use crate::json_out::JsonOut;
-use crate::numbers::{flag_value, parse_list};
+use crate::numbers::{parse_list, Real, Whole};
 
 /// Rows of the cycle table printed before the rest is summarised (all of it is in --json and
 /// --csv).
@@ -70,7 +70,7 @@ pub struct CyclesArgs {
         long,
         value_name = "H",
         allow_hyphen_values = true,
-        value_parser = flag_value::<f64>,
+        value_parser = Real,
         help_heading = "Counting"
     )]
     pub gate: Option<f64>,
@@ -85,7 +85,7 @@ pub struct CyclesArgs {
         long,
         value_name = "X",
         allow_hyphen_values = true,
-        value_parser = flag_value::<f64>,
+        value_parser = Real,
         help_heading = "Energy"
     )]
     pub x0: Option<f64>,
@@ -106,7 +106,7 @@ pub struct CyclesArgs {
         long,
         value_name = "N",
         allow_hyphen_values = true,
-        value_parser = flag_value::<usize>,
+        value_parser = Whole(1),
         requires = "histogram",
         help_heading = "Output"
     )]
@@ -155,10 +155,11 @@ impl Source<'_> {
                     // Finite already (the reader checks).
                     if s.u.abs() > MAX_SAMPLE {
                         bail!(
-                            "{}: line {}: u = {:e} is too large (|u| must be at most {MAX_SAMPLE:e} so that ranges stay finite)",
+                            "{}: line {}: u = {} is too large (|u| must be at most {} so that ranges stay finite)",
                             name(),
                             reader.line(),
-                            s.u
+                            num(s.u),
+                            num(MAX_SAMPLE)
                         );
                     }
                     block.push(s.u);
@@ -233,9 +234,10 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
             // Finite already (parse_list checks).
             if let Some(k) = u.iter().position(|v| v.abs() > MAX_SAMPLE) {
                 bail!(
-                    "--values: item {} is {:e}, which is too large (|u| must be at most {MAX_SAMPLE:e})",
+                    "--values: item {} is {}, which is too large (|u| must be at most {})",
                     k + 1,
-                    u[k]
+                    num(u[k]),
+                    num(MAX_SAMPLE)
                 );
             }
             Source::Values(u)

@@ -25,9 +25,9 @@ use std::time::{Duration, Instant};
 use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, ModelKind};
 use crate::csv_in::{read_table, Columns};
-use crate::fmt::sig;
+use crate::fmt::{excerpt, quoted, sig};
 use crate::json_out::JsonOut;
-use crate::numbers::{flag_value, parse_number};
+use crate::numbers::{parse_number, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
 
 /// Vertical strokes in the residual figure (at most).
@@ -84,7 +84,7 @@ pub struct FitArgs {
         long,
         value_name = "N",
         allow_hyphen_values = true,
-        value_parser = flag_value::<usize>,
+        value_parser = Whole(1),
         help_heading = "Fit"
     )]
     pub starts: Option<usize>,
@@ -161,9 +161,6 @@ pub fn run(args: &FitArgs) -> Result<()> {
                 x0,
                 starts: args.starts.unwrap_or(FullOptions::default().starts),
             };
-            if options.starts == 0 {
-                bail!("--starts must be at least 1, got 0");
-            }
             let mut progress = Progress::new();
             let result = fit_full(&spec, t, &record.u, &record.f, &options, &mut |p| {
                 progress.update(p)
@@ -240,18 +237,22 @@ fn build_spec(args: &FitArgs) -> Result<FitSpec> {
         }
     }
     for name in names("--fix", args.fix.as_deref())? {
-        spec = spec.fix(name).map_err(|e| anyhow!("--fix: {e}"))?;
+        spec = spec
+            .fix(name)
+            .map_err(|e| anyhow!("--fix: {}", short_name(e)))?;
     }
     for name in names("--free", args.free.as_deref())? {
-        spec = spec.free(name).map_err(|e| anyhow!("--free: {e}"))?;
+        spec = spec
+            .free(name)
+            .map_err(|e| anyhow!("--free: {}", short_name(e)))?;
     }
     if let Some(text) = &args.bounds {
         for item in text.split(',') {
             let Some((name, range)) = item.split_once('=') else {
-                bail!("--bounds: '{}' is not NAME=LO:HI", item.trim());
+                bail!("--bounds: {} is not NAME=LO:HI", quoted(item.trim()));
             };
             let Some((lo, hi)) = range.split_once(':') else {
-                bail!("--bounds: '{}' is not NAME=LO:HI", item.trim());
+                bail!("--bounds: {} is not NAME=LO:HI", quoted(item.trim()));
             };
             let lo = parse_number("--bounds", 1, lo)?;
             let hi = match hi.trim().to_ascii_lowercase().as_str() {
@@ -260,10 +261,22 @@ fn build_spec(args: &FitArgs) -> Result<FitSpec> {
             };
             spec = spec
                 .bounds(name, lo, hi)
-                .map_err(|e| anyhow!("--bounds: {e}"))?;
+                .map_err(|e| anyhow!("--bounds: {}", short_name(e)))?;
         }
     }
     Ok(spec)
+}
+
+/// `e` with an unknown parameter's name cut short: it is the user's text, of any length.
+fn short_name(e: FitError) -> FitError {
+    match e {
+        FitError::UnknownParameter { name, model, known } => FitError::UnknownParameter {
+            name: excerpt(&name),
+            model,
+            known,
+        },
+        other => other,
+    }
 }
 
 /// The names of a comma-separated list (none for an absent flag).
@@ -273,7 +286,10 @@ fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
     };
     let items: Vec<&str> = text.split(',').map(str::trim).collect();
     if items.iter().any(|s| s.is_empty()) {
-        bail!("{flag}: empty name in '{text}' (expected names separated by commas)");
+        bail!(
+            "{flag}: empty name in {} (expected names separated by commas)",
+            quoted(text)
+        );
     }
     Ok(items)
 }

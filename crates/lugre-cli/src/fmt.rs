@@ -1,4 +1,9 @@
-//! Numbers for people (tables) and for machines (JSON, CSV: shortest round-trip repr).
+//! Numbers for people (tables), for machines (JSON, CSV: shortest round-trip repr) and for
+//! messages ([`num`], the core's formatter, so that the CLI's messages and the library's print
+//! a number the same way), and text quoted in messages ([`quoted`], [`excerpt`]).
+
+/// A number in a message: shortest round-trip, exponent form beyond 1e-5..1e16 (`1e299`).
+pub use lugre::error::num;
 
 /// `x` with up to `digits` significant digits, plain notation for moderate magnitudes.
 pub fn sig(x: f64, digits: usize) -> String {
@@ -59,6 +64,25 @@ pub fn excerpt(text: &str) -> String {
     }
 }
 
+/// A message written elsewhere (clap's, which quote the command line whole: `unexpected
+/// argument '...' found`) with every '-quoted text cut short as [`quoted`] cuts it.
+pub fn shorten_quoted(message: &str) -> String {
+    let parts: Vec<&str> = message.split('\'').collect();
+    let mut out = String::with_capacity(message.len().min(1024));
+    for (i, part) in parts.iter().enumerate() {
+        if i % 2 == 0 {
+            out.push_str(part);
+        } else if i + 1 < parts.len() {
+            out.push_str(&quoted(part));
+        } else {
+            // An unpaired quote: the rest as it is.
+            out.push('\'');
+            out.push_str(part);
+        }
+    }
+    out
+}
+
 /// `text` whole, or its start and its length in characters.
 fn shortened(text: &str) -> (String, Option<usize>) {
     let n = text.chars().count();
@@ -109,6 +133,16 @@ mod tests {
             quoted(&"µ".repeat(41)),
             format!("'{}...' (41 characters)", "µ".repeat(32))
         );
+        let long = "x".repeat(1000);
+        assert_eq!(
+            shorten_quoted(&format!("unexpected argument '{long}' found; 'a' b")),
+            format!(
+                "unexpected argument '{}...' (1000 characters) found; 'a' b",
+                "x".repeat(32)
+            )
+        );
+        assert_eq!(shorten_quoted("it's"), "it's");
+        assert_eq!(shorten_quoted("no quotes"), "no quotes");
         assert_eq!(excerpt("t,u"), "t,u");
         assert_eq!(
             excerpt(&"x,".repeat(30)),

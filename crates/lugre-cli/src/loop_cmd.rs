@@ -29,9 +29,6 @@ pub fn run(args: &LoopArgs) -> Result<()> {
         None => None,
     };
     if let Some(n) = args.samples {
-        if n < 2 {
-            bail!("--samples must be at least 2 (both ends of the period are included), got {n}");
-        }
         if n > MAX_SAMPLES {
             bail!("--samples must be at most {MAX_SAMPLES}, got {n}");
         }

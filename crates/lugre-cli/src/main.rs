@@ -83,6 +83,8 @@ fn clap_error(e: clap::Error) -> ExitCode {
                 .collect();
             let msg = head.join(" ");
             let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
+            // clap quotes a bad argument whole, however long.
+            let msg = lugre_cli::fmt::shorten_quoted(msg);
             let _ = writeln!(
                 std::io::stderr(),
                 "lugre: error: {msg} (see 'lugre --help')"

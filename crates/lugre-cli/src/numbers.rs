@@ -1,6 +1,12 @@
 //! Comma-separated number lists as given on the command line (`--turning-points 0,-1,2.5`).
 
 use anyhow::{bail, Result};
+use clap::builder::TypedValueParser;
+use clap::error::{Error, ErrorKind};
+use clap::{Arg, Command};
+use std::ffi::OsStr;
+
+use crate::fmt::quoted;
 
 /// Parses `a,b,c` into finite numbers, naming the flag and the offending item.
 pub fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
@@ -14,7 +20,8 @@ pub fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
         .collect()
 }
 
-/// One finite number; `position` is 1-based for messages.
+/// One finite number; `position` is 1-based for messages, and the item is quoted short (a
+/// list may run to megabytes).
 pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
     let item = item.trim();
     if item.is_empty() {
@@ -22,23 +29,95 @@ pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
     }
     match item.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => bail!("{flag}: item {position} is '{item}', which is not a finite number"),
-        Err(_) => bail!("{flag}: item {position} is '{item}', which is not a number"),
+        Ok(_) => bail!(
+            "{flag}: item {position} is {}, which is not a finite number",
+            quoted(item)
+        ),
+        Err(_) => bail!(
+            "{flag}: item {position} is {}, which is not a number",
+            quoted(item)
+        ),
     }
 }
 
-/// The value of a numeric flag that takes values starting with '-' (`--fc -inf`, clap's
-/// `allow_hyphen_values`): a flag in its place (`--fc --json`, the value left out) is named as
-/// one, not read as a bad number.
-pub fn flag_value<T>(text: &str) -> Result<T, String>
-where
-    T: std::str::FromStr,
-    T::Err: std::fmt::Display,
-{
-    if text.len() > 2 && text.starts_with("--") {
-        return Err("expected a value, found a flag".into());
+/// The value parser of a flag that takes one finite number (`--fc`, `--gate`): values starting
+/// with '-' are numbers (`--fc -0.5`, with clap's `allow_hyphen_values`), and anything else is
+/// named with the flag in one sentence: `--fc expects a number, got '--'`. The model or the
+/// command judges the number itself (positive, in range, ...).
+#[derive(Clone, Copy, Debug)]
+pub struct Real;
+
+/// The value parser of a flag that takes a whole number of at least `.0` (`--samples`,
+/// `--bins`): `--samples must be a whole number >= 2, got -1`.
+#[derive(Clone, Copy, Debug)]
+pub struct Whole(pub usize);
+
+impl TypedValueParser for Real {
+    type Value = f64;
+
+    fn parse_ref(&self, _: &Command, arg: Option<&Arg>, value: &OsStr) -> Result<f64, Error> {
+        let flag = flag_name(arg);
+        let text = value.to_string_lossy();
+        match text.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            Ok(_) => Err(invalid(format!(
+                "{flag} expects a finite number, {}",
+                got(&text)
+            ))),
+            Err(_) => Err(invalid(format!("{flag} expects a number, {}", got(&text)))),
+        }
     }
-    text.parse::<T>().map_err(|e| e.to_string())
+}
+
+impl TypedValueParser for Whole {
+    type Value = usize;
+
+    fn parse_ref(&self, _: &Command, arg: Option<&Arg>, value: &OsStr) -> Result<usize, Error> {
+        let flag = flag_name(arg);
+        let text = value.to_string_lossy();
+        match text.trim().parse::<usize>() {
+            Ok(n) if n >= self.0 && !is_flag(&text) => Ok(n),
+            _ => {
+                // A whole number out of range is shown as such; anything else quoted.
+                let got = match text.trim().parse::<i128>() {
+                    Ok(n) => format!("got {n}"),
+                    Err(_) => got(&text),
+                };
+                Err(invalid(format!(
+                    "{flag} must be a whole number >= {}, {got}",
+                    self.0
+                )))
+            }
+        }
+    }
+}
+
+/// A flag in the value's place (`--fc --json`: the value left out), not `--` alone nor a
+/// negative number.
+fn is_flag(text: &str) -> bool {
+    text.len() > 2 && text.starts_with("--")
+}
+
+/// `got '<text>'`, short, or the flag found where the value belongs.
+fn got(text: &str) -> String {
+    if is_flag(text) {
+        format!("got the flag {} (the value is missing)", quoted(text))
+    } else {
+        format!("got {}", quoted(text))
+    }
+}
+
+/// `--name` of the flag being parsed.
+fn flag_name(arg: Option<&Arg>) -> String {
+    match arg.and_then(Arg::get_long) {
+        Some(long) => format!("--{long}"),
+        None => "the value".into(),
+    }
+}
+
+/// A clap error that prints as `message` alone.
+fn invalid(message: String) -> Error {
+    Error::raw(ErrorKind::ValueValidation, message)
 }
 
 #[cfg(test)]
@@ -57,15 +136,48 @@ mod tests {
         }
     }
 
+    fn real(text: &str) -> Result<f64, String> {
+        let arg = Arg::new("fc").long("fc");
+        Real.parse_ref(&Command::new("t"), Some(&arg), OsStr::new(text))
+            .map_err(|e| e.to_string())
+    }
+
+    fn whole(min: usize, text: &str) -> Result<usize, String> {
+        let arg = Arg::new("samples").long("samples");
+        Whole(min)
+            .parse_ref(&Command::new("t"), Some(&arg), OsStr::new(text))
+            .map_err(|e| e.to_string())
+    }
+
     #[test]
     fn flag_values() {
-        assert_eq!(flag_value::<f64>("-inf"), Ok(f64::NEG_INFINITY));
-        assert_eq!(flag_value::<f64>("-0.5"), Ok(-0.5));
-        assert!(flag_value::<usize>("-1").is_err());
-        assert_eq!(
-            flag_value::<f64>("--json"),
-            Err("expected a value, found a flag".to_string())
+        assert_eq!(real("-0.5"), Ok(-0.5));
+        assert_eq!(real(" 2 "), Ok(2.0));
+        let e = real("--").unwrap_err();
+        assert!(e.contains("--fc expects a number, got '--'"), "{e}");
+        let e = real("--json").unwrap_err();
+        assert!(
+            e.contains("--fc expects a number, got the flag '--json' (the value is missing)"),
+            "{e}"
         );
-        assert!(flag_value::<f64>("--").is_err());
+        for text in ["-inf", "NaN", "1e999"] {
+            let e = real(text).unwrap_err();
+            assert!(
+                e.contains(&format!("--fc expects a finite number, got '{text}'")),
+                "{e}"
+            );
+        }
+        let e = real(&"x".repeat(100_000)).unwrap_err();
+        assert!(e.contains("(100000 characters)") && e.len() < 200, "{e}");
+        assert_eq!(whole(2, "2"), Ok(2));
+        for (min, text, want) in [
+            (2, "-1", "--samples must be a whole number >= 2, got -1"),
+            (2, "1", "--samples must be a whole number >= 2, got 1"),
+            (1, "2.5", "--samples must be a whole number >= 1, got '2.5'"),
+            (1, "--json", "got the flag '--json' (the value is missing)"),
+        ] {
+            let e = whole(min, text).unwrap_err();
+            assert!(e.contains(want), "{e}");
+        }
     }
 }

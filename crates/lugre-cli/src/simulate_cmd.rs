@@ -17,9 +17,9 @@ use std::time::{Duration, Instant};
 
 use crate::atomic::write_atomic;
 use crate::cli::{ModelArgs, PeriodicInputArgs};
-use crate::fmt::sig;
+use crate::fmt::{quoted, sig};
 use crate::json_out::JsonOut;
-use crate::numbers::{flag_value, parse_list};
+use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
 /// Output times per period when none are asked for (piecewise-linear inputs also get their
@@ -104,7 +104,7 @@ pub struct SimulateArgs {
         long,
         value_name = "N",
         allow_hyphen_values = true,
-        value_parser = flag_value::<usize>,
+        value_parser = Whole(1),
         help_heading = "Output"
     )]
     pub samples_per_period: Option<usize>,
@@ -160,7 +160,6 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     }
     let times: Option<Vec<f64>> = match (&args.times, args.samples_per_period) {
         (Some(text), _) => Some(parse_list("--times", text)?),
-        (None, Some(0)) => bail!("--samples-per-period must be at least 1, got 0"),
         (None, Some(n)) => {
             check_rows((periods as usize).saturating_mul(n).saturating_add(1))?;
             Some(uniform_times(start, period, periods, n))
@@ -405,8 +404,8 @@ fn parse_scalar(flag: &str, text: &str) -> Result<f64> {
     let t = text.trim();
     match t.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => bail!("{flag} must be a finite number, got '{t}'"),
-        Err(_) => bail!("{flag} must be a number, got '{t}'"),
+        Ok(_) => bail!("{flag} must be a finite number, got {}", quoted(t)),
+        Err(_) => bail!("{flag} must be a number, got {}", quoted(t)),
     }
 }
 
@@ -417,7 +416,7 @@ fn parse_gamma(text: &str) -> Result<Gamma> {
         "inf" | "+inf" | "infinity" | "+infinity" => f64::INFINITY,
         _ => match t.parse::<f64>() {
             Ok(v) if v.is_finite() => v,
-            _ => bail!("--gamma must be a number > 0 or 'inf', got '{t}'"),
+            _ => bail!("--gamma must be a number > 0 or 'inf', got {}", quoted(t)),
         },
     };
     Gamma::new(value).map_err(|e| anyhow!("--gamma: {e}"))
@@ -429,8 +428,9 @@ fn parse_periods(text: &str) -> Result<u32> {
         Ok(k) if k >= 1 && k <= i64::from(u32::MAX) => Ok(k as u32),
         Ok(k) if k < 1 => bail!("--periods must be at least 1, got {k}"),
         _ => bail!(
-            "--periods must be a whole number from 1 to {}, got '{t}'",
-            u32::MAX
+            "--periods must be a whole number from 1 to {}, got {}",
+            u32::MAX,
+            quoted(t)
         ),
     }
 }

@@ -182,22 +182,22 @@ fn every_invalid_model_parameter() {
         (&["--sigma0", "-1"], "sigma0 must be > 0, got -1"),
         (
             &["--sigma0", "inf"],
-            "sigma0 must be a finite number, got inf",
+            "--sigma0 expects a finite number, got 'inf'",
         ),
         (&["--sigma1", "-1"], "sigma1 must be >= 0, got -1"),
         (
             &["--sigma1", "inf"],
-            "sigma1 must be a finite number, got inf",
+            "--sigma1 expects a finite number, got 'inf'",
         ),
         (&["--sigma2", "-0.5"], "sigma2 must be >= 0, got -0.5"),
         (
             &["--sigma2", "nan"],
-            "sigma2 must be a finite number, got NaN",
+            "--sigma2 expects a finite number, got 'nan'",
         ),
         (&["--fc", "0"], "fc must be > 0, got 0"),
-        (&["--fc=-inf"], "fc must be a finite number, got -inf"),
+        (&["--fc=-inf"], "--fc expects a finite number, got '-inf'"),
         (&["--fs", "0"], "fs must be > 0, got 0"),
-        (&["--fs", "nan"], "fs must be a finite number, got NaN"),
+        (&["--fs", "nan"], "--fs expects a finite number, got 'nan'"),
         (&["--vs", "0"], "vs must be > 0, got 0"),
         (&["--vs", "-1"], "vs must be > 0, got -1"),
         // A subnormal vs: 1 / vs overflows, so g(0) would be 0 * inf.
@@ -206,7 +206,10 @@ fn every_invalid_model_parameter() {
             "1 / vs must be a finite number, got inf",
         ),
         (&["--beta", "0"], "beta must be > 0, got 0"),
-        (&["--beta", "inf"], "beta must be a finite number, got inf"),
+        (
+            &["--beta", "1e999"],
+            "--beta expects a finite number, got '1e999'",
+        ),
         (&["--model", "dahl", "--rho", "0"], "rho must be > 0, got 0"),
         (
             &["--model", "dahl", "--rho", "1e200", "--fc", "1e200"],
@@ -446,7 +449,7 @@ fn csv_files_good_and_bad() {
     for cmd in ["loop", "simulate", "cycles"] {
         rejects(
             &[cmd, "--input", &path],
-            "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300",
+            "line 3: times must be strictly increasing, t = 1e299 follows t = 1e300",
         );
     }
 }
@@ -553,7 +556,7 @@ fn fit_csv_files_good_and_bad() {
         (
             "huge-times.csv",
             b"t,u,F\n1e300,0,0\n1e299,1,1\n".to_vec(),
-            "line 3: times must be strictly increasing, t = 1e+299 follows t = 1e+300".into(),
+            "line 3: times must be strictly increasing, t = 1e299 follows t = 1e300".into(),
         ),
         (
             "one-long-line.csv",
@@ -654,16 +657,18 @@ fn numeric_flags_take_values_starting_with_a_minus() {
     ];
     for cmd in commands {
         for (head, flag, negative) in model {
-            let name = &flag[2..];
             for (value, want) in [
                 ("-1", format!("{negative} -1")),
                 ("-0.5", format!("{negative} -0.5")),
                 ("-.5", format!("{negative} -0.5")),
                 ("-1e-3", format!("{negative} -0.001")),
-                ("-inf", format!("{name} must be a finite number, got -inf")),
+                (
+                    "-inf",
+                    format!("{flag} expects a finite number, got '-inf'"),
+                ),
                 (
                     "-Infinity",
-                    format!("{name} must be a finite number, got -inf"),
+                    format!("{flag} expects a finite number, got '-Infinity'"),
                 ),
             ] {
                 let mut args = cmd.to_vec();
@@ -701,11 +706,11 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         ),
         (
             &["simulate", "--sine", "1,1", "--samples-per-period", "-5"],
-            "invalid value '-5' for '--samples-per-period <N>': invalid digit",
+            "--samples-per-period must be a whole number >= 1, got -5",
         ),
         (
             &["loop", "--turning-points", "0,1", "--samples", "-1"],
-            "invalid value '-1' for '--samples <N>': invalid digit",
+            "--samples must be a whole number >= 2, got -1",
         ),
         (
             &["cycles", "--values", "0,2,1", "--gate", "-1"],
@@ -713,7 +718,7 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         ),
         (
             &["cycles", "--values", "0,2,1", "--gate", "-inf"],
-            "--gate: the gate must be a finite number >= 0, got -inf",
+            "--gate expects a finite number, got '-inf'",
         ),
         (
             &["cycles", "--values", "0,2,1", "--x0", "-1e300"],
@@ -721,11 +726,11 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         ),
         (
             &["cycles", "--values", "0,2,1", "--histogram", "--bins", "-1"],
-            "invalid value '-1' for '--bins <N>': invalid digit",
+            "--bins must be a whole number >= 1, got -1",
         ),
         (
             &["fit", "--input", &data, "--fit", "full", "--starts", "-1"],
-            "invalid value '-1' for '--starts <N>': invalid digit",
+            "--starts must be a whole number >= 1, got -1",
         ),
         (
             &["fit", "--input", &timed, "--fit", "full", "--x0", "-inf"],
@@ -754,36 +759,141 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         let bogus = args.iter().rev().find(|a| a.starts_with("--")).unwrap();
         rejects(args, &format!("unexpected argument '{bogus}' found"));
     }
-    // A flag where the value belongs is named, not read as a number; the value missing at
-    // the end is said so.
-    for (args, flag) in [
+    // A flag where the value belongs is named, not read as a number; `--` is not a number
+    // either; the value missing at the end is said so.
+    for (args, want) in [
         (
             &["loop", "--turning-points", "0,1", "--fc", "--json"][..],
-            "--fc <FC>",
+            "--fc expects a number, got the flag '--json' (the value is missing)",
         ),
         (
             &["loop", "--turning-points", "0,1", "--sigma0", "--bogus"],
-            "--sigma0 <SIGMA0>",
+            "--sigma0 expects a number, got the flag '--bogus' (the value is missing)",
         ),
         (
             &["loop", "--turning-points", "0,1", "--samples", "--json"],
-            "--samples <N>",
+            "--samples must be a whole number >= 2, got the flag '--json' (the value is missing)",
         ),
         (
             &["cycles", "--values", "0,1", "--gate", "--json"],
-            "--gate <H>",
+            "--gate expects a number, got the flag '--json' (the value is missing)",
+        ),
+        (
+            &["loop", "--turning-points", "0,1", "--fc", "--"],
+            "--fc expects a number, got '--'",
+        ),
+        (
+            &["cycles", "--values", "0,1", "--histogram", "--bins", "--"],
+            "--bins must be a whole number >= 1, got '--'",
         ),
     ] {
-        let next = args[args.len() - 1];
-        rejects(
-            args,
-            &format!("invalid value '{next}' for '{flag}': expected a value, found a flag"),
-        );
+        rejects(args, want);
     }
     rejects(
         &["loop", "--turning-points", "0,1", "--fc"],
         "a value is required for '--fc <FC>' but none was supplied",
     );
+}
+
+/// A 100 kB argument in any flag, list item or position is echoed as a short excerpt (its
+/// start, '...' and its length), as a bad CSV cell is: one short line, never the whole text.
+#[test]
+fn huge_arguments_are_quoted_short() {
+    let dir = TempDir::new("catalogue-huge-args");
+    let data = slow_loop_data(&dir);
+    let timed = dir.file("timed.csv", "t,u,F\n0,0,0\n1,1,1\n2,0,0\n");
+    let huge = "x".repeat(100_000);
+    let digits = format!("-{}", "9".repeat(100_000));
+    let list = format!("0,{huge},1");
+    let pair = format!("sigma0={huge}");
+    let empty_name = format!("{huge},,fs");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["loop", "--turning-points", "0,1", "--fc", &huge],
+            "--fc expects a number, got 'xxxx",
+        ),
+        (
+            vec!["loop", "--turning-points", "0,1", "--fc", &digits],
+            "--fc expects a finite number, got '-999",
+        ),
+        (
+            vec!["loop", "--turning-points", "0,1", "--samples", &huge],
+            "--samples must be a whole number >= 2, got 'xxxx",
+        ),
+        (
+            vec!["loop", "--turning-points", "0,1", "--samples", &digits],
+            "--samples must be a whole number >= 2, got '-999",
+        ),
+        (
+            vec!["cycles", "--values", "0,2,1", "--gate", &huge],
+            "--gate expects a number",
+        ),
+        (
+            vec!["loop", "--turning-points", &list],
+            "--turning-points: item 2 is 'xxxx",
+        ),
+        (
+            vec!["cycles", "--values", &list],
+            "--values: item 2 is 'xxxx",
+        ),
+        (
+            vec!["simulate", "--sine", "1,2", "--x0", &huge],
+            "--x0 must be a number, got 'xxxx",
+        ),
+        (
+            vec!["simulate", "--sine", "1,2", "--x0", &digits],
+            "--x0 must be a finite number, got '-999",
+        ),
+        (
+            vec!["simulate", "--sine", "1,2", "--gamma", &huge],
+            "--gamma must be a number > 0 or 'inf', got 'xxxx",
+        ),
+        (
+            vec!["simulate", "--sine", "1,2", "--periods", &huge],
+            "--periods must be a whole number from 1 to 4294967295, got 'xxxx",
+        ),
+        (
+            vec!["simulate", "--sine", "1,2", "--tol", &huge],
+            "--tol must be a number, got 'xxxx",
+        ),
+        (
+            vec!["fit", "--input", &timed, "--fit", "full", "--x0", &huge],
+            "--x0: item 1 is 'xxxx",
+        ),
+        (
+            vec!["fit", "--input", &data, "--bounds", &huge],
+            "--bounds: 'xxxx",
+        ),
+        (
+            vec!["fit", "--input", &data, "--bounds", &pair],
+            "--bounds: 'sigma0=xxxx",
+        ),
+        (
+            vec!["fit", "--input", &data, "--fix", &huge],
+            "--fix: unknown parameter 'xxxx",
+        ),
+        (
+            vec!["fit", "--input", &data, "--free", &huge],
+            "--free: unknown parameter 'xxxx",
+        ),
+        (
+            vec!["fit", "--input", &data, "--fix", &empty_name],
+            "--fix: empty name in 'xxxx",
+        ),
+        (
+            vec!["loop", "--turning-points", "0,1", &huge],
+            "unexpected argument 'xxxx",
+        ),
+        (
+            vec!["loop", "--turning-points", "0,1", "--model", &huge],
+            "invalid value 'xxxx",
+        ),
+    ];
+    for (args, want) in cases {
+        let line = rejects(&args, want);
+        assert!(line.len() < 300, "{want}: {} bytes", line.len());
+        assert!(line.contains(" characters)"), "{line}");
+    }
 }
 
 /// Every output flag pointed at a path that cannot be written (under a regular file, or an
@@ -1264,11 +1374,11 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--gate", "inf"],
-            "--gate: the gate must be a finite number >= 0, got inf",
+            "--gate expects a finite number, got 'inf'",
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--x0", "nan"],
-            "--x0: x0 must satisfy |sigma0 x0| <= g(0)",
+            "--x0 expects a finite number, got 'nan'",
         ),
         (
             vec![
@@ -1287,11 +1397,34 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--histogram", "--bins", "-3"],
-            "invalid value '-3' for '--bins <N>': invalid digit",
+            "--bins must be a whole number >= 1, got -3",
+        ),
+        (
+            vec!["cycles", "--values", "1,2,1", "--histogram", "--bins", "0"],
+            "--bins must be a whole number >= 1, got 0",
+        ),
+        (
+            vec![
+                "cycles",
+                "--values",
+                "1,2,1",
+                "--histogram",
+                "--bins",
+                "2.5",
+            ],
+            "--bins must be a whole number >= 1, got '2.5'",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--samples", "-2"],
-            "invalid value '-2' for '--samples <N>': invalid digit",
+            "--samples must be a whole number >= 2, got -2",
+        ),
+        (
+            vec!["simulate", "--sine", "1,1", "--samples-per-period", "0"],
+            "--samples-per-period must be a whole number >= 1, got 0",
+        ),
+        (
+            vec!["fit", "--input", &data, "--fit", "full", "--starts", "0"],
+            "--starts must be a whole number >= 1, got 0",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--plot", "x.pdf"],
@@ -1331,11 +1464,11 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--sigma0", "abc"],
-            "invalid value 'abc' for '--sigma0 <SIGMA0>'",
+            "--sigma0 expects a number, got 'abc'",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--fs", ""],
-            "invalid value '' for '--fs <FS>'",
+            "--fs expects a number, got ''",
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--model", "coulomb"],

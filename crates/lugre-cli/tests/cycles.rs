@@ -453,7 +453,7 @@ fn bad_input_is_one_line_and_status_2() {
     rejects(&["cycles", "--values", ASTM, "--sigma0", "-1"], "sigma0");
     rejects(
         &["cycles", "--values", ASTM, "--histogram", "--bins", "0"],
-        "--bins must be between 1 and 1000",
+        "--bins must be a whole number >= 1, got 0",
     );
     rejects(
         &["cycles", "--values", ASTM, "--input", &empty],

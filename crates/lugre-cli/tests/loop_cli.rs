@@ -271,7 +271,7 @@ fn bad_inputs_are_one_line_and_status_2() {
     );
     rejects(
         &["loop", "--sigma1", "nan", "--turning-points", "0,1"],
-        "sigma1 must be a finite number",
+        "--sigma1 expects a finite number, got 'nan'",
     );
     rejects(
         &["loop", "--rho", "2", "--turning-points", "0,1"],
@@ -301,7 +301,7 @@ fn bad_inputs_are_one_line_and_status_2() {
     );
     rejects(
         &["loop", "--turning-points", "0,1", "--samples", "1"],
-        "--samples must be at least 2",
+        "--samples must be a whole number >= 2, got 1",
     );
     rejects(
         &["loop", "--input", "/nonexistent/x.csv"],

@@ -334,7 +334,7 @@ fn bad_requests_are_one_line_and_exit_2() {
         ),
         (
             with(&[&["--samples-per-period", "0"][..], &bimodal].concat()),
-            "at least 1",
+            "--samples-per-period must be a whole number >= 1, got 0",
         ),
         (
             with(&[&["--times", "1", "--samples-per-period", "3"][..], &bimodal].concat()),

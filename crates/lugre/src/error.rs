@@ -3,9 +3,18 @@
 
 use thiserror::Error;
 
-/// `x` as a message shows it: as Rust prints it from 1e-5 to 1e16, in exponent notation
-/// beyond (where the plain form runs to hundreds of digits: `1e-300` rather than `0.000...1`).
-pub(crate) fn num(x: f64) -> String {
+/// `x` as every message of this crate and its front ends shows a number: the shortest text
+/// that parses back to exactly `x`, plain from 1e-5 to 1e16 (`0.25`, `-3`, `123456`) and in
+/// exponent notation beyond (`1e299`, `-2.5e-300` rather than hundreds of digits; no `+`).
+///
+/// ```
+/// use lugre::error::num;
+/// assert_eq!(num(0.25), "0.25");
+/// assert_eq!(num(-3.0), "-3");
+/// assert_eq!(num(1e299), "1e299");
+/// assert_eq!(num(-2.5e-300), "-2.5e-300");
+/// ```
+pub fn num(x: f64) -> String {
     if x == 0.0 || !x.is_finite() || (1e-5..1e16).contains(&x.abs()) {
         format!("{x}")
     } else {
@@ -72,7 +81,7 @@ pub enum HistoryError {
     TooShort { samples: u64 },
     #[error("u[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite { index: u64, value: f64 },
-    #[error("u[{index}] = {value:e} is too large: |u| must be at most {limit:e} so that ranges and means stay finite", limit = f64::MAX / 2.0)]
+    #[error("u[{index}] = {value} is too large: |u| must be at most {limit} so that ranges and means stay finite", value = num(*.value), limit = num(f64::MAX / 2.0))]
     TooLarge { index: u64, value: f64 },
     #[error("the gate must be a finite number >= 0, got {value}", value = num(*.value))]
     BadGate { value: f64 },
@@ -191,30 +200,124 @@ fn names_of(p: &[Unidentified]) -> String {
 
 fn reasons(p: &[Unidentified]) -> String {
     p.iter()
-        .map(|u| match u.why {
-            Why::NoEffect { sensitivity } => format!(
-                "{} = {:.4e} has no effect on the output (relative sensitivity {:.1e})",
-                u.name, u.value, sensitivity
-            ),
-            Why::Collinear { condition, limit } => format!(
-                "{} = {:.4e} acts nearly as a combination of the others (condition number {:.2e} of the scaled normal matrix, limit {:.0e})",
-                u.name, u.value, condition, limit
-            ),
-            Why::WideInterval {
-                stderr,
-                relative_half_width,
-            } => format!(
-                "{} = {:.4e} with standard error {:.2e}: its 95 % interval reaches 0 (half-width {:.3}x the value)",
-                u.name, u.value, stderr, relative_half_width
-            ),
-        })
+        .map(|u| format!("{} = {:.4e} {}", u.name, u.value, why(&u.why)))
         .collect::<Vec<_>>()
         .join("; ")
 }
 
+/// Why a parameter is not identified, in words: every number in it is finite (an exactly
+/// singular problem has an infinite condition number, which is said rather than printed).
+fn why(why: &Why) -> String {
+    match *why {
+        Why::NoEffect { sensitivity } if sensitivity.is_finite() => format!(
+            "has no effect on the output (relative sensitivity {sensitivity:.1e})"
+        ),
+        Why::NoEffect { .. } => "has no effect on the output".into(),
+        Why::Collinear { condition, limit } if condition.is_finite() => format!(
+            "acts nearly as a combination of the others (condition number {condition:.2e} of the scaled normal matrix, limit {limit:.0e})"
+        ),
+        Why::Collinear { .. } => "acts as an exact combination of the others: the parameters cannot be identified from these data (the problem is singular)".into(),
+        Why::WideInterval {
+            stderr,
+            relative_half_width,
+        } if stderr.is_finite() && relative_half_width.is_finite() => format!(
+            "with standard error {stderr:.2e}: its 95 % interval reaches 0 (half-width {relative_half_width:.3}x the value)"
+        ),
+        Why::WideInterval { stderr, .. } if stderr.is_finite() => format!(
+            "with standard error {stderr:.2e}: its 95 % interval reaches 0 (the estimate is 0)"
+        ),
+        Why::WideInterval { .. } => {
+            "has no finite standard error: it cannot be identified from these data (the problem is singular)".into()
+        }
+    }
+}
+
 fn list(best: &[(&'static str, f64)]) -> String {
     best.iter()
-        .map(|(n, v)| format!("{n} = {v:e}"))
+        .map(|(n, v)| format!("{n} = {}", num(*v)))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message(why: Why) -> String {
+        FitError::Unidentifiable {
+            parameters: vec![Unidentified {
+                name: "sigma1",
+                value: 0.5,
+                why,
+            }],
+        }
+        .to_string()
+    }
+
+    /// Not a word "inf" or "NaN" in any reason, whatever the statistics are.
+    fn finite_words(text: &str) -> bool {
+        !text
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .any(|w| ["nan", "inf", "infinity"].contains(&w.to_ascii_lowercase().as_str()))
+    }
+
+    #[test]
+    fn numbers_in_messages() {
+        assert_eq!(num(0.0), "0");
+        assert_eq!(num(-0.001), "-0.001");
+        assert_eq!(num(123456.0), "123456");
+        assert_eq!(num(1e299), "1e299");
+        assert_eq!(num(-2.5e-300), "-2.5e-300");
+        assert_eq!(num(0.1 + 0.2), "0.30000000000000004");
+        for x in [1e299, 1.0 / 3.0, -7e-6, 1e16, 9.999e15] {
+            assert_eq!(num(x).parse::<f64>().unwrap(), x);
+        }
+    }
+
+    #[test]
+    fn a_singular_problem_is_said_in_words() {
+        let finite = message(Why::Collinear {
+            condition: 3.5e12,
+            limit: 1e10,
+        });
+        assert!(finite.contains("condition number 3.50e12"), "{finite}");
+        for condition in [f64::INFINITY, f64::NAN] {
+            let e = message(Why::Collinear {
+                condition,
+                limit: 1e10,
+            });
+            assert!(finite_words(&e), "{e}");
+            assert!(e.contains("(the problem is singular)"), "{e}");
+            assert!(e.starts_with("sigma1 cannot be identified from this data: sigma1 = 5.0000e-1 acts as an exact combination"), "{e}");
+        }
+        for (stderr, relative_half_width) in [
+            (f64::INFINITY, f64::INFINITY),
+            (f64::NAN, f64::NAN),
+            (0.1, f64::NAN),
+            (0.1, f64::INFINITY),
+        ] {
+            let e = message(Why::WideInterval {
+                stderr,
+                relative_half_width,
+            });
+            assert!(finite_words(&e), "{e}");
+        }
+        let e = message(Why::NoEffect {
+            sensitivity: f64::NAN,
+        });
+        assert!(
+            finite_words(&e) && e.ends_with("has no effect on the output"),
+            "{e}"
+        );
+        let e = message(Why::WideInterval {
+            stderr: 0.25,
+            relative_half_width: 2.0,
+        });
+        assert!(
+            e.ends_with(
+                "standard error 2.50e-1: its 95 % interval reaches 0 (half-width 2.000x the value)"
+            ),
+            "{e}"
+        );
+    }
 }

@@ -304,7 +304,19 @@ mod tests {
             e.to_string().starts_with("a, b cannot be identified"),
             "{e}"
         );
-        assert_eq!(why(e), vec![("a", collinear), ("b", collinear)]);
+        assert_eq!(why(e.clone()), vec![("a", collinear), ("b", collinear)]);
+        // Equal columns: the scaled normal matrix is exactly singular, its condition number
+        // infinite; the message says so in words.
+        match &e {
+            FitError::Unidentifiable { parameters } => assert!(
+                matches!(parameters[0].why, Why::Collinear { condition, .. } if condition == f64::INFINITY),
+                "{e}"
+            ),
+            other => panic!("{other}"),
+        }
+        let text = e.to_string();
+        assert!(text.contains("(the problem is singular)"), "{text}");
+        assert!(!text.contains("inf"), "{text}");
         // A parameter driven to 0, and another that noise swamps: both named.
         let jac = DMatrix::from_fn(10, 2, |i, j| if j == 0 { 1e-3 } else { i as f64 });
         let e = uncertainty(&jac, &["a", "b"], &[1.0, 0.0], 1.0, 1.0).unwrap_err();
