@@ -182,22 +182,22 @@ fn every_invalid_model_parameter() {
         (&["--sigma0", "-1"], "sigma0 must be > 0, got -1"),
         (
             &["--sigma0", "inf"],
-            "--sigma0 expects a finite number, got 'inf'",
+            "sigma0 must be a finite number, got inf",
         ),
         (&["--sigma1", "-1"], "sigma1 must be >= 0, got -1"),
         (
             &["--sigma1", "inf"],
-            "--sigma1 expects a finite number, got 'inf'",
+            "sigma1 must be a finite number, got inf",
         ),
         (&["--sigma2", "-0.5"], "sigma2 must be >= 0, got -0.5"),
         (
             &["--sigma2", "nan"],
-            "--sigma2 expects a finite number, got 'nan'",
+            "sigma2 must be a finite number, got NaN",
         ),
         (&["--fc", "0"], "fc must be > 0, got 0"),
-        (&["--fc=-inf"], "--fc expects a finite number, got '-inf'"),
+        (&["--fc=-inf"], "fc must be a finite number, got -inf"),
         (&["--fs", "0"], "fs must be > 0, got 0"),
-        (&["--fs", "nan"], "--fs expects a finite number, got 'nan'"),
+        (&["--fs", "nan"], "fs must be a finite number, got NaN"),
         (&["--vs", "0"], "vs must be > 0, got 0"),
         (&["--vs", "-1"], "vs must be > 0, got -1"),
         // A subnormal vs: 1 / vs overflows, so g(0) would be 0 * inf.
@@ -657,18 +657,20 @@ fn numeric_flags_take_values_starting_with_a_minus() {
     ];
     for cmd in commands {
         for (head, flag, negative) in model {
+            let name = &flag[2..];
             for (value, want) in [
                 ("-1", format!("{negative} -1")),
                 ("-0.5", format!("{negative} -0.5")),
                 ("-.5", format!("{negative} -0.5")),
                 ("-1e-3", format!("{negative} -0.001")),
-                (
-                    "-inf",
-                    format!("{flag} expects a finite number, got '-inf'"),
-                ),
+                ("-inf", format!("{name} must be a finite number, got -inf")),
                 (
                     "-Infinity",
-                    format!("{flag} expects a finite number, got '-Infinity'"),
+                    format!("{name} must be a finite number, got -inf"),
+                ),
+                (
+                    "-1e999",
+                    format!("{flag} expects a finite number, got '-1e999'"),
                 ),
             ] {
                 let mut args = cmd.to_vec();
@@ -718,7 +720,7 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         ),
         (
             &["cycles", "--values", "0,2,1", "--gate", "-inf"],
-            "--gate expects a finite number, got '-inf'",
+            "--gate: the gate must be a finite number >= 0, got -inf",
         ),
         (
             &["cycles", "--values", "0,2,1", "--x0", "-1e300"],
@@ -1374,11 +1376,11 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--gate", "inf"],
-            "--gate expects a finite number, got 'inf'",
+            "--gate: the gate must be a finite number >= 0, got inf",
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--x0", "nan"],
-            "--x0 expects a finite number, got 'nan'",
+            "--x0: x0 must satisfy |sigma0 x0| <= g(0)",
         ),
         (
             vec![

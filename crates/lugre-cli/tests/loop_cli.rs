@@ -271,7 +271,7 @@ fn bad_inputs_are_one_line_and_status_2() {
     );
     rejects(
         &["loop", "--sigma1", "nan", "--turning-points", "0,1"],
-        "--sigma1 expects a finite number, got 'nan'",
+        "sigma1 must be a finite number, got NaN",
     );
     rejects(
         &["loop", "--rho", "2", "--turning-points", "0,1"],
