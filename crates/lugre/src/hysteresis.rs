@@ -154,9 +154,9 @@ pub(crate) struct Piece {
 /// D     = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z
 /// ```
 ///
-/// with `z = a l`. Where `a l`, `sigma0 l` or `l^2` overflows (a long piece at a huge
-/// stiffness; then `z > 1`) the same terms are taken in units of `1/a`.
-#[inline]
+/// with `z = a l`. Where `a l`, `sigma0 l` or `l^2` overflows, or `a l > 1e300` (a long piece
+/// at a huge stiffness), the same terms are taken in units of `1/a`.
+#[inline(always)]
 pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
     let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
     let z = a * l;
@@ -170,10 +170,12 @@ pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
     } else {
         y_k * f.e + s * sigma0 * c
     };
-    let d = a * y_k * y_k * l * f.phi2 / sigma0
+    // a / sigma0 = 1 / g0
+    let d = y_k * y_k * l * f.phi2 / g0
         + 2.0 * s * y_k * l * f.phi_minus_phi2
         + sigma0 * l * l * f.q_over_z;
-    if z.is_finite() && e.is_finite() && y_end.is_finite() && d.is_finite() {
+    // Past z = 1e300, 1/z is near the subnormals and loses bits: the saturated forms then.
+    if z < 1e300 && e.is_finite() && y_end.is_finite() && d.is_finite() {
         // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above.
         Piece {
             y_end: y_end.clamp(-g0, g0),
@@ -293,9 +295,13 @@ impl HysteresisLoop {
         let u = input.values().to_vec();
         let n = u.len();
         let mut rho = Vec::with_capacity(n + 1);
-        rho.push(0.0);
-        for k in 0..n {
-            rho.push(rho[k] + (u[(k + 1) % n] - u[k]).abs());
+        // The running sum stays in a register (not re-read from the vector each step).
+        let mut total = 0.0;
+        rho.push(total);
+        for (k, &u_k) in u.iter().enumerate() {
+            let next = if k + 1 == n { u[0] } else { u[k + 1] };
+            total += (next - u_k).abs();
+            rho.push(total);
         }
         if !rho[n].is_finite() {
             return Err(InputError::VariationOverflow);

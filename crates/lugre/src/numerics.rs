@@ -164,7 +164,7 @@ pub struct PhiFamily {
 }
 
 impl PhiFamily {
-    #[inline]
+    #[inline(always)]
     pub fn new(z: f64) -> Self {
         let (e, one_minus_e, phi, h, q_over_z);
         if z < SERIES_BELOW {

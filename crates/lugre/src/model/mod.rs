@@ -26,6 +26,9 @@ use crate::error::ModelError;
 pub struct RateIndependent {
     sigma0: f64,
     g0: f64,
+    /// `sigma0 / g0`, kept: every piece of every loop needs it, and a division is slow.
+    #[serde(skip)]
+    a: f64,
 }
 
 impl RateIndependent {
@@ -39,21 +42,24 @@ impl RateIndependent {
         if !a.is_finite() || a <= 0.0 {
             return Err(ModelError::BadRatio { sigma0, g0 });
         }
-        Ok(Self { sigma0, g0 })
+        Ok(Self { sigma0, g0, a })
     }
 
+    #[inline]
     pub fn sigma0(&self) -> f64 {
         self.sigma0
     }
 
     /// `g(0)`: the force the loop saturates to, `|y°| < g0`.
+    #[inline]
     pub fn g0(&self) -> f64 {
         self.g0
     }
 
     /// `a = sigma0 / g(0)`, the inverse length over which the loop relaxes.
+    #[inline]
     pub fn a(&self) -> f64 {
-        self.sigma0 / self.g0
+        self.a
     }
 }
 
