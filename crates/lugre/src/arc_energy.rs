@@ -19,7 +19,7 @@
 //! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s e)`, and the first terms add up
 //! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sum s e)`.
 
-use crate::hysteresis::{piece_dissipation, piece_terms};
+use crate::hysteresis::piece;
 use crate::model::RateIndependent;
 use crate::numerics::DoubleDouble;
 
@@ -45,7 +45,7 @@ pub(crate) struct Sums {
 
 impl Sums {
     /// Adds the piece of direction `s` and length `l` starting at `y`; returns its work
-    /// `integral y dpsi` and dissipation.
+    /// `integral y dpsi`, its dissipation and `y` at its end.
     #[inline]
     pub fn add_piece(
         &mut self,
@@ -53,11 +53,11 @@ impl Sums {
         y: f64,
         s: f64,
         l: f64,
-    ) -> (DoubleDouble, f64) {
-        let (c, e) = piece_terms(model, l);
+    ) -> (DoubleDouble, f64, f64) {
+        let p = piece(model, y, s, l);
+        let (c, e, d) = (p.c, p.e, p.dissipation);
         let yc = DoubleDouble::product(y, c);
         let syc = if s > 0.0 { yc } else { -yc };
-        let d = piece_dissipation(model, y, s, l);
         self.s1 = self.s1 + syc;
         self.s2 = self.s2.add_f64(s * c);
         self.s3 = self.s3.add_f64(e);
@@ -65,7 +65,7 @@ impl Sums {
         self.s5 = self.s5 + yc;
         self.length = self.length.add_f64(l);
         self.d = self.d.add_f64(d);
-        (syc.add_f64(e), d)
+        (syc.add_f64(e), d, p.y_end)
     }
 
     /// The dissipation over the pieces added.

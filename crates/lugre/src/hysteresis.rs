@@ -118,27 +118,13 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
     y.clamp(-g0, g0)
 }
 
-/// The two terms of the work over a piece of length `l`:
-/// `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`, so that `integral y dpsi = s y_k c + e` from
-/// `y_k`, and `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (1 - s y_ref / g0) e`
+/// Everything about one piece of the loop (direction `s`, length `l`, from `y_k`): `y` at its
+/// end, the dissipation `(1/g0) integral y^2 drho` over it (never < 0), and the two terms of
+/// its work, `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`, so that `integral y dpsi = s y_k c + e`
+/// and `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (1 - s y_ref / g0) e`
 /// ([`crate::cycles`] sums the work relative to a loop's start value this way, without
 /// cancellation). `e` is an energy, `sigma0` already applied: `l^2` alone overflows long before
 /// `sigma0 l^2 h <= g0 l` does when `sigma0` is tiny.
-#[inline]
-pub(crate) fn piece_terms(model: RateIndependent, l: f64) -> (f64, f64) {
-    let p = piece(model, 0.0, 1.0, l);
-    (p.c, p.e)
-}
-
-/// Dissipation `(1/g0) integral y^2 drho` over a piece of length `l`, direction `s`, from
-/// `y_k` (never < 0).
-#[inline]
-pub(crate) fn piece_dissipation(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
-    piece(model, y_k, s, l).dissipation
-}
-
-/// Everything about one piece of the loop (direction `s`, length `l`, from `y_k`): `y` at its
-/// end, the dissipation over it, and the work terms `(c, e)` of [`piece_terms`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Piece {
     pub y_end: f64,
@@ -238,12 +224,13 @@ struct Prefix {
 }
 
 impl Prefix {
+    /// The sums past piece `p`, which starts at `y_k` in direction `s`.
     #[inline]
-    fn add_piece(self, dissipation: f64, drift_y: f64, drift_l: f64) -> Self {
+    fn add_piece(self, y_k: f64, s: f64, p: &Piece) -> Self {
         Self {
-            dissipation: self.dissipation.add_f64(dissipation),
-            drift_y: self.drift_y.add_f64(drift_y),
-            drift_l: self.drift_l.add_f64(drift_l),
+            dissipation: self.dissipation.add_f64(p.dissipation),
+            drift_y: self.drift_y.add_f64(y_k * p.c),
+            drift_l: self.drift_l.add_f64(s * p.e),
         }
     }
 }
@@ -447,7 +434,7 @@ impl HysteresisLoop {
             prefix.push(sums);
             let s = self.direction(k);
             let p = piece(self.model, y_k, s, self.segment_length(k));
-            sums = sums.add_piece(p.dissipation, y_k * p.c, s * p.e);
+            sums = sums.add_piece(y_k, s, &p);
             y_k = p.y_end;
         }
         y.push(y0);
@@ -531,13 +518,15 @@ impl HysteresisLoop {
     }
 
     pub(crate) fn position_point(&self, pos: Position) -> LoopPoint {
-        let (k, offset) = (pos.k, pos.offset);
-        let y = if offset == 0.0 {
-            self.y[k]
-        } else {
-            piece(self.model, self.y[k], self.direction(k), offset).y_end
-        };
+        let y = self.lead_in(pos).map_or(self.y[pos.k], |p| p.y_end);
         self.point_with(pos, y)
+    }
+
+    /// The piece from turning point `pos.k` to `pos` (`None` at the turning point itself).
+    #[inline]
+    fn lead_in(&self, pos: Position) -> Option<Piece> {
+        (pos.offset != 0.0)
+            .then(|| piece(self.model, self.y[pos.k], self.direction(pos.k), pos.offset))
     }
 
     /// The point at `pos` where `y°` is already known.
@@ -556,13 +545,12 @@ impl HysteresisLoop {
     fn position_sums(&self, pos: Position) -> PositionSums {
         let k = pos.k;
         let mut prefix = self.prefix[k];
-        let y = if pos.offset == 0.0 {
-            self.y[k]
-        } else {
-            let s = self.direction(k);
-            let p = piece(self.model, self.y[k], s, pos.offset);
-            prefix = prefix.add_piece(p.dissipation, self.y[k] * p.c, s * p.e);
-            p.y_end
+        let y = match self.lead_in(pos) {
+            None => self.y[k],
+            Some(p) => {
+                prefix = prefix.add_piece(self.y[k], self.direction(k), &p);
+                p.y_end
+            }
         };
         for _ in 0..pos.wraps {
             prefix = prefix + self.prefix[self.len()];

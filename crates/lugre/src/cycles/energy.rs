@@ -3,7 +3,7 @@
 //!
 //! Samples are joined by straight lines, so each step is one piece of the normalized input
 //! (direction `s`, length `l = |du|`) and `y*` advances exactly, at any stiffness. Over a piece
-//! from `y_k` the work is `s y_k c + e` with `(c, e) = piece_terms(l)`. The sums over
+//! from `y_k` the work is `s y_k c + e` with `(c, e)` from `hysteresis::piece`. The sums over
 //! an arc's pieces ([`crate::arc_energy::Sums`]) give its work, stored-energy change,
 //! dissipation and closure gap in O(1) per cycle without keeping samples, each in the form
 //! that rounds least ([`crate::arc_energy`]).
@@ -17,7 +17,6 @@ use super::engine::{Open, Track};
 use super::{CycleEnergy, HistoryEnergy};
 use crate::arc_energy::{arc_energy, Sums};
 use crate::error::HistoryError;
-use crate::hysteresis::advance;
 use crate::model::RateIndependent;
 use crate::numerics::DoubleDouble;
 
@@ -112,15 +111,12 @@ impl Track for EnergyTrack {
         let (model, y) = (self.model, self.prev.state.y);
         let (s, l) = step(self.prev.u, u);
         let mut sums = self.prev.state.sums;
-        let (w, d) = sums.add_piece(model, y, s, l);
+        let (w, d, y_end) = sums.add_piece(model, y, s, l);
         self.total_work = self.total_work + w;
         self.total_dissipation = self.total_dissipation.add_f64(d);
         self.cur = Point {
             u,
-            state: State {
-                y: advance(model, y, s, l),
-                sums,
-            },
+            state: State { y: y_end, sums },
         };
     }
 
@@ -166,8 +162,7 @@ impl Track for EnergyTrack {
             (a.u - self.prev.u).abs().min(full)
         };
         let y_prev = self.prev.state.y;
-        sums.add_piece(model, y_prev, s, l);
-        let y_end = advance(model, y_prev, s, l);
+        let (_, _, y_end) = sums.add_piece(model, y_prev, s, l);
 
         let y_a = a.state.y;
         let e = arc_energy(model, &sums, y_a, y_end);
