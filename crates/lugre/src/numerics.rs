@@ -3,13 +3,13 @@
 //! Every exponential in this crate has a non-positive argument. On a segment of length `l` the
 //! loop relaxes like `exp(-z)` with `z = a l >= 0`; the closed forms need
 //!
-//! * `phi(z)          = (1 - exp(-z)) / z`            (`-expm1(-z) / z`),
-//! * `one_minus_phi(z) = 1 - phi(z) = (z - 1 + exp(-z)) / z`,
-//! * `h(z)            = (1 - phi(z)) / z`,
-//! * `q(z)            = 1 - 2 phi(z) + phi(2z) = integral_0^1 (1 - exp(-z t))^2 dt`,
+//! * `phi(z) = (1 - exp(-z)) / z`            (`-expm1(-z) / z`),
+//! * `h(z)   = (1 - phi(z)) / z`,
+//! * `q(z)   = 1 - 2 phi(z) + phi(2z) = integral_0^1 (1 - exp(-z t))^2 dt`,
 //!
 //! each accurate to a few ulps for every `z` in `[0, inf]`. Where the direct formula cancels
-//! (small `z`) a Taylor series is used instead.
+//! (small `z`) a Taylor series is used instead. [`PhiFamily`] gives all of them (and
+//! `phi(2z)`, `phi(z) - phi(2z)`) at one `z` from a single exponential.
 
 /// `(1 - exp(-z)) / z` for `z >= 0`, with `phi(0) = 1` and `phi(inf) = 0`.
 #[inline]
@@ -106,37 +106,6 @@ pub fn h(z: f64) -> f64 {
         polynomial(&H_SERIES, z)
     } else {
         (1.0 - phi(z)) / z
-    }
-}
-
-/// `1 - phi(z) = (z - 1 + exp(-z)) / z` for `z >= 0` (tends to `z/2` at 0 and 1 at infinity).
-#[inline]
-pub fn one_minus_phi(z: f64) -> f64 {
-    if z < SERIES_BELOW {
-        z * h(z)
-    } else {
-        1.0 - phi(z)
-    }
-}
-
-/// `phi(z) - phi(2z)` for `z >= 0` (tends to `z/2` at 0).
-#[inline]
-pub fn phi_minus_phi2(z: f64) -> f64 {
-    if z < SERIES_BELOW / 2.0 {
-        z * (2.0 * h(2.0 * z) - h(z))
-    } else {
-        phi(z) - phi(2.0 * z)
-    }
-}
-
-/// `q(z) / z` where `q(z) = 1 - 2 phi(z) + phi(2z) = integral_0^1 (1 - exp(-z t))^2 dt`, for
-/// `z > 0` (tends to `z/3` at 0 and `1/z` at infinity).
-#[inline]
-pub fn q_over_z(z: f64) -> f64 {
-    if z < SERIES_BELOW {
-        z * polynomial(&Q_SERIES, z)
-    } else {
-        (1.0 - 2.0 * phi(z) + phi(2.0 * z)) / z
     }
 }
 
@@ -344,19 +313,7 @@ mod tests {
             assert!(rel(phi(z), want) < 4e-15, "phi({z}) = {}", phi(z));
         }
         for (z, want) in OMP {
-            assert!(
-                rel(one_minus_phi(z), want) < 4e-15,
-                "1-phi({z}) = {}",
-                one_minus_phi(z)
-            );
-        }
-        for (z, want) in Q {
-            let got = q_over_z(z) * z;
-            assert!(rel(got, want) < 1e-14, "q({z}) = {got}");
-        }
-        for (z, want) in PMP {
-            let got = phi_minus_phi2(z);
-            assert!(rel(got, want) < 1e-14, "phi({z}) - phi(2z) = {got}");
+            assert!(rel(z * h(z), want) < 4e-15, "z h({z}) = {}", z * h(z));
         }
     }
 
@@ -395,10 +352,8 @@ mod tests {
     fn limits_are_finite() {
         assert_eq!(phi(0.0), 1.0);
         assert_eq!(phi(f64::INFINITY), 0.0);
-        assert_eq!(one_minus_phi(f64::INFINITY), 1.0);
-        assert_eq!(q_over_z(f64::INFINITY), 0.0);
         assert_eq!(h(0.0), 0.5);
-        assert_eq!(one_minus_phi(0.0), 0.0);
+        assert_eq!(h(f64::INFINITY), 0.0);
     }
 
     #[test]
