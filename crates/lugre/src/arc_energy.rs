@@ -19,31 +19,57 @@
 //! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s e)`, and the first terms add up
 //! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sum s e)`.
 
-use crate::hysteresis::piece;
+use crate::hysteresis::{piece, Piece};
 use crate::model::RateIndependent;
 use crate::numerics::DoubleDouble;
 
-/// Running sums over pieces of an arc, in double-double. `y_k c` is formed exactly, so
-/// `s1 - y_A s2` is `sum s (y_k - y_A) c` up to one rounding of a small number.
+/// Running sums over pieces of an arc, in double-double, one lane per sum (`hi + lo` in each):
+/// laid out as two arrays so that adding two sums is a few vector instructions. `y_k c` is
+/// formed exactly, so `s1 - y_A s2` is `sum s (y_k - y_A) c` up to one rounding of a small
+/// number.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[repr(C, align(64))]
 pub(crate) struct Sums {
-    /// `sum s y_k c`
-    s1: DoubleDouble,
-    /// `sum s c`
-    s2: DoubleDouble,
-    /// `sum e`
-    s3: DoubleDouble,
-    /// `sum s e`
-    s4: DoubleDouble,
-    /// `sum y_k c`
-    s5: DoubleDouble,
-    /// `sum l`, the arc's length in rho.
-    length: DoubleDouble,
-    /// The dissipation `sum (1/g0) integral y^2 drho`.
-    d: DoubleDouble,
+    hi: [f64; LANES],
+    lo: [f64; LANES],
 }
 
+const LANES: usize = 8;
+/// `sum s y_k c`
+const S1: usize = 0;
+/// `sum s c`
+const S2: usize = 1;
+/// `sum e`
+const S3: usize = 2;
+/// `sum s e`
+const S4: usize = 3;
+/// `sum y_k c`
+const S5: usize = 4;
+/// `sum l`, the arc's length in rho.
+const LENGTH: usize = 5;
+/// The dissipation `sum (1/g0) integral y^2 drho`.
+const D: usize = 6;
+
 impl Sums {
+    /// The sums over one piece `p` of direction `s` and length `l` that starts at `y`.
+    #[inline(always)]
+    pub fn piece(y: f64, s: f64, l: f64, p: &Piece) -> Self {
+        let yc = DoubleDouble::product(y, p.c);
+        Self {
+            hi: [
+                s * yc.hi,
+                s * p.c,
+                p.e,
+                s * p.e,
+                yc.hi,
+                l,
+                p.dissipation,
+                0.0,
+            ],
+            lo: [s * yc.lo, 0.0, 0.0, 0.0, yc.lo, 0.0, 0.0, 0.0],
+        }
+    }
+
     /// Adds the piece of direction `s` and length `l` starting at `y`; returns its work
     /// `integral y dpsi`, its dissipation and `y` at its end.
     #[inline]
@@ -55,37 +81,60 @@ impl Sums {
         l: f64,
     ) -> (DoubleDouble, f64, f64) {
         let p = piece(model, y, s, l);
-        let (c, e, d) = (p.c, p.e, p.dissipation);
-        let yc = DoubleDouble::product(y, c);
-        let syc = if s > 0.0 { yc } else { -yc };
-        self.s1 = self.s1 + syc;
-        self.s2 = self.s2.add_f64(s * c);
-        self.s3 = self.s3.add_f64(e);
-        self.s4 = self.s4.add_f64(s * e);
-        self.s5 = self.s5 + yc;
-        self.length = self.length.add_f64(l);
-        self.d = self.d.add_f64(d);
-        (syc.add_f64(e), d, p.y_end)
+        let terms = Self::piece(y, s, l, &p);
+        *self = *self + terms;
+        (terms.lane_dd(S1).add_f64(p.e), p.dissipation, p.y_end)
+    }
+
+    #[inline(always)]
+    fn lane_dd(&self, i: usize) -> DoubleDouble {
+        DoubleDouble {
+            hi: self.hi[i],
+            lo: self.lo[i],
+        }
+    }
+
+    #[inline]
+    fn lane(&self, i: usize) -> f64 {
+        self.hi[i] + self.lo[i]
     }
 
     /// The dissipation over the pieces added.
     pub fn dissipation(&self) -> f64 {
-        self.d.to_f64().max(0.0)
+        self.lane(D).max(0.0)
     }
 }
 
 impl std::ops::Add for Sums {
     type Output = Self;
-    #[inline]
+    /// Lane by lane: the exact sum of the leading parts (two-sum) with its rounding error added
+    /// to the trailing parts, not renormalized. The leading part then depends on the leading
+    /// parts only (one addition of latency, where a renormalized double-double chains about
+    /// ten), which is what the loop of [`crate::loop_table`] waits on; the trailing part
+    /// collects the errors, so `hi + lo` keeps about `k eps^2` relative error after `k`
+    /// additions.
+    #[inline(always)]
     fn add(self, o: Self) -> Self {
+        let mut r = Self::default();
+        for i in 0..LANES {
+            let (a, b) = (self.hi[i], o.hi[i]);
+            let s = a + b;
+            let bb = s - a;
+            let e = (a - (s - bb)) + (b - bb);
+            r.hi[i] = s;
+            r.lo[i] = (self.lo[i] + o.lo[i]) + e;
+        }
+        r
+    }
+}
+
+impl std::ops::Neg for Sums {
+    type Output = Self;
+    #[inline]
+    fn neg(self) -> Self {
         Self {
-            s1: self.s1 + o.s1,
-            s2: self.s2 + o.s2,
-            s3: self.s3 + o.s3,
-            s4: self.s4 + o.s4,
-            s5: self.s5 + o.s5,
-            length: self.length + o.length,
-            d: self.d + o.d,
+            hi: self.hi.map(|x| -x),
+            lo: self.lo.map(|x| -x),
         }
     }
 }
@@ -94,15 +143,7 @@ impl std::ops::Sub for Sums {
     type Output = Self;
     #[inline]
     fn sub(self, o: Self) -> Self {
-        Self {
-            s1: self.s1 - o.s1,
-            s2: self.s2 - o.s2,
-            s3: self.s3 - o.s3,
-            s4: self.s4 - o.s4,
-            s5: self.s5 - o.s5,
-            length: self.length - o.length,
-            d: self.d - o.d,
-        }
+        self + (-o)
     }
 }
 
@@ -172,13 +213,14 @@ pub(crate) fn best_work(
 
 /// Every energy of an arc from `A` (where `y = y_a`) to `C` (`y = y_c`) whose pieces were
 /// summed into `sums`.
+#[inline(always)]
 pub(crate) fn arc_energy(model: RateIndependent, sums: &Sums, y_a: f64, y_c: f64) -> ArcEnergy {
-    let length = sums.length.to_f64();
-    let gap = closure_gap(model, length, sums.s5.to_f64(), sums.s4.to_f64(), y_a, y_c);
+    let length = sums.lane(LENGTH);
+    let gap = closure_gap(model, length, sums.lane(S5), sums.lane(S4), y_a, y_c);
     let dv = stored_energy_change(model, gap, y_a, y_c);
     let d = sums.dissipation();
-    let direct = sums.s1.to_f64() - y_a * sums.s2.to_f64() + sums.s3.to_f64()
-        - y_a / model.g0() * sums.s4.to_f64();
+    let direct =
+        sums.lane(S1) - y_a * sums.lane(S2) + sums.lane(S3) - y_a / model.g0() * sums.lane(S4);
     ArcEnergy {
         work: best_work(model, length, Some(direct), dv, d),
         stored_energy_change: dv,

@@ -43,8 +43,10 @@
 
 use crate::error::{InputError, LoopError};
 use crate::input::TurningPoints;
+use crate::loop_table::{LoopTable, Period};
+use crate::minor::canonical_start;
 use crate::model::RateIndependent;
-use crate::numerics::{h, one_minus_exp, phi, DoubleDouble, PhiFamily};
+use crate::numerics::{h, one_minus_exp, phi, PhiFamily};
 
 /// The exact solution of `w' = -r w + q` with constant `r >= 0` and `q` over a duration
 /// `tau`, from `w0`: `w0 exp(-c) + d phi(c)` with `c = r tau`, `d = q tau` and
@@ -144,9 +146,14 @@ pub(crate) struct Piece {
 /// at a huge stiffness), the same terms are taken in units of `1/a`.
 #[inline(always)]
 pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
+    piece_with(model, y_k, s, l, &PhiFamily::new(model.a() * l))
+}
+
+/// [`piece`] with the family at `z = a l` already evaluated (in blocks, [`crate::numerics::PhiBlock`]).
+#[inline(always)]
+pub(crate) fn piece_with(model: RateIndependent, y_k: f64, s: f64, l: f64, f: &PhiFamily) -> Piece {
     let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
     let z = a * l;
-    let f = PhiFamily::new(z);
     let (c, e) = (l * f.phi, sigma0 * l * l * f.h);
     // Short pieces (`exp(-z) > 1/2`) add the small change to `y_k` rather than scaling it by
     // the rounded `exp(-z)`: the same form as the closure gap's (`y_end - y_k = s sigma0 c -
@@ -204,64 +211,6 @@ pub struct LoopPoint {
     pub y: f64,
 }
 
-/// A place on the periodic normalized input: `offset` along segment `k` in period `wraps`
-/// (so `rho = rho_k + wraps P + offset`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Position {
-    pub k: usize,
-    pub wraps: u32,
-    pub offset: f64,
-}
-
-/// Sums from `rho = 0` along the loop: the dissipation and the closure gap's two terms
-/// (`sum y_j L_j phi(a L_j)`, `sum s_j sigma0 L_j^2 h(a L_j)`, see [`HysteresisLoop::arc`]). One
-/// record per turning point, so that an arc's end costs one cache line, not three.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-struct Prefix {
-    dissipation: DoubleDouble,
-    drift_y: DoubleDouble,
-    drift_l: DoubleDouble,
-}
-
-impl Prefix {
-    /// The sums past piece `p`, which starts at `y_k` in direction `s`.
-    #[inline]
-    fn add_piece(self, y_k: f64, s: f64, p: &Piece) -> Self {
-        Self {
-            dissipation: self.dissipation.add_f64(p.dissipation),
-            drift_y: self.drift_y.add_f64(y_k * p.c),
-            drift_l: self.drift_l.add_f64(s * p.e),
-        }
-    }
-}
-
-impl std::ops::Add for Prefix {
-    type Output = Self;
-    #[inline]
-    fn add(self, o: Self) -> Self {
-        Self {
-            dissipation: self.dissipation + o.dissipation,
-            drift_y: self.drift_y + o.drift_y,
-            drift_l: self.drift_l + o.drift_l,
-        }
-    }
-}
-
-/// A point of the loop with the prefix sums up to it ([`HysteresisLoop::arc`]).
-struct PositionSums {
-    point: LoopPoint,
-    prefix: Prefix,
-}
-
-/// An arc of the loop on which the input returns to its start value.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Arc {
-    pub start: LoopPoint,
-    pub end: LoopPoint,
-    pub dissipation: f64,
-    pub closure_gap: f64,
-}
-
 /// The periodic steady state `y°` in the rate-independent limit, for one model and input.
 #[derive(Debug, Clone)]
 pub struct HysteresisLoop {
@@ -272,8 +221,8 @@ pub struct HysteresisLoop {
     rho: Vec<f64>,
     /// `y°(rho_k)`, `k = 0..=n`; `y_n = y_0`.
     y: Vec<f64>,
-    /// The sums up to `rho_k`, `k = 0..=n`.
-    prefix: Vec<Prefix>,
+    /// Every loop, with energies.
+    loops: LoopTable,
 }
 
 impl HysteresisLoop {
@@ -293,14 +242,22 @@ impl HysteresisLoop {
         if !rho[n].is_finite() {
             return Err(InputError::VariationOverflow);
         }
+        let r = canonical_start(&u);
         let mut hl = Self {
             model,
             u,
             rho,
-            y: Vec::new(),
-            prefix: Vec::new(),
+            y: vec![0.0; n + 1],
+            loops: LoopTable::default(),
         };
-        hl.walk_period(hl.periodic_start());
+        let period = Period {
+            model,
+            u: &hl.u,
+            rho: &hl.rho,
+            r,
+            y_r: hl.periodic_value(r),
+        };
+        hl.loops = period.loops(&mut hl.y);
         Ok(hl)
     }
 
@@ -375,25 +332,35 @@ impl HysteresisLoop {
         (self.u[self.next(k)] - self.u[k]).abs()
     }
 
-    /// `y°(0)` (eq. 10) by the stable forms of the module docs.
-    fn periodic_start(&self) -> f64 {
+    /// `y°` at turning point `first` (eq. 10, the period started there) by the stable forms of
+    /// the module docs.
+    fn periodic_value(&self, first: usize) -> f64 {
         let n = self.len();
         let a = self.model.a();
         let sigma0 = self.model.sigma0();
         let p = self.period();
         let ap = a * p;
+        // Segment `i` of the period started at `first`.
+        let segment = |i: usize| {
+            if first + i >= n {
+                first + i - n
+            } else {
+                first + i
+            }
+        };
         if ap > 1.0 {
             // The recursion forgets its start like exp(-a rho): what it carries from before the
             // last stretch of `a rho > 750` is scaled by exp(-750) = 0 in f64, so it starts
             // there (for a long period that is a few segments, not all n).
-            let mut first = n;
+            let mut from = n;
             let mut tail = 0.0;
-            while first > 0 && a * tail <= 750.0 {
-                first -= 1;
-                tail += self.segment_length(first);
+            while from > 0 && a * tail <= 750.0 {
+                from -= 1;
+                tail += self.segment_length(segment(from));
             }
             let mut c = 0.0;
-            for k in first..n {
+            for i in from..n {
+                let k = segment(i);
                 c = self.advance(c, k, self.segment_length(k));
             }
             c / one_minus_exp(ap)
@@ -404,7 +371,8 @@ impl HysteresisLoop {
             let scale = 2f64.powi(-(p.log2().floor().clamp(-1000.0, 1000.0) as i32));
             let mut tail = 0.0; // R_k = P - rho_{k+1}, summed from the end
             let mut sum = 0.0; // scale^2 times the sum of the module docs
-            for k in (0..n).rev() {
+            for i in (0..n).rev() {
+                let k = segment(i);
                 let l = self.segment_length(k);
                 let at = a * tail;
                 let (ls, ts) = (l * scale, tail * scale);
@@ -421,31 +389,15 @@ impl HysteresisLoop {
         advance(self.model, y_k, self.direction(k), l)
     }
 
-    /// `y°` at every turning point from `y°(0)`, and the prefix sums of the dissipation and of
-    /// the closure gap's two terms: one [`piece`] (one exponential) per segment.
-    fn walk_period(&mut self, y0: f64) {
-        let n = self.len();
-        let mut y = Vec::with_capacity(n + 1);
-        let mut prefix = Vec::with_capacity(n + 1);
-        let mut sums = Prefix::default();
-        let mut y_k = y0;
-        for k in 0..n {
-            y.push(y_k);
-            prefix.push(sums);
-            let s = self.direction(k);
-            let p = piece(self.model, y_k, s, self.segment_length(k));
-            sums = sums.add_piece(y_k, s, &p);
-            y_k = p.y_end;
-        }
-        y.push(y0);
-        prefix.push(sums);
-        (self.y, self.prefix) = (y, prefix);
+    /// Every loop as columns, in the order they close (see [`LoopTable`]).
+    pub fn loop_table(&self) -> &LoopTable {
+        &self.loops
     }
 
     /// The work `integral y° dpsi` over one period: the energy dissipated per cycle (the stored
     /// energy returns to its start, so it equals the dissipation over the period).
     pub fn work_per_period(&self) -> f64 {
-        self.prefix[self.len()].dissipation.to_f64()
+        self.loops.dissipation()[self.loops.major()]
     }
 
     /// The segment holding `rho` (reduced to `[0, P)`) and the offset into it.
@@ -511,120 +463,6 @@ impl HysteresisLoop {
                 self.point_at(rho)
             })
             .collect()
-    }
-
-    pub(crate) fn position_rho(&self, pos: Position) -> f64 {
-        self.rho[pos.k] + f64::from(pos.wraps) * self.period() + pos.offset
-    }
-
-    pub(crate) fn position_point(&self, pos: Position) -> LoopPoint {
-        let y = self.lead_in(pos).map_or(self.y[pos.k], |p| p.y_end);
-        self.point_with(pos, y)
-    }
-
-    /// The piece from turning point `pos.k` to `pos` (`None` at the turning point itself).
-    #[inline]
-    fn lead_in(&self, pos: Position) -> Option<Piece> {
-        (pos.offset != 0.0)
-            .then(|| piece(self.model, self.y[pos.k], self.direction(pos.k), pos.offset))
-    }
-
-    /// The point at `pos` where `y°` is already known.
-    #[inline]
-    fn point_with(&self, pos: Position, y: f64) -> LoopPoint {
-        LoopPoint {
-            rho: self.position_rho(pos),
-            u: self.u[pos.k] + self.direction(pos.k) * pos.offset,
-            y,
-        }
-    }
-
-    /// The point at `pos` and the prefix sums up to it (dissipation, the closure gap's two
-    /// terms): table look-ups at a turning point, one [`piece`] inside a segment.
-    #[inline]
-    fn position_sums(&self, pos: Position) -> PositionSums {
-        let k = pos.k;
-        let mut prefix = self.prefix[k];
-        let y = match self.lead_in(pos) {
-            None => self.y[k],
-            Some(p) => {
-                prefix = prefix.add_piece(self.y[k], self.direction(k), &p);
-                p.y_end
-            }
-        };
-        for _ in 0..pos.wraps {
-            prefix = prefix + self.prefix[self.len()];
-        }
-        PositionSums {
-            point: self.point_with(pos, y),
-            prefix,
-        }
-    }
-
-    /// The arc from `from` to `to` (`to` not before `from`, `psi(to) = psi(from)` as on every
-    /// loop's arc): its end points, the dissipation `(1/g0) integral y°^2 drho` over it (all
-    /// terms positive, so the double-double prefix sums give it to rounding) and the closure
-    /// gap `y°(to) - y°(from)`.
-    ///
-    /// On a piece, `y_end - y_k = s sigma0 l - a (s sigma0 l^2 h(a l) + y_k l phi(a l))`; the
-    /// first terms add up to `sigma0 (psi(to) - psi(from)) = 0`, which leaves
-    /// `gap = -a sum (s sigma0 l^2 h + y_k l phi)`: no cancellation when `a` times the arc's
-    /// length is small, where the plain difference of the two values would lose everything
-    /// (the gap is `O(a)`, the values `O(sigma0 P)`). Longer arcs use the plain difference.
-    pub(crate) fn arc(&self, from: Position, to: Position) -> Arc {
-        let (a, c) = (self.position_sums(from), self.position_sums(to));
-        let whole_periods = to.k == from.k && to.offset == from.offset;
-        let closure_gap = if whole_periods {
-            0.0
-        } else {
-            crate::arc_energy::closure_gap(
-                self.model,
-                c.point.rho - a.point.rho,
-                (c.prefix.drift_y - a.prefix.drift_y).to_f64(),
-                (c.prefix.drift_l - a.prefix.drift_l).to_f64(),
-                a.point.y,
-                c.point.y,
-            )
-        };
-        Arc {
-            start: a.point,
-            end: c.point,
-            dissipation: (c.prefix.dissipation - a.prefix.dissipation)
-                .to_f64()
-                .max(0.0),
-            closure_gap,
-        }
-    }
-
-    /// The sums of [`crate::arc_energy`] over the pieces from `from` to `to`, when the arc
-    /// crosses at most `max_segments` segment boundaries (else `None`: use the prefix sums).
-    pub(crate) fn arc_sums(
-        &self,
-        from: Position,
-        to: Position,
-        max_segments: usize,
-    ) -> Option<crate::arc_energy::Sums> {
-        let n = self.len();
-        let span = (to.wraps as usize * n + to.k) - (from.wraps as usize * n + from.k);
-        if span > max_segments {
-            return None;
-        }
-        let mut sums = crate::arc_energy::Sums::default();
-        let (mut k, mut offset) = (from.k, from.offset);
-        for step in 0..=span {
-            let stop = if step == span {
-                to.offset
-            } else {
-                self.segment_length(k)
-            };
-            if stop > offset {
-                let y = self.advance(self.y[k], k, offset);
-                sums.add_piece(self.model, y, self.direction(k), stop - offset);
-            }
-            k = self.next(k);
-            offset = 0.0;
-        }
-        Some(sums)
     }
 
     /// Checks that every value a report would print is finite.

@@ -25,6 +25,7 @@ pub mod error;
 pub mod fit;
 pub mod hysteresis;
 pub mod input;
+mod loop_table;
 pub mod minor;
 pub mod model;
 pub mod numerics;
@@ -41,6 +42,7 @@ pub use error::{FitError, HistoryError, InputError, LoopError, ModelError};
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use hysteresis::{HysteresisLoop, LoopPoint};
 pub use input::{Bimodal, TurningPoints};
+pub use loop_table::LoopTable;
 pub use minor::{minor_loops, Loop, LoopKind};
 pub use model::{Dahl, LuGre, LuGreParams, RateIndependent, Stribeck, VelocityFn, Viscous};
 pub use simulate::{

@@ -25,13 +25,7 @@
 //! from double-double prefix sums, and the work is taken from whichever of its two forms
 //! (`integral (y - y_A) dpsi` or `dV + D`) rounds less.
 
-use crate::arc_energy::{arc_energy, direct_work_is_better, stored_energy_change, ArcEnergy};
-use crate::hysteresis::{HysteresisLoop, LoopPoint, Position};
-
-/// Minor loops whose arcs cross at most this many segments are summed piece by piece, which
-/// also gives the direct form of their work (see [`crate::arc_energy`]); longer ones use the
-/// loop's prefix sums.
-const DIRECT_WORK_MAX_SEGMENTS: usize = 64;
+use crate::hysteresis::{HysteresisLoop, LoopPoint};
 
 /// Whether a loop is the major loop (the whole period) or a minor loop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -65,26 +59,15 @@ pub struct Loop {
     pub depth: usize,
 }
 
-/// A rainflow cycle in the rotated sequence: indices `a`, `b` (turning points `j`, where
-/// turning point `j` is `(start + j) % n` of the original) and the end of its arc.
-#[derive(Debug, Clone, Copy)]
-struct Cycle {
-    a: usize,
-    b: usize,
-    /// End of the arc as (segment `j`, offset along it), ordered lexicographically.
-    end: (usize, f64),
-}
-
-struct StackEntry {
-    j: usize,
-    /// The first later turning point equal to the value below this entry (a tie that did not
-    /// close the cycle).
-    touch: Option<usize>,
-}
-
 /// The rotation of `u` that starts at a global maximum and is lexicographically greatest
 /// (the minimum-expression algorithm, O(n)).
 pub(crate) fn canonical_start(u: &[f64]) -> usize {
+    // A unique global maximum starts the greatest rotation (the common case): three
+    // branch-free passes instead of the comparisons below.
+    let max = u.iter().fold(f64::NEG_INFINITY, |m, &x| if x > m { x } else { m });
+    if u.iter().filter(|&&x| x == max).count() == 1 {
+        return u.iter().position(|&x| x == max).unwrap_or(0);
+    }
     let n = u.len();
     let (mut i, mut j, mut k) = (0usize, 1usize, 0usize);
     while i < n && j < n && k < n {
@@ -108,147 +91,59 @@ pub(crate) fn canonical_start(u: &[f64]) -> usize {
     i.min(j)
 }
 
-/// The rainflow cycles of the cyclic sequence `v` (already rotated to a global maximum and
-/// closed: `v[n] == v[0]`), in the order they close.
-fn rainflow_cycles(v: &[f64]) -> Vec<Cycle> {
-    let mut stack: Vec<StackEntry> = Vec::with_capacity(64);
-    let mut cycles = Vec::with_capacity(v.len() / 2);
-    for p in 0..v.len() {
-        stack.push(StackEntry { j: p, touch: None });
-        while stack.len() >= 3 {
-            let m = stack.len();
-            let (a, b) = (stack[m - 3].j, stack[m - 2].j);
-            let x = (v[p] - v[b]).abs();
-            let y = (v[b] - v[a]).abs();
-            let rising = v[p] > v[b];
-            if x > y || (x == y && rising) {
-                let end = match stack[m - 2].touch {
-                    Some(t) => (t, 0.0),
-                    None if x == y => (p, 0.0),
-                    None => (p - 1, (v[a] - v[p - 1]).abs()),
-                };
-                cycles.push(Cycle { a, b, end });
-                stack.drain(m - 3..m - 1);
-            } else {
-                if x == y && stack[m - 2].touch.is_none() {
-                    stack[m - 2].touch = Some(p);
-                }
-                break;
-            }
-        }
-    }
-    cycles
-}
-
 /// All loops of `hl`: `[0]` is the major loop, then the minor loops ordered by where their
-/// arcs start (so a parent comes before its children).
+/// arcs start (so a parent comes before its children). The same loops as
+/// [`HysteresisLoop::loop_table`], as records.
 pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
-    let n = hl.len();
-    let u = hl.turning_points();
-    let start = canonical_start(u);
-    let v: Vec<f64> = u[start..].iter().chain(&u[..=start]).copied().collect();
-
-    let mut cycles = rainflow_cycles(&v);
-    // The major loop turns at the first global minimum: nothing goes strictly below it, so it
-    // is always a cycle's reversal, paired with the last global maximum before it. That cycle
-    // ends at the next occurrence of the global maximum, which is the period's end unless the
-    // maximum repeats; the major loop is the whole period all the same (Theorem A with
-    // `umax1 == umax2`: the arc through the global minimum is not a minor loop).
-    let lowest = (0..n).fold(0, |m, j| if v[j] < v[m] { j } else { m });
-    let major_at = cycles
-        .iter()
-        .position(|c| c.b == lowest)
-        .expect("the global minimum is a reversal of some cycle");
-    let major = Cycle {
-        a: 0,
-        b: lowest,
-        end: (n, 0.0),
-    };
-    cycles.swap_remove(major_at);
-    // Every turning point starts at most one minor cycle: ordering them by where their arcs
-    // start is a counting sort.
+    let table = hl.loop_table();
+    let (u, rho, y) = (hl.turning_points(), hl.turning_rho(), hl.turning_y());
+    let n = u.len();
+    let major = table.major();
+    // Every turning point starts at most one minor loop: ordering them by where their arcs
+    // start (in the period from the major loop's start) is a counting sort.
+    let r = table.start()[major];
     let mut by_start = vec![usize::MAX; n];
-    for (i, c) in cycles.iter().enumerate() {
-        by_start[c.a] = i;
+    for (row, &k) in table.start()[..major].iter().enumerate() {
+        by_start[if k >= r { k - r } else { k + n - r }] = row;
     }
-    let ordered = by_start
-        .iter()
-        .filter(|&&i| i != usize::MAX)
-        .map(|&i| &cycles[i]);
-
-    // `start + j < 2n + 1` for every index of the closed sequence: at most two subtractions
-    // rather than an integer division per point.
-    let position = |j: usize, offset: f64| {
-        let (mut k, mut wraps) = (start + j, 0u32);
-        while k >= n {
-            k -= n;
-            wraps += 1;
-        }
-        Position { k, wraps, offset }
+    let order: Vec<usize> = std::iter::once(major)
+        .chain(by_start.into_iter().filter(|&row| row != usize::MAX))
+        .collect();
+    let mut index = vec![0; table.len()];
+    for (i, &row) in order.iter().enumerate() {
+        index[row] = i;
+    }
+    let turning = |k: usize, rho: f64| LoopPoint {
+        rho,
+        u: u[k],
+        y: y[k],
     };
-    let model = hl.model();
-    let mut loops = Vec::with_capacity(cycles.len() + 1);
-    let mut open: Vec<(usize, (usize, f64))> = Vec::new(); // (loop index, arc end)
-    for (i, c) in std::iter::once(&major).chain(ordered).enumerate() {
-        while let Some(&(_, end)) = open.last() {
-            if end.0 < c.a || (end.0 == c.a && end.1 == 0.0) {
-                open.pop();
-            } else {
-                break;
+    order
+        .iter()
+        .map(|&row| {
+            let (a, b) = (table.start()[row], table.reversal()[row]);
+            Loop {
+                kind: if row == major {
+                    LoopKind::Major
+                } else {
+                    LoopKind::Minor
+                },
+                start: turning(a, rho[a]),
+                reversal: turning(b, table.reversal_rho()[row]),
+                end: LoopPoint {
+                    rho: table.end_rho()[row],
+                    u: table.end_u()[row],
+                    y: table.end_y()[row],
+                },
+                work: table.work()[row],
+                stored_energy_change: table.stored_energy_change()[row],
+                dissipation: table.dissipation()[row],
+                closure_gap: table.closure_gap()[row],
+                parent: table.parent(row).map(|p| index[p]),
+                depth: table.depth()[row] as usize,
             }
-        }
-        let parent = open.last().map(|&(p, _)| p);
-        let depth = open.len();
-        open.push((i, c.end));
-
-        let (mut pa, mut pb, mut pc) = (
-            position(c.a, 0.0),
-            position(c.b, 0.0),
-            position(c.end.0, c.end.1),
-        );
-        if pa.wraps > 0 {
-            // Report the start within [0, P).
-            pa.wraps -= 1;
-            pb.wraps -= 1;
-            pc.wraps -= 1;
-        }
-        // O(1) from the prefix sums; the arc is summed piece by piece only when the direct
-        // form of the work rounds less than dV + D (narrow loops far from y = 0).
-        let arc = hl.arc(pa, pc);
-        let (start, end) = (arc.start, arc.end);
-        let reversal = hl.position_point(pb);
-        let dv = stored_energy_change(model, arc.closure_gap, start.y, end.y);
-        let length = end.rho - start.rho;
-        let energy = match (i > 0 && direct_work_is_better(model, length, dv, arc.dissipation))
-            .then(|| hl.arc_sums(pa, pc, DIRECT_WORK_MAX_SEGMENTS))
-            .flatten()
-        {
-            Some(sums) => arc_energy(model, &sums, start.y, end.y),
-            None => ArcEnergy {
-                work: dv + arc.dissipation,
-                stored_energy_change: dv,
-                dissipation: arc.dissipation,
-                closure_gap: arc.closure_gap,
-            },
-        };
-        loops.push(Loop {
-            kind: if i == 0 {
-                LoopKind::Major
-            } else {
-                LoopKind::Minor
-            },
-            start,
-            reversal,
-            end,
-            work: energy.work,
-            stored_energy_change: energy.stored_energy_change,
-            dissipation: energy.dissipation,
-            closure_gap: energy.closure_gap,
-            parent,
-            depth,
-        });
-    }
-    loops
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -266,14 +161,19 @@ mod tests {
     #[test]
     fn astm_worked_example_as_a_repeating_history() {
         // ASTM E1049 Fig. 6 (repeating history): peaks/valleys -2 1 -3 5 -1 3 -4 4 -2, started
-        // at the greatest peak 5: 5 -1 3 -4 4 -2 -2(merged) 1 -3 5. Ranges counted by the
-        // standard's §5.4.4 example: 4 (3,-1), 6 (4,-2)... checked by hand below.
-        let v = [5.0, -1.0, 3.0, -4.0, 4.0, -2.0, 1.0, -3.0, 5.0];
-        let cycles = rainflow_cycles(&v);
-        let ranges: Vec<f64> = cycles.iter().map(|c| (v[c.b] - v[c.a]).abs()).collect();
-        // (-1,3): 4; (-2,1): 3; (4,-3)... by hand: stack 5,-1,3 ; -4 closes (-1,3) r=4;
-        // 5,-4,4 ; -2 ; 1 ; -3 closes (-2,1) r=3 ; 5,-4,4,-3 ; 5 closes (4,-3) r=7, then
-        // (5,-4) r=9.
+        // at the greatest peak 5: 5 -1 3 -4 4 -2 -2(merged) 1 -3 5. By hand: stack 5,-1,3 ; -4
+        // closes (-1,3) r=4 ; 5,-4,4 ; -2 ; 1 ; -3 closes (-2,1) r=3 ; 5,-4,4,-3 ; 5 closes
+        // (4,-3) r=7, then (5,-4) r=9, the major loop.
+        let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0];
+        let model = crate::LuGre::paper().rate_independent();
+        let hl = HysteresisLoop::new(model, &crate::TurningPoints::new(&u).unwrap()).unwrap();
+        let t = hl.loop_table();
+        let ranges: Vec<f64> = (0..t.len())
+            .map(|i| (u[t.reversal()[i]] - u[t.start()[i]]).abs())
+            .collect();
         assert_eq!(ranges, vec![4.0, 3.0, 7.0, 9.0]);
+        assert_eq!(t.major(), 3);
+        // (-2, 1) lies inside (4, -3).
+        assert_eq!(t.depth(), &[1, 2, 1, 0]);
     }
 }

@@ -135,21 +135,42 @@ pub struct PhiFamily {
 impl PhiFamily {
     #[inline(always)]
     pub fn new(z: f64) -> Self {
-        let (e, one_minus_e, phi, h, q_over_z);
         if z < SERIES_BELOW {
-            h = polynomial(&H_SERIES, z);
-            phi = 1.0 - z * h;
-            one_minus_e = z * phi;
-            e = 1.0 - one_minus_e;
-            q_over_z = z * polynomial(&Q_SERIES, z);
+            Self::series(z)
         } else {
-            e = (-z).exp();
-            one_minus_e = 1.0 - e;
-            let inv_z = 1.0 / z;
-            phi = one_minus_e * inv_z;
-            h = (1.0 - phi) * inv_z;
-            q_over_z = (1.0 - 2.0 * phi + 0.5 * phi * (1.0 + e)) * inv_z;
+            Self::exponential(z)
         }
+    }
+
+    /// For `z < SERIES_BELOW`: no exponential, no division, no branch (so a loop of them
+    /// vectorizes, see [`PhiBlock`]).
+    #[inline(always)]
+    fn series(z: f64) -> Self {
+        let h = polynomial(&H_SERIES, z);
+        let phi = 1.0 - z * h;
+        let one_minus_e = z * phi;
+        Self::with(
+            1.0 - one_minus_e,
+            one_minus_e,
+            phi,
+            h,
+            z * polynomial(&Q_SERIES, z),
+        )
+    }
+
+    #[inline(always)]
+    fn exponential(z: f64) -> Self {
+        let e = (-z).exp();
+        let one_minus_e = 1.0 - e;
+        let inv_z = 1.0 / z;
+        let phi = one_minus_e * inv_z;
+        let h = (1.0 - phi) * inv_z;
+        let q_over_z = (1.0 - 2.0 * phi + 0.5 * phi * (1.0 + e)) * inv_z;
+        Self::with(e, one_minus_e, phi, h, q_over_z)
+    }
+
+    #[inline(always)]
+    fn with(e: f64, one_minus_e: f64, phi: f64, h: f64, q_over_z: f64) -> Self {
         Self {
             e,
             one_minus_e,
@@ -158,6 +179,78 @@ impl PhiFamily {
             phi2: 0.5 * phi * (1.0 + e),
             phi_minus_phi2: 0.5 * one_minus_e * phi,
             q_over_z,
+        }
+    }
+}
+
+/// Lanes per [`PhiBlock`].
+pub const BLOCK: usize = 64;
+
+/// [`PhiFamily`] at up to [`BLOCK`] arguments, as columns: where every argument is below the
+/// series threshold (short pieces, the common case away from saturation) the block is one
+/// branch-free loop the compiler vectorizes; otherwise each lane is [`PhiFamily::new`]. The
+/// values are the same either way.
+#[derive(Debug, Clone)]
+pub struct PhiBlock {
+    e: [f64; BLOCK],
+    one_minus_e: [f64; BLOCK],
+    phi: [f64; BLOCK],
+    h: [f64; BLOCK],
+    phi2: [f64; BLOCK],
+    phi_minus_phi2: [f64; BLOCK],
+    q_over_z: [f64; BLOCK],
+}
+
+impl Default for PhiBlock {
+    fn default() -> Self {
+        Self {
+            e: [0.0; BLOCK],
+            one_minus_e: [0.0; BLOCK],
+            phi: [0.0; BLOCK],
+            h: [0.0; BLOCK],
+            phi2: [0.0; BLOCK],
+            phi_minus_phi2: [0.0; BLOCK],
+            q_over_z: [0.0; BLOCK],
+        }
+    }
+}
+
+impl PhiBlock {
+    /// The family at each `z[i]` into lane `i` (lanes past `z`'s end are left as they were).
+    #[inline(always)]
+    pub fn fill(&mut self, z: &[f64; BLOCK]) {
+        if z.iter().all(|&z| z < SERIES_BELOW) {
+            for (i, &z) in z.iter().enumerate() {
+                self.set(i, PhiFamily::series(z));
+            }
+        } else {
+            for (i, &z) in z.iter().enumerate() {
+                self.set(i, PhiFamily::new(z));
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn set(&mut self, i: usize, f: PhiFamily) {
+        self.e[i] = f.e;
+        self.one_minus_e[i] = f.one_minus_e;
+        self.phi[i] = f.phi;
+        self.h[i] = f.h;
+        self.phi2[i] = f.phi2;
+        self.phi_minus_phi2[i] = f.phi_minus_phi2;
+        self.q_over_z[i] = f.q_over_z;
+    }
+
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> PhiFamily {
+        PhiFamily {
+            e: self.e[i],
+            one_minus_e: self.one_minus_e[i],
+            phi: self.phi[i],
+            h: self.h[i],
+            phi2: self.phi2[i],
+            phi_minus_phi2: self.phi_minus_phi2[i],
+            q_over_z: self.q_over_z[i],
         }
     }
 }
@@ -179,7 +272,7 @@ impl DoubleDouble {
     }
 
     /// Knuth's two-sum: `a + b = s + e` exactly.
-    #[inline]
+    #[inline(always)]
     fn two_sum(a: f64, b: f64) -> (f64, f64) {
         let s = a + b;
         let bb = s - a;
@@ -221,7 +314,7 @@ impl DoubleDouble {
 
 impl std::ops::Add for DoubleDouble {
     type Output = Self;
-    #[inline]
+    #[inline(always)]
     fn add(self, other: Self) -> Self {
         let (s, e) = Self::two_sum(self.hi, other.hi);
         let e = e + self.lo + other.lo;
