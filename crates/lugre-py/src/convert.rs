@@ -222,43 +222,9 @@ pub fn series<'py>(obj: &Bound<'py, PyAny>, name: &str) -> PyResult<Series<'py>>
     ))
 }
 
-/// An empty vector for an output of at most `n` elements, filled once and handed to numpy.
-///
-/// A large one (32 MiB or more, above which glibc's malloc always maps fresh memory) gets room
-/// for all `n` at once, when that much address space can be had, and the kernel is asked to
-/// back it with huge pages: only the pages written are ever backed, there is no reallocation,
-/// and writing fresh memory takes one page fault per 2 MiB rather than per 4 KiB (most of the
-/// time spent writing tens of MB of output). Smaller ones grow as usual, in memory malloc
-/// reuses from call to call. Trim with `shrink_to_fit` once filled.
-pub fn column<T>(n: usize) -> Vec<T> {
-    let mut v = Vec::new();
-    if n.saturating_mul(std::mem::size_of::<T>()) >= 32 << 20 && v.try_reserve_exact(n).is_ok() {
-        advise_huge_pages(&mut v);
-    }
-    v
-}
-
-/// Asks for transparent huge pages over the capacity of a vector (as numpy does for its
-/// arrays of 4 MiB or more): filling fresh memory then takes one page fault per 2 MiB rather
-/// than per 4 KiB, which for large outputs is most of the time spent writing them.
-#[cfg(target_os = "linux")]
-fn advise_huge_pages<T>(v: &mut Vec<T>) {
-    const PAGE: usize = 4096;
-    let bytes = v.capacity().saturating_mul(std::mem::size_of::<T>());
-    let start = v.as_mut_ptr() as usize;
-    let (lo, hi) = (start.next_multiple_of(PAGE), (start + bytes) / PAGE * PAGE);
-    if hi > lo {
-        // SAFETY: `lo..hi` lies within the vector's allocation (whole pages of it); the advice
-        // changes how the kernel backs those pages, never their contents. A failure (no THP
-        // support) leaves the memory as it was.
-        unsafe {
-            libc::madvise(lo as *mut libc::c_void, hi - lo, libc::MADV_HUGEPAGE);
-        }
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn advise_huge_pages<T>(_v: &mut Vec<T>) {}
+/// An empty vector for an output of at most `n` elements, filled once and handed to numpy
+/// (large ones backed by huge pages, see [`lugre::memory::column`]).
+pub use lugre::memory::column;
 
 fn dtype_name(array: &Bound<'_, PyAny>) -> String {
     array

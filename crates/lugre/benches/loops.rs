@@ -1,14 +1,21 @@
 //! The hysteresis loop, every minor loop and their energies for periodic inputs of 10^3 to 10^7
 //! random turning points (issue 8: 10^6, and linear scaling from 10^3 to 10^7). Throughput is
 //! in turning points per second; equal throughput across sizes means linear scaling.
+//!
+//! * `loop_and_minor_loops`: `HysteresisLoop::new`, which computes `y°` at every turning point
+//!   and every loop with its energies and nesting (the `LoopTable`), for the paper's model
+//!   (`a = 1/2`: pieces of `a l < 1/2`, the series path);
+//! * `stiff`: the same for a realistic stiffness (`sigma0 = 1e5`, `g0 = 1.5`, steps of 0.01 to
+//!   1 mm: `a l` from 7 to 700, the exponential path);
+//! * `as_records`: `new` plus `loops()`, the same loops as `Vec<Loop>` ordered by start.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use lugre::{HysteresisLoop, LuGre, TurningPoints};
+use lugre::{HysteresisLoop, LuGre, LuGreParams, TurningPoints};
 use std::hint::black_box;
 
-/// Alternating random steps in [0.01, 1): every point is a reversal. A fixed LCG keeps runs
-/// comparable.
-fn random_turning_points(n: usize) -> TurningPoints {
+/// Alternating random steps in [0.01, 1) times `scale`: every point is a reversal. A fixed LCG
+/// keeps runs comparable.
+fn random_turning_points(n: usize, scale: f64) -> TurningPoints {
     let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut u = 0.0;
     let values: Vec<f64> = (0..n)
@@ -17,7 +24,7 @@ fn random_turning_points(n: usize) -> TurningPoints {
                 .wrapping_mul(6_364_136_223_846_793_005)
                 .wrapping_add(1_442_695_040_888_963_407);
             let r = (state >> 11) as f64 / (1u64 << 53) as f64;
-            let step = 0.01 + 0.99 * r;
+            let step = scale * (0.01 + 0.99 * r);
             u += if i % 2 == 0 { step } else { -step };
             u
         })
@@ -26,20 +33,44 @@ fn random_turning_points(n: usize) -> TurningPoints {
 }
 
 fn loops(c: &mut Criterion) {
-    let model = LuGre::paper().rate_independent();
-    let mut group = c.benchmark_group("loop_and_minor_loops");
-    group.sample_size(10);
-    for n in [1_000, 10_000, 100_000, 1_000_000, 10_000_000] {
-        let tp = random_turning_points(n);
-        group.throughput(Throughput::Elements(n as u64));
-        group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
-            b.iter(|| {
-                let hl = HysteresisLoop::new(model, black_box(tp)).expect("finite");
-                black_box(hl.loops())
-            })
-        });
+    let paper = LuGre::paper().rate_independent();
+    let stiff = LuGre::from_params(LuGreParams {
+        sigma0: 1e5,
+        sigma1: 316.2,
+        fc: 1.0,
+        fs: 1.5,
+        vs: 1e-3,
+        ..LuGreParams::default()
+    })
+    .expect("valid parameters")
+    .rate_independent();
+    let sizes = [1_000, 10_000, 100_000, 1_000_000, 10_000_000];
+    for (name, model, scale, records) in [
+        ("loop_and_minor_loops", paper, 1.0, false),
+        ("stiff", stiff, 1e-3, false),
+        ("as_records", paper, 1.0, true),
+    ] {
+        let mut group = c.benchmark_group(name);
+        group.sample_size(10);
+        for n in sizes {
+            if name != "loop_and_minor_loops" && !(n == 1_000 || n == 1_000_000) {
+                continue;
+            }
+            let tp = random_turning_points(n, scale);
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
+                b.iter(|| {
+                    let hl = HysteresisLoop::new(model, black_box(tp)).expect("finite");
+                    if records {
+                        black_box(hl.loops().len())
+                    } else {
+                        black_box(hl.loop_table().len())
+                    }
+                })
+            });
+        }
+        group.finish();
     }
-    group.finish();
 }
 
 criterion_group!(benches, loops);

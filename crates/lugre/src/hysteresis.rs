@@ -36,14 +36,16 @@
 //! D over a piece = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z
 //! ```
 //!
-//! with `z = a l` and `q(z) = 1 - 2 phi(z) + phi(2z)`, summed in double-double prefix sums so
-//! that any arc's `D` costs O(1). `dV` needs the closure gap `y_end - y_start`, which is `O(a)`
-//! on loops shorter than `1/a`; `HysteresisLoop::arc` computes it without taking the
-//! difference of the two values.
+//! with `z = a l` and `q(z) = 1 - 2 phi(z) + phi(2z)`. `dV` needs the closure gap
+//! `y_end - y_start`, which is `O(a)` on loops shorter than `1/a`; it is computed without
+//! taking the difference of the two values (`arc_energy.rs`). The sums over every loop's
+//! arc are carried on the rainflow stack in one pass over the period ([`crate::LoopTable`]),
+//! which also writes `y°` at the turning points: each piece is evaluated once.
 
 use crate::error::{InputError, LoopError};
 use crate::input::TurningPoints;
 use crate::loop_table::{LoopTable, Period};
+use crate::memory::column;
 use crate::minor::canonical_start;
 use crate::model::RateIndependent;
 use crate::numerics::{h, one_minus_exp, phi, PhiFamily};
@@ -168,7 +170,9 @@ pub(crate) fn piece_with(model: RateIndependent, y_k: f64, s: f64, l: f64, f: &P
         + 2.0 * s * y_k * l * f.phi_minus_phi2
         + sigma0 * l * l * f.q_over_z;
     // Past z = 1e300, 1/z is near the subnormals and loses bits: the saturated forms then.
-    if z < 1e300 && e.is_finite() && y_end.is_finite() && d.is_finite() {
+    // `0 x` is 0 for a finite `x`, NaN otherwise: one test for the three.
+    let finite = 0.0 * e + 0.0 * y_end + 0.0 * d == 0.0;
+    if z < 1e300 && finite {
         // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above.
         Piece {
             y_end: y_end.clamp(-g0, g0),
@@ -228,9 +232,10 @@ pub struct HysteresisLoop {
 impl HysteresisLoop {
     /// The loop of `model` for the periodic input `input`.
     pub fn new(model: RateIndependent, input: &TurningPoints) -> Result<Self, InputError> {
-        let u = input.values().to_vec();
-        let n = u.len();
-        let mut rho = Vec::with_capacity(n + 1);
+        let n = input.len();
+        let mut u = column(n);
+        u.extend_from_slice(input.values());
+        let mut rho = column(n + 1);
         // The running sum stays in a register (not re-read from the vector each step).
         let mut total = 0.0;
         rho.push(total);
@@ -247,7 +252,11 @@ impl HysteresisLoop {
             model,
             u,
             rho,
-            y: vec![0.0; n + 1],
+            y: {
+                let mut y = column(n + 1);
+                y.resize(n + 1, 0.0);
+                y
+            },
             loops: LoopTable::default(),
         };
         let period = Period {

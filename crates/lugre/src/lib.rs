@@ -26,6 +26,7 @@ pub mod fit;
 pub mod hysteresis;
 pub mod input;
 mod loop_table;
+pub mod memory;
 pub mod minor;
 pub mod model;
 pub mod numerics;

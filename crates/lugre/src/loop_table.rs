@@ -19,7 +19,8 @@
 //! whose arc starts before it: kept with a stack of loops still without a parent.
 
 use crate::arc_energy::{arc_energy, Sums};
-use crate::hysteresis::{piece, piece_with};
+use crate::hysteresis::piece_with;
+use crate::memory::column;
 use crate::model::RateIndependent;
 use crate::numerics::{PhiBlock, BLOCK};
 
@@ -131,17 +132,17 @@ impl LoopTable {
 
     fn with_capacity(rows: usize) -> Self {
         Self {
-            start: Vec::with_capacity(rows),
-            reversal: Vec::with_capacity(rows),
-            reversal_rho: Vec::with_capacity(rows),
-            end_rho: Vec::with_capacity(rows),
-            end_u: Vec::with_capacity(rows),
-            end_y: Vec::with_capacity(rows),
-            work: Vec::with_capacity(rows),
-            stored_energy_change: Vec::with_capacity(rows),
-            dissipation: Vec::with_capacity(rows),
-            closure_gap: Vec::with_capacity(rows),
-            parent: Vec::with_capacity(rows),
+            start: column(rows),
+            reversal: column(rows),
+            reversal_rho: column(rows),
+            end_rho: column(rows),
+            end_u: column(rows),
+            end_y: column(rows),
+            work: column(rows),
+            stored_energy_change: column(rows),
+            dissipation: column(rows),
+            closure_gap: column(rows),
+            parent: column(rows),
             depth: Vec::new(),
         }
     }
@@ -166,13 +167,13 @@ impl LoopTable {
         self.stored_energy_change.push(energy.stored_energy_change);
         self.dissipation.push(energy.dissipation);
         self.closure_gap.push(energy.closure_gap);
-        self.parent.push(NONE);
     }
 
     /// Depths from the parents: a parent is always a later row, so one backward pass.
     fn fill_depths(&mut self) {
         let n = self.len();
-        self.depth = vec![0; n];
+        self.depth = column(n);
+        self.depth.resize(n, 0);
         for i in (0..n).rev() {
             let p = self.parent[i];
             if p != NONE {
@@ -274,12 +275,14 @@ impl Period<'_> {
         let mut stack: Vec<Entry> = Vec::with_capacity(64);
         // The sums of each entry, from its point to the next entry up (the top entry: to the
         // last point pushed); apart from the entries, which are read far more often.
+        // `open_sums[i + 1]` belongs to `stack[i]`; `open_sums[0]` collects what falls off the
+        // bottom of the stack (after a repeated global maximum), so that every merge has an
+        // entry below it to go to.
         let mut open_sums: Vec<Sums> = Vec::with_capacity(64);
+        open_sums.push(Sums::default());
         let mut touches: Vec<Touch> = Vec::new();
         // Loops without a parent yet: (rotated start, row).
         let mut roots: Vec<(usize, usize)> = Vec::with_capacity(64);
-        // Sums that fell off the bottom of the stack (a repeated global maximum).
-        let mut base = Sums::default();
 
         let (mut u_prev, mut y_prev) = (u[self.r], self.y_r);
         y[self.r] = self.y_r;
@@ -292,17 +295,24 @@ impl Period<'_> {
         open_sums.push(Sums::default());
         let mut z = [0.0; BLOCK];
         let mut family = PhiBlock::default();
+        // Loops closed but not yet in the table: the pieces to their ends are evaluated a
+        // block at a time, like the walk's.
+        let mut closed: Vec<Closed> = Vec::with_capacity(BLOCK);
+        let mut ends = PhiBlock::default();
+        // Turning point `k` of each point of the block.
+        let mut turning = [0; BLOCK];
+        let mut k_prev = self.r;
         for first in (1..=n).step_by(BLOCK) {
             let points = first..(first + BLOCK).min(n + 1);
             // The families of the block's pieces in one go (vectorized), then the walk.
-            for (i, p) in points.clone().enumerate() {
-                let (k, _) = self.position(p);
-                let (k_prev, _) = self.position(p - 1);
-                z[i] = model.a() * (u[k] - u[k_prev]).abs();
+            for i in 0..points.len() {
+                let k = if k_prev + 1 == n { 0 } else { k_prev + 1 };
+                (turning[i], z[i]) = (k, model.a() * (u[k] - u[k_prev]).abs());
+                k_prev = k;
             }
             family.fill(&z);
             for (i, p) in points.enumerate() {
-                let (k, _) = self.position(p);
+                let k = turning[i];
                 let u_p = u[k];
                 let (s, l) = step(u_prev, u_p);
                 let piece_p = piece_with(model, y_prev, s, l, &family.get(i));
@@ -314,7 +324,7 @@ impl Period<'_> {
                 while stack.len() >= 2 {
                     let m = stack.len();
                     let (a, b) = (stack[m - 2], stack[m - 1]);
-                    let (sums_a, sums_b) = (&open_sums[m - 2], &open_sums[m - 1]);
+                    let (sums_a, sums_b) = (&open_sums[m - 1], &open_sums[m]);
                     let x = (u_p - b.u).abs();
                     let range = (b.u - a.u).abs();
                     if !(x > range || (x == range && u_p > b.u)) {
@@ -331,31 +341,37 @@ impl Period<'_> {
                     }
                     let merged = *sums_a + *sums_b;
                     if b.j != lowest {
-                        let (sums, end_j, offset, end_u, end_y) = if b.touch != NONE {
+                        let (sums, end_j, offset, end_u, end) = if b.touch != NONE {
                             let t = touches[b.touch];
-                            (t.sums, t.j, 0.0, t.u, t.y)
+                            (t.sums, t.j, 0.0, t.u, End::At(t.y))
                         } else if x == range {
-                            (merged + last, p, 0.0, u_p, y_p)
+                            (merged + last, p, 0.0, u_p, End::At(y_p))
                         } else {
                             let offset = (a.u - u_prev).abs();
-                            let to_c = piece(model, y_prev, s, offset);
-                            let sums = merged + Sums::piece(y_prev, s, offset, &to_c);
-                            (sums, p - 1, offset, u_prev + s * offset, to_c.y_end)
+                            let end = End::Piece { y: y_prev, s };
+                            (merged, p - 1, offset, u_prev + s * offset, end)
                         };
                         adopt(&mut roots, &mut table.parent, a.j, (end_j, offset));
-                        self.push_minor(&mut table, &a, &b, sums, end_j, offset, end_u, end_y);
+                        closed.push(Closed {
+                            start: a.j,
+                            y_start: a.y,
+                            reversal: b.j,
+                            end_j,
+                            offset,
+                            end_u,
+                            end,
+                            sums,
+                        });
+                        if closed.len() == BLOCK {
+                            self.finish_rows(&mut closed, &mut ends, &mut table);
+                        }
                     }
                     stack.truncate(m - 2);
-                    open_sums.truncate(m - 2);
-                    match open_sums.last_mut() {
-                        Some(below) => *below = *below + merged,
-                        None => base = base + merged,
-                    }
+                    open_sums.truncate(m - 1);
+                    open_sums[m - 2] = open_sums[m - 2] + merged;
                 }
-                match open_sums.last_mut() {
-                    Some(top) => *top = *top + last,
-                    None => base = base + last,
-                }
+                let top = stack.len();
+                open_sums[top] = open_sums[top] + last;
                 stack.push(Entry {
                     j: p,
                     u: u_p,
@@ -367,12 +383,14 @@ impl Period<'_> {
             }
         }
         y[n] = y[0];
+        self.finish_rows(&mut closed, &mut ends, &mut table);
 
-        let total = open_sums.iter().fold(base, |acc, e| acc + *e);
+        let total = open_sums.iter().fold(Sums::default(), |acc, e| acc + *e);
         let major = table.len();
         for &(_, r) in &roots {
             table.parent[r] = major;
         }
+        table.parent.push(NONE);
         let d = total.dissipation();
         let (k_low, wraps_low) = self.position(lowest);
         table.push(
@@ -391,42 +409,85 @@ impl Period<'_> {
         table
     }
 
-    #[allow(clippy::too_many_arguments)]
-    #[inline]
-    fn push_minor(
-        &self,
-        table: &mut LoopTable,
-        a: &Entry,
-        b: &Entry,
-        sums: Sums,
-        end_j: usize,
-        offset: f64,
-        end_u: f64,
-        end_y: f64,
-    ) {
-        let (k_a, wraps_a) = self.position(a.j);
-        let (k_b, wraps_b) = self.position(b.j);
-        let (k_c, wraps_c) = self.position(end_j);
-        // The start is reported within [0, P).
-        table.push(
-            k_a,
-            k_b,
-            self.rho_at(k_b, wraps_b - wraps_a, 0.0),
-            (self.rho_at(k_c, wraps_c - wraps_a, offset), end_u, end_y),
-            arc_energy(self.model, &sums, a.y, end_y),
-        );
+    /// The rows of the loops in `closed`, in order: the pieces to their ends (one block of
+    /// families), their energies, their places in the period.
+    #[inline(always)]
+    fn finish_rows(&self, closed: &mut Vec<Closed>, ends: &mut PhiBlock, table: &mut LoopTable) {
+        let model = self.model;
+        let mut z = [0.0; BLOCK];
+        for (z, c) in z.iter_mut().zip(closed.iter()) {
+            *z = match c.end {
+                End::Piece { .. } => model.a() * c.offset,
+                End::At(_) => 0.0,
+            };
+        }
+        ends.fill(&z);
+        for (i, c) in closed.iter().enumerate() {
+            let (sums, end_y) = match c.end {
+                End::Piece { y, s } => {
+                    let to_end = piece_with(model, y, s, c.offset, &ends.get(i));
+                    (c.sums + Sums::piece(y, s, c.offset, &to_end), to_end.y_end)
+                }
+                End::At(y) => (c.sums, y),
+            };
+            let (k_a, wraps_a) = self.position(c.start);
+            let (k_b, wraps_b) = self.position(c.reversal);
+            let (k_c, wraps_c) = self.position(c.end_j);
+            // The start is reported within [0, P).
+            table.push(
+                k_a,
+                k_b,
+                self.rho_at(k_b, wraps_b - wraps_a, 0.0),
+                (
+                    self.rho_at(k_c, wraps_c - wraps_a, c.offset),
+                    c.end_u,
+                    end_y,
+                ),
+                arc_energy(model, &sums, c.y_start, end_y),
+            );
+        }
+        closed.clear();
     }
 }
 
-/// Records the loop about to be pushed as row `parent.len()`, with its arc from index `start`
+/// How a closed loop's arc ends.
+#[derive(Debug, Clone, Copy)]
+enum End {
+    /// At a point where `y°` is known.
+    At(f64),
+    /// `offset` along the piece from `y` in direction `s`.
+    Piece { y: f64, s: f64 },
+}
+
+/// A loop that closed, before the piece to its end is evaluated: indices in the rotated
+/// period, and the sums over its arc up to that piece.
+#[derive(Debug, Clone, Copy)]
+struct Closed {
+    start: usize,
+    y_start: f64,
+    reversal: usize,
+    end_j: usize,
+    offset: f64,
+    end_u: f64,
+    end: End,
+    sums: Sums,
+}
+
+/// Adds the parent entry of the loop that closed as row `parent.len()`, with its arc from index `start`
 /// to `end` (index, offset) of the rotated period, in `roots` (loops without a parent yet,
 /// disjoint, ordered by where they start), and makes it the parent of the roots inside its
 /// arc. A loop closes after every loop inside it, so those are on the top of `roots`, except
 /// for loops past its end, which only a touch (an arc ending before its cycle closed) leaves
 /// there.
 #[inline]
-fn adopt(roots: &mut Vec<(usize, usize)>, parent: &mut [usize], start: usize, end: (usize, f64)) {
+fn adopt(
+    roots: &mut Vec<(usize, usize)>,
+    parent: &mut Vec<usize>,
+    start: usize,
+    end: (usize, f64),
+) {
     let row = parent.len();
+    parent.push(NONE);
     let past_end = |j: usize| j > end.0 || (j == end.0 && end.1 == 0.0);
     let mut top = roots.len();
     while top > 0 && past_end(roots[top - 1].0) {

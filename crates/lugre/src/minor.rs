@@ -21,9 +21,11 @@
 //! lexicographically greatest, so the set of loops does not depend on where the user's
 //! period begins, even with repeated extreme values.
 //!
-//! Energies over an arc (`arc_energy.rs`): short arcs are summed piece by piece, long ones
-//! from double-double prefix sums, and the work is taken from whichever of its two forms
-//! (`integral (y - y_A) dpsi` or `dV + D`) rounds less.
+//! The pairing, `y°` and the energies over each arc are computed in one pass over the period
+//! ([`crate::LoopTable`]: the loops as columns, in the order they close); the
+//! work is taken from whichever of its two forms (`integral (y - y_A) dpsi` or `dV + D`)
+//! rounds less (`arc_energy.rs`). [`minor_loops`] gives the same loops as records ordered
+//! by where they start.
 
 use crate::hysteresis::{HysteresisLoop, LoopPoint};
 
@@ -64,7 +66,9 @@ pub struct Loop {
 pub(crate) fn canonical_start(u: &[f64]) -> usize {
     // A unique global maximum starts the greatest rotation (the common case): three
     // branch-free passes instead of the comparisons below.
-    let max = u.iter().fold(f64::NEG_INFINITY, |m, &x| if x > m { x } else { m });
+    let max = u
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &x| if x > m { x } else { m });
     if u.iter().filter(|&&x| x == max).count() == 1 {
         return u.iter().position(|&x| x == max).unwrap_or(0);
     }
