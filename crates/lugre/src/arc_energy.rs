@@ -94,14 +94,26 @@ impl Sums {
         }
     }
 
+    /// Lane `i` rounded to f64. A sum that overflowed stays infinite (its trailing part, the
+    /// error of an infinite sum, is NaN).
     #[inline]
     fn lane(&self, i: usize) -> f64 {
-        self.hi[i] + self.lo[i]
+        let hi = self.hi[i];
+        if hi.is_finite() {
+            hi + self.lo[i]
+        } else {
+            hi
+        }
     }
 
-    /// The dissipation over the pieces added.
+    /// The dissipation over the pieces added (never < 0; an overflow stays visible as inf).
     pub fn dissipation(&self) -> f64 {
-        self.lane(D).max(0.0)
+        let d = self.lane(D);
+        if d < 0.0 {
+            0.0
+        } else {
+            d
+        }
     }
 }
 
@@ -178,7 +190,9 @@ pub(crate) fn closure_gap(
 /// `dV` from the gap and the two end values.
 #[inline]
 pub(crate) fn stored_energy_change(model: RateIndependent, gap: f64, y_a: f64, y_c: f64) -> f64 {
-    gap * (y_c + y_a) / (2.0 * model.sigma0())
+    // `gap / sigma0` first: a length, where `gap (y_c + y_a)` is a force squared and overflows
+    // (forces above 1e154) or underflows (below 1e-154) where dV itself is representable.
+    gap / model.sigma0() * (0.5 * (y_c + y_a))
 }
 
 /// Whether the direct form of `W` rounds less than `dV + D` on an arc of length `length`

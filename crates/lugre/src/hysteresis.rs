@@ -165,8 +165,9 @@ pub(crate) fn piece_with(model: RateIndependent, y_k: f64, s: f64, l: f64, f: &P
     } else {
         y_k * f.e + s * sigma0 * c
     };
-    // a / sigma0 = 1 / g0
-    let d = y_k * y_k * l * f.phi2 / g0
+    // a / sigma0 = 1 / g0; `y_k / g0` first (it is <= 1), so that `y_k^2` neither overflows
+    // (|y| > 1e154) nor underflows (|y| < 1e-154) where D itself is representable.
+    let d = y_k / g0 * y_k * l * f.phi2
         + 2.0 * s * y_k * l * f.phi_minus_phi2
         + sigma0 * l * l * f.q_over_z;
     // Past z = 1e300, 1/z is near the subnormals and loses bits: the saturated forms then.

@@ -295,7 +295,7 @@ impl DoubleDouble {
 
     /// `a * b` exactly (Dekker's two-product with Veltkamp splitting, so no FMA instruction is
     /// needed), for `|a|, |b|` below about `1e300` and a product that neither over- nor
-    /// underflows.
+    /// underflows; beyond, `a * b` rounded (never NaN from the splitting).
     #[inline]
     pub fn product(a: f64, b: f64) -> Self {
         const SPLIT: f64 = 134_217_729.0; // 2^27 + 1
@@ -308,7 +308,11 @@ impl DoubleDouble {
         let (ah, al) = split(a);
         let (bh, bl) = split(b);
         let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        Self { hi: p, lo: e }
+        // Past about 1e300 the splitting overflows (e is NaN): the rounded product alone then.
+        Self {
+            hi: p,
+            lo: if e.is_finite() { e } else { 0.0 },
+        }
     }
 }
 

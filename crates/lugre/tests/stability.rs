@@ -378,6 +378,37 @@ fn the_ends_of_the_f64_range() {
         }
         assert!((a.closure_gap - b.closure_gap).abs() <= LOOP * 2.0);
     }
+    // Forces at the ends of the range: sigma0 and g0 -> lambda (sigma0, g0) leaves a and the
+    // loops' places as they are and multiplies y° and every energy by lambda, exactly for a
+    // power of two. y^2 and gap (y_A + y_C) over- and underflowed there (D = 0, dV = -0; found
+    // by comparing the streaming engine with the one before it), and the exact product y c
+    // gave NaN past 1e300.
+    let u = [0.0, 1.0, 0.2, 1.5, 0.7, 0.9, 0.3, 2.0];
+    let h1 = common::loop_of(0.75, 2.0, &u);
+    for lambda in [2f64.powi(-1000), 2f64.powi(990), 2f64.powi(1020)] {
+        let h2 = common::loop_of(0.75 * lambda, 2.0 * lambda, &u);
+        for (y1, y2) in h1.turning_y().iter().zip(h2.turning_y()) {
+            assert!(
+                (y1 * lambda - y2).abs() <= LOOP * 2.0 * lambda,
+                "{y1:e} vs {y2:e}"
+            );
+        }
+        for (a, b) in h1.loops().iter().zip(&h2.loops()) {
+            let scale = a.stored_energy_change.abs() + a.dissipation;
+            for (x, y) in [
+                (a.work, b.work),
+                (a.stored_energy_change, b.stored_energy_change),
+                (a.dissipation, b.dissipation),
+                (a.closure_gap, b.closure_gap),
+            ] {
+                assert!(y.is_finite(), "{y:e} at lambda = {lambda:e}");
+                assert!(
+                    (x * lambda - y).abs() <= 1e-12 * scale.max(x.abs()) * lambda,
+                    "{x:e} * {lambda:e} vs {y:e}"
+                );
+            }
+        }
+    }
     // Fs far below Fc: g(0) = Fs exactly, where Fc + (Fs - Fc) exp(0) rounds to 0.
     let m = LuGre::from_params(LuGreParams {
         fs: 1e-300,
