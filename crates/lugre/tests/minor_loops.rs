@@ -627,3 +627,63 @@ fn a_hundred_thousand_turning_points() {
         "loops() of 1e5 turning points took {elapsed:?}"
     );
 }
+
+/// The table holds the same loops as the records, in the order rainflow closes them: every
+/// parent after its children, the major loop last; start and reversal given as turning points.
+#[test]
+fn loop_table_is_the_loops_in_closing_order() {
+    let model = LuGre::paper().rate_independent();
+    let mut rng = Lcg(17);
+    let mut inputs: Vec<Vec<f64>> = [2, 4, 8, 50, 1000]
+        .iter()
+        .map(|&n| random_turning_points(&mut rng, n))
+        .collect();
+    // Ties: repeated maxima and minima, touches that do not close.
+    inputs.push(vec![0.0, 2.0, 1.0, 2.0, 0.0, 2.0, 1.0, 2.0, 1.0, 3.0]);
+    inputs.push(vec![0.0, 8.0, 3.0, 6.0, 3.0, 4.0]);
+    for u in inputs {
+        let hl = loop_of_model(model, &u);
+        let (t, loops) = (hl.loop_table(), hl.loops());
+        assert_eq!(t.len(), loops.len());
+        assert_eq!(t.major(), t.len() - 1);
+        assert_eq!(t.parent(t.major()), None);
+        let (tu, ty, trho) = (hl.turning_points(), hl.turning_y(), hl.turning_rho());
+        // Rows by where they start in the period of the major loop, as `loops()` orders them.
+        let mut matched = vec![false; loops.len()];
+        for row in 0..t.len() {
+            if let Some(p) = t.parent(row) {
+                assert!(p > row, "parent {p} of row {row} closes before it");
+                assert_eq!(t.depth()[row], t.depth()[p] + 1);
+            }
+            let (k_a, k_b) = (t.start()[row], t.reversal()[row]);
+            let l = loops
+                .iter()
+                .position(|l| l.start.rho == trho[k_a] && l.reversal.rho == t.reversal_rho()[row])
+                .unwrap_or_else(|| panic!("row {row} is not among the loops"));
+            assert!(!matched[l], "two rows for loop {l}");
+            matched[l] = true;
+            let r = &loops[l];
+            assert_eq!((r.start.u, r.start.y), (tu[k_a], ty[k_a]));
+            assert_eq!((r.reversal.u, r.reversal.y), (tu[k_b], ty[k_b]));
+            assert_eq!(
+                [r.end.rho, r.end.u, r.end.y],
+                [t.end_rho()[row], t.end_u()[row], t.end_y()[row]]
+            );
+            assert_eq!(
+                [r.work, r.stored_energy_change, r.dissipation, r.closure_gap],
+                [
+                    t.work()[row],
+                    t.stored_energy_change()[row],
+                    t.dissipation()[row],
+                    t.closure_gap()[row]
+                ]
+            );
+            assert_eq!(r.depth, t.depth()[row] as usize);
+            assert_eq!(r.kind == LoopKind::Major, row == t.major());
+        }
+    }
+}
+
+fn loop_of_model(model: RateIndependent, u: &[f64]) -> HysteresisLoop {
+    HysteresisLoop::new(model, &lugre::TurningPoints::new(u).unwrap()).unwrap()
+}
