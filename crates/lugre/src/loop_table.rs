@@ -20,7 +20,7 @@
 
 use crate::arc_energy::{arc_energy, Sums};
 use crate::hysteresis::piece_with;
-use crate::memory::column;
+use crate::memory::Columns;
 use crate::model::RateIndependent;
 use crate::numerics::{PhiBlock, BLOCK};
 
@@ -39,145 +39,155 @@ const NONE: usize = usize::MAX;
 /// reversal's and the end's may exceed `P` when the arc wraps round the period.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct LoopTable {
-    start: Vec<usize>,
-    reversal: Vec<usize>,
-    reversal_rho: Vec<f64>,
-    end_rho: Vec<f64>,
-    end_u: Vec<f64>,
-    end_y: Vec<f64>,
-    work: Vec<f64>,
-    stored_energy_change: Vec<f64>,
-    dissipation: Vec<f64>,
-    closure_gap: Vec<f64>,
-    parent: Vec<usize>,
-    depth: Vec<u32>,
+    len: usize,
+    /// [`START`], [`REVERSAL`], [`PARENT`], [`DEPTH`].
+    indices: Columns<usize>,
+    /// [`REVERSAL_RHO`] to [`CLOSURE_GAP`].
+    reals: Columns<f64>,
 }
+
+const START: usize = 0;
+const REVERSAL: usize = 1;
+const PARENT: usize = 2;
+const DEPTH: usize = 3;
+const REVERSAL_RHO: usize = 0;
+const END_RHO: usize = 1;
+const END_U: usize = 2;
+const END_Y: usize = 3;
+const WORK: usize = 4;
+const STORED_ENERGY_CHANGE: usize = 5;
+const DISSIPATION: usize = 6;
+const CLOSURE_GAP: usize = 7;
 
 impl LoopTable {
     /// Number of loops, the major loop included.
     pub fn len(&self) -> usize {
-        self.start.len()
+        self.len
     }
 
     pub fn is_empty(&self) -> bool {
-        self.start.is_empty()
+        self.len == 0
     }
 
     /// The row of the major loop (the last one).
     pub fn major(&self) -> usize {
-        self.len() - 1
+        self.len - 1
+    }
+
+    fn index(&self, i: usize) -> &[usize] {
+        &self.indices.column(i)[..self.len]
+    }
+
+    fn real(&self, i: usize) -> &[f64] {
+        &self.reals.column(i)[..self.len]
     }
 
     /// Index `k` of the turning point each loop starts at (`rho_A = rho_k`, `u_A = u_k`).
     pub fn start(&self) -> &[usize] {
-        &self.start
+        self.index(START)
     }
 
     /// Index `k` of the turning point each loop turns at.
     pub fn reversal(&self) -> &[usize] {
-        &self.reversal
+        self.index(REVERSAL)
     }
 
     /// `rho_B` of each loop's reversal (`rho_k`, plus `P` when the arc wrapped before it).
     pub fn reversal_rho(&self) -> &[f64] {
-        &self.reversal_rho
+        self.real(REVERSAL_RHO)
     }
 
     /// `rho_C`, where the input first returns to `u_A`.
     pub fn end_rho(&self) -> &[f64] {
-        &self.end_rho
+        self.real(END_RHO)
     }
 
     /// `u` at the end (`u_A` up to the rounding of `u_k + s offset`).
     pub fn end_u(&self) -> &[f64] {
-        &self.end_u
+        self.real(END_U)
     }
 
     /// `y°(rho_C)`.
     pub fn end_y(&self) -> &[f64] {
-        &self.end_y
+        self.real(END_Y)
     }
 
     /// `W = integral y° dpsi` over each arc, nested loops included.
     pub fn work(&self) -> &[f64] {
-        &self.work
+        self.real(WORK)
     }
 
     /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`.
     pub fn stored_energy_change(&self) -> &[f64] {
-        &self.stored_energy_change
+        self.real(STORED_ENERGY_CHANGE)
     }
 
     /// `D = W - dV >= 0`.
     pub fn dissipation(&self) -> &[f64] {
-        &self.dissipation
+        self.real(DISSIPATION)
     }
 
     /// `y_C - y_A`.
     pub fn closure_gap(&self) -> &[f64] {
-        &self.closure_gap
+        self.real(CLOSURE_GAP)
     }
 
     /// Row of the smallest loop containing each one (always a later row); `None` for the major
     /// loop.
     pub fn parent(&self, row: usize) -> Option<usize> {
-        let p = self.parent[row];
+        let p = self.index(PARENT)[row];
         (p != NONE).then_some(p)
     }
 
     /// 0 for the major loop, the parent's depth + 1 otherwise.
-    pub fn depth(&self) -> &[u32] {
-        &self.depth
+    pub fn depth(&self) -> &[usize] {
+        self.index(DEPTH)
     }
 
+    /// Room for `rows` loops (a period of `n` turning points has at most `n / 2 + 1`).
     fn with_capacity(rows: usize) -> Self {
         Self {
-            start: column(rows),
-            reversal: column(rows),
-            reversal_rho: column(rows),
-            end_rho: column(rows),
-            end_u: column(rows),
-            end_y: column(rows),
-            work: column(rows),
-            stored_energy_change: column(rows),
-            dissipation: column(rows),
-            closure_gap: column(rows),
-            parent: column(rows),
-            depth: Vec::new(),
+            len: 0,
+            indices: Columns::zeroed(4, rows),
+            reals: Columns::zeroed(8, rows),
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// The loop in row `row` (its parent entry was made when it closed, [`adopt`]).
     #[inline]
-    fn push(
+    fn set(
         &mut self,
-        start: usize,
-        reversal: usize,
+        row: usize,
+        (start, reversal): (usize, usize),
         reversal_rho: f64,
         end: (f64, f64, f64),
         energy: crate::arc_energy::ArcEnergy,
     ) {
-        self.start.push(start);
-        self.reversal.push(reversal);
-        self.reversal_rho.push(reversal_rho);
-        self.end_rho.push(end.0);
-        self.end_u.push(end.1);
-        self.end_y.push(end.2);
-        self.work.push(energy.work);
-        self.stored_energy_change.push(energy.stored_energy_change);
-        self.dissipation.push(energy.dissipation);
-        self.closure_gap.push(energy.closure_gap);
+        self.indices.column_mut(START)[row] = start;
+        self.indices.column_mut(REVERSAL)[row] = reversal;
+        let reals = [
+            (REVERSAL_RHO, reversal_rho),
+            (END_RHO, end.0),
+            (END_U, end.1),
+            (END_Y, end.2),
+            (WORK, energy.work),
+            (STORED_ENERGY_CHANGE, energy.stored_energy_change),
+            (DISSIPATION, energy.dissipation),
+            (CLOSURE_GAP, energy.closure_gap),
+        ];
+        for (column, value) in reals {
+            self.reals.column_mut(column)[row] = value;
+        }
+        self.len = self.len.max(row + 1);
     }
 
     /// Depths from the parents: a parent is always a later row, so one backward pass.
     fn fill_depths(&mut self) {
-        let n = self.len();
-        self.depth = column(n);
-        self.depth.resize(n, 0);
-        for i in (0..n).rev() {
-            let p = self.parent[i];
+        for i in (0..self.len).rev() {
+            let p = self.index(PARENT)[i];
             if p != NONE {
-                self.depth[i] = self.depth[p] + 1;
+                let d = self.index(DEPTH)[p] + 1;
+                self.indices.column_mut(DEPTH)[i] = d;
             }
         }
     }
@@ -271,7 +281,9 @@ impl Period<'_> {
                 m
             }
         });
-        let mut table = LoopTable::with_capacity(n / 2 + 2);
+        let mut table = LoopTable::with_capacity(n / 2 + 1);
+        // Loops closed so far (rows taken, some still in `closed`).
+        let mut rows = 0;
         let mut stack: Vec<Entry> = Vec::with_capacity(64);
         // The sums of each entry, from its point to the next entry up (the top entry: to the
         // last point pushed); apart from the entries, which are read far more often.
@@ -351,8 +363,10 @@ impl Period<'_> {
                             let end = End::Piece { y: y_prev, s };
                             (merged, p - 1, offset, u_prev + s * offset, end)
                         };
-                        adopt(&mut roots, &mut table.parent, a.j, (end_j, offset));
+                        let parent = table.indices.column_mut(PARENT);
+                        adopt(&mut roots, parent, rows, a.j, (end_j, offset));
                         closed.push(Closed {
+                            row: rows,
                             start: a.j,
                             y_start: a.y,
                             reversal: b.j,
@@ -362,6 +376,7 @@ impl Period<'_> {
                             end,
                             sums,
                         });
+                        rows += 1;
                         if closed.len() == BLOCK {
                             self.finish_rows(&mut closed, &mut ends, &mut table);
                         }
@@ -386,16 +401,17 @@ impl Period<'_> {
         self.finish_rows(&mut closed, &mut ends, &mut table);
 
         let total = open_sums.iter().fold(Sums::default(), |acc, e| acc + *e);
-        let major = table.len();
+        let major = rows;
+        let parent = table.indices.column_mut(PARENT);
         for &(_, r) in &roots {
-            table.parent[r] = major;
+            parent[r] = major;
         }
-        table.parent.push(NONE);
+        parent[major] = NONE;
         let d = total.dissipation();
         let (k_low, wraps_low) = self.position(lowest);
-        table.push(
-            self.r,
-            k_low,
+        table.set(
+            major,
+            (self.r, k_low),
             self.rho_at(k_low, wraps_low, 0.0),
             (self.rho_at(self.r, 1, 0.0), u[self.r], self.y_r),
             crate::arc_energy::ArcEnergy {
@@ -434,9 +450,9 @@ impl Period<'_> {
             let (k_b, wraps_b) = self.position(c.reversal);
             let (k_c, wraps_c) = self.position(c.end_j);
             // The start is reported within [0, P).
-            table.push(
-                k_a,
-                k_b,
+            table.set(
+                c.row,
+                (k_a, k_b),
                 self.rho_at(k_b, wraps_b - wraps_a, 0.0),
                 (
                     self.rho_at(k_c, wraps_c - wraps_a, c.offset),
@@ -463,6 +479,7 @@ enum End {
 /// period, and the sums over its arc up to that piece.
 #[derive(Debug, Clone, Copy)]
 struct Closed {
+    row: usize,
     start: usize,
     y_start: f64,
     reversal: usize,
@@ -473,8 +490,8 @@ struct Closed {
     sums: Sums,
 }
 
-/// Adds the parent entry of the loop that closed as row `parent.len()`, with its arc from index `start`
-/// to `end` (index, offset) of the rotated period, in `roots` (loops without a parent yet,
+/// Makes the parent entry of the loop that closed as row `row`, with its arc from index
+/// `start` to `end` (index, offset) of the rotated period, in `roots` (loops without a parent yet,
 /// disjoint, ordered by where they start), and makes it the parent of the roots inside its
 /// arc. A loop closes after every loop inside it, so those are on the top of `roots`, except
 /// for loops past its end, which only a touch (an arc ending before its cycle closed) leaves
@@ -482,12 +499,12 @@ struct Closed {
 #[inline]
 fn adopt(
     roots: &mut Vec<(usize, usize)>,
-    parent: &mut Vec<usize>,
+    parent: &mut [usize],
+    row: usize,
     start: usize,
     end: (usize, f64),
 ) {
-    let row = parent.len();
-    parent.push(NONE);
+    parent[row] = NONE;
     let past_end = |j: usize| j > end.0 || (j == end.0 && end.1 == 0.0);
     let mut top = roots.len();
     while top > 0 && past_end(roots[top - 1].0) {

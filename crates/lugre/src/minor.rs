@@ -144,7 +144,7 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
                 dissipation: table.dissipation()[row],
                 closure_gap: table.closure_gap()[row],
                 parent: table.parent(row).map(|p| index[p]),
-                depth: table.depth()[row] as usize,
+                depth: table.depth()[row],
             }
         })
         .collect()

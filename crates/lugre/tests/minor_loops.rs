@@ -678,7 +678,7 @@ fn loop_table_is_the_loops_in_closing_order() {
                     t.closure_gap()[row]
                 ]
             );
-            assert_eq!(r.depth, t.depth()[row] as usize);
+            assert_eq!(r.depth, t.depth()[row]);
             assert_eq!(r.kind == LoopKind::Major, row == t.major());
         }
     }
