@@ -11,8 +11,8 @@
 //! stack holds `O(log n)` entries for typical inputs, and nothing is kept per turning point
 //! but `y°` itself: the work is linear in `n` and streams through memory.
 //!
-//! Sums are double-double and cover only their own arc, so their rounding scales with the loop
-//! they describe, not with the period.
+//! Sums are double-double (`arc_energy::Sums`) and cover only their own arc, so their rounding
+//! scales with the loop they describe, not with the period.
 //!
 //! Rows come out in the order rainflow closes the loops: every loop after the loops it
 //! contains (post-order), the major loop last. A loop's parent is the first loop after it
@@ -238,6 +238,20 @@ impl Period<'_> {
         }
     }
 
+    /// The index in the rotated period of the first global minimum, where the major loop
+    /// turns.
+    fn first_minimum(&self) -> usize {
+        let u = self.u;
+        let min = u
+            .iter()
+            .fold(f64::INFINITY, |m, &x| if x < m { x } else { m });
+        let (after, before) = (&u[self.r..], &u[..self.r]);
+        match after.iter().position(|&x| x == min) {
+            Some(j) => j,
+            None => after.len() + before.iter().position(|&x| x == min).unwrap_or(0),
+        }
+    }
+
     #[inline]
     fn rho_at(&self, k: usize, wraps: u32, offset: f64) -> f64 {
         self.rho[k] + f64::from(wraps) * self.rho[self.u.len()] + offset
@@ -249,8 +263,7 @@ impl Period<'_> {
     /// The pass is compiled a second time for AVX2, chosen at run time: the sums are lane
     /// arrays, and adding two of them is then a few vector instructions, as is the series of a
     /// block of pieces. Results are bit for bit the same (no fused multiply-adds are
-    /// introduced). (AVX-512 was measured slower here: its 512-bit loads of sums stored as two
-    /// 256-bit halves defeat store forwarding.)
+    /// introduced). (An AVX-512 build measured no faster.)
     pub fn loops(&self, y: &mut [f64]) -> LoopTable {
         #[cfg(target_arch = "x86_64")]
         {
@@ -271,16 +284,7 @@ impl Period<'_> {
     #[inline(always)]
     fn loops_portable(&self, y: &mut [f64]) -> LoopTable {
         let (model, u, n) = (self.model, self.u, self.u.len());
-        // The major loop turns at the first global minimum of the rotated period.
-        let lowest = (0..n).fold(0, |m, j| {
-            let (k, _) = self.position(j);
-            let (km, _) = self.position(m);
-            if u[k] < u[km] {
-                j
-            } else {
-                m
-            }
-        });
+        let lowest = self.first_minimum();
         let mut table = LoopTable::with_capacity(n / 2 + 1);
         // Loops closed so far (rows taken, some still in `closed`).
         let mut rows = 0;
