@@ -12,9 +12,6 @@ use crate::convert::{
 };
 use crate::models::reals;
 
-/// One float column of `HysteresisLoop.loop_table`.
-type LoopField = fn(&lugre::Loop) -> f64;
-
 /// The hysteresis loop y° of a model for one periodic input (the rate-independent limit,
 /// paper eqs. 8-10), with all its minor loops and their energies.
 ///
@@ -183,37 +180,55 @@ impl PyHysteresisLoop {
     /// turning points (`pandas.DataFrame(hl.loop_table)` gives a table).
     #[getter]
     fn loop_table<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let loops = self.rust_loops(py);
+        // Straight from the engine's columns, in the order of `loops`: no record per loop.
+        let hl = &self.hl;
+        let t = hl.loop_table();
+        let (order, index) = py.detach(|| {
+            let order = t.rows_by_start();
+            let mut index = vec![0i64; t.len()];
+            for (i, &row) in order.iter().enumerate() {
+                index[row] = i as i64;
+            }
+            (order, index)
+        });
+        let (u, rho, y) = (hl.turning_points(), hl.turning_rho(), hl.turning_y());
+        let (start, reversal) = (t.start(), t.reversal());
+        let gather =
+            |f: &dyn Fn(usize) -> f64| -> Vec<f64> { order.iter().map(|&r| f(r)).collect() };
+        let gather_int =
+            |f: &dyn Fn(usize) -> i64| -> Vec<i64> { order.iter().map(|&r| f(r)).collect() };
         let out = PyDict::new(py);
-        let int_column =
-            |f: &dyn Fn(&lugre::Loop) -> i64| -> Vec<i64> { loops.iter().map(f).collect() };
+        let major = t.major();
         out.set_item(
             "kind",
-            int_column(&|l| i64::from(l.kind == lugre::LoopKind::Minor)).into_pyarray(py),
+            gather_int(&|r| i64::from(r != major)).into_pyarray(py),
         )?;
-        let columns: [(&str, LoopField); 13] = [
-            ("start_rho", |l| l.start.rho),
-            ("start_u", |l| l.start.u),
-            ("start_y", |l| l.start.y),
-            ("reversal_rho", |l| l.reversal.rho),
-            ("reversal_u", |l| l.reversal.u),
-            ("reversal_y", |l| l.reversal.y),
-            ("end_rho", |l| l.end.rho),
-            ("end_u", |l| l.end.u),
-            ("end_y", |l| l.end.y),
-            ("work", |l| l.work),
-            ("stored_energy_change", |l| l.stored_energy_change),
-            ("dissipation", |l| l.dissipation),
-            ("closure_gap", |l| l.closure_gap),
+        let columns: [(&str, &dyn Fn(usize) -> f64); 13] = [
+            ("start_rho", &|r| rho[start[r]]),
+            ("start_u", &|r| u[start[r]]),
+            ("start_y", &|r| y[start[r]]),
+            ("reversal_rho", &|r| t.reversal_rho()[r]),
+            ("reversal_u", &|r| u[reversal[r]]),
+            ("reversal_y", &|r| y[reversal[r]]),
+            ("end_rho", &|r| t.end_rho()[r]),
+            ("end_u", &|r| t.end_u()[r]),
+            ("end_y", &|r| t.end_y()[r]),
+            ("work", &|r| t.work()[r]),
+            ("stored_energy_change", &|r| t.stored_energy_change()[r]),
+            ("dissipation", &|r| t.dissipation()[r]),
+            ("closure_gap", &|r| t.closure_gap()[r]),
         ];
         for (name, value) in columns {
-            out.set_item(name, vec_out(py, loops.iter().map(value).collect()))?;
+            out.set_item(name, vec_out(py, gather(value)))?;
         }
         out.set_item(
             "parent",
-            int_column(&|l| l.parent.map_or(-1, |p| p as i64)).into_pyarray(py),
+            gather_int(&|r| t.parent(r).map_or(-1, |p| index[p])).into_pyarray(py),
         )?;
-        out.set_item("depth", int_column(&|l| l.depth as i64).into_pyarray(py))?;
+        out.set_item(
+            "depth",
+            gather_int(&|r| t.depth()[r] as i64).into_pyarray(py),
+        )?;
         Ok(out)
     }
 

@@ -40,6 +40,8 @@ const NONE: usize = usize::MAX;
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct LoopTable {
     len: usize,
+    /// Turning points in the period.
+    turning_points: usize,
     /// [`START`], [`REVERSAL`], [`PARENT`], [`DEPTH`].
     indices: Columns<usize>,
     /// [`REVERSAL_RHO`] to [`CLOSURE_GAP`].
@@ -144,10 +146,30 @@ impl LoopTable {
         self.index(DEPTH)
     }
 
-    /// Room for `rows` loops (a period of `n` turning points has at most `n / 2 + 1`).
-    fn with_capacity(rows: usize) -> Self {
+    /// The rows in the order of [`crate::HysteresisLoop::loops`]: the major loop, then the
+    /// minor loops by where their arcs start in the major loop's period (a counting sort: each
+    /// turning point starts at most one minor loop).
+    pub fn rows_by_start(&self) -> Vec<usize> {
+        if self.is_empty() {
+            return Vec::new();
+        }
+        let (n, major) = (self.turning_points, self.major());
+        let r = self.start()[major];
+        let mut by_start = vec![NONE; n];
+        for (row, &k) in self.start()[..major].iter().enumerate() {
+            by_start[if k >= r { k - r } else { k + n - r }] = row;
+        }
+        std::iter::once(major)
+            .chain(by_start.into_iter().filter(|&row| row != NONE))
+            .collect()
+    }
+
+    /// Room for the loops of a period of `n` turning points (at most `n / 2 + 1`).
+    fn for_turning_points(n: usize) -> Self {
+        let rows = n / 2 + 1;
         Self {
             len: 0,
+            turning_points: n,
             indices: Columns::zeroed(4, rows),
             reals: Columns::zeroed(8, rows),
         }
@@ -285,7 +307,7 @@ impl Period<'_> {
     fn loops_portable(&self, y: &mut [f64]) -> LoopTable {
         let (model, u, n) = (self.model, self.u, self.u.len());
         let lowest = self.first_minimum();
-        let mut table = LoopTable::with_capacity(n / 2 + 1);
+        let mut table = LoopTable::for_turning_points(n);
         // Loops closed so far (rows taken, some still in `closed`).
         let mut rows = 0;
         let mut stack: Vec<Entry> = Vec::with_capacity(64);

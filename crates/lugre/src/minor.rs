@@ -101,18 +101,8 @@ pub(crate) fn canonical_start(u: &[f64]) -> usize {
 pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
     let table = hl.loop_table();
     let (u, rho, y) = (hl.turning_points(), hl.turning_rho(), hl.turning_y());
-    let n = u.len();
     let major = table.major();
-    // Every turning point starts at most one minor loop: ordering them by where their arcs
-    // start (in the period from the major loop's start) is a counting sort.
-    let r = table.start()[major];
-    let mut by_start = vec![usize::MAX; n];
-    for (row, &k) in table.start()[..major].iter().enumerate() {
-        by_start[if k >= r { k - r } else { k + n - r }] = row;
-    }
-    let order: Vec<usize> = std::iter::once(major)
-        .chain(by_start.into_iter().filter(|&row| row != usize::MAX))
-        .collect();
+    let order = table.rows_by_start();
     let mut index = vec![0; table.len()];
     for (i, &row) in order.iter().enumerate() {
         index[row] = i;
