@@ -37,6 +37,23 @@ const NONE: usize = usize::MAX;
 /// and `y°` there are that array's and
 /// [`turning_y`](crate::HysteresisLoop::turning_y)'s); the start's `rho` is in `[0, P)`, the
 /// reversal's and the end's may exceed `P` when the arc wraps round the period.
+///
+/// ```
+/// use lugre::{HysteresisLoop, LuGre, TurningPoints};
+///
+/// // The ASTM E1049 history as one period: three minor loops and the major loop.
+/// let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0];
+/// let model = LuGre::paper().rate_independent();
+/// let hl = HysteresisLoop::new(model, &TurningPoints::new(&u).unwrap()).unwrap();
+/// let t = hl.loop_table();
+/// assert_eq!(t.len(), 4);
+/// assert_eq!(t.major(), 3); // closes last
+/// let u_a: Vec<f64> = t.start().iter().map(|&k| u[k]).collect();
+/// assert_eq!(u_a, [-1.0, -2.0, 4.0, 5.0]);
+/// assert!(t.dissipation().iter().all(|&d| d > 0.0));
+/// assert_eq!(t.parent(1), Some(2)); // (-2, 1) lies inside (4, -3)
+/// assert_eq!(hl.work_per_period(), t.work()[t.major()]);
+/// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct LoopTable {
     len: usize,
