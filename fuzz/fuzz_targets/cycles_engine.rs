@@ -5,29 +5,12 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use lugre::{
-    Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, HistoryError,
-    RateIndependent, Reversal,
-};
-
-#[derive(Default, PartialEq, Debug)]
-struct All {
-    reversals: Vec<Reversal>,
-    cycles: Vec<Cycle>,
-}
-
-impl CycleSink for All {
-    fn reversal(&mut self, r: Reversal) {
-        self.reversals.push(r);
-    }
-    fn cycle(&mut self, c: Cycle) {
-        self.cycles.push(c);
-    }
-}
+use lugre::cycles::Collect;
+use lugre::{CycleColumns, CycleCounter, EnergyCycleCounter, HistoryError, RateIndependent};
 
 /// Counts `u` pushed in slices of `chunk` (0: all at once).
-fn count(u: &[f64], gate: f64, chunk: usize) -> Result<(All, u64, u64, u64), HistoryError> {
-    let mut sink = All::default();
+fn count(u: &[f64], gate: f64, chunk: usize) -> Result<(Collect, u64, u64, u64), HistoryError> {
+    let mut sink = Collect::default();
     let mut c = CycleCounter::new(gate)?;
     if chunk == 0 {
         c.push_all(u, &mut sink)?;
@@ -53,7 +36,7 @@ fn count_columns(u: &[f64], gate: f64, chunk: usize) -> Result<CycleColumns, His
 
 /// The columns of `sink`'s reversals and cycles (closure -1 / NaN for half cycles), NaN
 /// compared by its bits.
-fn as_columns(sink: &All) -> (Vec<(i64, u64)>, Vec<(u64, u64, u64, i64, i64, i64, u64)>) {
+fn as_columns(sink: &Collect) -> (Vec<(i64, u64)>, Vec<(u64, u64, u64, i64, i64, i64, u64)>) {
     let reversals = sink
         .reversals
         .iter()
@@ -162,7 +145,7 @@ fuzz_target!(|data: &[u8]| {
     // The energy walk counts the same cycles.
     let sigma0 = 2.0f64.powi(i32::from(head & 0x1f) - 12);
     let model = RateIndependent::new(sigma0, 1.5).unwrap();
-    let mut sink = All::default();
+    let mut sink = Collect::default();
     // y*(0) = sigma0 x0 = 0.5.
     let energy = EnergyCycleCounter::new(gate, model, 0.5 / sigma0).and_then(|mut c| {
         c.push_all(&u, &mut sink)?;

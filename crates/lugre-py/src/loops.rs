@@ -183,14 +183,7 @@ impl PyHysteresisLoop {
         // Straight from the engine's columns, in the order of `loops`: no record per loop.
         let hl = &self.hl;
         let t = hl.loop_table();
-        let (order, index) = py.detach(|| {
-            let order = t.rows_by_start();
-            let mut index = vec![0i64; t.len()];
-            for (i, &row) in order.iter().enumerate() {
-                index[row] = i as i64;
-            }
-            (order, index)
-        });
+        let (order, place) = py.detach(|| t.rows_by_start());
         let (u, rho, y) = (hl.turning_points(), hl.turning_rho(), hl.turning_y());
         let (start, reversal) = (t.start(), t.reversal());
         let gather =
@@ -223,7 +216,7 @@ impl PyHysteresisLoop {
         }
         out.set_item(
             "parent",
-            gather_int(&|r| t.parent(r).map_or(-1, |p| index[p])).into_pyarray(py),
+            gather_int(&|r| t.parent(r).map_or(-1, |p| place[p] as i64)).into_pyarray(py),
         )?;
         out.set_item(
             "depth",

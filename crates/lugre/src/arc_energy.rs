@@ -129,10 +129,7 @@ impl std::ops::Add for Sums {
     fn add(self, o: Self) -> Self {
         let mut r = Self::default();
         for i in 0..LANES {
-            let (a, b) = (self.hi[i], o.hi[i]);
-            let s = a + b;
-            let bb = s - a;
-            let e = (a - (s - bb)) + (b - bb);
+            let (s, e) = DoubleDouble::two_sum(self.hi[i], o.hi[i]);
             r.hi[i] = s;
             r.lo[i] = (self.lo[i] + o.lo[i]) + e;
         }

@@ -122,6 +122,14 @@ pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
     y.clamp(-g0, g0)
 }
 
+/// Direction `s` (+-1) and length `l` of the piece of the normalized input from `from` to
+/// `to`.
+#[inline]
+pub(crate) fn step(from: f64, to: f64) -> (f64, f64) {
+    let du = to - from;
+    (if du >= 0.0 { 1.0 } else { -1.0 }, du.abs())
+}
+
 /// Everything about one piece of the loop (direction `s`, length `l`, from `y_k`): `y` at its
 /// end, the dissipation `(1/g0) integral y^2 drho` over it (never < 0), and the two terms of
 /// its work, `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`, so that `integral y dpsi = s y_k c + e`

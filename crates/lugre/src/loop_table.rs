@@ -19,7 +19,7 @@
 //! whose arc starts before it: kept with a stack of loops still without a parent.
 
 use crate::arc_energy::{arc_energy, Sums};
-use crate::hysteresis::piece_with;
+use crate::hysteresis::{piece_with, step};
 use crate::memory::Columns;
 use crate::model::RateIndependent;
 use crate::numerics::{PhiBlock, BLOCK};
@@ -163,12 +163,13 @@ impl LoopTable {
         self.index(DEPTH)
     }
 
-    /// The rows in the order of [`crate::HysteresisLoop::loops`]: the major loop, then the
-    /// minor loops by where their arcs start in the major loop's period (a counting sort: each
-    /// turning point starts at most one minor loop).
-    pub fn rows_by_start(&self) -> Vec<usize> {
+    /// The rows in the order of [`crate::HysteresisLoop::loops`] (the major loop, then the
+    /// minor loops by where their arcs start in the major loop's period), and the place of
+    /// each row in that order (to renumber parents). A counting sort: each turning point starts
+    /// at most one minor loop.
+    pub fn rows_by_start(&self) -> (Vec<usize>, Vec<usize>) {
         if self.is_empty() {
-            return Vec::new();
+            return (Vec::new(), Vec::new());
         }
         let (n, major) = (self.turning_points, self.major());
         let r = self.start()[major];
@@ -176,9 +177,14 @@ impl LoopTable {
         for (row, &k) in self.start()[..major].iter().enumerate() {
             by_start[if k >= r { k - r } else { k + n - r }] = row;
         }
-        std::iter::once(major)
+        let order: Vec<usize> = std::iter::once(major)
             .chain(by_start.into_iter().filter(|&row| row != NONE))
-            .collect()
+            .collect();
+        let mut place = vec![0; self.len];
+        for (i, &row) in order.iter().enumerate() {
+            place[row] = i;
+        }
+        (order, place)
     }
 
     /// Room for the loops of a period of `n` turning points (at most `n / 2 + 1`).
@@ -564,11 +570,4 @@ fn adopt(
     } else {
         roots.splice(inside..top, std::iter::once((start, row)));
     }
-}
-
-/// Direction and length of the step from `from` to `to`.
-#[inline]
-fn step(from: f64, to: f64) -> (f64, f64) {
-    let du = to - from;
-    (if du >= 0.0 { 1.0 } else { -1.0 }, du.abs())
 }

@@ -4,9 +4,7 @@
 //! zeroing costs microseconds in a virtual machine: at 10^6 turning points that was 40 % of the
 //! time of [`crate::HysteresisLoop::new`]. With huge pages it is one fault per 2 MiB.
 
-/// Outputs of this many bytes or more get huge pages.
-const HUGE_FROM: usize = HUGE_PAGE;
-
+/// A transparent huge page; outputs of at least this many bytes get them.
 const HUGE_PAGE: usize = 2 << 20;
 
 /// An empty vector with room for `n` elements. A large one (2 MiB or more) gets room for all
@@ -16,7 +14,7 @@ const HUGE_PAGE: usize = 2 << 20;
 /// `shrink_to_fit` once filled if `n` was only a bound.
 pub fn column<T>(n: usize) -> Vec<T> {
     let mut v = Vec::new();
-    if n.saturating_mul(std::mem::size_of::<T>()) >= HUGE_FROM {
+    if n.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE {
         if v.try_reserve_exact(n).is_ok() {
             advise_huge_pages(v.spare_capacity_mut());
         }
@@ -65,7 +63,7 @@ impl<T: Copy + Default> Columns<T> {
         let size = std::mem::size_of::<T>().max(1);
         let slack = HUGE_PAGE / size;
         let total = count.saturating_mul(len);
-        let large = total.saturating_mul(size) >= HUGE_FROM;
+        let large = total.saturating_mul(size) >= HUGE_PAGE;
         let mut buf = vec![T::default(); if large { total + 2 * slack } else { total }];
         let mut offset = 0;
         if large {

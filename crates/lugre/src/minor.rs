@@ -102,11 +102,7 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
     let table = hl.loop_table();
     let (u, rho, y) = (hl.turning_points(), hl.turning_rho(), hl.turning_y());
     let major = table.major();
-    let order = table.rows_by_start();
-    let mut index = vec![0; table.len()];
-    for (i, &row) in order.iter().enumerate() {
-        index[row] = i;
-    }
+    let (order, place) = table.rows_by_start();
     let turning = |k: usize, rho: f64| LoopPoint {
         rho,
         u: u[k],
@@ -133,7 +129,7 @@ pub fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
                 stored_energy_change: table.stored_energy_change()[row],
                 dissipation: table.dissipation()[row],
                 closure_gap: table.closure_gap()[row],
-                parent: table.parent(row).map(|p| index[p]),
+                parent: table.parent(row).map(|p| place[p]),
                 depth: table.depth()[row],
             }
         })

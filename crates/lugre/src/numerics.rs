@@ -273,7 +273,7 @@ impl DoubleDouble {
 
     /// Knuth's two-sum: `a + b = s + e` exactly.
     #[inline(always)]
-    fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    pub(crate) fn two_sum(a: f64, b: f64) -> (f64, f64) {
         let s = a + b;
         let bb = s - a;
         let e = (a - (s - bb)) + (b - bb);

@@ -18,13 +18,13 @@
 //! scale (ties everywhere: equal maxima, equal minima, returns exactly to a start value), or
 //! continuous values; the model spans `a P` from about 1e-4 to 1e4.
 
+use lugre::cycles::Collect;
 use lugre::hysteresis::relax;
 use lugre::prec::{IDENTITY, LOOP};
 use lugre::simulate::transient_amplitude;
 use lugre::{
-    count_cycles, count_cycles_with_energy, Cycle, CycleCounter, CycleSink, Gamma, HysteresisLoop,
-    Loop, LoopKind, LuGre, LuGreParams, PiecewiseLinear, RateIndependent, Reversal, Simulator,
-    Trajectory, TurningPoints,
+    count_cycles, count_cycles_with_energy, CycleCounter, Gamma, HysteresisLoop, Loop, LoopKind,
+    LuGre, LuGreParams, PiecewiseLinear, RateIndependent, Simulator, Trajectory, TurningPoints,
 };
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
@@ -361,22 +361,6 @@ proptest! {
     }
 }
 
-/// Keeps everything a count reports.
-#[derive(Default, Debug, PartialEq)]
-struct All {
-    reversals: Vec<Reversal>,
-    cycles: Vec<Cycle>,
-}
-
-impl CycleSink for All {
-    fn reversal(&mut self, r: Reversal) {
-        self.reversals.push(r);
-    }
-    fn cycle(&mut self, c: Cycle) {
-        self.cycles.push(c);
-    }
-}
-
 /// A measured history: a random walk of small integers (plateaus and ties) or of reals.
 fn history() -> impl Strategy<Value = Vec<f64>> {
     prop_oneof![
@@ -418,7 +402,7 @@ proptest! {
             }
         }
         for chunk in [1usize, 7, 64] {
-            let mut sink = All::default();
+            let mut sink = Collect::default();
             let mut counter = CycleCounter::new(gate).unwrap();
             for part in u.chunks(chunk) {
                 counter.push_all(part, &mut sink).unwrap();

@@ -17,6 +17,7 @@ use super::engine::{Open, Track};
 use super::{CycleEnergy, HistoryEnergy};
 use crate::arc_energy::{arc_energy, Sums};
 use crate::error::HistoryError;
+use crate::hysteresis::step;
 use crate::model::RateIndependent;
 use crate::numerics::DoubleDouble;
 
@@ -80,13 +81,6 @@ impl EnergyTrack {
             dissipation: self.total_dissipation.to_f64().max(0.0),
         }
     }
-}
-
-/// Direction and length of the step from `from` to `to`.
-#[inline]
-fn step(from: f64, to: f64) -> (f64, f64) {
-    let du = to - from;
-    (if du >= 0.0 { 1.0 } else { -1.0 }, du.abs())
 }
 
 impl Track for EnergyTrack {

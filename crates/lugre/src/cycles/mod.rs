@@ -194,10 +194,11 @@ pub struct History {
     pub summary: CycleSummary,
 }
 
-#[derive(Default)]
-struct Collect {
-    reversals: Vec<Reversal>,
-    cycles: Vec<Cycle>,
+/// Keeps everything a count reports, in order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Collect {
+    pub reversals: Vec<Reversal>,
+    pub cycles: Vec<Cycle>,
 }
 
 impl CycleSink for Collect {
