@@ -203,7 +203,7 @@ fn every_invalid_model_parameter() {
         // A subnormal vs: 1 / vs overflows, so g(0) would be 0 * inf.
         (
             &["--vs", "4e-309"],
-            "1 / vs must be a finite number, got inf",
+            "vs must be >= 5.56268464626801e-309 (1 / vs overflows below it), got 4e-309",
         ),
         (&["--beta", "0"], "beta must be > 0, got 0"),
         (

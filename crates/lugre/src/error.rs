@@ -29,6 +29,14 @@ pub enum ModelError {
     NotFinite { name: &'static str, value: f64 },
     #[error("{name} must be > 0, got {value}", value = num(*.value))]
     NotPositive { name: &'static str, value: f64 },
+    /// A parameter whose reciprocal the model uses, below the smallest number whose
+    /// reciprocal is finite.
+    #[error("{name} must be >= {min} (1 / {name} overflows below it), got {value}", min = num(*.min), value = num(*.value))]
+    TooSmall {
+        name: &'static str,
+        value: f64,
+        min: f64,
+    },
     #[error("{name} must be >= 0, got {value}", value = num(*.value))]
     Negative { name: &'static str, value: f64 },
     #[error("g(0) must be finite and > 0, got {value}", value = num(*.value))]

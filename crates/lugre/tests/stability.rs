@@ -424,7 +424,24 @@ fn the_ends_of_the_f64_range() {
         ..LuGreParams::default()
     })
     .unwrap_err();
-    assert_eq!(e.to_string(), "1 / vs must be a finite number, got inf");
+    assert_eq!(
+        e.to_string(),
+        "vs must be >= 5.56268464626801e-309 (1 / vs overflows below it), got 4e-309"
+    );
+    // The bound is the last number whose reciprocal is finite (from Python: the smallest
+    // double x with 1/x < inf, by stepping with math.nextafter from 1/sys.float_info.max).
+    let min = 5.56268464626801e-309_f64;
+    assert!((1.0 / min).is_finite() && (1.0 / min.next_down()).is_infinite());
+    let ok = LuGre::from_params(LuGreParams {
+        vs: min,
+        ..LuGreParams::default()
+    });
+    assert!(ok.is_ok(), "{ok:?}");
+    assert!(LuGre::from_params(LuGreParams {
+        vs: min.next_down(),
+        ..LuGreParams::default()
+    })
+    .is_err());
     // Messages show extreme values in exponent notation, not as 300 digits.
     let e = LuGre::paper().with_sigma0(-1e-300).unwrap_err();
     assert_eq!(e.to_string(), "sigma0 must be > 0, got -1e-300");

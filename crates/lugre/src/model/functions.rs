@@ -15,6 +15,9 @@ impl<F: Fn(f64) -> f64> VelocityFn for F {
     }
 }
 
+/// The smallest positive `x` with a finite `1 / x` (a subnormal, just above `1 / f64::MAX`).
+pub(crate) const MIN_INVERTIBLE: f64 = 5.56268464626801e-309;
+
 /// The Stribeck curve (paper §4.2): `g(v) = Fc + (Fs - Fc) exp(-|v / vs|^beta)`.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Stribeck {
@@ -31,14 +34,15 @@ impl Stribeck {
     /// Validated: `Fc, Fs, vs, beta` finite and `> 0`.
     pub fn new(fc: f64, fs: f64, vs: f64, beta: f64) -> Result<Self, ModelError> {
         let vs = check_positive("vs", vs)?;
-        let inv_vs = 1.0 / vs;
-        if !inv_vs.is_finite() {
-            // A subnormal vs: g(0) would be 0 * inf.
-            return Err(ModelError::NotFinite {
-                name: "1 / vs",
-                value: inv_vs,
+        if vs < MIN_INVERTIBLE {
+            // A subnormal vs whose reciprocal overflows: g(0) would be 0 * inf.
+            return Err(ModelError::TooSmall {
+                name: "vs",
+                value: vs,
+                min: MIN_INVERTIBLE,
             });
         }
+        let inv_vs = 1.0 / vs;
         Ok(Self {
             fc: check_positive("fc", fc)?,
             fs: check_positive("fs", fs)?,
