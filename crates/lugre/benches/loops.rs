@@ -8,14 +8,16 @@
 //! * `stiff`: the same for a realistic stiffness (`sigma0 = 1e5`, `g0 = 1.5`, steps of 0.01 to
 //!   1 mm: `a l` from 7 to 700, the exponential path);
 //! * `as_records`: `new` plus `loops()`, the same loops as `Vec<Loop>` ordered by start;
-//! * `floor`: what any engine must at least do for the same input, with none of the
-//!   arithmetic of the loops: `pairing` (the rainflow pairing alone, three indices per loop,
-//!   into a reused vector), `pairing_6_columns` (plus writing `y` at every turning point and
-//!   the least a loop table holds, six values per loop: start, reversal, end, W, dV, D),
-//!   `pairing_12_columns` (the `LoopTable`'s twelve) and `pairing_y_12_columns` (plus `y°` by
-//!   the closed form, one `relax` per piece, still no energies), all into memory already
-//!   mapped. Lower bounds on the time of `loop_and_minor_loops`: they skip the rotation to the
-//!   maximum, ties, parents and depths, every energy, and the page faults of a fresh output.
+//! * `floor`: parts of the work timed alone, to show where the time goes and what any design
+//!   must spend. `pairing`: the rainflow pairing alone, three indices per loop, into a reused
+//!   vector (a stack and a branch per step, as the engine does it); `pairing_interleaved`: the
+//!   same for four quarters of the period at once, branch-free (residues left unpaired);
+//!   `pairing_6_columns`: `pairing` plus writing `y` at every turning point and the least a
+//!   loop table holds, six values per loop (start, reversal, end, W, dV, D);
+//!   `pairing_12_columns`: the `LoopTable`'s twelve; `pairing_y_12_columns`: plus `y°` by the
+//!   closed form, one `relax` per piece (no energies); `piece_arithmetic`: the engine's own
+//!   per-piece arithmetic (families, closed forms, double-double sums) into one running sum,
+//!   no rainflow. The outputs go to memory already mapped; none of them ties, nests or rotates.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lugre::hysteresis::relax;
@@ -109,6 +111,77 @@ fn pairing(
     }
 }
 
+/// One chunk of a period paired on a stack of its own, one step at a time with no branch on
+/// the data: a step pops the top pair (and writes it) or pushes the next point. Chunks in turn
+/// (see [`pairing_interleaved`]) keep the processor busy while each step waits on the last.
+struct Chunk {
+    stack: Vec<(u32, f64)>,
+    top: usize,
+    next: usize,
+    end: usize,
+    loops: Vec<(u32, u32, u32)>,
+    count: usize,
+}
+
+impl Chunk {
+    fn new(len: usize) -> Self {
+        let stack = vec![(0, 0.0); len + 3];
+        let loops = vec![(0, 0, 0); len / 2 + 2];
+        Self {
+            stack,
+            top: 0,
+            next: 0,
+            end: 0,
+            loops,
+            count: 0,
+        }
+    }
+
+    /// Ready to pair `points` (at most the length it was made for).
+    fn reset(&mut self, points: std::ops::Range<usize>) {
+        (self.stack[0], self.stack[1]) = ((0, -1e300), (0, 1e300));
+        (self.top, self.next, self.end, self.count) = (2, points.start, points.end, 0);
+    }
+
+    #[inline(always)]
+    fn step(&mut self, u: &[f64]) {
+        let x = u[self.next];
+        let ((ja, a), (jb, b)) = (self.stack[self.top - 2], self.stack[self.top - 1]);
+        let close = (x - b).abs() >= (b - a).abs();
+        self.loops[self.count] = (ja, jb, self.next as u32);
+        self.stack[self.top] = (self.next as u32, x);
+        self.count += usize::from(close);
+        self.top = if close { self.top - 2 } else { self.top + 1 };
+        self.next += usize::from(!close);
+    }
+}
+
+/// The pairing of four quarters of `u` at once (their residues, a few dozen points, are left
+/// unpaired), each into its chunk: what a branch-free pairing could gain over [`pairing`]'s
+/// mispredicted branches.
+fn pairing_interleaved(u: &[f64], chunks: &mut [Chunk; 4]) -> usize {
+    let q = u.len() / 4;
+    for (i, c) in chunks.iter_mut().enumerate() {
+        c.reset(i * q..if i == 3 { u.len() } else { (i + 1) * q });
+    }
+    let [c0, c1, c2, c3] = chunks;
+    while c0.next < c0.end && c1.next < c1.end && c2.next < c2.end && c3.next < c3.end {
+        c0.step(u);
+        c1.step(u);
+        c2.step(u);
+        c3.step(u);
+    }
+    chunks
+        .iter_mut()
+        .map(|c| {
+            while c.next < c.end {
+                c.step(u);
+            }
+            c.count
+        })
+        .sum()
+}
+
 /// An output written with no arithmetic: `y` at every turning point and `COLUMNS` values per
 /// loop, into buffers already mapped (`table`: the columns one after the other), so that not
 /// even the page faults of a fresh output count.
@@ -171,6 +244,10 @@ fn floor(c: &mut Criterion) {
                 black_box(rows.len())
             })
         });
+        group.bench_with_input(BenchmarkId::new("pairing_interleaved", n), u, |b, u| {
+            let mut chunks = [0; 4].map(|_| Chunk::new(n / 4 + 3));
+            b.iter(|| pairing_interleaved(black_box(u), &mut chunks))
+        });
         let mut stack = Vec::with_capacity(64);
         let (mut y, mut table) = (vec![0.0; n], vec![0.0; 12 * (n / 2 + 1)]);
         // The least any loop engine must write: where each loop starts, turns and ends, and
@@ -190,6 +267,11 @@ fn floor(c: &mut Criterion) {
                 let y_of = closed_form(paper, u);
                 pairing_and_table::<12>(black_box(u), y_of, &mut stack, &mut y, &mut table)
             })
+        });
+        // The engine's own per-piece arithmetic (families, closed forms, double-double sums) in
+        // one running sum, without the rainflow.
+        group.bench_with_input(BenchmarkId::new("piece_arithmetic", n), u, |b, u| {
+            b.iter(|| lugre::floor::piece_arithmetic(paper, black_box(u), &mut y))
         });
     }
     group.finish();

@@ -23,6 +23,8 @@ mod arc_energy;
 pub mod cycles;
 pub mod error;
 pub mod fit;
+#[doc(hidden)]
+pub mod floor;
 pub mod hysteresis;
 pub mod input;
 mod loop_table;
