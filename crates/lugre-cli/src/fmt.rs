@@ -5,11 +5,14 @@
 /// A number in a message: shortest round-trip, exponent form beyond 1e-5..1e16 (`1e299`).
 pub use lugre::error::num;
 
-/// `x` with up to `digits` significant digits, plain notation for moderate magnitudes.
+/// `x` with up to `digits` significant digits, plain notation for moderate magnitudes. Never
+/// more digits than `x`'s shortest round-trip form has: a subnormal typed as `1e-320` is
+/// stored as 9.99988867...e-321 (it has fewer bits), and prints as `1e-320`, as typed.
 pub fn sig(x: f64, digits: usize) -> String {
     if x == 0.0 {
         return "0".into();
     }
+    let digits = digits.min(shortest_digits(x));
     let exp = x.abs().log10().floor() as i32;
     if (-4..9).contains(&exp) {
         let decimals = (digits as i32 - 1 - exp).max(0) as usize;
@@ -38,6 +41,14 @@ pub fn sig(x: f64, digits: usize) -> String {
             None => s,
         }
     }
+}
+
+/// The number of significant digits of the shortest string that parses back to `x` (finite,
+/// not 0).
+fn shortest_digits(x: f64) -> usize {
+    let s = format!("{:e}", x.abs());
+    let mantissa = s.split_once('e').map_or(s.as_str(), |(m, _)| m);
+    mantissa.chars().filter(char::is_ascii_digit).count().max(1)
 }
 
 /// The shortest string that parses back to exactly `x` (as serde_json prints numbers).
@@ -108,6 +119,12 @@ mod tests {
         assert_eq!(sig(1e-12, 6), "1e-12");
         assert_eq!(sig(123456.0, 10), "123456");
         assert_eq!(sig(2.5e12, 4), "2.5e12");
+        // Subnormals print as typed, not as their stored value's ten digits.
+        assert_eq!(sig(1e-320, 10), "1e-320");
+        assert_eq!(sig(-4.5e-310, 10), "-4.5e-310");
+        assert_eq!(sig(5e-324, 10), "5e-324");
+        assert_eq!(sig(0.1 + 0.2, 10), "0.3");
+        assert_eq!(sig(1.0 / 3.0, 4), "0.3333");
     }
 
     #[test]
