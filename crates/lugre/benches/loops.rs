@@ -84,9 +84,19 @@ fn loops(c: &mut Criterion) {
     }
 }
 
-/// The rainflow pairing of `u` (the four-point rule of `lugre::minor`, without its treatment of
-/// ties), calling `on_loop(start, reversal, end)` for each pair as it closes. Two sentinel
-/// entries at the bottom of the stack, whose range nothing exceeds, spare the length test.
+/// The bottom of every pairing stack: two entries whose range nothing exceeds, so that a pair
+/// is always there to test and the stack's length never is.
+const SENTINELS: [(u32, f64); 2] = [(0, -1e300), (0, 1e300)];
+
+/// Whether the next point `x` closes the pair `(a, b)` on top of the stack: the four-point rule
+/// of `lugre::minor`, without its treatment of ties.
+#[inline(always)]
+fn closes(a: f64, b: f64, x: f64) -> bool {
+    (x - b).abs() >= (b - a).abs()
+}
+
+/// The rainflow pairing of `u`, calling `on_loop(start, reversal, end, u_start, u_reversal)`
+/// for each pair as it closes.
 #[inline(always)]
 fn pairing(
     u: &[f64],
@@ -95,13 +105,13 @@ fn pairing(
     mut on_loop: impl FnMut(u32, u32, usize, f64, f64),
 ) {
     stack.clear();
-    stack.extend([(0, -1e300), (0, 1e300)]);
+    stack.extend(SENTINELS);
     for (p, &x) in u.iter().enumerate() {
         on_point(p, x);
         loop {
             let m = stack.len();
             let ((ja, a), (jb, b)) = (stack[m - 2], stack[m - 1]);
-            if (x - b).abs() < (b - a).abs() {
+            if !closes(a, b, x) {
                 break;
             }
             on_loop(ja, jb, p, a, b);
@@ -139,7 +149,7 @@ impl Chunk {
 
     /// Ready to pair `points` (at most the length it was made for).
     fn reset(&mut self, points: std::ops::Range<usize>) {
-        (self.stack[0], self.stack[1]) = ((0, -1e300), (0, 1e300));
+        self.stack[..2].copy_from_slice(&SENTINELS);
         (self.top, self.next, self.end, self.count) = (2, points.start, points.end, 0);
     }
 
@@ -147,7 +157,7 @@ impl Chunk {
     fn step(&mut self, u: &[f64]) {
         let x = u[self.next];
         let ((ja, a), (jb, b)) = (self.stack[self.top - 2], self.stack[self.top - 1]);
-        let close = (x - b).abs() >= (b - a).abs();
+        let close = closes(a, b, x);
         self.loops[self.count] = (ja, jb, self.next as u32);
         self.stack[self.top] = (self.next as u32, x);
         self.count += usize::from(close);

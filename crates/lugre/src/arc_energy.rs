@@ -19,9 +19,9 @@
 //! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s e)`, and the first terms add up
 //! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sum s e)`.
 
-use crate::hysteresis::{piece, Piece};
+use crate::hysteresis::{piece, piece_with, Piece};
 use crate::model::RateIndependent;
-use crate::numerics::DoubleDouble;
+use crate::numerics::{DoubleDouble, PhiFamily};
 
 /// Running sums over pieces of an arc, in double-double, one lane per sum (`hi + lo` in each):
 /// laid out as two arrays so that adding two sums is a few vector instructions. `y_k c` is
@@ -68,6 +68,20 @@ impl Sums {
             ],
             lo: [s * yc.lo, 0.0, 0.0, 0.0, yc.lo, 0.0, 0.0, 0.0],
         }
+    }
+
+    /// The piece of direction `s` and length `l` from `y`, its family `f` already evaluated (in
+    /// blocks), and its sums.
+    #[inline(always)]
+    pub fn with_piece(
+        model: RateIndependent,
+        y: f64,
+        s: f64,
+        l: f64,
+        f: &PhiFamily,
+    ) -> (Piece, Self) {
+        let p = piece_with(model, y, s, l, f);
+        (p, Self::piece(y, s, l, &p))
     }
 
     /// Adds the piece of direction `s` and length `l` starting at `y`; returns its work

@@ -3,7 +3,7 @@
 //! from the documentation and free to change.
 
 use crate::arc_energy::Sums;
-use crate::hysteresis::{piece_with, step};
+use crate::hysteresis::step;
 use crate::model::RateIndependent;
 use crate::numerics::{PhiBlock, BLOCK};
 
@@ -41,8 +41,8 @@ fn piece_arithmetic_portable(model: RateIndependent, u: &[f64], y: &mut [f64]) -
         family.fill(&z);
         for (i, k) in pieces.enumerate() {
             let (s, l) = step(u[k - 1], u[k]);
-            let piece = piece_with(model, y_prev, s, l, &family.get(i));
-            sums = sums + Sums::piece(y_prev, s, l, &piece);
+            let (piece, terms) = Sums::with_piece(model, y_prev, s, l, &family.get(i));
+            sums = sums + terms;
             y_prev = piece.y_end;
             if let Some(y) = y.get_mut(k) {
                 *y = y_prev;

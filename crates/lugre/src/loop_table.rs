@@ -19,7 +19,7 @@
 //! whose arc starts before it: kept with a stack of loops still without a parent.
 
 use crate::arc_energy::{arc_energy, Sums};
-use crate::hysteresis::{piece_with, step};
+use crate::hysteresis::step;
 use crate::memory::Columns;
 use crate::model::RateIndependent;
 use crate::numerics::{PhiBlock, BLOCK};
@@ -376,8 +376,7 @@ impl Period<'_> {
                 let k = turning[i];
                 let u_p = u[k];
                 let (s, l) = step(u_prev, u_p);
-                let piece_p = piece_with(model, y_prev, s, l, &family.get(i));
-                let last = Sums::piece(y_prev, s, l, &piece_p);
+                let (piece_p, last) = Sums::with_piece(model, y_prev, s, l, &family.get(i));
                 // The period closes: y° is periodic.
                 let y_p = if p == n { self.y_r } else { piece_p.y_end };
                 y[k] = y_p;
@@ -490,8 +489,8 @@ impl Period<'_> {
         for (i, c) in closed.iter().enumerate() {
             let (sums, end_y) = match c.end {
                 End::Piece { y, s } => {
-                    let to_end = piece_with(model, y, s, c.offset, &ends.get(i));
-                    (c.sums + Sums::piece(y, s, c.offset, &to_end), to_end.y_end)
+                    let (to_end, sums) = Sums::with_piece(model, y, s, c.offset, &ends.get(i));
+                    (c.sums + sums, to_end.y_end)
                 }
                 End::At(y) => (c.sums, y),
             };
