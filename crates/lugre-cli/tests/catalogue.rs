@@ -1224,7 +1224,7 @@ fn values_near_1e308_and_1e_minus_308() {
 /// (`= (4/3) g0 a^2 A^3 (1 - 2 (a A)^2 / 5)` for small `a A`, where it cancels).
 #[test]
 fn a_times_period_1e12_and_1e_minus_12_are_exact() {
-    let tol = lugre::prec::LOOP;
+    let tol = lugre_test_support::prec::LOOP;
     let rel = |a: f64, b: f64| ((a - b) / b).abs();
     // (model flags, g0, a, y°(-1), W) with A = 1, P = 4.
     let cases: [(&[&str], f64, f64, f64, f64); 4] = [

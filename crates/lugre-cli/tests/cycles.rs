@@ -268,7 +268,7 @@ fn several_periods_agree_with_lugre_loop() {
         .collect();
     assert_eq!(cycles.len(), 6);
     let scale = 2.0 * f(&l["period"]);
-    let tol = lugre::prec::CYCLE_ENERGY * scale;
+    let tol = lugre_test_support::prec::CYCLE_ENERGY * scale;
     for c in &cycles[3..] {
         for (key, want) in [
             ("work", &minor["work"]),

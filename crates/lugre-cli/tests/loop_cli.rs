@@ -37,7 +37,7 @@ const EX4_MINOR_W: f64 = 0.1991073756948153;
 const EX4_MINOR_D: f64 = 0.32985645882607939;
 const EX4_MINOR_DV: f64 = -0.1307490831312641;
 const EX4_WORK_PER_PERIOD: f64 = 3.4967837542393372;
-const TOL: f64 = lugre::prec::LOOP;
+const TOL: f64 = lugre_test_support::prec::LOOP;
 
 #[test]
 fn example_4_json_matches_the_paper() {

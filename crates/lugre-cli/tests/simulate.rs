@@ -88,7 +88,7 @@ fn example_3_json_reproduces_the_exact_solution() {
             .position(|&x| (x - tk).abs() < 1e-12)
             .unwrap_or_else(|| panic!("t = {tk} is an output time"));
         assert!(
-            (y[i] - yk).abs() <= lugre::prec::EXACT_SIMULATION * 2.0,
+            (y[i] - yk).abs() <= lugre_test_support::prec::EXACT_SIMULATION * 2.0,
             "y({tk}) = {} vs {yk}",
             y[i]
         );

@@ -222,10 +222,6 @@ pub fn series<'py>(obj: &Bound<'py, PyAny>, name: &str) -> PyResult<Series<'py>>
     ))
 }
 
-/// An empty vector for an output of at most `n` elements, filled once and handed to numpy
-/// (large ones backed by huge pages, see [`lugre::memory::column`]).
-pub use lugre::memory::column;
-
 fn dtype_name(array: &Bound<'_, PyAny>) -> String {
     array
         .getattr("dtype")

@@ -7,7 +7,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict};
 
-use crate::convert::{self, column, real, type_name, value_error, vec_out};
+use crate::convert::{self, real, type_name, value_error, vec_out};
 use crate::models::{PyDahl, PyLuGre};
 
 /// Reversals and ASTM E1049-85 rainflow cycles of a measured history `series` (samples joined
@@ -98,8 +98,8 @@ fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
     })
 }
 
-/// Counts `u` into columns (see [`column`]: for long histories, room for every reversal and
-/// cycle there can be, one per sample), trimmed at the end.
+/// Counts `u` into columns (room for every reversal and cycle there can be, one per sample,
+/// so that counting never reallocates), trimmed at the end.
 fn count(
     u: &[f64],
     gate: f64,
@@ -113,20 +113,7 @@ fn count(
         .with_reversals(keep_reversals)
         .with_closures(keep_closures)
         .with_energy(model.is_some());
-    if keep_reversals {
-        (c.reversal_index, c.reversal_u) = (column(n), column(n));
-    }
-    (c.range, c.mean, c.count) = (column(n), column(n), column(n));
-    (c.start, c.end) = (column(n), column(n));
-    if keep_closures {
-        (c.closure, c.closure_position) = (column(n), column(n));
-    }
-    if model.is_some() {
-        c.work = column(n);
-        c.stored_energy_change = column(n);
-        c.dissipation = column(n);
-        c.closure_gap = column(n);
-    }
+    c.reserve_for_samples(n);
     let summary = match model {
         Some(m) => {
             let mut counter = lugre::EnergyCycleCounter::new(gate, m, x0)?;
@@ -139,27 +126,7 @@ fn count(
             counter.finish(&mut c)?
         }
     };
-    for v in [
-        &mut c.reversal_index,
-        &mut c.start,
-        &mut c.end,
-        &mut c.closure,
-    ] {
-        v.shrink_to_fit();
-    }
-    for v in [
-        &mut c.reversal_u,
-        &mut c.range,
-        &mut c.mean,
-        &mut c.count,
-        &mut c.closure_position,
-        &mut c.work,
-        &mut c.stored_energy_change,
-        &mut c.dissipation,
-        &mut c.closure_gap,
-    ] {
-        v.shrink_to_fit();
-    }
+    c.shrink_to_fit();
     Ok((c, summary))
 }
 

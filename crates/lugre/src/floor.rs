@@ -1,11 +1,14 @@
-//! Parts of the loop engine ([`crate::LoopTable`]) that the `floor` group of the `loops`
-//! benchmark times on their own, to show where the engine's time goes. Not for use: hidden
-//! from the documentation and free to change.
+//! Parts of the loop engine ([`crate::LoopTable`]) that the `floor` benchmark times on their
+//! own, to show where the engine's time goes. Not for use: only with the feature
+//! `bench-internals`, hidden from the documentation and free to change.
 
-use crate::arc_energy::Sums;
-use crate::hysteresis::step;
+use crate::kernel::arc::Sums;
+use crate::kernel::numerics::{PhiBlock, BLOCK};
+use crate::kernel::piece::step;
 use crate::model::RateIndependent;
-use crate::numerics::{PhiBlock, BLOCK};
+
+/// The kernel's exact relaxation step, for the benchmark's closed-form floor.
+pub use crate::kernel::relax::relax;
 
 /// The engine's per-piece arithmetic over the pieces of `u` (`y` from 0 written to `y`, as
 /// far as it reaches): the same blocks of families, closed forms and double-double sums as the
@@ -31,6 +34,7 @@ fn piece_arithmetic_avx2(model: RateIndependent, u: &[f64], y: &mut [f64]) -> f6
 
 #[inline(always)]
 fn piece_arithmetic_portable(model: RateIndependent, u: &[f64], y: &mut [f64]) -> f64 {
+    let model = model.relaxation();
     let (mut z, mut family) = ([0.0; BLOCK], PhiBlock::default());
     let (mut sums, mut y_prev) = (Sums::default(), 0.0);
     for first in (1..u.len()).step_by(BLOCK) {
@@ -55,9 +59,9 @@ fn piece_arithmetic_portable(model: RateIndependent, u: &[f64], y: &mut [f64]) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::hysteresis::{advance, piece};
-    use crate::prec::{rel_diff, CLOSED_FORM};
+    use crate::kernel::piece::{advance, piece};
     use crate::LuGre;
+    use lugre_test_support::prec::{rel_diff, CLOSED_FORM};
 
     /// Across several blocks, each piece gets its own family: `y` agrees with the scalar
     /// closed form (`advance`, through `relax`: another path) and the dissipation with the
@@ -73,8 +77,8 @@ mod tests {
         let (mut y_k, mut d) = (0.0, 0.0);
         for k in 1..u.len() {
             let (s, l) = step(u[k - 1], u[k]);
-            d += piece(model, y_k, s, l).dissipation;
-            y_k = advance(model, y_k, s, l);
+            d += piece(model.relaxation(), y_k, s, l).dissipation;
+            y_k = advance(model.relaxation(), y_k, s, l);
             // On the scale of `y`, `g0`: near a zero crossing a relative test would measure
             // the cancellation of `y_k e + s sigma0 c`, not the code.
             let scale = model.g0();

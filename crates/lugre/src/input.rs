@@ -118,7 +118,7 @@ fn reversals(values: &[f64]) -> Result<Vec<f64>, InputError> {
 /// The paper's bimodal input (Definition 1): turning points visited in the order
 /// `umin1, umax1, umin2, umax2`, with `umin1 <= umin2 < umax1 <= umax2` and not both
 /// `umin1 == umin2` and `umax1 == umax2`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bimodal {
     pub umin1: f64,
     pub umin2: f64,

@@ -19,22 +19,18 @@
 //!
 //! The core is pure computation: no file or terminal I/O.
 
-mod arc_energy;
 pub mod cycles;
 pub mod error;
 pub mod fit;
+#[cfg(feature = "bench-internals")]
 #[doc(hidden)]
 pub mod floor;
-pub mod hysteresis;
 pub mod input;
-mod loop_table;
-pub mod memory;
-pub mod minor;
+mod kernel;
+pub mod loops;
+mod memory;
 pub mod model;
-pub mod numerics;
-pub mod prec;
 pub mod simulate;
-pub mod theorem_a;
 
 pub use cycles::{
     count_cycles, count_cycles_with_energy, Closure, Cycle, CycleColumns, CycleCounter,
@@ -43,16 +39,14 @@ pub use cycles::{
 };
 pub use error::{FitError, HistoryError, InputError, LoopError, ModelError};
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
-pub use hysteresis::{HysteresisLoop, LoopPoint};
 pub use input::{Bimodal, TurningPoints};
-pub use loop_table::LoopTable;
-pub use minor::{minor_loops, Loop, LoopKind};
+pub use kernel::ArcEnergy;
+pub use loops::{HysteresisLoop, Loop, LoopKind, LoopPoint, LoopTable, TheoremA};
 pub use model::{Dahl, LuGre, LuGreParams, RateIndependent, Stribeck, VelocityFn, Viscous};
 pub use simulate::{
     paper_example_1, Example1, Gamma, PiecewiseLinear, Sample, SimulateError, Simulator, Sine,
     Tolerance, Trajectory,
 };
-pub use theorem_a::TheoremA;
 
 /// Any error of the library.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -69,11 +63,4 @@ pub enum Error {
     Simulate(#[from] SimulateError),
     #[error(transparent)]
     Fit(#[from] FitError),
-}
-
-impl HysteresisLoop {
-    /// The major loop and every minor loop, with energies and nesting (see [`minor`]).
-    pub fn loops(&self) -> Vec<Loop> {
-        minor_loops(self)
-    }
 }

@@ -1,4 +1,5 @@
-//! Large output vectors backed by transparent huge pages.
+//! Large output vectors backed by transparent huge pages (feature `huge-pages`, on by
+//! default; without it, plain allocations of the same sizes).
 //!
 //! Writing tens of MB of fresh memory costs one page fault per 4 KiB page, and a fault with its
 //! zeroing costs microseconds in a virtual machine: at 10^6 turning points that was 40 % of the
@@ -12,7 +13,7 @@ const HUGE_PAGE: usize = 2 << 20;
 /// with huge pages: only the pages written are ever backed, there is no reallocation, and
 /// writing fresh memory takes one page fault per 2 MiB rather than per 4 KiB. Trim with
 /// `shrink_to_fit` once filled if `n` was only a bound.
-pub fn column<T>(n: usize) -> Vec<T> {
+pub(crate) fn column<T>(n: usize) -> Vec<T> {
     let mut v = Vec::new();
     if n.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE {
         if v.try_reserve_exact(n).is_ok() {
@@ -26,7 +27,7 @@ pub fn column<T>(n: usize) -> Vec<T> {
 
 /// Asks for transparent huge pages over the memory of a slice (as numpy does for its arrays
 /// of 4 MiB or more). A kernel without them ignores the advice.
-#[cfg(target_os = "linux")]
+#[cfg(all(target_os = "linux", feature = "huge-pages"))]
 fn advise_huge_pages<T>(v: &mut [T]) {
     const PAGE: usize = 4096;
     let bytes = std::mem::size_of_val(v);
@@ -42,7 +43,7 @@ fn advise_huge_pages<T>(v: &mut [T]) {
     }
 }
 
-#[cfg(not(target_os = "linux"))]
+#[cfg(not(all(target_os = "linux", feature = "huge-pages")))]
 fn advise_huge_pages<T>(_v: &mut [T]) {}
 
 /// `count` columns of `len` elements each, zeroed, in one allocation backed by huge pages,

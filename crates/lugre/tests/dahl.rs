@@ -12,8 +12,8 @@ mod common;
 
 use common::reference_values::DAHL;
 use common::{assert_close, assert_rel, check_loop_invariants};
-use lugre::prec::{FEW_ULPS, IDENTITY, LOOP};
 use lugre::{Dahl, HysteresisLoop, LuGre, RateIndependent, TurningPoints};
+use lugre_test_support::prec::{FEW_ULPS, IDENTITY, LOOP};
 
 fn triangle(a: f64) -> TurningPoints {
     TurningPoints::new(&[-a, a]).unwrap()

@@ -8,12 +8,12 @@ mod common;
 
 use common::Lcg;
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
-use lugre::prec::{FULL_FIT_RECOVERY, SLOW_FIT_RECOVERY};
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{
     fit::Why, Dahl, FitError, Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator, Trajectory,
     TurningPoints,
 };
+use lugre_test_support::prec::{FULL_FIT_RECOVERY, SLOW_FIT_RECOVERY};
 
 /// Standard normal deviates by Box-Muller.
 struct Gauss(Lcg);

@@ -15,8 +15,8 @@ use common::reference_values::{repeated, seven};
 use common::{
     assert_close, assert_rel, check_loop_invariants, loop_of, random_turning_points, Lcg,
 };
-use lugre::prec::{CLOSED_FORM, FEW_ULPS, IDENTITY, LOOP};
 use lugre::{Bimodal, HysteresisLoop, Loop, LoopKind, LuGre, RateIndependent, TheoremA};
+use lugre_test_support::prec::{CLOSED_FORM, FEW_ULPS, IDENTITY, LOOP};
 
 fn describe(loops: &[Loop]) -> String {
     loops

@@ -10,8 +10,8 @@ mod common;
 
 use common::reference_values::{example3, example4, fig16};
 use common::{assert_close, assert_rel, check_loop_invariants, periodicity_residual};
-use lugre::prec::{FEW_ULPS, IDENTITY, LOOP};
 use lugre::{Bimodal, HysteresisLoop, LoopKind, LuGre, TheoremA};
+use lugre_test_support::prec::{FEW_ULPS, IDENTITY, LOOP};
 
 /// One example's reference values (see `make_reference.py`).
 struct Example {

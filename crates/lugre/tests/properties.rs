@@ -19,13 +19,13 @@
 //! continuous values; the model spans `a P` from about 1e-4 to 1e4.
 
 use lugre::cycles::Collect;
-use lugre::hysteresis::relax;
-use lugre::prec::{IDENTITY, LOOP};
 use lugre::simulate::transient_amplitude;
 use lugre::{
     count_cycles, count_cycles_with_energy, CycleCounter, Gamma, HysteresisLoop, Loop, LoopKind,
     LuGre, LuGreParams, PiecewiseLinear, RateIndependent, Simulator, Trajectory, TurningPoints,
 };
+use lugre_test_support::prec::{IDENTITY, LOOP};
+use lugre_test_support::reference::relax;
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 

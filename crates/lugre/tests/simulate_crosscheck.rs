@@ -5,12 +5,12 @@
 //! (Radau5 with Newton iterations and its own error control), restarted at every kink.
 
 use differential_equations::prelude::{ImplicitRungeKutta, IVP};
-use lugre::prec::{ADAPTIVE, EXACT_SIMULATION, STIFF_SOLVER};
 use lugre::simulate::{merge_times, transient_amplitude, uniform_times};
 use lugre::{
     paper_example_1, Bimodal, Dahl, Gamma, HysteresisLoop, LuGre, LuGreParams, PiecewiseLinear,
     SimulateError, Simulator, Sine, Tolerance, Trajectory, TurningPoints,
 };
+use lugre_test_support::prec::{ADAPTIVE, EXACT_SIMULATION, STIFF_SOLVER};
 
 /// `|got - want| <= tol * max(|want|, scale)`.
 #[track_caller]

@@ -21,8 +21,8 @@ use common::{
     assert_close, assert_rel, check_loop_invariants, loop_invariant_violations,
     periodicity_residual,
 };
-use lugre::prec::{FEW_ULPS, IDENTITY, LOOP};
 use lugre::{Bimodal, HysteresisLoop, LuGre, LuGreParams, RateIndependent, TheoremA};
+use lugre_test_support::prec::{FEW_ULPS, IDENTITY, LOOP};
 
 fn bimodal_loop(sigma0: f64, g0: f64, b: [f64; 4]) -> (Bimodal, HysteresisLoop) {
     let b = Bimodal::new(b[0], b[1], b[2], b[3]).unwrap();

@@ -109,6 +109,54 @@ impl CycleColumns {
         self
     }
 
+    /// Room for everything an `n`-sample history can produce (at most one reversal and one
+    /// cycle per sample) in the columns kept, so that counting never reallocates. Large
+    /// columns are backed by huge pages where the OS has them (feature `huge-pages`): writing
+    /// fresh memory then takes one page fault per 2 MiB, and only the pages written are ever
+    /// backed. [`shrink_to_fit`](Self::shrink_to_fit) trims them once counted.
+    pub fn reserve_for_samples(&mut self, n: usize) {
+        use crate::memory::column;
+        if self.keep_reversals {
+            (self.reversal_index, self.reversal_u) = (column(n), column(n));
+        }
+        (self.range, self.mean, self.count) = (column(n), column(n), column(n));
+        (self.start, self.end) = (column(n), column(n));
+        if self.keep_closures {
+            (self.closure, self.closure_position) = (column(n), column(n));
+        }
+        if self.keep_energy {
+            self.work = column(n);
+            self.stored_energy_change = column(n);
+            self.dissipation = column(n);
+            self.closure_gap = column(n);
+        }
+    }
+
+    /// Frees the room no row uses.
+    pub fn shrink_to_fit(&mut self) {
+        for v in [
+            &mut self.reversal_index,
+            &mut self.start,
+            &mut self.end,
+            &mut self.closure,
+        ] {
+            v.shrink_to_fit();
+        }
+        for v in [
+            &mut self.reversal_u,
+            &mut self.range,
+            &mut self.mean,
+            &mut self.count,
+            &mut self.closure_position,
+            &mut self.work,
+            &mut self.stored_energy_change,
+            &mut self.dissipation,
+            &mut self.closure_gap,
+        ] {
+            v.shrink_to_fit();
+        }
+    }
+
     pub fn keeps_reversals(&self) -> bool {
         self.keep_reversals
     }

@@ -1,10 +1,10 @@
 //! The rate-independent response `y*` along a history (paper eq. 6, from `y*(0) = sigma0 x0`)
-//! and the energies over each full cycle's arc, by the closed forms of [`crate::hysteresis`].
+//! and the energies over each full cycle's arc, by the closed forms of [`crate::loops`].
 //!
 //! Samples are joined by straight lines, so each step is one piece of the normalized input
 //! (direction `s`, length `l = |du|`) and `y*` advances exactly, at any stiffness. Over a piece
 //! from `y_k` the work is `s y_k c + e` with `(c, e)` from `hysteresis::piece`. The sums over
-//! an arc's pieces ([`crate::arc_energy::Sums`]) give its work, stored-energy change,
+//! an arc's pieces ([`crate::kernel::arc::Sums`]) give its work, stored-energy change,
 //! dissipation and closure gap in O(1) per cycle without keeping samples, each in the form
 //! that rounds least ([`crate::arc_energy`]).
 //!
@@ -15,11 +15,11 @@
 
 use super::engine::{Open, Track};
 use super::{CycleEnergy, HistoryEnergy};
-use crate::arc_energy::{arc_energy, Sums};
 use crate::error::HistoryError;
-use crate::hysteresis::step;
+use crate::kernel::arc::{arc_energy, Sums};
+use crate::kernel::numerics::DoubleDouble;
+use crate::kernel::piece::step;
 use crate::model::RateIndependent;
-use crate::numerics::DoubleDouble;
 
 /// `y*` at a sample and the sums from the reversal below it on the stack (for a stack entry)
 /// or from the top of the stack (for a sample of the current run).
@@ -102,7 +102,7 @@ impl Track for EnergyTrack {
             return;
         }
         self.prev = self.cur;
-        let (model, y) = (self.model, self.prev.state.y);
+        let (model, y) = (self.model.relaxation(), self.prev.state.y);
         let (s, l) = step(self.prev.u, u);
         let mut sums = self.prev.state.sums;
         let (w, d, y_end) = sums.add_piece(model, y, s, l);
@@ -140,7 +140,7 @@ impl Track for EnergyTrack {
         index: u64,
         frac: f64,
     ) -> Result<Option<CycleEnergy>, HistoryError> {
-        let model = self.model;
+        let model = self.model.relaxation();
         let a = &stack[start];
         let mut sums = self.prev.state.sums;
         for entry in &stack[start + 1..] {

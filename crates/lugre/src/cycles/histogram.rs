@@ -7,7 +7,7 @@ use crate::error::HistoryError;
 /// `[0, max - min]` and of mean over `[min, max]`, where `min` and `max` bound the history
 /// (every range and mean then falls in a bin). Bins are closed on the left, the last one on
 /// both sides.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Histogram {
     bins: usize,
     min: f64,

@@ -43,7 +43,7 @@
 //!
 //! # Energy
 //!
-//! Closed forms per step as in `lugre loop` (see [`crate::hysteresis`]), summed in
+//! Closed forms per step as in `lugre loop` (see [`crate::loops`]), summed in
 //! double-double per stack segment (see the `energy` submodule), so one cycle costs O(1) and
 //! the rounding scales with its arc, not with the history before it. The work is summed
 //! relative to the loop's start value, `integral (y* - y_A) du`, not formed as `dV + D`: on a
@@ -87,7 +87,7 @@ use energy::EnergyTrack;
 use engine::{Engine, NoTrack};
 
 /// A reversal: its sample index and value.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reversal {
     pub index: u64,
     pub u: f64,
@@ -95,7 +95,7 @@ pub struct Reversal {
 
 /// Where a full cycle's loop closes: the first sample index at which the history is back at
 /// the cycle's start value, and the interpolated position (`index - 1 < position <= index`).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Closure {
     pub index: u64,
     pub position: f64,
@@ -103,7 +103,7 @@ pub struct Closure {
 
 /// The energies over a full cycle's arc, from its start `A` through its reversal to the
 /// closure `C`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleEnergy {
     /// `W = integral y* du` over the arc (nested cycles included).
     pub work: f64,
@@ -120,7 +120,7 @@ pub struct CycleEnergy {
 }
 
 /// A rainflow cycle.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cycle {
     /// `|u_start - u_end|`.
     pub range: f64,
@@ -165,7 +165,7 @@ impl CycleSink for Vec<Cycle> {
 }
 
 /// Totals along the whole history, from its first to its last sample.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HistoryEnergy {
     /// `y*(0) = sigma0 x0`.
     pub y_start: f64,
@@ -177,7 +177,7 @@ pub struct HistoryEnergy {
 }
 
 /// What a finished count reports besides the reversals and cycles.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleSummary {
     pub samples: u64,
     pub reversals: u64,
@@ -187,7 +187,7 @@ pub struct CycleSummary {
 }
 
 /// Everything about a history held in memory.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct History {
     pub reversals: Vec<Reversal>,
     pub cycles: Vec<Cycle>,

@@ -2,8 +2,10 @@
 //! the periodic loop.
 
 use super::*;
-use crate::prec::{rel_diff, CLOSED_FORM, CYCLE_ENERGY, IDENTITY, LOOP, TINY_LOOP_WORK};
 use crate::{HysteresisLoop, LoopKind, TurningPoints};
+use lugre_test_support::prec::{
+    rel_diff, CLOSED_FORM, CYCLE_ENERGY, IDENTITY, LOOP, TINY_LOOP_WORK,
+};
 
 fn reversals(u: &[f64], gate: f64) -> Vec<(u64, f64)> {
     count_cycles(u, gate)

@@ -40,7 +40,7 @@
 use super::lm::Evaluator;
 use super::slow::{half_rise_rate, median};
 use super::spec::{lugre_params, Family, Resolved};
-use crate::hysteresis::decay;
+use crate::kernel::relax::decay;
 use crate::model::LuGre;
 use nalgebra::DMatrix;
 
@@ -465,7 +465,7 @@ mod tests {
             let g0 = model.g0();
             for (a, b) in y.iter().zip(&out.y) {
                 assert!(
-                    (a - b).abs() <= crate::prec::EXACT_SIMULATION * g0,
+                    (a - b).abs() <= lugre_test_support::prec::EXACT_SIMULATION * g0,
                     "{family:?} {values:?}: {a} vs {b}"
                 );
             }

@@ -95,7 +95,7 @@ use lm::{minimize, Config, Outcome};
 use spec::Resolved;
 
 /// One fitted parameter.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Estimate {
     pub name: &'static str,
     pub value: f64,
@@ -108,7 +108,7 @@ pub struct Estimate {
 }
 
 /// The result of a fit.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct FitReport {
     pub kind: FitKind,
     pub family: Family,

@@ -34,11 +34,11 @@
 use super::lm::Evaluator;
 use super::spec::Family;
 use crate::error::FitError;
-use crate::hysteresis::decay;
 use crate::input::TurningPoints;
+use crate::kernel::numerics::one_minus_exp;
+use crate::kernel::relax::decay;
+use crate::loops::HysteresisLoop;
 use crate::model::RateIndependent;
-use crate::numerics::one_minus_exp;
-use crate::HysteresisLoop;
 use nalgebra::DMatrix;
 
 /// Samples `start..end`, all on segment `k`, in the order of increasing offset.
@@ -459,11 +459,11 @@ mod tests {
             for (i, rho) in sl.sample_rho().iter().enumerate() {
                 let want = hl.y_at(*rho);
                 assert!(
-                    (y[i] - want).abs() <= crate::prec::LOOP * 2.0,
+                    (y[i] - want).abs() <= lugre_test_support::prec::LOOP * 2.0,
                     "{i}: {} vs {want}",
                     y[i]
                 );
-                assert!((hl.psi_at(*rho) - u[i]).abs() <= crate::prec::FEW_ULPS * 4.0);
+                assert!((hl.psi_at(*rho) - u[i]).abs() <= lugre_test_support::prec::FEW_ULPS * 4.0);
             }
             for (c, &i) in free.iter().enumerate() {
                 let h = 1e-6 * values[i];

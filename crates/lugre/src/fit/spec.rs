@@ -11,8 +11,7 @@ pub const LUGRE_PARAMETERS: [&str; 7] = ["sigma0", "sigma1", "sigma2", "fc", "fs
 pub const DAHL_PARAMETERS: [&str; 2] = ["rho", "fc"];
 
 /// The model whose parameters are identified.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Family {
     /// LuGre with the Stribeck `g` and viscous `f`: `sigma0, sigma1, sigma2, fc, fs, vs, beta`.
     LuGre,
@@ -74,8 +73,7 @@ impl Family {
 }
 
 /// Which fit: the slow loop (rate-independent limit) or the exact simulation.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FitKind {
     Slow,
     Full,
@@ -92,7 +90,7 @@ impl FitKind {
 
 /// Bounds `0 <= lo < hi <= inf` on a parameter. Every parameter of the models is positive, so
 /// the default is `(0, inf)`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bounds {
     pub lo: f64,
     pub hi: f64,

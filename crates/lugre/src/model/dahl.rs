@@ -6,7 +6,7 @@
 use super::{check_positive, LuGre, LuGreParams, RateIndependent};
 use crate::error::ModelError;
 
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Dahl {
     rho: f64,
     fc: f64,

@@ -19,14 +19,13 @@ impl<F: Fn(f64) -> f64> VelocityFn for F {
 pub(crate) const MIN_INVERTIBLE: f64 = 5.56268464626801e-309;
 
 /// The Stribeck curve (paper §4.2): `g(v) = Fc + (Fs - Fc) exp(-|v / vs|^beta)`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Stribeck {
     fc: f64,
     fs: f64,
     vs: f64,
     beta: f64,
     /// `1 / vs`: `g` is evaluated once per sample in simulations, where a division costs.
-    #[serde(skip)]
     inv_vs: f64,
 }
 
@@ -84,14 +83,14 @@ impl VelocityFn for Stribeck {
             // g rises from Fs to Fc: `Fs + (Fc - Fs)(1 - exp(-x))`, two terms >= 0, so g(0) is
             // Fs exactly and g never rounds to 0 (`Fc + (Fs - Fc) exp(-x)` cancels, to 0 when
             // Fs < Fc eps).
-            let (_, one_minus_e) = crate::hysteresis::decay(x);
+            let (_, one_minus_e) = crate::kernel::relax::decay(x);
             self.fs + (self.fc - self.fs) * one_minus_e
         }
     }
 }
 
 /// Linear viscous friction `f(v) = sigma2 v`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Viscous {
     sigma2: f64,
 }

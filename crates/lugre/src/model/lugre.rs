@@ -7,7 +7,7 @@ use crate::error::ModelError;
 ///
 /// The default is the paper's Examples 2-3: `sigma0 = sigma1 = 1`, `sigma2 = 0`, `Fc = 1`,
 /// `Fs = 2`, `vs = 1`, `beta = 1`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LuGreParams {
     pub sigma0: f64,
     pub sigma1: f64,

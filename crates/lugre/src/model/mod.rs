@@ -20,15 +20,14 @@ pub use functions::{Stribeck, VelocityFn, Viscous};
 pub use lugre::{LuGre, LuGreParams};
 
 use crate::error::ModelError;
+use crate::kernel::Relaxation;
 
 /// What the rate-independent limit of a LuGre model depends on: `sigma0` and `g0 = g(0)`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RateIndependent {
-    sigma0: f64,
-    g0: f64,
-    /// `sigma0 / g0`, kept: every piece of every loop needs it, and a division is slow.
-    #[serde(skip)]
-    a: f64,
+    /// `sigma0`, `g0` and `a = sigma0 / g0` (kept: every piece of every loop needs it, and a
+    /// division is slow).
+    k: Relaxation,
 }
 
 impl RateIndependent {
@@ -42,24 +41,32 @@ impl RateIndependent {
         if !a.is_finite() || a <= 0.0 {
             return Err(ModelError::BadRatio { sigma0, g0 });
         }
-        Ok(Self { sigma0, g0, a })
+        Ok(Self {
+            k: Relaxation::new(sigma0, g0),
+        })
     }
 
     #[inline]
     pub fn sigma0(&self) -> f64 {
-        self.sigma0
+        self.k.sigma0()
     }
 
     /// `g(0)`: the force the loop saturates to, `|y°| < g0`.
     #[inline]
     pub fn g0(&self) -> f64 {
-        self.g0
+        self.k.g0()
     }
 
     /// `a = sigma0 / g(0)`, the inverse length over which the loop relaxes.
     #[inline]
     pub fn a(&self) -> f64 {
-        self.a
+        self.k.a()
+    }
+
+    /// The numbers the kernel's closed forms take.
+    #[inline(always)]
+    pub(crate) fn relaxation(&self) -> Relaxation {
+        self.k
     }
 }
 

@@ -29,7 +29,7 @@
 
 use super::inputs::Sine;
 use super::{check_output_times, Sample, SimulateError, Simulator, Tolerance, Trajectory};
-use crate::hysteresis::relax;
+use crate::kernel::relax::relax;
 use crate::model::VelocityFn;
 
 /// A scalar linear ODE `z' = -r(t) z + q(t)`: `coefficients(t) = (r(t), q(t))`.

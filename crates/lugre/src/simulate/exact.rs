@@ -13,22 +13,20 @@
 //! y     = sigma0 z + (sigma1 / gamma) z' + f(v / gamma)
 //! ```
 //!
-//! The second form of `z` ([`relax`], shared with the hysteresis loop) has no exponential of a
+//! The second form of `z` (`relax`, shared with the hysteresis loop) has no exponential of a
 //! positive argument, never divides by `k` (a segment where `u` stands still, `k = 0`, is exact
-//! too) and does not cancel (`1 - exp(-c)` is computed as such, see [`decay`]). Over a whole
+//! too) and does not cancel (`1 - exp(-c)` is computed as such, see `decay`). Over a whole
 //! segment `c = sigma0 |du| / g(v / gamma)` depends on `dt` only through `g`, so in the
 //! rate-independent limit the recursion is exactly eq. 8's. The per-sample loop uses the
-//! equivalent [`relax_toward`] form `z_i exp(-c) + z_inf (1 - exp(-c))`, which keeps a division
+//! equivalent `relax_toward` form `z_i exp(-c) + z_inf (1 - exp(-c))`, which keeps a division
 //! off its critical path. Per segment this costs one `g` (one exponential for the Stribeck
-//! curve), one exponential in [`decay`], and four divisions: nothing is allocated, nothing is
+//! curve), one exponential in `decay`, and four divisions: nothing is allocated, nothing is
 //! limited by stiffness, and the error is a few roundings per segment for any `sigma0 / g`.
 //!
-//! [`relax`]: crate::hysteresis::relax
-//! [`decay`]: crate::hysteresis::decay
 
 use super::inputs::PiecewiseLinear;
 use super::{check_output_times, Gamma, Sample, SimulateError, Trajectory};
-use crate::hysteresis::relax_toward;
+use crate::kernel::relax::relax_toward;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
 
 /// Samples between two calls of the progress callback.

@@ -8,7 +8,7 @@
 //! Its output-versus-input graph tends to the hysteresis loop as `gamma -> inf` (the lag
 //! becomes instantaneous and `y -> x`, the Dahl loop with `a = 1`).
 //!
-//! `x` is exact: between reversals it is [`relax`](crate::hysteresis::relax) in the variable
+//! `x` is exact: between reversals it is the kernel's `relax` in the variable
 //! `u` (the Dahl model is rate independent). `y` is the linear ODE `y' = -y + x(t)`, integrated
 //! by the adaptive method of [`super::adaptive`] with a stop at every reversal, where `x` has a
 //! kink in its second derivative.
@@ -24,7 +24,7 @@ use super::{uniform_times, SimulateError, Tolerance};
 
 /// Example 1 sampled on a uniform grid: the response from rest and the periodic steady state at
 /// the same times.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Example1 {
     pub gamma: f64,
     /// Physical time, `samples_per_period` steps per period `gamma`, both ends included.

@@ -152,7 +152,7 @@ impl PiecewiseLinear {
 const MAX_PHASE: f64 = 1e6;
 
 /// `u(t) = A sin(2 pi t / T + phase) + offset`, from `t = 0`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sine {
     amplitude: f64,
     period: f64,

@@ -15,7 +15,7 @@
 //! * [`PiecewiseLinear`] inputs (turning points at a constant speed, sampled data linear
 //!   between samples) are solved **exactly** segment by segment ([`exact`]): on a segment
 //!   where `u' = v` is constant eq. 5 is linear with constant coefficients, and
-//!   [`crate::hysteresis::relax`] gives its solution at any stiffness, with no step-size limit.
+//!   the kernel's `relax` gives its solution at any stiffness, with no step-size limit.
 //! * [`Sine`] inputs are integrated by an adaptive, L-stable method with a user tolerance
 //!   ([`adaptive`]), except for `gamma = inf`, where eq. 6 is again closed form.
 //!
@@ -65,7 +65,7 @@ pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
 
 use crate::error::InputError;
-use crate::hysteresis::HysteresisLoop;
+use crate::loops::HysteresisLoop;
 use thiserror::Error;
 
 /// An invalid simulation request, or a result that cannot be represented.
@@ -129,7 +129,7 @@ pub enum SimulateError {
 
 /// The slowness `gamma` of eq. 5: a finite positive number, or infinity (the rate-independent
 /// limit `y*_u` of eq. 6).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Gamma(f64);
 
 impl Gamma {
@@ -162,7 +162,7 @@ impl Gamma {
 }
 
 /// The relative tolerance of the adaptive integrator.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerance(f64);
 
 impl Tolerance {
@@ -186,7 +186,7 @@ impl Tolerance {
 
 /// One output sample: eq. 5's time, the input, the state `z`, its derivative `z'` and the
 /// output `y_gamma` (just after a kink, see the module docs).
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sample {
     pub t: f64,
     pub u: f64,
@@ -199,7 +199,7 @@ pub struct Sample {
 ///
 /// Filling a trajectory whose capacity suffices allocates nothing: reuse one with
 /// [`Trajectory::clear`] in loops.
-#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Trajectory {
     pub t: Vec<f64>,
     pub u: Vec<f64>,
@@ -369,7 +369,7 @@ pub fn merge_times(a: &[f64], b: &[f64]) -> Vec<f64> {
 
 #[cfg(test)]
 mod tests {
-    use crate::hysteresis::{decay, relax, relax_toward};
+    use crate::kernel::relax::{decay, relax, relax_toward};
 
     // mpmath, mp.dps = 40: (c, exp(-c), -expm1(-c)), printed with mp.nstr(x, 20).
     const DECAY: [(f64, f64, f64); 12] = [

@@ -5,8 +5,8 @@
 #[rustfmt::skip]
 pub mod reference_values;
 
-use lugre::prec::{CLOSED_FORM, FEW_ULPS};
 use lugre::{HysteresisLoop, Loop, LoopKind, RateIndependent, TurningPoints};
+use lugre_test_support::prec::{CLOSED_FORM, FEW_ULPS};
 
 /// The loop of the rate-independent LuGre model `(sigma0, g0)` for the periodic input `u`.
 pub fn loop_of(sigma0: f64, g0: f64, u: &[f64]) -> HysteresisLoop {

@@ -4,14 +4,14 @@
 //! sign in front of `g(0)[...]` is `+` on increasing segments (`i = 0, 2`) and `-` on decreasing
 //! ones (`i = 1, 3`); and `psi_u`, `y°` are functions of `rho`, not of `t`. Its formula for
 //! `y°(0)` multiplies `exp(a rho_i)` terms and overflows once `a rho_4 > ~709`; the values here
-//! come from the stable recursion of [`crate::hysteresis`], which equals eq. 13 wherever both
+//! come from the stable recursion of [`crate::loops`], which equals eq. 13 wherever both
 //! are finite.
 
-use crate::hysteresis::HysteresisLoop;
+use super::HysteresisLoop;
 use crate::input::Bimodal;
 
 /// `rho_0..rho_5` of Theorem A, `y°` there, and the minor-loop arc `[rho_1, rho_5]`.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TheoremA {
     pub rho: [f64; 6],
     pub y: [f64; 6],

@@ -1,4 +1,4 @@
-//! Energies over a loop's arc, shared by periodic loops ([`crate::minor`]) and measured
+//! Energies over a loop's arc, shared by periodic loops ([`crate::loops`]) and measured
 //! histories ([`crate::cycles`]): the work `W = integral y dpsi`, the stored-energy change
 //! `dV = (y_C^2 - y_A^2) / (2 sigma0)` and the dissipation `D = (1/g0) integral y^2 drho`,
 //! over an arc from `A` to `C` on which the input returns to its start (`u_C = u_A`).
@@ -19,9 +19,9 @@
 //! on a piece `y_end - y_k = s sigma0 l - a (y_k c + s e)`, and the first terms add up
 //! to `sigma0 (u_C - u_A) = 0`, leaving `gap = -a (sum y_k c + sum s e)`.
 
-use crate::hysteresis::{piece, piece_with, Piece};
-use crate::model::RateIndependent;
-use crate::numerics::{DoubleDouble, PhiFamily};
+use super::numerics::{DoubleDouble, PhiFamily};
+use super::piece::{piece, piece_with, Piece};
+use super::Relaxation;
 
 /// Running sums over pieces of an arc, in double-double, one lane per sum (`hi + lo` in each):
 /// laid out as two arrays so that adding two sums is a few vector instructions. `y_k c` is
@@ -73,13 +73,7 @@ impl Sums {
     /// The piece of direction `s` and length `l` from `y`, its family `f` already evaluated (in
     /// blocks), and its sums.
     #[inline(always)]
-    pub fn with_piece(
-        model: RateIndependent,
-        y: f64,
-        s: f64,
-        l: f64,
-        f: &PhiFamily,
-    ) -> (Piece, Self) {
+    pub fn with_piece(model: Relaxation, y: f64, s: f64, l: f64, f: &PhiFamily) -> (Piece, Self) {
         let p = piece_with(model, y, s, l, f);
         (p, Self::piece(y, s, l, &p))
     }
@@ -89,7 +83,7 @@ impl Sums {
     #[inline]
     pub fn add_piece(
         &mut self,
-        model: RateIndependent,
+        model: Relaxation,
         y: f64,
         s: f64,
         l: f64,
@@ -136,7 +130,7 @@ impl std::ops::Add for Sums {
     /// Lane by lane: the exact sum of the leading parts (two-sum) with its rounding error added
     /// to the trailing parts, not renormalized. The leading part then depends on the leading
     /// parts only (one addition of latency, where a renormalized double-double chains about
-    /// ten), which is what the loop of [`crate::loop_table`] waits on; the trailing part
+    /// ten), which is what the loop engine waits on; the trailing part
     /// collects the errors, so `hi + lo` keeps about `k eps^2` relative error after `k`
     /// additions.
     #[inline(always)]
@@ -172,7 +166,7 @@ impl std::ops::Sub for Sums {
 
 /// The energies over an arc.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct ArcEnergy {
+pub struct ArcEnergy {
     pub work: f64,
     pub stored_energy_change: f64,
     pub dissipation: f64,
@@ -184,7 +178,7 @@ pub(crate) struct ArcEnergy {
 /// arcs longer than `1/a`, where the gap is not small and the difference is exact enough.
 #[inline]
 pub(crate) fn closure_gap(
-    model: RateIndependent,
+    model: Relaxation,
     length: f64,
     sum_yc: f64,
     sum_se: f64,
@@ -200,7 +194,7 @@ pub(crate) fn closure_gap(
 
 /// `dV` from the gap and the two end values.
 #[inline]
-pub(crate) fn stored_energy_change(model: RateIndependent, gap: f64, y_a: f64, y_c: f64) -> f64 {
+pub(crate) fn stored_energy_change(model: Relaxation, gap: f64, y_a: f64, y_c: f64) -> f64 {
     // `gap / sigma0` first: a length, where `gap (y_c + y_a)` is a force squared and overflows
     // (forces above 1e154) or underflows (below 1e-154) where dV itself is representable.
     gap / model.sigma0() * (0.5 * (y_c + y_a))
@@ -211,7 +205,7 @@ pub(crate) fn stored_energy_change(model: RateIndependent, gap: f64, y_a: f64, y
 /// `|dV| + D`.
 #[inline]
 pub(crate) fn direct_work_is_better(
-    model: RateIndependent,
+    model: Relaxation,
     length: f64,
     stored_energy_change: f64,
     dissipation: f64,
@@ -224,7 +218,7 @@ pub(crate) fn direct_work_is_better(
 /// when the pieces were summed, the direct form `integral (y - y_A) dpsi`.
 #[inline]
 pub(crate) fn best_work(
-    model: RateIndependent,
+    model: Relaxation,
     length: f64,
     direct: Option<f64>,
     stored_energy_change: f64,
@@ -239,7 +233,7 @@ pub(crate) fn best_work(
 /// Every energy of an arc from `A` (where `y = y_a`) to `C` (`y = y_c`) whose pieces were
 /// summed into `sums`.
 #[inline(always)]
-pub(crate) fn arc_energy(model: RateIndependent, sums: &Sums, y_a: f64, y_c: f64) -> ArcEnergy {
+pub(crate) fn arc_energy(model: Relaxation, sums: &Sums, y_a: f64, y_c: f64) -> ArcEnergy {
     let length = sums.lane(LENGTH);
     let gap = closure_gap(model, length, sums.lane(S5), sums.lane(S4), y_a, y_c);
     let dv = stored_energy_change(model, gap, y_a, y_c);

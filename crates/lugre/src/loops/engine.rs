@@ -1,8 +1,30 @@
-//! Every loop of a periodic input in one pass: the rainflow pairing of [`crate::minor`] run on
-//! the period started at its canonical global maximum, with `y°` and the energies carried on
-//! the rainflow stack (the same scheme as histories, [`crate::cycles`]).
+//! The pairing engine: every loop of a periodic input in one pass over the period, with `y°`
+//! and the energies (the paper's closing remark made precise).
 //!
-//! Each stack entry holds the sums of [`crate::arc_energy`] over the pieces from its turning
+//! The cyclic sequence of turning points is started at a global maximum and its reversals are
+//! paired by the ASTM E1049 three-point rule for repeating histories (rainflow): with the last
+//! three points `A, B, P` on the stack, `X = |P - B|`, `Y = |B - A|`, the pair `(A, B)` is a
+//! cycle once `X >= Y`. Each cycle is a loop: the arc from `rho_A` through `rho_B` to `rho_C`,
+//! the first `rho > rho_B` where the input is back at `u_A`. That return lies on the last
+//! segment into `P` (everything in between stayed strictly inside `(u_A, u_B)`), so `rho_C`
+//! costs O(1) even when cycles are nested on the return branch.
+//!
+//! **Ties** (`X == Y`, the input comes back exactly to `u_A`): a return *upwards* to a maximum
+//! closes the cycle, a return *downwards* to a minimum does not (the input must go strictly
+//! below). This is the one convention under which every input of Definition 1, including
+//! `umin1 == umin2` and `umax1 == umax2`, has exactly Theorem A's minor loop
+//! `[rho_1, rho_5]`. When a minimum is touched without closing, the touch is remembered: if
+//! that cycle closes later, its arc still ends at the first return (the touch).
+//!
+//! **Start**: among the global maxima the start is the one whose rotation of the sequence is
+//! lexicographically greatest, so the set of loops does not depend on where the user's
+//! period begins, even with repeated extreme values.
+//!
+//! **One pass.** The pairing runs on the period started at its canonical global maximum, with
+//! `y°` and the energies carried on the rainflow stack (the same scheme as histories,
+//! [`crate::cycles`]).
+//!
+//! Each stack entry holds the sums of the kernel (`kernel::arc::Sums`) over the pieces from its turning
 //! point to the next entry up (the top entry: to the last point pushed). When the pair
 //! `(A, B)` closes at the point `P`, its arc is `A -> B -> ... -> C`, `C` on the segment into
 //! `P` where the input is back at `u_A`: its sums are `A`'s and `B`'s plus the piece from the
@@ -11,231 +33,56 @@
 //! stack holds `O(log n)` entries for typical inputs, and nothing is kept per turning point
 //! but `y°` itself: the work is linear in `n` and streams through memory.
 //!
-//! Sums are double-double (`arc_energy::Sums`) and cover only their own arc, so their rounding
+//! Sums are double-double (`kernel::arc::Sums`) and cover only their own arc, so their rounding
 //! scales with the loop they describe, not with the period.
 //!
 //! Rows come out in the order rainflow closes the loops: every loop after the loops it
 //! contains (post-order), the major loop last. A loop's parent is the first loop after it
 //! whose arc starts before it: kept with a stack of loops still without a parent.
 
-use crate::arc_energy::{arc_energy, Sums};
-use crate::hysteresis::step;
-use crate::memory::Columns;
-use crate::model::RateIndependent;
-use crate::numerics::{PhiBlock, BLOCK};
+//! **Dispatch.** [`Period::loops`] is compiled twice, portable and AVX2, chosen at run time;
+//! results are bit for bit the same (no fused multiply-adds are introduced; a test compares the
+//! two). Every helper it calls is `#[inline(always)]` (the kernel's inlining rule,
+//! [`crate::kernel`]).
 
-/// Marks a stack entry without a touch, and the major loop's parent.
-const NONE: usize = usize::MAX;
+use super::table::{LoopTable, NONE};
+use crate::kernel::arc::{arc_energy, Sums};
+use crate::kernel::numerics::{PhiBlock, BLOCK};
+use crate::kernel::piece::step;
+use crate::kernel::{ArcEnergy, Relaxation};
 
-/// All loops of a periodic input as columns, one row per loop, in the order the loops close:
-/// each loop after every loop nested in it, the major loop last (see [`crate::minor`] for the
-/// pairing rule and [`crate::HysteresisLoop::loops`] for the same loops as records ordered by
-/// where they start).
-///
-/// Start and reversal are turning points, given by their index `k` into
-/// [`HysteresisLoop::turning_points`](crate::HysteresisLoop::turning_points) (the loop's `u`
-/// and `y°` there are that array's and
-/// [`turning_y`](crate::HysteresisLoop::turning_y)'s); the start's `rho` is in `[0, P)`, the
-/// reversal's and the end's may exceed `P` when the arc wraps round the period.
-///
-/// ```
-/// use lugre::{HysteresisLoop, LuGre, TurningPoints};
-///
-/// // The ASTM E1049 history as one period: three minor loops and the major loop.
-/// let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0];
-/// let model = LuGre::paper().rate_independent();
-/// let hl = HysteresisLoop::new(model, &TurningPoints::new(&u).unwrap()).unwrap();
-/// let t = hl.loop_table();
-/// assert_eq!(t.len(), 4);
-/// assert_eq!(t.major(), 3); // closes last
-/// let u_a: Vec<f64> = t.start().iter().map(|&k| u[k]).collect();
-/// assert_eq!(u_a, [-1.0, -2.0, 4.0, 5.0]);
-/// assert!(t.dissipation().iter().all(|&d| d > 0.0));
-/// assert_eq!(t.parent(1), Some(2)); // (-2, 1) lies inside (4, -3)
-/// assert_eq!(hl.work_per_period(), t.work()[t.major()]);
-/// ```
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct LoopTable {
-    len: usize,
-    /// Turning points in the period.
-    turning_points: usize,
-    /// [`START`], [`REVERSAL`], [`PARENT`], [`DEPTH`].
-    indices: Columns<usize>,
-    /// [`REVERSAL_RHO`] to [`CLOSURE_GAP`].
-    reals: Columns<f64>,
-}
-
-const START: usize = 0;
-const REVERSAL: usize = 1;
-const PARENT: usize = 2;
-const DEPTH: usize = 3;
-const REVERSAL_RHO: usize = 0;
-const END_RHO: usize = 1;
-const END_U: usize = 2;
-const END_Y: usize = 3;
-const WORK: usize = 4;
-const STORED_ENERGY_CHANGE: usize = 5;
-const DISSIPATION: usize = 6;
-const CLOSURE_GAP: usize = 7;
-
-impl LoopTable {
-    /// Number of loops, the major loop included.
-    pub fn len(&self) -> usize {
-        self.len
+/// The rotation of `u` that starts at a global maximum and is lexicographically greatest
+/// (the minimum-expression algorithm, O(n)).
+pub(super) fn canonical_start(u: &[f64]) -> usize {
+    // A unique global maximum starts the greatest rotation (the common case): three
+    // branch-free passes instead of the comparisons below.
+    let max = u
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &x| if x > m { x } else { m });
+    if u.iter().filter(|&&x| x == max).count() == 1 {
+        return u.iter().position(|&x| x == max).unwrap_or(0);
     }
-
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
-    /// The row of the major loop (the last one).
-    pub fn major(&self) -> usize {
-        self.len - 1
-    }
-
-    fn index(&self, i: usize) -> &[usize] {
-        &self.indices.column(i)[..self.len]
-    }
-
-    fn real(&self, i: usize) -> &[f64] {
-        &self.reals.column(i)[..self.len]
-    }
-
-    /// Index `k` of the turning point each loop starts at (`rho_A = rho_k`, `u_A = u_k`).
-    pub fn start(&self) -> &[usize] {
-        self.index(START)
-    }
-
-    /// Index `k` of the turning point each loop turns at.
-    pub fn reversal(&self) -> &[usize] {
-        self.index(REVERSAL)
-    }
-
-    /// `rho_B` of each loop's reversal (`rho_k`, plus `P` when the arc wrapped before it).
-    pub fn reversal_rho(&self) -> &[f64] {
-        self.real(REVERSAL_RHO)
-    }
-
-    /// `rho_C`, where the input first returns to `u_A`.
-    pub fn end_rho(&self) -> &[f64] {
-        self.real(END_RHO)
-    }
-
-    /// `u` at the end (`u_A` up to the rounding of `u_k + s offset`).
-    pub fn end_u(&self) -> &[f64] {
-        self.real(END_U)
-    }
-
-    /// `y°(rho_C)`.
-    pub fn end_y(&self) -> &[f64] {
-        self.real(END_Y)
-    }
-
-    /// `W = integral y° dpsi` over each arc, nested loops included.
-    pub fn work(&self) -> &[f64] {
-        self.real(WORK)
-    }
-
-    /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`.
-    pub fn stored_energy_change(&self) -> &[f64] {
-        self.real(STORED_ENERGY_CHANGE)
-    }
-
-    /// `D = W - dV >= 0`.
-    pub fn dissipation(&self) -> &[f64] {
-        self.real(DISSIPATION)
-    }
-
-    /// `y_C - y_A`.
-    pub fn closure_gap(&self) -> &[f64] {
-        self.real(CLOSURE_GAP)
-    }
-
-    /// Row of the smallest loop containing each one (always a later row); `None` for the major
-    /// loop.
-    pub fn parent(&self, row: usize) -> Option<usize> {
-        let p = self.index(PARENT)[row];
-        (p != NONE).then_some(p)
-    }
-
-    /// 0 for the major loop, the parent's depth + 1 otherwise.
-    pub fn depth(&self) -> &[usize] {
-        self.index(DEPTH)
-    }
-
-    /// The rows in the order of [`crate::HysteresisLoop::loops`] (the major loop, then the
-    /// minor loops by where their arcs start in the major loop's period), and the place of
-    /// each row in that order (to renumber parents). A counting sort: each turning point starts
-    /// at most one minor loop.
-    pub fn rows_by_start(&self) -> (Vec<usize>, Vec<usize>) {
-        if self.is_empty() {
-            return (Vec::new(), Vec::new());
+    let n = u.len();
+    let (mut i, mut j, mut k) = (0usize, 1usize, 0usize);
+    while i < n && j < n && k < n {
+        // `i, j, k < n`: one conditional subtraction instead of an integer division.
+        let wrap = |m: usize| if m >= n { m - n } else { m };
+        let (x, y) = (u[wrap(i + k)], u[wrap(j + k)]);
+        if x == y {
+            k += 1;
+            continue;
         }
-        let (n, major) = (self.turning_points, self.major());
-        let r = self.start()[major];
-        let mut by_start = vec![NONE; n];
-        for (row, &k) in self.start()[..major].iter().enumerate() {
-            by_start[if k >= r { k - r } else { k + n - r }] = row;
+        if x < y {
+            i += k + 1;
+        } else {
+            j += k + 1;
         }
-        let order: Vec<usize> = std::iter::once(major)
-            .chain(by_start.into_iter().filter(|&row| row != NONE))
-            .collect();
-        let mut place = vec![0; self.len];
-        for (i, &row) in order.iter().enumerate() {
-            place[row] = i;
+        if i == j {
+            j += 1;
         }
-        (order, place)
+        k = 0;
     }
-
-    /// Room for the loops of a period of `n` turning points (at most `n / 2 + 1`).
-    fn for_turning_points(n: usize) -> Self {
-        let rows = n / 2 + 1;
-        Self {
-            len: 0,
-            turning_points: n,
-            indices: Columns::zeroed(4, rows),
-            reals: Columns::zeroed(8, rows),
-        }
-    }
-
-    /// The loop in row `row` (its parent entry was made when it closed, [`adopt`]).
-    #[inline]
-    fn set(
-        &mut self,
-        row: usize,
-        (start, reversal): (usize, usize),
-        reversal_rho: f64,
-        end: (f64, f64, f64),
-        energy: crate::arc_energy::ArcEnergy,
-    ) {
-        self.indices.column_mut(START)[row] = start;
-        self.indices.column_mut(REVERSAL)[row] = reversal;
-        let reals = [
-            (REVERSAL_RHO, reversal_rho),
-            (END_RHO, end.0),
-            (END_U, end.1),
-            (END_Y, end.2),
-            (WORK, energy.work),
-            (STORED_ENERGY_CHANGE, energy.stored_energy_change),
-            (DISSIPATION, energy.dissipation),
-            (CLOSURE_GAP, energy.closure_gap),
-        ];
-        for (column, value) in reals {
-            self.reals.column_mut(column)[row] = value;
-        }
-        self.len = self.len.max(row + 1);
-    }
-
-    /// Depths from the parents: a parent is always a later row, so one backward pass.
-    fn fill_depths(&mut self) {
-        for i in (0..self.len).rev() {
-            let p = self.index(PARENT)[i];
-            if p != NONE {
-                let d = self.index(DEPTH)[p] + 1;
-                self.indices.column_mut(DEPTH)[i] = d;
-            }
-        }
-    }
+    i.min(j)
 }
 
 /// An open reversal on the rainflow stack.
@@ -250,7 +97,7 @@ struct Entry {
     touch: usize,
 }
 
-/// Where the input came back to `u_A` without closing the cycle (see [`crate::minor`]).
+/// Where the input came back to `u_A` without closing the cycle (the tie rule of [`crate::loops`]).
 #[derive(Debug, Clone, Copy)]
 struct Touch {
     j: usize,
@@ -262,8 +109,8 @@ struct Touch {
 
 /// The period of `u` (with `rho_k` in `rho`, `rho[n] = P`) started at turning point `r`, where
 /// `y° = y_r`.
-pub(crate) struct Period<'a> {
-    pub model: RateIndependent,
+pub(super) struct Period<'a> {
+    pub model: Relaxation,
     pub u: &'a [f64],
     pub rho: &'a [f64],
     pub r: usize,
@@ -411,7 +258,7 @@ impl Period<'_> {
                             let end = End::Piece { y: y_prev, s };
                             (merged, p - 1, offset, u_prev + s * offset, end)
                         };
-                        let parent = table.indices.column_mut(PARENT);
+                        let parent = table.parents_mut();
                         adopt(&mut roots, parent, rows, a.j, (end_j, offset));
                         closed.push(Closed {
                             row: rows,
@@ -450,7 +297,7 @@ impl Period<'_> {
 
         let total = open_sums.iter().fold(Sums::default(), |acc, e| acc + *e);
         let major = rows;
-        let parent = table.indices.column_mut(PARENT);
+        let parent = table.parents_mut();
         for &(_, r) in &roots {
             parent[r] = major;
         }
@@ -462,7 +309,7 @@ impl Period<'_> {
             (self.r, k_low),
             self.rho_at(k_low, wraps_low, 0.0),
             (self.rho_at(self.r, 1, 0.0), u[self.r], self.y_r),
-            crate::arc_energy::ArcEnergy {
+            ArcEnergy {
                 work: d,
                 stored_energy_change: 0.0,
                 dissipation: d,
@@ -568,5 +415,38 @@ fn adopt(
         roots.push((start, row));
     } else {
         roots.splice(inside..top, std::iter::once((start, row)));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loops::HysteresisLoop;
+
+    #[test]
+    fn canonical_start_is_the_greatest_rotation() {
+        assert_eq!(canonical_start(&[0.0, 1.0, 0.2, 1.5]), 3);
+        // Repeated maximum: [1, 0.5, 1, 0] > [1, 0, 1, 0.5].
+        assert_eq!(canonical_start(&[0.0, 1.0, 0.5, 1.0]), 1);
+        assert_eq!(canonical_start(&[1.0, 0.0, 1.0, 0.0]), 0);
+    }
+
+    #[test]
+    fn astm_worked_example_as_a_repeating_history() {
+        // ASTM E1049 Fig. 6 (repeating history): peaks/valleys -2 1 -3 5 -1 3 -4 4 -2, started
+        // at the greatest peak 5: 5 -1 3 -4 4 -2 -2(merged) 1 -3 5. By hand: stack 5,-1,3 ; -4
+        // closes (-1,3) r=4 ; 5,-4,4 ; -2 ; 1 ; -3 closes (-2,1) r=3 ; 5,-4,4,-3 ; 5 closes
+        // (4,-3) r=7, then (5,-4) r=9, the major loop.
+        let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0];
+        let model = crate::LuGre::paper().rate_independent();
+        let hl = HysteresisLoop::new(model, &crate::TurningPoints::new(&u).unwrap()).unwrap();
+        let t = hl.loop_table();
+        let ranges: Vec<f64> = (0..t.len())
+            .map(|i| (u[t.reversal()[i]] - u[t.start()[i]]).abs())
+            .collect();
+        assert_eq!(ranges, vec![4.0, 3.0, 7.0, 9.0]);
+        assert_eq!(t.major(), 3);
+        // (-2, 1) lies inside (4, -3).
+        assert_eq!(t.depth(), &[1, 2, 1, 0]);
     }
 }

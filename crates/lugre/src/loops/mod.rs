@@ -38,186 +38,29 @@
 //!
 //! with `z = a l` and `q(z) = 1 - 2 phi(z) + phi(2z)`. `dV` needs the closure gap
 //! `y_end - y_start`, which is `O(a)` on loops shorter than `1/a`; it is computed without
-//! taking the difference of the two values (`arc_energy.rs`). The sums over every loop's
+//! taking the difference of the two values (`kernel::arc`). The sums over every loop's
 //! arc are carried on the rainflow stack in one pass over the period ([`crate::LoopTable`]),
 //! which also writes `y°` at the turning points: each piece is evaluated once.
 
+mod engine;
+mod records;
+mod table;
+mod theorem_a;
+
+pub use records::{Loop, LoopKind};
+pub use table::LoopTable;
+pub use theorem_a::TheoremA;
+
 use crate::error::{InputError, LoopError};
 use crate::input::TurningPoints;
-use crate::loop_table::{LoopTable, Period};
+use crate::kernel::numerics::{h, one_minus_exp, phi};
+use crate::kernel::piece::advance;
 use crate::memory::column;
-use crate::minor::canonical_start;
 use crate::model::RateIndependent;
-use crate::numerics::{h, one_minus_exp, phi, PhiFamily};
-
-/// The exact solution of `w' = -r w + q` with constant `r >= 0` and `q` over a duration
-/// `tau`, from `w0`: `w0 exp(-c) + d phi(c)` with `c = r tau`, `d = q tau` and
-/// `phi(c) = (1 - exp(-c)) / c`.
-///
-/// This is eq. 8 on one segment of the normalized input (`w = y°`, `c = a l`,
-/// `d = s sigma0 l`), and eq. 5 on one segment of a piecewise-linear input (`w = z`,
-/// `c = sigma0 |du| / g(v / gamma)`, `d = du`, see [`crate::simulate`]): one piece of code for
-/// both. The form never divides by `r` (so `r = 0` and tiny `r` are exact), its only exponent,
-/// `-c`, is `<= 0`, and nothing cancels. `c = inf` gives `w = 0` for finite `d`.
-#[inline]
-pub fn relax(w0: f64, c: f64, d: f64) -> f64 {
-    let (e, one_minus_e) = decay(c);
-    let phi = if c > 0.0 { one_minus_e / c } else { 1.0 };
-    w0 * e + d * phi
-}
-
-/// [`relax`] written with the state relaxed to, `w_inf = q / r = d / c`:
-/// `w0 exp(-c) + w_inf (1 - exp(-c))`. Where `w_inf` is known without dividing by `c` (eq. 5:
-/// `w_inf = sign(v) g(v / gamma) / sigma0`) this saves the division on the critical path of the
-/// simulation's per-sample loop. Equally exact: a product of two accurate factors.
-#[inline]
-pub fn relax_toward(w0: f64, c: f64, w_inf: f64) -> f64 {
-    let (e, one_minus_e) = decay(c);
-    w0 * e + w_inf * one_minus_e
-}
-
-/// `(exp(-c), 1 - exp(-c))` for `c >= 0`, within about 1 and 3 ulps, from a single
-/// exponential: `exp` for `c > 1/4`, where `exp(-c) < 0.78` and `1 - exp(-c)` loses at most two
-/// bits to the subtraction; below, `expm1(-c)` from its [6/6] Padé approximant (truncation error
-/// under `1e-20` relative at `c = 1/4`, so only the dozen roundings count), and `1 + expm1(-c)`,
-/// which rounds once. The Padé form is inlined arithmetic with one division: the simulation's
-/// per-sample loop runs about 12 % faster with it than with the library's `expm1`.
-#[inline]
-pub fn decay(c: f64) -> (f64, f64) {
-    if c > 0.25 {
-        let e = (-c).exp();
-        (e, 1.0 - e)
-    } else {
-        let m = expm1_pade(-c);
-        (1.0 + m, -m)
-    }
-}
-
-/// `expm1(x)` for `|x| <= 1/4`: `e^x = P(x) / P(-x)` with `P` the numerator of the [6/6] Padé
-/// approximant of `exp` (coefficients `(12 - k)! 6! / (12! k! (6 - k)!)`). With
-/// `P(x) = E(x^2) + x O(x^2)`, `expm1(x) = 2 x O / (E - x O)`: no cancellation, exact at 0.
-#[inline]
-fn expm1_pade(x: f64) -> f64 {
-    let y = x * x;
-    let even = 1.0 + y * (5.0 / 44.0 + y * (1.0 / 792.0 + y * (1.0 / 665_280.0)));
-    let odd = x * (0.5 + y * (1.0 / 66.0 + y * (1.0 / 15_840.0)));
-    2.0 * odd / (even - odd)
-}
-
-/// `y` a length `l` along a piece of the normalized input with direction `s` (+-1), from `y_k`
-/// at its start (eq. 8 on one piece). The per-piece closed forms below are shared by the
-/// periodic loop and by histories ([`crate::cycles`]).
-#[inline]
-pub(crate) fn advance(model: RateIndependent, y_k: f64, s: f64, l: f64) -> f64 {
-    // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above g0.
-    let g0 = model.g0();
-    let (z, d) = (model.a() * l, s * model.sigma0() * l);
-    let y = if z.is_finite() && d.is_finite() {
-        relax(y_k, z, d)
-    } else {
-        // A long piece at a huge stiffness, where `a l` or `sigma0 l` overflows:
-        // `s sigma0 l phi(z) = s g0 (1 - exp(-z))` needs neither.
-        relax_toward(y_k, z, s * g0)
-    };
-    y.clamp(-g0, g0)
-}
-
-/// Direction `s` (+-1) and length `l` of the piece of the normalized input from `from` to
-/// `to`.
-#[inline]
-pub(crate) fn step(from: f64, to: f64) -> (f64, f64) {
-    let du = to - from;
-    (if du >= 0.0 { 1.0 } else { -1.0 }, du.abs())
-}
-
-/// Everything about one piece of the loop (direction `s`, length `l`, from `y_k`): `y` at its
-/// end, the dissipation `(1/g0) integral y^2 drho` over it (never < 0), and the two terms of
-/// its work, `(c, e) = (l phi(a l), sigma0 l^2 h(a l))`, so that `integral y dpsi = s y_k c + e`
-/// and `integral (y - y_ref) dpsi = s (y_k - y_ref) c + (1 - s y_ref / g0) e`
-/// ([`crate::cycles`] sums the work relative to a loop's start value this way, without
-/// cancellation). `e` is an energy, `sigma0` already applied: `l^2` alone overflows long before
-/// `sigma0 l^2 h <= g0 l` does when `sigma0` is tiny.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Piece {
-    pub y_end: f64,
-    pub dissipation: f64,
-    pub c: f64,
-    pub e: f64,
-}
-
-/// [`Piece`] from a single [`PhiFamily`] (at most one exponential for all of it):
-///
-/// ```text
-/// y_end = y_k exp(-z) + s sigma0 l phi(z)
-/// D     = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z
-/// ```
-///
-/// with `z = a l`. Where `a l`, `sigma0 l` or `l^2` overflows, or `a l > 1e300` (a long piece
-/// at a huge stiffness), the same terms are taken in units of `1/a`.
-#[inline(always)]
-pub(crate) fn piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
-    piece_with(model, y_k, s, l, &PhiFamily::new(model.a() * l))
-}
-
-/// [`piece`] with the family at `z = a l` already evaluated (in blocks, [`crate::numerics::PhiBlock`]).
-#[inline(always)]
-pub(crate) fn piece_with(model: RateIndependent, y_k: f64, s: f64, l: f64, f: &PhiFamily) -> Piece {
-    let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
-    let z = a * l;
-    let (c, e) = (l * f.phi, sigma0 * l * l * f.h);
-    // Short pieces (`exp(-z) > 1/2`) add the small change to `y_k` rather than scaling it by
-    // the rounded `exp(-z)`: the same form as the closure gap's (`y_end - y_k = s sigma0 c -
-    // y_k (1 - exp(-z))`), so that the two agree to an ulp of `y`.
-    let y_end = if f.e > 0.5 {
-        y_k + (s * sigma0 * c - y_k * f.one_minus_e)
-    } else {
-        y_k * f.e + s * sigma0 * c
-    };
-    // a / sigma0 = 1 / g0; `y_k / g0` first (it is <= 1), so that `y_k^2` neither overflows
-    // (|y| > 1e154) nor underflows (|y| < 1e-154) where D itself is representable.
-    let d = y_k / g0 * y_k * l * f.phi2
-        + 2.0 * s * y_k * l * f.phi_minus_phi2
-        + sigma0 * l * l * f.q_over_z;
-    // Past z = 1e300, 1/z is near the subnormals and loses bits: the saturated forms then.
-    // `0 x` is 0 for a finite `x`, NaN otherwise: one test for the three.
-    let finite = 0.0 * e + 0.0 * y_end + 0.0 * d == 0.0;
-    if z < 1e300 && finite {
-        // |y°| < g0 holds exactly; near saturation `sigma0 l phi(a l)` can round an ulp above.
-        Piece {
-            y_end: y_end.clamp(-g0, g0),
-            dissipation: d.max(0.0),
-            c,
-            e,
-        }
-    } else {
-        saturated_piece(model, y_k, s, l)
-    }
-}
-
-/// [`piece`] in units of `1/a`: `l phi(z) = (1 - exp(-z)) / a`,
-/// `sigma0 l^2 h(z) = sigma0 (l - l phi(z)) / a = g0 (l - l phi(z))`,
-/// `l phi(2z) = (1 - exp(-2z)) / (2a)`, finite wherever the results are. The piece is saturated:
-/// `y` relaxes to `s g0` and `D = g0 l` to rounding.
-#[cold]
-fn saturated_piece(model: RateIndependent, y_k: f64, s: f64, l: f64) -> Piece {
-    let (a, sigma0, g0) = (model.a(), model.sigma0(), model.g0());
-    let z = a * l;
-    let inv_a = g0 / sigma0;
-    let c = one_minus_exp(z) * inv_a;
-    let c2 = 0.5 * one_minus_exp(2.0 * z) * inv_a;
-    let d = y_k * y_k * one_minus_exp(2.0 * z) / (2.0 * sigma0)
-        + 2.0 * s * y_k * (c - c2)
-        + g0 * (l - 2.0 * c + c2);
-    Piece {
-        y_end: relax_toward(y_k, z, s * g0).clamp(-g0, g0),
-        dissipation: if l == 0.0 { 0.0 } else { d.max(0.0) },
-        c,
-        e: g0 * (l - c),
-    }
-}
+use engine::{canonical_start, Period};
 
 /// A point of the loop: the normalized variable, the input and the output there.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoopPoint {
     pub rho: f64,
     pub u: f64,
@@ -269,7 +112,7 @@ impl HysteresisLoop {
             loops: LoopTable::default(),
         };
         let period = Period {
-            model,
+            model: model.relaxation(),
             u: &hl.u,
             rho: &hl.rho,
             r,
@@ -404,7 +247,14 @@ impl HysteresisLoop {
     /// `y°` a length `l` into segment `k`, from `y_k` there.
     #[inline]
     fn advance(&self, y_k: f64, k: usize, l: f64) -> f64 {
-        advance(self.model, y_k, self.direction(k), l)
+        advance(self.model.relaxation(), y_k, self.direction(k), l)
+    }
+
+    /// The major loop and every minor loop as records, ordered by where their arcs start: `[0]`
+    /// is the major loop, and a parent comes before its children. The same loops as
+    /// [`loop_table`](Self::loop_table).
+    pub fn loops(&self) -> Vec<Loop> {
+        records::minor_loops(self)
     }
 
     /// Every loop as columns, in the order they close (see [`LoopTable`]).

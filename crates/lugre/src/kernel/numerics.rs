@@ -110,7 +110,7 @@ pub fn h(z: f64) -> f64 {
 }
 
 /// The whole family at one `z >= 0` from at most one exponential, for the per-piece closed
-/// forms that need several members at the same `z` (the loop's energies, [`crate::hysteresis`]).
+/// forms that need several members at the same `z` (the loop's energies, [`crate::loops`]).
 ///
 /// Below `z = 1/2` `h` and `q/z` come from their series and the rest from the identities
 /// `phi = 1 - z h` and `exp(-z) = 1 - z phi` (no exponential at all); above, from `exp(-z)`.
@@ -267,6 +267,7 @@ impl DoubleDouble {
     pub const ZERO: Self = Self { hi: 0.0, lo: 0.0 };
 
     #[inline]
+    #[cfg(test)]
     pub fn from_f64(x: f64) -> Self {
         Self { hi: x, lo: 0.0 }
     }
