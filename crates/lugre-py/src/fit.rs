@@ -408,21 +408,8 @@ fn check_times(t: &[f64], n: usize) -> Result<(), FitError> {
             u: n,
         });
     }
-    if let Some(index) = t.iter().position(|v| !v.is_finite()) {
-        return Err(FitError::NotFinite {
-            what: "t",
-            index,
-            value: t[index],
-        });
-    }
-    match (1..n).find(|&i| t[i] <= t[i - 1]) {
-        Some(index) => Err(FitError::TimesNotIncreasing {
-            index,
-            prev: t[index - 1],
-            value: t[index],
-        }),
-        None => Ok(()),
-    }
+    lugre::input::check_finite("t", t)?;
+    Ok(lugre::input::check_increasing(t)?)
 }
 
 /// A core error as a `ValueError`, with what to do about it where `lugre fit` says so (in the

@@ -24,6 +24,7 @@ pub fn num(x: f64) -> String {
 
 /// An invalid model parameter.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum ModelError {
     #[error("{name} must be a finite number, got {value}", value = num(*.value))]
     NotFinite { name: &'static str, value: f64 },
@@ -47,15 +48,27 @@ pub enum ModelError {
     BadRatio { sigma0: f64, g0: f64 },
 }
 
-/// An invalid input signal.
+/// A series of numbers that cannot be used as data: shared by inputs ([`InputError`]) and fits
+/// ([`FitError`]), which nest it.
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum InputError {
+#[non_exhaustive]
+pub enum DataError {
     #[error("{what}[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite {
         what: &'static str,
         index: usize,
         value: f64,
     },
+    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
+    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+}
+
+/// An invalid input signal.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum InputError {
+    #[error(transparent)]
+    Data(#[from] DataError),
     #[error("the input is empty")]
     Empty,
     #[error("a periodic input needs at least 2 distinct values, got {distinct}")]
@@ -65,8 +78,6 @@ pub enum InputError {
         inequality: &'static str,
         detail: String,
     },
-    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
     #[error("t and u have different lengths ({t} and {u})")]
     LengthMismatch { t: usize, u: usize },
     #[error("the input's total variation over one period overflows f64 (values too far apart)")]
@@ -75,6 +86,7 @@ pub enum InputError {
 
 /// A result that cannot be represented (it overflows f64).
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum LoopError {
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
@@ -82,6 +94,7 @@ pub enum LoopError {
 
 /// An invalid measured history or counting option ([`crate::cycles`]).
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum HistoryError {
     #[error("the history is empty (no samples)")]
     Empty,
@@ -106,6 +119,7 @@ pub enum HistoryError {
 /// A parameter-identification request that cannot be carried out, or whose answer the data do
 /// not determine ([`crate::fit`]).
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum FitError {
     #[error("the data columns have different lengths: {what} has {got} values, u has {u}")]
     LengthMismatch {
@@ -113,14 +127,8 @@ pub enum FitError {
         got: usize,
         u: usize,
     },
-    #[error("{what}[{index}] must be a finite number, got {value}", value = num(*.value))]
-    NotFinite {
-        what: &'static str,
-        index: usize,
-        value: f64,
-    },
-    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    #[error(transparent)]
+    Data(#[from] DataError),
     #[error("too few samples: {samples} for {parameters} free parameter(s); the fit needs at least {needed}")]
     TooFewSamples {
         samples: usize,
@@ -173,7 +181,67 @@ pub enum FitError {
     #[error(transparent)]
     Model(#[from] ModelError),
     #[error(transparent)]
-    Simulate(#[from] crate::simulate::SimulateError),
+    Simulate(#[from] SimulateError),
+}
+
+/// An invalid simulation request, or a result that cannot be represented.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum SimulateError {
+    #[error("gamma must be > 0 (a positive number or inf), got {value}", value = num(*.value))]
+    BadGamma { value: f64 },
+    #[error("the number of periods must be at least 1, got {value}")]
+    BadPeriods { value: u32 },
+    #[error("x0 must be a finite number, got {value}", value = num(*.value))]
+    BadX0 { value: f64 },
+    #[error("x0 = {x0} cannot be represented: sigma0 * x0 = {sigma0} * {x0} overflows f64", x0 = num(*.x0), sigma0 = num(*.sigma0))]
+    X0Overflow { x0: f64, sigma0: f64 },
+    #[error("the tolerance must be a number in [1e-14, 1), got {value}", value = num(*.value))]
+    BadTolerance { value: f64 },
+    #[error("the sine's {name} must be {requirement}, got {value}", value = num(*.value))]
+    BadSine {
+        name: &'static str,
+        requirement: &'static str,
+        value: f64,
+    },
+    #[error("the speed must be a finite number > 0, got {value}", value = num(*.value))]
+    BadSpeed { value: f64 },
+    #[error("a sampled input needs at least 2 samples, got {count}")]
+    TooFewSamples { count: usize },
+    #[error(
+        "to repeat the input over {periods} periods it must end where it starts, \
+         but u[0] = {first} and u[{last_index}] = {last}",
+        first = num(*.first),
+        last = num(*.last)
+    )]
+    NotClosed {
+        periods: u32,
+        first: f64,
+        last_index: usize,
+        last: f64,
+    },
+    #[error("output time t[{index}] = {value} is not a finite number", value = num(*.value))]
+    TimeNotFinite { index: usize, value: f64 },
+    #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
+    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    #[error("output time t[{index}] = {value} is outside the simulated interval [{start}, {end}]", value = num(*.value), start = num(*.start), end = num(*.end))]
+    TimeOutOfRange {
+        index: usize,
+        value: f64,
+        start: f64,
+        end: f64,
+    },
+    #[error("{what} overflows f64 at t = {t}", t = num(*.t))]
+    Overflow { what: &'static str, t: f64 },
+    #[error(
+        "the adaptive integrator cannot meet the tolerance {tol} near t = {t} \
+         (its step fell below the resolution of t)",
+        tol = num(*.tol),
+        t = num(*.t)
+    )]
+    StepUnderflow { t: f64, tol: f64 },
+    #[error(transparent)]
+    Input(#[from] InputError),
 }
 
 /// A parameter the data do not determine, and why ([`crate::fit`] module docs).
@@ -187,6 +255,7 @@ pub struct Unidentified {
 
 /// Why a parameter cannot be identified.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Why {
     /// Its column of the Jacobian, times its value, is negligible against the force
     /// (`sensitivity = |p J_p| / |F|`): it does not act on the output, or the fit drove it to 0.
@@ -245,6 +314,24 @@ fn list(best: &[(&'static str, f64)]) -> String {
         .map(|(n, v)| format!("{n} = {}", num(*v)))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// Any error of the library.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum Error {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Input(#[from] InputError),
+    #[error(transparent)]
+    Loop(#[from] LoopError),
+    #[error(transparent)]
+    History(#[from] HistoryError),
+    #[error(transparent)]
+    Simulate(#[from] SimulateError),
+    #[error(transparent)]
+    Fit(#[from] FitError),
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@
 //!   keeps its direction through them) are dropped, cyclically;
 //! * rho is measured from the first listed point that is a turning point.
 
-use crate::error::{num, InputError};
+use crate::error::{num, DataError, InputError};
 
 /// One period of a periodic input as its cyclic sequence of turning points (alternating local
 /// maxima and minima, at least two, all finite).
@@ -56,12 +56,9 @@ impl TurningPoints {
 }
 
 /// Checks that every value is finite, naming the first one that is not.
-pub fn check_all_finite(what: &'static str, values: &[f64]) -> Result<(), InputError> {
-    if values.is_empty() {
-        return Err(InputError::Empty);
-    }
+pub fn check_finite(what: &'static str, values: &[f64]) -> Result<(), DataError> {
     match values.iter().position(|v| !v.is_finite()) {
-        Some(index) => Err(InputError::NotFinite {
+        Some(index) => Err(DataError::NotFinite {
             what,
             index,
             value: values[index],
@@ -70,19 +67,30 @@ pub fn check_all_finite(what: &'static str, values: &[f64]) -> Result<(), InputE
     }
 }
 
+/// Checks that (finite) times are strictly increasing, naming the first that is not.
+pub fn check_increasing(t: &[f64]) -> Result<(), DataError> {
+    match (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+        Some(index) => Err(DataError::TimesNotIncreasing {
+            index,
+            prev: t[index - 1],
+            value: t[index],
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Checks that there are values and every one is finite.
+pub fn check_all_finite(what: &'static str, values: &[f64]) -> Result<(), InputError> {
+    if values.is_empty() {
+        return Err(InputError::Empty);
+    }
+    Ok(check_finite(what, values)?)
+}
+
 /// Checks that times are finite and strictly increasing.
 pub fn check_times(t: &[f64]) -> Result<(), InputError> {
     check_all_finite("t", t)?;
-    for i in 1..t.len() {
-        if t[i] <= t[i - 1] {
-            return Err(InputError::TimesNotIncreasing {
-                index: i,
-                prev: t[i - 1],
-                value: t[i],
-            });
-        }
-    }
-    Ok(())
+    Ok(check_increasing(t)?)
 }
 
 /// The reversals of a cyclic sequence of finite values.
@@ -215,11 +223,14 @@ mod tests {
         );
         assert!(matches!(
             TurningPoints::new(&[0.0, f64::NAN]),
-            Err(InputError::NotFinite { index: 1, .. })
+            Err(InputError::Data(DataError::NotFinite { index: 1, .. }))
         ));
         assert!(matches!(
             TurningPoints::from_samples(&[0.0, 1.0, 1.0], &[0.0, 1.0, 0.0]),
-            Err(InputError::TimesNotIncreasing { index: 2, .. })
+            Err(InputError::Data(DataError::TimesNotIncreasing {
+                index: 2,
+                ..
+            }))
         ));
     }
 

@@ -37,30 +37,15 @@ pub use cycles::{
     CycleEnergy, CycleSink, CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy,
     Reversal,
 };
-pub use error::{FitError, HistoryError, InputError, LoopError, ModelError};
+pub use error::{
+    DataError, Error, FitError, HistoryError, InputError, LoopError, ModelError, SimulateError,
+};
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use input::{Bimodal, TurningPoints};
 pub use kernel::ArcEnergy;
 pub use loops::{HysteresisLoop, Loop, LoopKind, LoopPoint, LoopTable, TheoremA};
 pub use model::{Dahl, LuGre, LuGreParams, RateIndependent, Stribeck, VelocityFn, Viscous};
 pub use simulate::{
-    paper_example_1, Example1, Gamma, PiecewiseLinear, Sample, SimulateError, Simulator, Sine,
-    Tolerance, Trajectory,
+    paper_example_1, Example1, Gamma, PiecewiseLinear, Sample, Simulator, Sine, Tolerance,
+    Trajectory,
 };
-
-/// Any error of the library.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum Error {
-    #[error(transparent)]
-    Model(#[from] ModelError),
-    #[error(transparent)]
-    Input(#[from] InputError),
-    #[error(transparent)]
-    Loop(#[from] LoopError),
-    #[error(transparent)]
-    History(#[from] HistoryError),
-    #[error(transparent)]
-    Simulate(#[from] SimulateError),
-    #[error(transparent)]
-    Fit(#[from] FitError),
-}

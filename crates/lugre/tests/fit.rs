@@ -10,8 +10,8 @@ use common::Lcg;
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{
-    fit::Why, Dahl, FitError, Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator, Trajectory,
-    TurningPoints,
+    fit::Why, Dahl, DataError, FitError, Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator,
+    Trajectory, TurningPoints,
 };
 use lugre_test_support::prec::{FULL_FIT_RECOVERY, SLOW_FIT_RECOVERY};
 
@@ -344,11 +344,11 @@ fn bad_requests_are_named() {
     bad[7] = f64::NAN;
     assert!(matches!(
         fit_slow(&spec, &u, &bad),
-        Err(FitError::NotFinite {
+        Err(FitError::Data(DataError::NotFinite {
             what: "F",
             index: 7,
             ..
-        })
+        }))
     ));
     let ramp: Vec<f64> = (0..50).map(f64::from).collect();
     assert_eq!(
@@ -382,7 +382,10 @@ fn bad_requests_are_named() {
     t_bad[3] = t_bad[2];
     assert!(matches!(
         fit_full(&spec, &t_bad, &u, &f, &FullOptions::default(), &mut |_| {}),
-        Err(FitError::TimesNotIncreasing { index: 3, .. })
+        Err(FitError::Data(DataError::TimesNotIncreasing {
+            index: 3,
+            ..
+        }))
     ));
 }
 

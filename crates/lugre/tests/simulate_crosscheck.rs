@@ -1031,9 +1031,9 @@ fn invalid_requests_are_typed_errors() {
     );
     assert!(matches!(
         PiecewiseLinear::new(vec![0.0, 1.0, 1.0], vec![0.0, 1.0, 0.0]),
-        Err(SimulateError::Input(
-            lugre::InputError::TimesNotIncreasing { index: 2, .. }
-        ))
+        Err(SimulateError::Input(lugre::InputError::Data(
+            lugre::DataError::TimesNotIncreasing { index: 2, .. }
+        )))
     ));
     let open = PiecewiseLinear::new(vec![0.0, 1.0], vec![0.0, 1.0]).unwrap();
     let sim = Simulator::new(&model, Gamma::ONE, 0.0).unwrap();

@@ -89,6 +89,7 @@ pub use lm::FitProgress;
 pub use spec::{Bounds, Family, FitKind, FitSpec, DAHL_PARAMETERS, LUGRE_PARAMETERS};
 pub use stats::{t_quantile_975, CONDITION_LIMIT, NO_EFFECT};
 
+use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
 use crate::simulate::{Gamma, PiecewiseLinear, Simulator, Trajectory};
 use lm::{minimize, Config, Outcome};
@@ -212,13 +213,7 @@ fn check_columns(columns: &[(&'static str, &[f64])]) -> Result<(), FitError> {
                 u,
             });
         }
-        if let Some(index) = c.iter().position(|v| !v.is_finite()) {
-            return Err(FitError::NotFinite {
-                what,
-                index,
-                value: c[index],
-            });
-        }
+        check_finite(what, c)?;
     }
     Ok(())
 }
@@ -317,15 +312,7 @@ pub fn fit_full(
     progress: &mut dyn FnMut(&FitProgress),
 ) -> Result<FitReport, FitError> {
     check_columns(&[("u", u), ("t", t), ("F", f)])?;
-    for i in 1..t.len() {
-        if t[i] <= t[i - 1] {
-            return Err(FitError::TimesNotIncreasing {
-                index: i,
-                prev: t[i - 1],
-                value: t[i],
-            });
-        }
-    }
+    check_increasing(t)?;
     if !options.x0.is_finite() {
         return Err(FitError::BadX0 { value: options.x0 });
     }

@@ -64,68 +64,8 @@ pub use exact::Simulator;
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
 
-use crate::error::InputError;
+pub use crate::error::SimulateError;
 use crate::loops::HysteresisLoop;
-use thiserror::Error;
-
-/// An invalid simulation request, or a result that cannot be represented.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum SimulateError {
-    #[error("gamma must be > 0 (a positive number or inf), got {value}", value = crate::error::num(*.value))]
-    BadGamma { value: f64 },
-    #[error("the number of periods must be at least 1, got {value}")]
-    BadPeriods { value: u32 },
-    #[error("x0 must be a finite number, got {value}", value = crate::error::num(*.value))]
-    BadX0 { value: f64 },
-    #[error("x0 = {x0} cannot be represented: sigma0 * x0 = {sigma0} * {x0} overflows f64", x0 = crate::error::num(*.x0), sigma0 = crate::error::num(*.sigma0))]
-    X0Overflow { x0: f64, sigma0: f64 },
-    #[error("the tolerance must be a number in [1e-14, 1), got {value}", value = crate::error::num(*.value))]
-    BadTolerance { value: f64 },
-    #[error("the sine's {name} must be {requirement}, got {value}", value = crate::error::num(*.value))]
-    BadSine {
-        name: &'static str,
-        requirement: &'static str,
-        value: f64,
-    },
-    #[error("the speed must be a finite number > 0, got {value}", value = crate::error::num(*.value))]
-    BadSpeed { value: f64 },
-    #[error("a sampled input needs at least 2 samples, got {count}")]
-    TooFewSamples { count: usize },
-    #[error(
-        "to repeat the input over {periods} periods it must end where it starts, \
-         but u[0] = {first} and u[{last_index}] = {last}",
-        first = crate::error::num(*.first),
-        last = crate::error::num(*.last)
-    )]
-    NotClosed {
-        periods: u32,
-        first: f64,
-        last_index: usize,
-        last: f64,
-    },
-    #[error("output time t[{index}] = {value} is not a finite number", value = crate::error::num(*.value))]
-    TimeNotFinite { index: usize, value: f64 },
-    #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = crate::error::num(*.value), prev = crate::error::num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
-    #[error("output time t[{index}] = {value} is outside the simulated interval [{start}, {end}]", value = crate::error::num(*.value), start = crate::error::num(*.start), end = crate::error::num(*.end))]
-    TimeOutOfRange {
-        index: usize,
-        value: f64,
-        start: f64,
-        end: f64,
-    },
-    #[error("{what} overflows f64 at t = {t}", t = crate::error::num(*.t))]
-    Overflow { what: &'static str, t: f64 },
-    #[error(
-        "the adaptive integrator cannot meet the tolerance {tol} near t = {t} \
-         (its step fell below the resolution of t)",
-        tol = crate::error::num(*.tol),
-        t = crate::error::num(*.t)
-    )]
-    StepUnderflow { t: f64, tol: f64 },
-    #[error(transparent)]
-    Input(#[from] InputError),
-}
 
 /// The slowness `gamma` of eq. 5: a finite positive number, or infinity (the rate-independent
 /// limit `y*_u` of eq. 6).
