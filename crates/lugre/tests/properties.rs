@@ -19,7 +19,6 @@
 //! continuous values; the model spans `a P` from about 1e-4 to 1e4.
 
 use lugre::cycles::Collect;
-use lugre::simulate::transient_amplitude;
 use lugre::{
     count_cycles, count_cycles_with_energy, CycleCounter, Gamma, HysteresisLoop, Loop, LoopKind,
     LuGre, LuGreParams, PiecewiseLinear, RateIndependent, Simulator, Trajectory, TurningPoints,
@@ -348,7 +347,7 @@ proptest! {
         let n = hl.len();
         let amplitude = hl.turning_y().iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for k in [1u32, 5, 20, periods - 1] {
-            let bound = transient_amplitude(&hl, x0, k);
+            let bound = hl.transient_amplitude(x0, k);
             for j in 0..n {
                 let y = out.y[k as usize * n + j];
                 let want = hl.turning_y()[j];

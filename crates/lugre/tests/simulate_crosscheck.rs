@@ -5,7 +5,7 @@
 //! (Radau5 with Newton iterations and its own error control), restarted at every kink.
 
 use differential_equations::prelude::{ImplicitRungeKutta, IVP};
-use lugre::simulate::{merge_times, transient_amplitude, uniform_times};
+use lugre::simulate::{merge_times, uniform_times};
 use lugre::{
     paper_example_1, Bimodal, Dahl, Gamma, HysteresisLoop, LuGre, LuGreParams, PiecewiseLinear,
     SimulateError, Simulator, Sine, Tolerance, Trajectory, TurningPoints,
@@ -667,7 +667,7 @@ fn y_star_periods_converge_to_the_loop_like_exp_minus_a_p_k() {
                 assert_close(
                     &format!("{tp:?}, x0 = {x0}, sup at k = {k}"),
                     sup,
-                    transient_amplitude(&hl, x0, k),
+                    hl.transient_amplitude(x0, k),
                     model.g0(),
                     EXACT_SIMULATION,
                 );

@@ -257,6 +257,21 @@ impl HysteresisLoop {
         records::minor_loops(self)
     }
 
+    /// `|y°(0) - sigma0 x0| exp(-a P k)`: the distance `sup_t |y*_{u,k}(t) - y°(t)|` between
+    /// the k-th period of the rate-independent response from `x0` and the hysteresis loop, for
+    /// an input whose period starts at the loop's first turning point (as
+    /// [`crate::PiecewiseLinear::from_turning_points`] builds it). Both obey eq. 8's recursion,
+    /// so the difference is exactly `(sigma0 x0 - y°(0)) exp(-a rho_u(t))`, largest at the
+    /// start of each period.
+    pub fn transient_amplitude(&self, x0: f64, k: u32) -> f64 {
+        let m = self.model();
+        let gap = (self.turning_y()[0] - m.sigma0() * x0).abs();
+        // exp(-a P k) as a power keeps the exponent's rounding from growing with k.
+        gap * (-m.a() * self.period())
+            .exp()
+            .powi(k.min(i32::MAX as u32) as i32)
+    }
+
     /// Every loop as columns, in the order they close (see [`LoopTable`]).
     pub fn loop_table(&self) -> &LoopTable {
         &self.loops

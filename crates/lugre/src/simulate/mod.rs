@@ -28,7 +28,7 @@
 //! In the rate-independent limit the k-th period `y*_{u,k}` of the response from `x0`
 //! converges to the hysteresis loop `y°` of [`crate::HysteresisLoop`] geometrically: both obey
 //! the same recursion, so their difference is `(sigma0 x0 - y°(0)) exp(-a rho_u(t))` and
-//! `sup_t |y*_{u,k} - y°| = |y°(0) - sigma0 x0| exp(-a P k)` ([`transient_amplitude`]).
+//! `sup_t |y*_{u,k} - y°| = |y°(0) - sigma0 x0| exp(-a P k)` ([`crate::HysteresisLoop::transient_amplitude`]).
 //!
 //! ```
 //! use lugre::simulate::{merge_times, uniform_times};
@@ -65,7 +65,6 @@ pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
 
 pub use crate::error::SimulateError;
-use crate::loops::HysteresisLoop;
 
 /// The slowness `gamma` of eq. 5: a finite positive number, or infinity (the rate-independent
 /// limit `y*_u` of eq. 6).
@@ -228,20 +227,6 @@ impl Trajectory {
         }
         Ok(())
     }
-}
-
-/// `|y°(0) - sigma0 x0| exp(-a P k)`: the distance `sup_t |y*_{u,k}(t) - y°(t)|` between the
-/// k-th period of the rate-independent response from `x0` and the hysteresis loop, for an input
-/// whose period starts at the loop's first turning point (as [`PiecewiseLinear::from_turning_points`]
-/// builds it). Both obey eq. 8's recursion, so the difference is exactly
-/// `(sigma0 x0 - y°(0)) exp(-a rho_u(t))`, largest at the start of each period.
-pub fn transient_amplitude(hl: &HysteresisLoop, x0: f64, k: u32) -> f64 {
-    let m = hl.model();
-    let gap = (hl.turning_y()[0] - m.sigma0() * x0).abs();
-    // exp(-a P k) as a power keeps the exponent's rounding from growing with k.
-    gap * (-m.a() * hl.period())
-        .exp()
-        .powi(k.min(i32::MAX as u32) as i32)
 }
 
 /// Checks output times: finite, strictly increasing, inside `[start, end]`.
