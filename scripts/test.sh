@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Every test of the project, on a fresh machine: installs what it needs, then runs the suites.
 #
+#   0. what a reviewer checks: formatting (cargo fmt), lints (clippy, warnings denied, with the
+#      declared MSRV enforced by its incompatible_msrv lint; also with every optional feature
+#      and with none), the dependencies' own MSRVs (scripts/check-msrv.py), rustdoc with
+#      warnings denied, the benchmarks and the fuzz targets built;
 #   1. the Rust tests of every crate except the Python extension module (it takes its
 #      symbols from the interpreter that imports it, so it has no Rust test harness);
 #   2. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
@@ -12,6 +16,23 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+step() { printf '\n== %s ==\n' "$*"; }
+
+step "format, lints, MSRV, docs"
+cargo fmt --all --check
+cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy -p lugre --all-targets --features bench-internals -- -D warnings
+cargo clippy -p lugre --all-targets --no-default-features -- -D warnings
+python3 scripts/check-msrv.py
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+
+step "benchmarks and fuzz targets build"
+cargo bench -p lugre --features bench-internals --no-run --quiet
+# The fuzz crate is its own workspace; its targets build on stable (running them needs nightly
+# and cargo-fuzz, see CONTRIBUTING.md).
+cargo build --manifest-path fuzz/Cargo.toml --bins --quiet
+
+step "Rust tests"
 cargo test --workspace --exclude lugre-py --no-fail-fast
 
 venv=${LUGRE_VENV:-.venv}
@@ -32,5 +53,6 @@ pip=("$py" -m pip install --quiet --disable-pip-version-check)
 # The venv's maturin builds the wheel (no isolated build environment to download each time);
 # cargo rebuilds only what changed.
 "${pip[@]}" --no-build-isolation --force-reinstall --no-deps ./crates/lugre-py
+step "Python tests"
 # pytest exits non-zero (5) when it collects no test, so an empty run fails here too.
 "$py" -m pytest -q -p no:cacheprovider crates/lugre-py/tests

@@ -135,8 +135,7 @@ pub fn run(args: &FitArgs) -> Result<()> {
             | FitError::NoReversal { .. }
             | FitError::ZeroForce
             | FitError::LengthMismatch { .. }
-            | FitError::NotFinite { .. }
-            | FitError::TimesNotIncreasing { .. } => anyhow!("{}: {e}", path.display()),
+            | FitError::Data(_) => anyhow!("{}: {e}", path.display()),
             other => explain(other),
         }
     };

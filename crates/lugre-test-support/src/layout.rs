@@ -64,7 +64,8 @@ pub fn cycles(graph: &Graph) -> Vec<Vec<String>> {
         }
         seen
     };
-    let reaches: BTreeMap<&String, BTreeSet<String>> = graph.keys().map(|m| (m, reach(m))).collect();
+    let reaches: BTreeMap<&String, BTreeSet<String>> =
+        graph.keys().map(|m| (m, reach(m))).collect();
     let mut out: Vec<Vec<String>> = Vec::new();
     for (m, r) in &reaches {
         let comp: Vec<String> = reaches
@@ -143,7 +144,12 @@ fn root_exports(root: &str) -> BTreeMap<String, String> {
                 .iter()
                 .filter_map(|s| s.trim().rsplit("::").next().and_then(ident))
                 .collect(),
-            None => tail.rsplit("::").next().and_then(ident).into_iter().collect(),
+            None => tail
+                .rsplit("::")
+                .next()
+                .and_then(ident)
+                .into_iter()
+                .collect(),
         };
         for n in names {
             out.insert(n, module.clone());
