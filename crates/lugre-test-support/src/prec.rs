@@ -28,7 +28,7 @@ pub fn rel_diff(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Energies of a cycle in a measured history ([`crate::cycles`]: work, dissipation), absolute,
+/// Energies of a cycle in a measured history (`lugre::cycles`: work, dissipation), absolute,
 /// relative to the cycle's scale `g0 * range`: per-step closed forms summed in double-double
 /// over the arc, against mpmath quadrature and against the periodic loop.
 pub const CYCLE_ENERGY: f64 = 1e-13;
@@ -38,7 +38,7 @@ pub const CYCLE_ENERGY: f64 = 1e-13;
 /// `1e-16 / (a range)`.
 pub const TINY_LOOP_WORK: f64 = 1e-10;
 
-/// The exact simulation of eq. 5 on piecewise-linear inputs ([`crate::simulate`]) against
+/// The exact simulation of eq. 5 on piecewise-linear inputs (`lugre::simulate`) against
 /// mpmath and against closed forms, relative to the state's scale `g(0) / sigma0` (for `z`)
 /// and the force's `g(0)` (for `y`): a few roundings per segment, at any `sigma0 / g`.
 pub const EXACT_SIMULATION: f64 = 1e-13;
@@ -54,11 +54,11 @@ pub const STIFF_SOLVER: f64 = 1e-8;
 /// adds its own ([`STIFF_SOLVER`]).
 pub const ADAPTIVE: f64 = 2e-8;
 
-/// Parameter recovery of the slow-loop fit ([`crate::fit::fit_slow`]) from synthetic data with
+/// Parameter recovery of the slow-loop fit (`lugre::fit::fit_slow`) from synthetic data with
 /// 1 % noise: the bound. The standard errors there are below 0.5 %, so this also
 /// leaves room for an unlucky seed at 4 standard errors.
 pub const SLOW_FIT_RECOVERY: f64 = 0.02;
 
-/// Parameter recovery of the full fit ([`crate::fit::fit_full`]) from synthetic data with 1 %
+/// Parameter recovery of the full fit (`lugre::fit::fit_full`) from synthetic data with 1 %
 /// noise: the bound (standard errors up to about 1 %).
 pub const FULL_FIT_RECOVERY: f64 = 0.05;
