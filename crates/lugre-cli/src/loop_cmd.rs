@@ -35,7 +35,7 @@ pub fn run(args: &LoopArgs) -> Result<()> {
     }
 
     let hl = HysteresisLoop::new(model.rate_independent(), &input.turning_points())?;
-    hl.check_finite()?;
+
     let loops = hl.loops();
     check_loops_finite(&loops)?;
     let theorem_a = match &input {

@@ -108,7 +108,7 @@ impl LoopExample {
         };
         // The same calls as `lugre loop` (loop_cmd::run), so the numbers are the same.
         let hl = HysteresisLoop::new(model.rate_independent(), &tp)?;
-        hl.check_finite()?;
+
         let loops = hl.loops();
         let theorem_a = bimodal.map(|b| TheoremA::new(&b, &hl));
         Ok(Self {

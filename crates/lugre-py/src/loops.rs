@@ -52,13 +52,9 @@ impl PyHysteresisLoop {
         input_name: &str,
     ) -> PyResult<Self> {
         let hl = py
-            .detach(|| {
-                let hl = lugre::HysteresisLoop::new(model, tp)?;
-                hl.check_finite().map_err(lugre::Error::from)?;
-                Ok::<_, lugre::Error>(hl)
-            })
+            .detach(|| lugre::HysteresisLoop::new(model, tp))
             .map_err(|e| match e {
-                lugre::Error::Input(e) => PyValueError::new_err(format!("{input_name}{e}")),
+                lugre::LoopError::Input(e) => PyValueError::new_err(format!("{input_name}{e}")),
                 e => value_error(e),
             })?;
         let theorem_a = bimodal.map(|b| lugre::TheoremA::new(&b, &hl));

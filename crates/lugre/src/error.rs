@@ -84,12 +84,15 @@ pub enum InputError {
     VariationOverflow,
 }
 
-/// A result that cannot be represented (it overflows f64).
+/// A hysteresis loop that cannot be computed: an invalid input, or a result that cannot be
+/// represented (it overflows f64).
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum LoopError {
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
+    #[error(transparent)]
+    Input(#[from] InputError),
 }
 
 /// An invalid measured history or counting option ([`crate::cycles`]).

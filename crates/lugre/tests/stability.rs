@@ -38,7 +38,7 @@ fn sweep_y(name: &str, g0: f64, bimodal: [f64; 4], cases: &[SweepCase]) {
     for &(sigma0, scale, turning, points, _) in cases {
         let (b, hl) = bimodal_loop(sigma0, g0, bimodal);
         a_p.push(hl.model().a() * hl.period());
-        hl.check_finite().unwrap();
+
         let what = |w: &str| {
             format!(
                 "{name}, sigma0 = {sigma0:e} (a P = {:e}): {w}",
@@ -201,7 +201,6 @@ fn realistic_stiffness_where_eq_13_overflows_f64() {
         * (2.0 * e(rho[1]) - 2.0 * e(rho[2]) + 2.0 * e(rho[3]) - e(rho[4]) - 1.0);
     assert!(!eq13_y0.is_finite(), "eq. 13 in f64 gave {eq13_y0}");
 
-    hl.check_finite().unwrap();
     for k in 0..4 {
         let got = hl.turning_y()[k];
         assert_close(

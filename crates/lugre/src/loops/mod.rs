@@ -82,8 +82,10 @@ pub struct HysteresisLoop {
 }
 
 impl HysteresisLoop {
-    /// The loop of `model` for the periodic input `input`.
-    pub fn new(model: RateIndependent, input: &TurningPoints) -> Result<Self, InputError> {
+    /// The loop of `model` for the periodic input `input`, with every loop and its energies.
+    /// An error if the input's variation, `y°` or the work per period overflows f64: a loop
+    /// that is returned holds finite numbers only.
+    pub fn new(model: RateIndependent, input: &TurningPoints) -> Result<Self, LoopError> {
         let n = input.len();
         let mut u = column(n);
         u.extend_from_slice(input.values());
@@ -97,7 +99,7 @@ impl HysteresisLoop {
             rho.push(total);
         }
         if !rho[n].is_finite() {
-            return Err(InputError::VariationOverflow);
+            return Err(InputError::VariationOverflow.into());
         }
         let r = canonical_start(&u);
         let mut hl = Self {
@@ -119,6 +121,7 @@ impl HysteresisLoop {
             y_r: hl.periodic_value(r),
         };
         hl.loops = period.loops(&mut hl.y);
+        hl.check_finite()?;
         Ok(hl)
     }
 
@@ -349,7 +352,7 @@ impl HysteresisLoop {
     }
 
     /// Checks that every value a report would print is finite.
-    pub fn check_finite(&self) -> Result<(), LoopError> {
+    fn check_finite(&self) -> Result<(), LoopError> {
         if !self.y.iter().all(|v| v.is_finite()) {
             return Err(LoopError::Overflow { what: "y°" });
         }
