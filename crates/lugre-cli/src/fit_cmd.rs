@@ -156,14 +156,13 @@ pub fn run(args: &FitArgs) -> Result<()> {
                 Some(text) => parse_number("--x0", 1, text)?,
                 None => 0.0,
             };
-            let options = FullOptions {
-                x0,
-                starts: args.starts.unwrap_or(FullOptions::default().starts),
-            };
             let mut progress = Progress::new();
-            let result = fit_full(&spec, t, &record.u, &record.f, &options, &mut |p| {
-                progress.update(p)
-            });
+            let mut report = |p: &FitProgress| progress.update(p);
+            let options = FullOptions::default()
+                .with_x0(x0)
+                .with_starts(args.starts.unwrap_or(FullOptions::DEFAULT_STARTS))
+                .with_progress(&mut report);
+            let result = fit_full(&spec, t, &record.u, &record.f, options);
             progress.finish();
             result.map_err(with_file)?
         }

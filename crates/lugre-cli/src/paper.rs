@@ -445,7 +445,7 @@ fn simulate(
     times: &[f64],
 ) -> Result<Trajectory> {
     let mut out = Trajectory::with_capacity(times.len());
-    Simulator::new(model, gamma, 0.0)?.at_times(pl, periods, times, &mut out, &mut |_| {})?;
+    Simulator::new(model, gamma, 0.0)?.at_times(pl, periods, times, &mut out)?;
     Ok(out)
 }
 

@@ -194,12 +194,13 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     let mut out = Trajectory::default();
     let result = {
         let mut report = |fraction: f64| progress.update(fraction);
+        let mut sim = sim.with_progress(&mut report);
         match (&drive, &times) {
             (Drive::TurningPoints(pl) | Drive::Samples(pl), None) => {
-                sim.at_knots(pl, periods, &mut out, &mut report)
+                sim.at_knots(pl, periods, &mut out)
             }
             (Drive::TurningPoints(pl) | Drive::Samples(pl), Some(times)) => {
-                sim.at_times(pl, periods, times, &mut out, &mut report)
+                sim.at_times(pl, periods, times, &mut out)
             }
             // A sine always has output times (the default is set above).
             (Drive::Sine(sine), times) => sim.sine(
@@ -208,7 +209,6 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
                 times.as_deref().unwrap_or_default(),
                 tol,
                 &mut out,
-                &mut report,
             ),
         }
     };

@@ -68,7 +68,7 @@ fn slow_file(dir: &Path, model: &LuGre, turning: &[f64]) -> PathBuf {
     let mut out = Trajectory::default();
     Simulator::new(model, Gamma::INFINITE, 0.0)
         .unwrap()
-        .at_times(&input, 6, &times, &mut out, &mut |_| {})
+        .at_times(&input, 6, &times, &mut out)
         .unwrap();
     let from = out.range_between(4.0 * p, f64::INFINITY).start;
     let f = noisy(&out.y[from..], 11);
@@ -96,7 +96,7 @@ fn rate_file(dir: &Path, name: &str, model: &LuGre, amp: f64, speeds: &[f64]) ->
     let mut out = Trajectory::default();
     Simulator::new(model, Gamma::ONE, 0.0)
         .unwrap()
-        .at_knots(&input, 1, &mut out, &mut |_| {})
+        .at_knots(&input, 1, &mut out)
         .unwrap();
     let f = noisy(&out.y, 12);
     let path = dir.join(name);

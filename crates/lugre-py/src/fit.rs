@@ -153,12 +153,9 @@ pub fn fit<'py>(
             let starts = match starts {
                 Some(n) => usize::try_from(n)
                     .map_err(|_| PyValueError::new_err(format!("starts is too large, got {n}")))?,
-                None => FullOptions::default().starts,
+                None => FullOptions::DEFAULT_STARTS,
             };
-            Some(FullOptions {
-                x0: x0.unwrap_or(0.0),
-                starts,
-            })
+            Some((x0.unwrap_or(0.0), starts))
         }
     };
     drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
@@ -166,7 +163,10 @@ pub fn fit<'py>(
     let report = py
         // `options` is set for the full fit only, which has times.
         .detach(|| match (&options, &t) {
-            (Some(options), Some(t)) => fit_full(&spec, t, &u, &f, options, &mut |_| {}),
+            (Some((x0, starts)), Some(t)) => {
+                let options = FullOptions::default().with_x0(*x0).with_starts(*starts);
+                fit_full(&spec, t, &u, &f, options)
+            }
             _ => fit_slow(&spec, &u, &f),
         })
         .map_err(|e| explain(py, e))?;

@@ -199,25 +199,22 @@ pub fn simulate<'py>(
     let trajectory = py
         .detach(|| {
             let mut out = lugre::Trajectory::default();
-            let mut progress = |_: f64| {};
             match (&input, &output) {
-                (Input::Knots(pl), Output::Knots) => {
-                    simulator.at_knots(pl, periods, &mut out, &mut progress)?
-                }
+                (Input::Knots(pl), Output::Knots) => simulator.at_knots(pl, periods, &mut out)?,
                 (Input::Knots(pl), Output::Times(times)) => {
-                    simulator.at_times(pl, periods, times, &mut out, &mut progress)?
+                    simulator.at_times(pl, periods, times, &mut out)?
                 }
                 (Input::Knots(pl), Output::PerPeriod(n)) => {
                     let times =
                         lugre::simulate::uniform_times(pl.times()[0], pl.period(), periods, *n);
-                    simulator.at_times(pl, periods, &times, &mut out, &mut progress)?
+                    simulator.at_times(pl, periods, &times, &mut out)?
                 }
                 (Input::Sine(s), Output::Times(times)) => {
-                    simulator.sine(s, periods, times, tol, &mut out, &mut progress)?
+                    simulator.sine(s, periods, times, tol, &mut out)?
                 }
                 (Input::Sine(s), Output::PerPeriod(n)) => {
                     let times = lugre::simulate::uniform_times(0.0, s.period(), periods, *n);
-                    simulator.sine(s, periods, &times, tol, &mut out, &mut progress)?
+                    simulator.sine(s, periods, &times, tol, &mut out)?
                 }
                 (Input::Sine(_), Output::Knots) => unreachable!("a sine has an output grid"),
             }

@@ -40,7 +40,7 @@ fn slow_data(n: usize) -> (Vec<f64>, Vec<f64>) {
     let mut out = Trajectory::default();
     Simulator::new(&model, Gamma::INFINITE, 0.0)
         .expect("valid")
-        .at_times(&input, 5, &times, &mut out, &mut |_| {})
+        .at_times(&input, 5, &times, &mut out)
         .expect("finite");
     let from = out.range_between(3.0 * p, f64::INFINITY).start;
     let u = out.u[from..].to_vec();
@@ -69,7 +69,7 @@ fn full_data(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let mut out = Trajectory::default();
     Simulator::new(&model, Gamma::ONE, 0.0)
         .expect("valid")
-        .at_knots(&input, 1, &mut out, &mut |_| {})
+        .at_knots(&input, 1, &mut out)
         .expect("finite");
     let f = noisy(&out.y, 0.01, 2);
     (t, u, f)
@@ -89,17 +89,7 @@ fn fit(c: &mut Criterion) {
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(20));
     group.bench_function(format!("full/{}", u.len()), |b| {
-        b.iter(|| {
-            fit_full(
-                black_box(&spec),
-                &t,
-                &u,
-                &f,
-                &FullOptions::default(),
-                &mut |_| {},
-            )
-            .expect("fits")
-        })
+        b.iter(|| fit_full(black_box(&spec), &t, &u, &f, FullOptions::default()).expect("fits"))
     });
     group.finish();
 }

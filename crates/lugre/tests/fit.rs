@@ -60,7 +60,7 @@ fn slow_record(
     let mut out = Trajectory::default();
     Simulator::new(model, Gamma::INFINITE, 0.0)
         .unwrap()
-        .at_times(&input, periods, &times, &mut out, &mut |_| {})
+        .at_times(&input, periods, &times, &mut out)
         .unwrap();
     let from = out.range_between(f64::from(skip) * p, f64::INFINITY).start;
     (out.u[from..].to_vec(), out.y[from..].to_vec())
@@ -91,7 +91,7 @@ fn rate_record(
     let mut out = Trajectory::default();
     Simulator::new(model, Gamma::ONE, 0.0)
         .unwrap()
-        .at_knots(&input, 1, &mut out, &mut |_| {})
+        .at_knots(&input, 1, &mut out)
         .unwrap();
     (t, u, out.y)
 }
@@ -222,7 +222,7 @@ fn full_fit_recovers_the_papers_parameters() {
     let (t, u, f) = rate_record(&model, 6.0, &[0.1, 0.3, 1.0, 3.0, 10.0], 300);
     let f = noisy(&f, 0.01, 6);
     let spec = FitSpec::new(Family::LuGre).fix("sigma2").unwrap();
-    let r = fit_full(&spec, &t, &u, &f, &FullOptions::default(), &mut |_| {}).unwrap();
+    let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
     check_recovery(
         &r,
         &[
@@ -246,7 +246,7 @@ fn full_fit_recovers_canudas_de_wit_1995() {
     let (t, u, f) = rate_record(&model, 1e-3, &speeds, 600);
     let f = noisy(&f, 0.01, 7);
     let spec = FitSpec::new(Family::LuGre).set("beta", 2.0).unwrap();
-    let r = fit_full(&spec, &t, &u, &f, &FullOptions::default(), &mut |_| {}).unwrap();
+    let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
     check_recovery(
         &r,
         &[
@@ -271,8 +271,7 @@ fn full_fit_recovers_dahl() {
         &t,
         &u,
         &f,
-        &FullOptions::default(),
-        &mut |_| {},
+        FullOptions::default(),
     )
     .unwrap();
     check_recovery(&r, &[("rho", 2.0), ("fc", 0.8)], FULL_FIT_RECOVERY);
@@ -290,7 +289,7 @@ fn sigma1_from_quasi_static_data_is_reported_unidentifiable() {
     let spec = ["sigma0", "sigma2", "fc", "fs", "vs"]
         .iter()
         .fold(spec, |s, n| s.fix(n).unwrap());
-    let e = fit_full(&spec, &t, &u, &f, &FullOptions::default(), &mut |_| {}).unwrap_err();
+    let e = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap_err();
     match &e {
         FitError::Unidentifiable { parameters } => {
             assert_eq!(parameters.len(), 1);
@@ -312,8 +311,7 @@ fn sigma1_from_quasi_static_data_is_reported_unidentifiable() {
         &t,
         &u,
         &f,
-        &FullOptions::default(),
-        &mut |_| {},
+        FullOptions::default(),
     )
     .unwrap_err();
     match &e {
@@ -381,7 +379,7 @@ fn bad_requests_are_named() {
     let mut t_bad = t.clone();
     t_bad[3] = t_bad[2];
     assert!(matches!(
-        fit_full(&spec, &t_bad, &u, &f, &FullOptions::default(), &mut |_| {}),
+        fit_full(&spec, &t_bad, &u, &f, FullOptions::default()),
         Err(FitError::Data(DataError::TimesNotIncreasing {
             index: 3,
             ..

@@ -342,7 +342,7 @@ proptest! {
         let mut out = Trajectory::default();
         Simulator::new(&lugre, Gamma::INFINITE, x0)
             .unwrap()
-            .at_knots(&input, periods, &mut out, &mut |_| {})
+            .at_knots(&input, periods, &mut out)
             .unwrap();
         let n = hl.len();
         let amplitude = hl.turning_y().iter().fold(0.0f64, |m, v| m.max(v.abs()));

@@ -22,8 +22,6 @@ fn assert_close(what: &str, got: f64, want: f64, scale: f64, tol: f64) {
     );
 }
 
-fn no_progress(_: f64) {}
-
 fn paper_model() -> LuGre {
     LuGre::paper()
 }
@@ -42,7 +40,7 @@ fn at_knots(model: &LuGre, gamma: Gamma, x0: f64, input: &PiecewiseLinear, k: u3
     let mut out = Trajectory::default();
     Simulator::new(model, gamma, x0)
         .expect("valid")
-        .at_knots(input, k, &mut out, &mut no_progress)
+        .at_knots(input, k, &mut out)
         .expect("finite");
     out
 }
@@ -58,7 +56,7 @@ fn at_times(
     let mut out = Trajectory::default();
     Simulator::new(model, gamma, x0)
         .expect("valid")
-        .at_times(input, k, times, &mut out, &mut no_progress)
+        .at_times(input, k, times, &mut out)
         .expect("finite");
     out
 }
@@ -736,14 +734,7 @@ fn sine_run(
     let mut out = Trajectory::default();
     Simulator::new(model, gamma, x0)
         .unwrap()
-        .sine(
-            sine,
-            periods,
-            times,
-            Tolerance::new(tol).unwrap(),
-            &mut out,
-            &mut no_progress,
-        )
+        .sine(sine, periods, times, Tolerance::new(tol).unwrap(), &mut out)
         .expect("finite");
     out
 }
@@ -1039,11 +1030,11 @@ fn invalid_requests_are_typed_errors() {
     let sim = Simulator::new(&model, Gamma::ONE, 0.0).unwrap();
     let mut out = Trajectory::default();
     assert_eq!(
-        sim.at_knots(&open, 0, &mut out, &mut no_progress),
+        sim.at_knots(&open, 0, &mut out),
         Err(SimulateError::BadPeriods { value: 0 })
     );
     assert!(matches!(
-        sim.at_knots(&open, 2, &mut out, &mut no_progress),
+        sim.at_knots(&open, 2, &mut out),
         Err(SimulateError::NotClosed { periods: 2, .. })
     ));
     for (times, want) in [
@@ -1052,9 +1043,7 @@ fn invalid_requests_are_typed_errors() {
         (vec![0.5, 1.5], "outside the simulated interval [0, 1]"),
         (vec![-0.1], "outside"),
     ] {
-        let e = sim
-            .at_times(&open, 1, &times, &mut out, &mut no_progress)
-            .unwrap_err();
+        let e = sim.at_times(&open, 1, &times, &mut out).unwrap_err();
         assert!(e.to_string().contains(want), "{e}");
     }
     assert!(out.is_empty(), "nothing half-written");

@@ -460,7 +460,7 @@ mod tests {
             let mut out = Trajectory::default();
             Simulator::new(&model, Gamma::ONE, 0.1)
                 .unwrap()
-                .at_knots(&input, 1, &mut out, &mut |_| {})
+                .at_knots(&input, 1, &mut out)
                 .unwrap();
             let g0 = model.g0();
             for (a, b) in y.iter().zip(&out.y) {

@@ -166,18 +166,70 @@ impl FitReport {
     }
 }
 
-/// Options of the full fit.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FullOptions {
-    /// The initial bristle deflection `x(0)` (Dahl: `w(0) / rho`), not fitted.
-    pub x0: f64,
-    /// Starts tried (the first from the data, then `sigma0` and `vs` scaled by 4 or 1/4).
-    pub starts: usize,
+/// Options of the full fit: the defaults, changed with `with_*` (checked when the fit starts).
+///
+/// ```
+/// use lugre::fit::FullOptions;
+/// let mut evaluations = 0;
+/// let mut count = |_: &lugre::fit::FitProgress| evaluations += 1;
+/// let options = FullOptions::default().with_starts(5).with_progress(&mut count);
+/// assert_eq!((options.x0(), options.starts()), (0.0, 5));
+/// ```
+pub struct FullOptions<'p> {
+    x0: f64,
+    starts: usize,
+    progress: Option<&'p mut dyn FnMut(&FitProgress)>,
 }
 
-impl Default for FullOptions {
+impl Default for FullOptions<'_> {
     fn default() -> Self {
-        Self { x0: 0.0, starts: 3 }
+        Self {
+            x0: 0.0,
+            starts: Self::DEFAULT_STARTS,
+            progress: None,
+        }
+    }
+}
+
+impl std::fmt::Debug for FullOptions<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("FullOptions")
+            .field("x0", &self.x0)
+            .field("starts", &self.starts)
+            .field("progress", &self.progress.is_some())
+            .finish()
+    }
+}
+
+impl<'p> FullOptions<'p> {
+    /// Starts tried by default.
+    pub const DEFAULT_STARTS: usize = 3;
+
+    /// The initial bristle deflection `x(0)` (Dahl: `w(0) / rho`), not fitted (default 0).
+    pub fn with_x0(mut self, x0: f64) -> Self {
+        self.x0 = x0;
+        self
+    }
+
+    /// Starts tried: the first from the data, then `sigma0` and `vs` scaled by 4 or 1/4
+    /// (default [`Self::DEFAULT_STARTS`], at least 1).
+    pub fn with_starts(mut self, starts: usize) -> Self {
+        self.starts = starts;
+        self
+    }
+
+    /// Called after every model evaluation with the fit's progress (default: nothing).
+    pub fn with_progress(mut self, progress: &'p mut dyn FnMut(&FitProgress)) -> Self {
+        self.progress = Some(progress);
+        self
+    }
+
+    pub fn x0(&self) -> f64 {
+        self.x0
+    }
+
+    pub fn starts(&self) -> usize {
+        self.starts
     }
 }
 
@@ -302,21 +354,31 @@ fn slow_start(resolved: &mut Resolved, sl: &slow::SlowLoop, f: &[f64]) -> Result
 }
 
 /// The full fit to rate-dependent samples `(t_i, u_i, F_i)` on the exact simulation from
-/// `options.x0`. `progress` is called after every model evaluation.
+/// `options.x0()`; the options' progress observer, if any, is called after every model
+/// evaluation.
 pub fn fit_full(
     spec: &FitSpec,
     t: &[f64],
     u: &[f64],
     f: &[f64],
-    options: &FullOptions,
-    progress: &mut dyn FnMut(&FitProgress),
+    options: FullOptions<'_>,
 ) -> Result<FitReport, FitError> {
+    let FullOptions {
+        x0,
+        starts,
+        mut progress,
+    } = options;
+    let mut progress = |p: &FitProgress| {
+        if let Some(f) = progress.as_mut() {
+            f(p)
+        }
+    };
     check_columns(&[("u", u), ("t", t), ("F", f)])?;
     check_increasing(t)?;
-    if !options.x0.is_finite() {
-        return Err(FitError::BadX0 { value: options.x0 });
+    if !x0.is_finite() {
+        return Err(FitError::BadX0 { value: x0 });
     }
-    if options.starts == 0 {
+    if starts == 0 {
         return Err(FitError::BadStarts { starts: 0 });
     }
     let mut resolved = spec.resolve(FitKind::Full)?;
@@ -327,7 +389,7 @@ pub fn fit_full(
     if f.iter().all(|&v| v == 0.0) {
         return Err(FitError::ZeroForce);
     }
-    let mut ex = full::Exact::new(resolved.family, resolved.free.clone(), t, u, options.x0);
+    let mut ex = full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0);
     let start = full::data_start(resolved.family, &ex, u, f, &resolved.values);
     resolved.fill_starts(&start);
     let base = resolved.values.clone();
@@ -343,7 +405,6 @@ pub fn fit_full(
     ];
     let mut best: Option<Outcome> = None;
     let mut evaluations = 0;
-    let starts = options.starts;
     for (n, &(k0, kv)) in FACTORS.iter().cycle().take(starts).enumerate() {
         let mut values = base.clone();
         let scale = |i: usize, k: f64, values: &mut Vec<f64>| {
@@ -389,7 +450,7 @@ pub fn fit_full(
     let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
     let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
     let mut out = Trajectory::with_capacity(u.len());
-    Simulator::new(&model, Gamma::ONE, options.x0)?.at_knots(&input, 1, &mut out, &mut |_| {})?;
+    Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
     report(FitKind::Full, &resolved, outcome, out.y, f, starts)
 }
 

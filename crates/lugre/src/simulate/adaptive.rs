@@ -276,6 +276,17 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         times: &[f64],
         tol: Tolerance,
         out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.observed_sine(input, periods, times, tol, out, &mut |_| {})
+    }
+
+    pub(super) fn observed_sine(
+        &self,
+        input: &Sine,
+        periods: u32,
+        times: &[f64],
+        tol: Tolerance,
+        out: &mut Trajectory,
         progress: &mut dyn FnMut(f64),
     ) -> Result<(), SimulateError> {
         if periods < 1 {

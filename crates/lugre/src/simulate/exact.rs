@@ -24,8 +24,8 @@
 //! limited by stiffness, and the error is a few roundings per segment for any `sigma0 / g`.
 //!
 
-use super::inputs::PiecewiseLinear;
-use super::{check_output_times, Gamma, Sample, SimulateError, Trajectory};
+use super::inputs::{PiecewiseLinear, Sine};
+use super::{check_output_times, Gamma, Sample, SimulateError, Tolerance, Trajectory};
 use crate::kernel::relax::relax_toward;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
 
@@ -89,6 +89,33 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
     pub fn model(&self) -> &LuGre<G, F> {
         self.model
     }
+
+    /// The same runs, reporting the fraction of each run done to `progress` now and then
+    /// (opt-in: the plain methods report nothing).
+    ///
+    /// ```
+    /// use lugre::{Gamma, LuGre, PiecewiseLinear, Simulator, Trajectory};
+    /// let model = LuGre::paper();
+    /// let input = PiecewiseLinear::new(vec![0.0, 1.0, 2.0], vec![0.0, 1.0, 0.0]).unwrap();
+    /// let mut last = 0.0;
+    /// let mut report = |done: f64| last = done;
+    /// let mut out = Trajectory::default();
+    /// Simulator::new(&model, Gamma::ONE, 0.0)
+    ///     .unwrap()
+    ///     .with_progress(&mut report)
+    ///     .at_knots(&input, 2, &mut out)
+    ///     .unwrap();
+    /// assert_eq!(out.len(), 5);
+    /// ```
+    pub fn with_progress<'s, 'p>(
+        &'s self,
+        progress: &'p mut dyn FnMut(f64),
+    ) -> Observed<'s, 'p, 'm, G, F> {
+        Observed {
+            simulator: self,
+            progress,
+        }
+    }
     pub fn gamma(&self) -> Gamma {
         self.gamma
     }
@@ -142,8 +169,18 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
     /// (`(len - 1) periods + 1` samples). The fast path for sampled data: per sample one `g`,
     /// one exponential, no allocation beyond `out`'s growth.
     ///
-    /// `progress` is called now and then with the fraction of the run done.
+    /// [`with_progress`](Self::with_progress) reports the fraction of the run done now and
+    /// then.
     pub fn at_knots(
+        &self,
+        input: &PiecewiseLinear,
+        periods: u32,
+        out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.observed_at_knots(input, periods, out, &mut |_| {})
+    }
+
+    pub(super) fn observed_at_knots(
         &self,
         input: &PiecewiseLinear,
         periods: u32,
@@ -210,6 +247,16 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         periods: u32,
         times: &[f64],
         out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.observed_at_times(input, periods, times, out, &mut |_| {})
+    }
+
+    pub(super) fn observed_at_times(
+        &self,
+        input: &PiecewiseLinear,
+        periods: u32,
+        times: &[f64],
+        out: &mut Trajectory,
         progress: &mut dyn FnMut(f64),
     ) -> Result<(), SimulateError> {
         input.check_periods(periods)?;
@@ -264,5 +311,49 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
             }
         }
         out.check_finite(first)
+    }
+}
+
+/// A [`Simulator`] whose runs report their progress ([`Simulator::with_progress`]).
+pub struct Observed<'s, 'p, 'm, G = Stribeck, F = Viscous> {
+    simulator: &'s Simulator<'m, G, F>,
+    progress: &'p mut dyn FnMut(f64),
+}
+
+impl<G: VelocityFn, F: VelocityFn> Observed<'_, '_, '_, G, F> {
+    /// [`Simulator::at_knots`], reporting progress.
+    pub fn at_knots(
+        &mut self,
+        input: &PiecewiseLinear,
+        periods: u32,
+        out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.simulator
+            .observed_at_knots(input, periods, out, self.progress)
+    }
+
+    /// [`Simulator::at_times`], reporting progress.
+    pub fn at_times(
+        &mut self,
+        input: &PiecewiseLinear,
+        periods: u32,
+        times: &[f64],
+        out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.simulator
+            .observed_at_times(input, periods, times, out, self.progress)
+    }
+
+    /// [`Simulator::sine`], reporting progress.
+    pub fn sine(
+        &mut self,
+        input: &Sine,
+        periods: u32,
+        times: &[f64],
+        tol: Tolerance,
+        out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        self.simulator
+            .observed_sine(input, periods, times, tol, out, self.progress)
     }
 }

@@ -43,13 +43,13 @@
 //! let mut y_gamma = Trajectory::default();
 //! Simulator::new(&model, Gamma::new(10.0).unwrap(), 0.0)
 //!     .unwrap()
-//!     .at_times(&input, 3, &times, &mut y_gamma, &mut |_| {})
+//!     .at_times(&input, 3, &times, &mut y_gamma)
 //!     .unwrap();
 //! // The rate-independent limit y*_u (the solid curve of Fig. 11).
 //! let mut y_star = Trajectory::default();
 //! Simulator::new(&model, Gamma::INFINITE, 0.0)
 //!     .unwrap()
-//!     .at_times(&input, 3, &times, &mut y_star, &mut |_| {})
+//!     .at_times(&input, 3, &times, &mut y_star)
 //!     .unwrap();
 //! let gap = y_gamma.y.iter().zip(&y_star.y).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
 //! assert!(gap < 0.3); // O(1 / gamma)
@@ -60,7 +60,7 @@ pub mod exact;
 pub mod example1;
 mod inputs;
 
-pub use exact::Simulator;
+pub use exact::{Observed, Simulator};
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
 
