@@ -8,6 +8,7 @@
 use std::ffi::CString;
 
 use lugre::fit::{fit_full, fit_slow, Family, FitError, FitKind, FitReport, FitSpec, FullOptions};
+use lugre::model::Parameter;
 use pyo3::exceptions::{PyRuntimeWarning, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyMapping, PyString, PyTuple};
@@ -380,15 +381,10 @@ fn check_model(spec: &FitSpec) -> PyResult<()> {
     let v = |name: &str| spec.value(name).map_err(value_error);
     match spec.family() {
         Family::LuGre => {
-            let p = lugre::LuGreParams {
-                sigma0: v("sigma0")?,
-                sigma1: v("sigma1")?,
-                sigma2: v("sigma2")?,
-                fc: v("fc")?,
-                fs: v("fs")?,
-                vs: v("vs")?,
-                beta: v("beta")?,
-            };
+            let mut p = lugre::LuGreParams::default();
+            for q in Parameter::LUGRE {
+                p.set(q, v(q.name())?);
+            }
             lugre::LuGre::from_params(p).map_err(value_error)?;
         }
         Family::Dahl => {
@@ -471,16 +467,8 @@ fn report_dict<'py>(
     match r.family {
         Family::LuGre => {
             let p = r.lugre_params(spec);
-            for (name, v) in [
-                ("sigma0", p.sigma0),
-                ("sigma1", p.sigma1),
-                ("sigma2", p.sigma2),
-                ("fc", p.fc),
-                ("fs", p.fs),
-                ("vs", p.vs),
-                ("beta", p.beta),
-            ] {
-                values.set_item(name, v)?;
+            for (q, v) in p.named() {
+                values.set_item(q.name(), v)?;
             }
         }
         Family::Dahl => {

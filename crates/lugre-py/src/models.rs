@@ -6,6 +6,7 @@ use pyo3::types::{PyDict, PyTuple};
 use crate::convert::{float_repr, map_floats, real, real_or, value_error};
 use crate::loops::PyHysteresisLoop;
 use crate::simulate::{simulate, SimulateArgs};
+use lugre::model::Parameter;
 
 /// The LuGre friction model (paper eq. 1) with the Stribeck curve and viscous friction.
 ///
@@ -48,16 +49,12 @@ impl PyLuGre {
         vs: Option<&Bound<'_, PyAny>>,
         beta: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let d = lugre::LuGreParams::default();
-        let p = lugre::LuGreParams {
-            sigma0: real_or(sigma0, "sigma0", d.sigma0)?,
-            sigma1: real_or(sigma1, "sigma1", d.sigma1)?,
-            sigma2: real_or(sigma2, "sigma2", d.sigma2)?,
-            fc: real_or(fc, "fc", d.fc)?,
-            fs: real_or(fs, "fs", d.fs)?,
-            vs: real_or(vs, "vs", d.vs)?,
-            beta: real_or(beta, "beta", d.beta)?,
-        };
+        // In the order of `Parameter::LUGRE`; names and defaults from it.
+        let given = [sigma0, sigma1, sigma2, fc, fs, vs, beta];
+        let mut p = lugre::LuGreParams::default();
+        for (q, value) in Parameter::LUGRE.into_iter().zip(given) {
+            p.set(q, real_or(value, q.name(), q.default_value())?);
+        }
         Ok(Self {
             inner: lugre::LuGre::from_params(p).map_err(value_error)?,
         })
@@ -224,13 +221,9 @@ impl PyLuGre {
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let p = self.inner.params();
         let d = PyDict::new(py);
-        d.set_item("sigma0", p.sigma0)?;
-        d.set_item("sigma1", p.sigma1)?;
-        d.set_item("sigma2", p.sigma2)?;
-        d.set_item("fc", p.fc)?;
-        d.set_item("fs", p.fs)?;
-        d.set_item("vs", p.vs)?;
-        d.set_item("beta", p.beta)?;
+        for (q, value) in p.named() {
+            d.set_item(q.name(), value)?;
+        }
         Ok(d)
     }
 

@@ -2,13 +2,23 @@
 //! the map from bounded parameters to the unconstrained variables the optimizer moves.
 
 use crate::error::FitError;
-use crate::model::LuGreParams;
+use crate::model::{LuGreParams, Parameter};
 
-/// The LuGre parameters, in the order of [`LuGreParams`].
-pub const LUGRE_PARAMETERS: [&str; 7] = ["sigma0", "sigma1", "sigma2", "fc", "fs", "vs", "beta"];
+/// The LuGre parameters' names, in the order of [`LuGreParams`] ([`Parameter::LUGRE`]).
+pub const LUGRE_PARAMETERS: [&str; 7] = names(Parameter::LUGRE);
 
-/// The Dahl parameters.
-pub const DAHL_PARAMETERS: [&str; 2] = ["rho", "fc"];
+/// The Dahl parameters' names ([`Parameter::DAHL`]).
+pub const DAHL_PARAMETERS: [&str; 2] = names(Parameter::DAHL);
+
+const fn names<const N: usize>(ps: [Parameter; N]) -> [&'static str; N] {
+    let mut out = [""; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = ps[i].name();
+        i += 1;
+    }
+    out
+}
 
 /// The model whose parameters are identified.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -278,15 +288,13 @@ impl Resolved {
 /// The LuGre parameters of a family's parameter vector.
 pub(crate) fn lugre_params(family: Family, v: &[f64]) -> LuGreParams {
     match family {
-        Family::LuGre => LuGreParams {
-            sigma0: v[0],
-            sigma1: v[1],
-            sigma2: v[2],
-            fc: v[3],
-            fs: v[4],
-            vs: v[5],
-            beta: v[6],
-        },
+        Family::LuGre => {
+            let mut p = LuGreParams::default();
+            for (q, &x) in Parameter::LUGRE.iter().zip(v) {
+                p.set(*q, x);
+            }
+            p
+        }
         Family::Dahl => LuGreParams {
             sigma0: v[0] * v[1],
             sigma1: 0.0,
@@ -433,6 +441,14 @@ impl FitSpec {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn known_lists_the_parameters() {
+        for f in [Family::LuGre, Family::Dahl] {
+            assert_eq!(f.known(), f.parameters().join(", "));
+        }
+    }
+
     use super::*;
 
     #[test]

@@ -3,7 +3,7 @@
 //! It is the LuGre model with `g == Fc`, `sigma0 = rho Fc`, `sigma1 = 0`, `f = 0`, and
 //! `x = w / rho` (paper §1); [`Dahl::to_lugre`] returns exactly that model.
 
-use super::{check_positive, LuGre, LuGreParams, RateIndependent};
+use super::{check_positive, LuGre, LuGreParams, Parameter, RateIndependent};
 use crate::error::ModelError;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -15,8 +15,8 @@ pub struct Dahl {
 impl Dahl {
     /// Validated: `rho` and `Fc` finite and `> 0`, and `rho Fc` finite.
     pub fn new(rho: f64, fc: f64) -> Result<Self, ModelError> {
-        check_positive("rho", rho)?;
-        check_positive("fc", fc)?;
+        Parameter::Rho.check(rho)?;
+        Parameter::Fc.check(fc)?;
         check_positive("sigma0 = rho * fc", rho * fc)?;
         Ok(Self { rho, fc })
     }

@@ -1,7 +1,7 @@
 //! The velocity functions of the LuGre model: `g` (macro-damping, Stribeck curve) and `f`
 //! (viscous friction). Any `Fn(f64) -> f64` is also a [`VelocityFn`], for user-supplied shapes.
 
-use super::{check_non_negative, check_positive};
+use super::Parameter;
 use crate::error::ModelError;
 
 /// A function of the sliding velocity, `g(v)` or `f(v)`.
@@ -32,7 +32,7 @@ pub struct Stribeck {
 impl Stribeck {
     /// Validated: `Fc, Fs, vs, beta` finite and `> 0`.
     pub fn new(fc: f64, fs: f64, vs: f64, beta: f64) -> Result<Self, ModelError> {
-        let vs = check_positive("vs", vs)?;
+        let vs = Parameter::Vs.check(vs)?;
         if vs < MIN_INVERTIBLE {
             // A subnormal vs whose reciprocal overflows: g(0) would be 0 * inf.
             return Err(ModelError::TooSmall {
@@ -43,10 +43,10 @@ impl Stribeck {
         }
         let inv_vs = 1.0 / vs;
         Ok(Self {
-            fc: check_positive("fc", fc)?,
-            fs: check_positive("fs", fs)?,
+            fc: Parameter::Fc.check(fc)?,
+            fs: Parameter::Fs.check(fs)?,
             vs,
-            beta: check_positive("beta", beta)?,
+            beta: Parameter::Beta.check(beta)?,
             inv_vs,
         })
     }
@@ -99,7 +99,7 @@ impl Viscous {
     /// Validated: `sigma2` finite and `>= 0`.
     pub fn new(sigma2: f64) -> Result<Self, ModelError> {
         Ok(Self {
-            sigma2: check_non_negative("sigma2", sigma2)?,
+            sigma2: Parameter::Sigma2.check(sigma2)?,
         })
     }
 

@@ -1,6 +1,6 @@
 //! The LuGre model (paper eq. 1).
 
-use super::{check_non_negative, check_positive, RateIndependent, Stribeck, VelocityFn, Viscous};
+use super::{Parameter, RateIndependent, Stribeck, VelocityFn, Viscous};
 use crate::error::ModelError;
 
 /// The parameters of the LuGre model with the Stribeck `g` and viscous `f`.
@@ -20,15 +20,19 @@ pub struct LuGreParams {
 
 impl Default for LuGreParams {
     fn default() -> Self {
-        Self {
-            sigma0: 1.0,
-            sigma1: 1.0,
+        let mut p = Self {
+            sigma0: 0.0,
+            sigma1: 0.0,
             sigma2: 0.0,
-            fc: 1.0,
-            fs: 2.0,
-            vs: 1.0,
-            beta: 1.0,
+            fc: 0.0,
+            fs: 0.0,
+            vs: 0.0,
+            beta: 0.0,
+        };
+        for q in Parameter::LUGRE {
+            p.set(q, q.default_value());
         }
+        p
     }
 }
 
@@ -77,8 +81,8 @@ impl<G: VelocityFn, F: VelocityFn> LuGre<G, F> {
     /// A LuGre model with user-supplied `g` and `f`. Checks `sigma0 > 0`, `sigma1 >= 0`,
     /// `g(0)` finite and `> 0`, and `f(0) = 0` (the conditions of paper §1).
     pub fn new(sigma0: f64, sigma1: f64, g: G, f: F) -> Result<Self, ModelError> {
-        check_positive("sigma0", sigma0)?;
-        check_non_negative("sigma1", sigma1)?;
+        Parameter::Sigma0.check(sigma0)?;
+        Parameter::Sigma1.check(sigma1)?;
         let g0 = g.eval(0.0);
         RateIndependent::new(sigma0, g0)?;
         let f0 = f.eval(0.0);

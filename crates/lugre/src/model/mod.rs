@@ -14,10 +14,12 @@
 mod dahl;
 mod functions;
 mod lugre;
+mod parameter;
 
 pub use dahl::Dahl;
 pub use functions::{Stribeck, VelocityFn, Viscous};
 pub use lugre::{LuGre, LuGreParams};
+pub use parameter::{Domain, Parameter};
 
 use crate::error::ModelError;
 use crate::kernel::Relaxation;
@@ -33,7 +35,7 @@ pub struct RateIndependent {
 impl RateIndependent {
     /// Validated: both finite and positive, and `a = sigma0 / g0` finite and positive.
     pub fn new(sigma0: f64, g0: f64) -> Result<Self, ModelError> {
-        check_positive("sigma0", sigma0)?;
+        Parameter::Sigma0.check(sigma0)?;
         if !g0.is_finite() || g0 <= 0.0 {
             return Err(ModelError::BadG0 { value: g0 });
         }

@@ -1,0 +1,181 @@
+//! The models' parameters by name: one place for their names, units, defaults and bounds, used
+//! by the models' validation, the fit's specification, the command line's flags and the Python
+//! keywords.
+
+use super::{check_non_negative, check_positive, LuGreParams};
+use crate::error::ModelError;
+
+/// A parameter of the LuGre or the Dahl model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Parameter {
+    /// LuGre bristle stiffness `sigma0 > 0`.
+    Sigma0,
+    /// LuGre micro-damping `sigma1 >= 0`.
+    Sigma1,
+    /// LuGre viscous coefficient `sigma2 >= 0`, `f(v) = sigma2 v`.
+    Sigma2,
+    /// Coulomb force `Fc > 0` (LuGre and Dahl).
+    Fc,
+    /// LuGre stiction force `Fs > 0`; `g(0) = Fs`.
+    Fs,
+    /// LuGre Stribeck velocity `vs > 0`.
+    Vs,
+    /// LuGre Stribeck exponent `beta > 0`.
+    Beta,
+    /// Dahl parameter `rho > 0`.
+    Rho,
+}
+
+/// What values a parameter may take.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Domain {
+    /// Finite and `> 0`.
+    Positive,
+    /// Finite and `>= 0`.
+    NonNegative,
+}
+
+impl Parameter {
+    /// The LuGre parameters, in the order of [`LuGreParams`].
+    pub const LUGRE: [Parameter; 7] = [
+        Parameter::Sigma0,
+        Parameter::Sigma1,
+        Parameter::Sigma2,
+        Parameter::Fc,
+        Parameter::Fs,
+        Parameter::Vs,
+        Parameter::Beta,
+    ];
+
+    /// The Dahl parameters.
+    pub const DAHL: [Parameter; 2] = [Parameter::Rho, Parameter::Fc];
+
+    /// The name used everywhere: the command line's flag (`--sigma0`), the Python keyword,
+    /// the fit's parameter name and every message.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Parameter::Sigma0 => "sigma0",
+            Parameter::Sigma1 => "sigma1",
+            Parameter::Sigma2 => "sigma2",
+            Parameter::Fc => "fc",
+            Parameter::Fs => "fs",
+            Parameter::Vs => "vs",
+            Parameter::Beta => "beta",
+            Parameter::Rho => "rho",
+        }
+    }
+
+    /// The parameter called `name` (case-insensitive, surrounding blanks ignored).
+    pub fn from_name(name: &str) -> Option<Parameter> {
+        let name = name.trim();
+        Self::LUGRE
+            .iter()
+            .chain(&[Parameter::Rho])
+            .copied()
+            .find(|p| p.name().eq_ignore_ascii_case(name))
+    }
+
+    /// The unit with displacements in metres and forces in newtons.
+    pub const fn unit(self) -> &'static str {
+        match self {
+            Parameter::Sigma0 => "N/m",
+            Parameter::Sigma1 | Parameter::Sigma2 => "N s/m",
+            Parameter::Fc | Parameter::Fs => "N",
+            Parameter::Vs => "m/s",
+            Parameter::Beta => "1",
+            Parameter::Rho => "1/m",
+        }
+    }
+
+    /// The default: the paper's Examples 2-3 (`sigma0 = sigma1 = 1`, `sigma2 = 0`, `Fc = 1`,
+    /// `Fs = 2`, `vs = 1`, `beta = 1`; Dahl `rho = 1`).
+    pub const fn default_value(self) -> f64 {
+        match self {
+            Parameter::Sigma2 => 0.0,
+            Parameter::Fs => 2.0,
+            _ => 1.0,
+        }
+    }
+
+    pub const fn domain(self) -> Domain {
+        match self {
+            Parameter::Sigma1 | Parameter::Sigma2 => Domain::NonNegative,
+            _ => Domain::Positive,
+        }
+    }
+
+    /// `value` if it lies in the parameter's domain, else the error that names it.
+    pub fn check(self, value: f64) -> Result<f64, ModelError> {
+        match self.domain() {
+            Domain::Positive => check_positive(self.name(), value),
+            Domain::NonNegative => check_non_negative(self.name(), value),
+        }
+    }
+}
+
+impl std::fmt::Display for Parameter {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl LuGreParams {
+    /// The value of a LuGre parameter (`None` for the Dahl model's `rho`).
+    pub fn get(&self, p: Parameter) -> Option<f64> {
+        Some(match p {
+            Parameter::Sigma0 => self.sigma0,
+            Parameter::Sigma1 => self.sigma1,
+            Parameter::Sigma2 => self.sigma2,
+            Parameter::Fc => self.fc,
+            Parameter::Fs => self.fs,
+            Parameter::Vs => self.vs,
+            Parameter::Beta => self.beta,
+            Parameter::Rho => return None,
+        })
+    }
+
+    /// Sets a LuGre parameter (unchecked, as the fields are; `rho` is not one and is ignored).
+    pub fn set(&mut self, p: Parameter, value: f64) {
+        let field = match p {
+            Parameter::Sigma0 => &mut self.sigma0,
+            Parameter::Sigma1 => &mut self.sigma1,
+            Parameter::Sigma2 => &mut self.sigma2,
+            Parameter::Fc => &mut self.fc,
+            Parameter::Fs => &mut self.fs,
+            Parameter::Vs => &mut self.vs,
+            Parameter::Beta => &mut self.beta,
+            Parameter::Rho => return,
+        };
+        *field = value;
+    }
+
+    /// The parameters with their names, in the order of [`Parameter::LUGRE`].
+    pub fn named(&self) -> [(Parameter, f64); 7] {
+        Parameter::LUGRE.map(|p| (p, self.get(p).unwrap_or(f64::NAN)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_defaults_and_checks() {
+        let d = LuGreParams::default();
+        for p in Parameter::LUGRE {
+            assert_eq!(Parameter::from_name(&p.name().to_uppercase()), Some(p));
+            assert_eq!(d.get(p), Some(p.default_value()), "{p}");
+        }
+        assert_eq!(Parameter::from_name(" Rho "), Some(Parameter::Rho));
+        assert_eq!(Parameter::from_name("mu"), None);
+        assert!(Parameter::Sigma1.check(0.0).is_ok());
+        assert_eq!(
+            Parameter::Sigma0.check(0.0).unwrap_err().to_string(),
+            "sigma0 must be > 0, got 0"
+        );
+        let mut p = d;
+        p.set(Parameter::Vs, 1e-3);
+        assert_eq!(p.vs, 1e-3);
+    }
+}
