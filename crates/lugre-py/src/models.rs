@@ -161,8 +161,10 @@ impl PyLuGre {
     ///   t = 0 (an adaptive L-stable integrator with relative tolerance `tol`).
     ///
     /// Output at `times` (strictly increasing, inside the simulated interval), or at
-    /// `samples_per_period` evenly spaced times per period, or else at every knot of a
-    /// piecewise-linear input (1000 samples per period for a sine). t is eq. 5's time: the
+    /// `samples_per_period` evenly spaced times per period, or else as `lugre simulate` does:
+    /// samples t, u at their knots; turning points at 200 evenly spaced times per period and
+    /// at every turning point (where y jumps by the sigma1 term); a sine at 200 evenly spaced
+    /// times per period. t is eq. 5's time: the
     /// input's period does not depend on gamma. Where u' jumps, y is the value just after.
     ///
     /// Returns a dict of float64 arrays of equal length: t, u, z (the state), dz (z') and

@@ -6,22 +6,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::{count, floats, real, try_vec, type_name, value_error, vec_out};
-
-/// Samples of the sine input per period when neither `times` nor `samples_per_period` is given.
-pub const DEFAULT_SINE_SAMPLES_PER_PERIOD: usize = 1000;
-
-/// The input of a simulation, as given.
-enum Input {
-    Knots(lugre::PiecewiseLinear),
-    Sine(lugre::Sine),
-}
-
-/// Where the output is wanted.
-enum Output {
-    Knots,
-    Times(Vec<f64>),
-    PerPeriod(usize),
-}
+use lugre::simulate::{Drive, Output, Request};
 
 /// The arguments of `simulate`, as Python objects (`None` when not given).
 pub struct SimulateArgs<'a, 'py> {
@@ -113,9 +98,11 @@ pub fn simulate<'py>(
         let values = one_dimensional(tp, "turning_points")?;
         let tp = lugre::TurningPoints::new(&values)
             .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
-        Input::Knots(lugre::PiecewiseLinear::from_turning_points(&tp, 1.0).map_err(value_error)?)
+        Drive::TurningPoints(
+            lugre::PiecewiseLinear::from_turning_points(&tp, 1.0).map_err(value_error)?,
+        )
     } else if let Some(sine) = given(args.sine) {
-        Input::Sine(sine_arg(sine)?)
+        Drive::Sine(sine_arg(sine)?)
     } else {
         let (Some(t), Some(u)) = (given(args.t), given(args.u)) else {
             return Err(PyValueError::new_err(
@@ -124,7 +111,7 @@ pub fn simulate<'py>(
         };
         let t = one_dimensional(t, "t")?;
         let u = one_dimensional(u, "u")?;
-        Input::Knots(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
+        Drive::Samples(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
     };
 
     let gamma = match given(args.gamma) {
@@ -168,24 +155,20 @@ pub fn simulate<'py>(
                 PyValueError::new_err(format!("samples_per_period is too large, got {n}"))
             })?)
         }
-        (None, None) => match input {
-            Input::Knots(_) => Output::Knots,
-            Input::Sine(_) => Output::PerPeriod(DEFAULT_SINE_SAMPLES_PER_PERIOD),
-        },
+        (None, None) => Output::Default,
     };
+    let request = Request::new(input)
+        .with_gamma(gamma)
+        .with_periods(periods)
+        .map_err(value_error)?
+        .with_x0(x0)
+        .with_tolerance(tol)
+        .with_output(output)
+        .map_err(value_error)?;
 
     // The number of output samples, checked against the memory there is before the core
     // allocates (a failed allocation there would abort the interpreter).
-    let samples = match (&output, &input) {
-        (Output::Times(t), _) => Some(t.len()),
-        (Output::PerPeriod(n), _) => (periods as usize)
-            .checked_mul(*n)
-            .and_then(|s| s.checked_add(1)),
-        (Output::Knots, Input::Knots(pl)) => (pl.len() - 1)
-            .checked_mul(periods as usize)
-            .and_then(|s| s.checked_add(1)),
-        (Output::Knots, Input::Sine(_)) => unreachable!("a sine has an output grid"),
-    };
+    let samples = request.rows();
     match samples {
         Some(n) => drop(try_vec::<[f64; 6]>(n)?),
         None => {
@@ -195,31 +178,9 @@ pub fn simulate<'py>(
         }
     }
 
-    let simulator = lugre::Simulator::new(model, gamma, x0).map_err(value_error)?;
+    let simulator = request.simulator(model).map_err(value_error)?;
     let trajectory = py
-        .detach(|| {
-            let mut out = lugre::Trajectory::default();
-            match (&input, &output) {
-                (Input::Knots(pl), Output::Knots) => simulator.at_knots(pl, periods, &mut out)?,
-                (Input::Knots(pl), Output::Times(times)) => {
-                    simulator.at_times(pl, periods, times, &mut out)?
-                }
-                (Input::Knots(pl), Output::PerPeriod(n)) => {
-                    let times =
-                        lugre::simulate::uniform_times(pl.times()[0], pl.period(), periods, *n);
-                    simulator.at_times(pl, periods, &times, &mut out)?
-                }
-                (Input::Sine(s), Output::Times(times)) => {
-                    simulator.sine(s, periods, times, tol, &mut out)?
-                }
-                (Input::Sine(s), Output::PerPeriod(n)) => {
-                    let times = lugre::simulate::uniform_times(0.0, s.period(), periods, *n);
-                    simulator.sine(s, periods, &times, tol, &mut out)?
-                }
-                (Input::Sine(_), Output::Knots) => unreachable!("a sine has an output grid"),
-            }
-            Ok::<_, lugre::SimulateError>(out)
-        })
+        .detach(|| request.run_on(&simulator, None))
         .map_err(value_error)?;
 
     let d = PyDict::new(py);

@@ -195,6 +195,10 @@ pub enum SimulateError {
     BadGamma { value: f64 },
     #[error("the number of periods must be at least 1, got {value}")]
     BadPeriods { value: u32 },
+    #[error("the output samples per period must be at least 1, got 0")]
+    BadSamplesPerPeriod,
+    #[error("a sine has no knots: ask for output times or samples per period")]
+    NoKnots,
     #[error("x0 must be a finite number, got {value}", value = num(*.value))]
     BadX0 { value: f64 },
     #[error("x0 = {x0} cannot be represented: sigma0 * x0 = {sigma0} * {x0} overflows f64", x0 = num(*.x0), sigma0 = num(*.sigma0))]

@@ -59,10 +59,12 @@ pub mod adaptive;
 pub mod exact;
 pub mod example1;
 mod inputs;
+mod request;
 
 pub use exact::{Observed, Simulator};
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
+pub use request::{Drive, Output, Request};
 
 pub use crate::error::SimulateError;
 

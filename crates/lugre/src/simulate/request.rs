@@ -1,0 +1,232 @@
+//! [`Request`]: what to simulate and where to sample it, with the one set of defaults that the
+//! command line (`lugre simulate`) and the Python package (`model.simulate`) both fill in.
+
+use super::inputs::{PiecewiseLinear, Sine};
+use super::{merge_times, uniform_times, Gamma, SimulateError, Simulator, Tolerance, Trajectory};
+use crate::model::{LuGre, VelocityFn};
+
+/// The input of a simulation.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Drive {
+    /// A periodic input given by its turning points, run at unit speed (solved exactly).
+    TurningPoints(PiecewiseLinear),
+    /// Samples `(t, u)`, linear between samples (solved exactly).
+    Samples(PiecewiseLinear),
+    /// A sine (the adaptive integrator).
+    Sine(Sine),
+}
+
+impl Drive {
+    /// The start and the period of the input.
+    pub fn span(&self) -> (f64, f64) {
+        match self {
+            Drive::TurningPoints(pl) | Drive::Samples(pl) => (pl.times()[0], pl.period()),
+            Drive::Sine(s) => (0.0, s.period()),
+        }
+    }
+}
+
+/// Where the response is sampled.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// The default for the input: samples at their knots; turning points at
+    /// [`Request::DEFAULT_SAMPLES_PER_PERIOD`] evenly spaced times per period and at every
+    /// turning point (so the corners and the `sigma1` jumps there show); a sine at
+    /// [`Request::DEFAULT_SAMPLES_PER_PERIOD`] evenly spaced times per period.
+    Default,
+    /// At the input's knots (piecewise-linear inputs only).
+    Knots,
+    /// At these times.
+    Times(Vec<f64>),
+    /// At `n` evenly spaced times per period, both ends included.
+    PerPeriod(usize),
+}
+
+/// A simulation of eq. 5: the input, `gamma`, the number of periods, `x0`, the adaptive
+/// integrator's tolerance and the output times, each with its default (`gamma = 1`, one
+/// period, `x0 = 0`, [`Tolerance::DEFAULT`], [`Output::Default`]).
+///
+/// ```
+/// use lugre::simulate::{Drive, Request};
+/// use lugre::{LuGre, PiecewiseLinear, TurningPoints};
+///
+/// let tp = TurningPoints::new(&[0.0, 1.0, 0.2, 1.5]).unwrap();
+/// let input = Drive::TurningPoints(PiecewiseLinear::from_turning_points(&tp, 1.0).unwrap());
+/// let r = Request::new(input).with_periods(3).unwrap();
+/// let y = r.run(&LuGre::paper(), None).unwrap();
+/// assert_eq!(y.len(), 3 * 200 + 1 + 3 * 3); // 200 per period, plus the corners
+/// assert!(y.len() <= r.rows().unwrap());
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request {
+    drive: Drive,
+    gamma: Gamma,
+    periods: u32,
+    x0: f64,
+    tol: Tolerance,
+    output: Output,
+}
+
+impl Request {
+    /// Output samples per period by default (turning points and sines).
+    pub const DEFAULT_SAMPLES_PER_PERIOD: usize = 200;
+
+    /// The defaults for `drive`.
+    pub fn new(drive: Drive) -> Self {
+        Self {
+            drive,
+            gamma: Gamma::ONE,
+            periods: 1,
+            x0: 0.0,
+            tol: Tolerance::DEFAULT,
+            output: Output::Default,
+        }
+    }
+
+    pub fn with_gamma(mut self, gamma: Gamma) -> Self {
+        self.gamma = gamma;
+        self
+    }
+
+    /// At least 1.
+    pub fn with_periods(mut self, periods: u32) -> Result<Self, SimulateError> {
+        if periods < 1 {
+            return Err(SimulateError::BadPeriods { value: periods });
+        }
+        self.periods = periods;
+        Ok(self)
+    }
+
+    /// The initial bristle deflection (checked against the model by [`Self::run`]).
+    pub fn with_x0(mut self, x0: f64) -> Self {
+        self.x0 = x0;
+        self
+    }
+
+    pub fn with_tolerance(mut self, tol: Tolerance) -> Self {
+        self.tol = tol;
+        self
+    }
+
+    /// Where to sample; [`Output::Knots`] needs a piecewise-linear input and
+    /// [`Output::PerPeriod`] at least one sample per period.
+    pub fn with_output(mut self, output: Output) -> Result<Self, SimulateError> {
+        match (&output, &self.drive) {
+            (Output::Knots, Drive::Sine(_)) => return Err(SimulateError::NoKnots),
+            (Output::PerPeriod(0), _) => return Err(SimulateError::BadSamplesPerPeriod),
+            _ => {}
+        }
+        self.output = output;
+        Ok(self)
+    }
+
+    pub fn drive(&self) -> &Drive {
+        &self.drive
+    }
+    pub fn gamma(&self) -> Gamma {
+        self.gamma
+    }
+    pub fn periods(&self) -> u32 {
+        self.periods
+    }
+    pub fn x0(&self) -> f64 {
+        self.x0
+    }
+    pub fn tolerance(&self) -> Tolerance {
+        self.tol
+    }
+    pub fn output(&self) -> &Output {
+        &self.output
+    }
+
+    /// The number of output samples, found before anything is allocated so that front ends
+    /// can check it against what they can hold; `None` if it does not fit in a `usize`. For
+    /// the default grid of turning points it is a bound (`periods (200 + turning points)`;
+    /// times where the grid meets a turning point are one sample).
+    pub fn rows(&self) -> Option<usize> {
+        let k = self.periods as usize;
+        match (&self.output, &self.drive) {
+            (Output::Times(t), _) => Some(t.len()),
+            (Output::PerPeriod(n), _) => k.checked_mul(*n)?.checked_add(1),
+            (Output::Knots | Output::Default, Drive::Samples(pl))
+            | (Output::Knots, Drive::TurningPoints(pl)) => {
+                (pl.len() - 1).checked_mul(k)?.checked_add(1)
+            }
+            (Output::Default, Drive::TurningPoints(pl)) => {
+                k.checked_mul(Self::DEFAULT_SAMPLES_PER_PERIOD + pl.len())
+            }
+            (Output::Default, Drive::Sine(_)) => k
+                .checked_mul(Self::DEFAULT_SAMPLES_PER_PERIOD)?
+                .checked_add(1),
+            (Output::Knots, Drive::Sine(_)) => None,
+        }
+    }
+
+    /// The output times, `None` for the input's knots.
+    pub fn times(&self) -> Option<Vec<f64>> {
+        let (start, period) = self.drive.span();
+        match (&self.output, &self.drive) {
+            (Output::Times(t), _) => Some(t.clone()),
+            (Output::PerPeriod(n), _) => Some(uniform_times(start, period, self.periods, *n)),
+            (Output::Knots, _) | (Output::Default, Drive::Samples(_)) => None,
+            (Output::Default, _) => self.default_times(),
+        }
+    }
+
+    fn default_times(&self) -> Option<Vec<f64>> {
+        let (start, period) = self.drive.span();
+        let n = Self::DEFAULT_SAMPLES_PER_PERIOD;
+        let uniform = uniform_times(start, period, self.periods, n);
+        match &self.drive {
+            Drive::TurningPoints(pl) => Some(merge_times(&uniform, &pl.knot_times(self.periods))),
+            Drive::Sine(_) => Some(uniform),
+            Drive::Samples(_) => None,
+        }
+    }
+
+    /// The simulator it runs on (`x0` checked against the model).
+    pub fn simulator<'m, G: VelocityFn, F: VelocityFn>(
+        &self,
+        model: &'m LuGre<G, F>,
+    ) -> Result<Simulator<'m, G, F>, SimulateError> {
+        Simulator::new(model, self.gamma, self.x0)
+    }
+
+    /// Runs it for `model`, reporting the fraction done to `progress` now and then if given.
+    pub fn run<G: VelocityFn, F: VelocityFn>(
+        &self,
+        model: &LuGre<G, F>,
+        progress: Option<&mut dyn FnMut(f64)>,
+    ) -> Result<Trajectory, SimulateError> {
+        self.run_on(&self.simulator(model)?, progress)
+    }
+
+    /// Runs it on `sim` (from [`Self::simulator`]).
+    pub fn run_on<G: VelocityFn, F: VelocityFn>(
+        &self,
+        sim: &Simulator<'_, G, F>,
+        progress: Option<&mut dyn FnMut(f64)>,
+    ) -> Result<Trajectory, SimulateError> {
+        let mut none = |_: f64| {};
+        let progress = progress.unwrap_or(&mut none);
+        let mut sim = sim.with_progress(progress);
+        let mut out = Trajectory::default();
+        let times = self.times();
+        match (&self.drive, &times) {
+            (Drive::TurningPoints(pl) | Drive::Samples(pl), None) => {
+                sim.at_knots(pl, self.periods, &mut out)?
+            }
+            (Drive::TurningPoints(pl) | Drive::Samples(pl), Some(t)) => {
+                sim.at_times(pl, self.periods, t, &mut out)?
+            }
+            (Drive::Sine(s), t) => sim.sine(
+                s,
+                self.periods,
+                t.as_deref().unwrap_or_default(),
+                self.tol,
+                &mut out,
+            )?,
+        }
+        Ok(out)
+    }
+}
