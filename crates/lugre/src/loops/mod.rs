@@ -353,7 +353,11 @@ impl HysteresisLoop {
 
     /// Checks that every value a report would print is finite.
     fn check_finite(&self) -> Result<(), LoopError> {
-        if !self.y.iter().all(|v| v.is_finite()) {
+        // Branch-free over the exponent bits (all ones: inf or NaN), so that the pass
+        // vectorizes: it runs on every loop `new` returns.
+        const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+        let not_finite = |v: &f64| v.to_bits() & EXPONENT == EXPONENT;
+        if self.y.iter().fold(false, |any, v| any | not_finite(v)) {
             return Err(LoopError::Overflow { what: "y°" });
         }
         if !self.work_per_period().is_finite() {
