@@ -23,8 +23,8 @@ use std::fs::File;
 use std::io::{self, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
 
+use crate::args::{ModelArgs, ModelChoice, ModelKind};
 use crate::atomic::write_atomic;
-use crate::cli::{ModelArgs, ModelChoice, ModelKind};
 use crate::csv_in::{Columns, SampleReader};
 use crate::fmt::{exact, num, sig};
 use crate::json_out::JsonOut;

@@ -22,8 +22,8 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use crate::args::{ModelArgs, ModelKind};
 use crate::atomic::write_atomic;
-use crate::cli::{ModelArgs, ModelKind};
 use crate::csv_in::{read_table, Columns};
 use crate::fmt::{excerpt, quoted, sig};
 use crate::json_out::JsonOut;

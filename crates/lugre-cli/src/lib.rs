@@ -3,6 +3,7 @@
 //! errors to exit statuses; the modules are public so that the fuzz targets (`fuzz/`) can drive
 //! the CSV reader and the number-list parser directly.
 
+pub mod args;
 pub mod atomic;
 pub mod cli;
 pub mod csv_in;

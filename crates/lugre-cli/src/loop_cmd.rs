@@ -2,14 +2,16 @@
 //! loop with its energies, as a table, JSON or CSV.
 
 use anyhow::{bail, Result};
+use clap::Args;
 use lugre::{HysteresisLoop, Loop, LoopKind, LoopPoint, TheoremA};
 use std::io::Write;
+use std::path::PathBuf;
 
+use crate::args::{ModelArgs, ModelChoice, PeriodicInput, PeriodicInputArgs};
 use crate::atomic::write_atomic;
-use crate::cli::{LoopArgs, ModelChoice, PeriodicInput};
 use crate::fmt::{exact, sig};
 use crate::json_out::JsonOut;
-use crate::numbers::parse_list;
+use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, PALETTE};
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
@@ -20,6 +22,42 @@ const DEFAULT_CSV_SAMPLES: usize = 1001;
 
 /// The most points `--samples` may ask for (24 bytes each in memory, more as text).
 const MAX_SAMPLES: usize = 10_000_000;
+
+#[derive(Args, Debug)]
+pub struct LoopArgs {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub input: PeriodicInputArgs,
+    /// Evaluate the loop at these rho (any real numbers; the loop is periodic).
+    #[arg(
+        long,
+        value_name = "R1,R2,...",
+        allow_hyphen_values = true,
+        help_heading = "Output"
+    )]
+    pub at: Option<String>,
+    /// N >= 2 evenly spaced points over one period, rho = 0 and rho = P included.
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = Whole(2),
+        help_heading = "Output"
+    )]
+    pub samples: Option<usize>,
+    /// Print one JSON document instead of the table.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// Write the sampled curve (columns rho,u,y) to this CSV file (1001 samples unless
+    /// --samples or --at is given).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
+    pub csv: Option<PathBuf>,
+    /// Draw the loop in the (u, y°) plane, the minor loops solid with their start (circle) and
+    /// end (square) marked, to an SVG or PNG file.
+    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
+    pub plot: Option<PathBuf>,
+}
 
 pub fn run(args: &LoopArgs) -> Result<()> {
     let model = args.model.build()?;

@@ -3,7 +3,7 @@
 //! Exit status: 0 success, 2 bad input or usage, 1 internal error (a bug).
 
 use clap::Parser;
-use lugre_cli::{cli, cycles_cmd, fit_cmd, loop_cmd, paper, simulate_cmd};
+use lugre_cli::cli;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -32,7 +32,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
-    let result = std::panic::catch_unwind(|| run(cli));
+    let result = std::panic::catch_unwind(|| cli.run());
     match result {
         Ok(Ok(())) => ExitCode::SUCCESS,
         // A reader that stopped early (`| head`) is not an error.
@@ -46,16 +46,6 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
         Err(_) => ExitCode::from(1),
-    }
-}
-
-fn run(cli: cli::Cli) -> anyhow::Result<()> {
-    match cli.command {
-        cli::Command::Loop(args) => loop_cmd::run(&args),
-        cli::Command::Cycles(args) => cycles_cmd::run(&args),
-        cli::Command::Simulate(args) => simulate_cmd::run(&args),
-        cli::Command::Fit(args) => fit_cmd::run(&args),
-        cli::Command::Paper(args) => paper::run(&args),
     }
 }
 

@@ -15,8 +15,8 @@ use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use crate::args::{ModelArgs, PeriodicInputArgs};
 use crate::atomic::write_atomic;
-use crate::cli::{ModelArgs, PeriodicInputArgs};
 use crate::fmt::{quoted, sig};
 use crate::json_out::JsonOut;
 use crate::numbers::{parse_list, Whole};
