@@ -224,7 +224,7 @@ impl PeriodicInputArgs {
             ));
         }
         if let Some(path) = &self.input {
-            let series = crate::csv_in::read_series(path)?;
+            let series = crate::io::csv::read_series(path)?;
             let turning_points = match &series.t {
                 Some(t) => lugre::TurningPoints::from_samples(t, &series.u),
                 None => lugre::TurningPoints::new(&series.u),

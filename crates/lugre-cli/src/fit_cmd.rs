@@ -23,10 +23,10 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::args::{ModelArgs, ModelKind};
-use crate::atomic::write_atomic;
-use crate::csv_in::{read_table, Columns};
 use crate::fmt::{excerpt, quoted, sig};
-use crate::json_out::JsonOut;
+use crate::io::atomic::write_atomic;
+use crate::io::csv::{read_table, Columns};
+use crate::io::json::JsonOut;
 use crate::numbers::{parse_number, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
 

@@ -4,13 +4,11 @@
 //! the CSV reader and the number-list parser directly.
 
 pub mod args;
-pub mod atomic;
 pub mod cli;
-pub mod csv_in;
 pub mod cycles_cmd;
 pub mod fit_cmd;
 pub mod fmt;
-pub mod json_out;
+pub mod io;
 pub mod loop_cmd;
 pub mod numbers;
 pub mod paper;

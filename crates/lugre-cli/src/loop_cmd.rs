@@ -8,9 +8,9 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use crate::args::{ModelArgs, ModelChoice, PeriodicInput, PeriodicInputArgs};
-use crate::atomic::write_atomic;
 use crate::fmt::{exact, sig};
-use crate::json_out::JsonOut;
+use crate::io::atomic::write_atomic;
+use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, PALETTE};
 

@@ -18,8 +18,8 @@ use lugre::{
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::atomic::write_atomic;
 use crate::fmt::{exact, sig};
+use crate::io::atomic::write_atomic;
 use crate::loop_cmd::arc_points;
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, BLUE, GREEN, GREY, ORANGE, RED};
 

@@ -555,7 +555,7 @@ fn save(what: &impl Render, size: (u32, u32), path: &Path) -> Result<()> {
                 what.render(&root, 1.0)?;
                 root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
             }
-            crate::atomic::write_atomic(path, |w| Ok(w.write_all(svg.as_bytes())?))
+            crate::io::atomic::write_atomic(path, |w| Ok(w.write_all(svg.as_bytes())?))
         }
         Format::Png => {
             let k = SUPERSAMPLE;
@@ -567,7 +567,7 @@ fn save(what: &impl Render, size: (u32, u32), path: &Path) -> Result<()> {
                 root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
             }
             let small = downsample(&big, (w, h), k);
-            crate::atomic::write_atomic(path, |out| {
+            crate::io::atomic::write_atomic(path, |out| {
                 use image::ImageEncoder;
                 image::codecs::png::PngEncoder::new(out)
                     .write_image(&small, size.0, size.1, image::ColorType::Rgb8)

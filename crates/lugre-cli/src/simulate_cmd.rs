@@ -16,9 +16,9 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use crate::args::{ModelArgs, PeriodicInputArgs};
-use crate::atomic::write_atomic;
 use crate::fmt::{quoted, sig};
-use crate::json_out::JsonOut;
+use crate::io::atomic::write_atomic;
+use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
@@ -310,7 +310,7 @@ fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
         return Ok((Drive::Sine(sine), text));
     }
     if let Some(path) = &args.input.input {
-        let series = crate::csv_in::read_series(path)?;
+        let series = crate::io::csv::read_series(path)?;
         let Some(t) = series.t else {
             bail!(
                 "{}: simulate needs the samples' times: a header 't,u' and two columns (a single column 'u' has no time)",
