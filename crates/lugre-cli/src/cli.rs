@@ -4,7 +4,7 @@
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use crate::{cycles_cmd, fit_cmd, loop_cmd, paper, simulate_cmd};
+use crate::commands::{cycles, fit, loops, paper, simulate};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -24,17 +24,17 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// The hysteresis loop y° and every minor loop of a periodic input, with energies.
-    Loop(loop_cmd::LoopArgs),
+    Loop(loops::LoopArgs),
     /// Minor loops in a measured history: reversals, ASTM E1049 rainflow cycles, where each
     /// loop closes, and (with a model) the energy over each loop.
-    Cycles(cycles_cmd::CyclesArgs),
+    Cycles(cycles::CyclesArgs),
     /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
     /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
-    Simulate(simulate_cmd::SimulateArgs),
+    Simulate(simulate::SimulateArgs),
     /// Parameter identification from a measured record: sigma0 and g(0) from a slow loop
     /// (--fit slow, columns u,F), or the full LuGre set from rate-dependent data (--fit full,
     /// columns t,u,F), with standard errors and 95 % confidence intervals.
-    Fit(fit_cmd::FitArgs),
+    Fit(fit::FitArgs),
     /// Redraw the paper's Figures 3-17 (SVG, PNG, the CSV of every curve) and write
     /// index.html: every figure with its caption, each example's loop numbers, and the errata
     /// of Theorem A.
@@ -45,10 +45,10 @@ impl Cli {
     /// Runs the command given.
     pub fn run(self) -> Result<()> {
         match self.command {
-            Command::Loop(args) => loop_cmd::run(&args),
-            Command::Cycles(args) => cycles_cmd::run(&args),
-            Command::Simulate(args) => simulate_cmd::run(&args),
-            Command::Fit(args) => fit_cmd::run(&args),
+            Command::Loop(args) => loops::run(&args),
+            Command::Cycles(args) => cycles::run(&args),
+            Command::Simulate(args) => simulate::run(&args),
+            Command::Fit(args) => fit::run(&args),
             Command::Paper(args) => paper::run(&args),
         }
     }

@@ -5,13 +5,9 @@
 
 pub mod args;
 pub mod cli;
-pub mod cycles_cmd;
-pub mod fit_cmd;
+mod commands;
 pub mod fmt;
+mod hysteresis;
 pub mod io;
-pub mod loop_cmd;
 pub mod numbers;
-pub mod paper;
-mod paper_html;
 pub mod plot;
-pub mod simulate_cmd;

@@ -19,9 +19,11 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::fmt::{exact, sig};
+use crate::hysteresis::arc_points;
 use crate::io::atomic::write_atomic;
-use crate::loop_cmd::arc_points;
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, BLUE, GREEN, GREY, ORANGE, RED};
+
+mod html;
 
 #[derive(Args, Debug)]
 pub struct PaperArgs {
@@ -106,7 +108,7 @@ impl LoopExample {
             PaperInput::TurningPoints(u) => (TurningPoints::new(u)?, None),
             PaperInput::Bimodal(b) => (b.turning_points(), Some(*b)),
         };
-        // The same calls as `lugre loop` (loop_cmd::run), so the numbers are the same.
+        // The same calls as `lugre loop` (`commands::loops`), so the numbers are the same.
         let hl = HysteresisLoop::new(model.rate_independent(), &tp)?;
         hl.check_finite()?;
         let loops = hl.loops();
@@ -799,7 +801,7 @@ fn write_all(paper: &Paper, dir: &Path) -> Result<Vec<String>> {
             written.push(name);
         }
     }
-    let html = crate::paper_html::page(paper);
+    let html = html::page(paper);
     write_atomic(&dir.join("index.html"), |w| {
         Ok(w.write_all(html.as_bytes())?)
     })?;

@@ -9,6 +9,7 @@ use std::path::PathBuf;
 
 use crate::args::{ModelArgs, ModelChoice, PeriodicInput, PeriodicInputArgs};
 use crate::fmt::{exact, sig};
+use crate::hysteresis::arc_points;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
@@ -365,9 +366,6 @@ fn more(out: &mut impl Write, n: usize) -> Result<()> {
 /// drawn major loop all the same.
 const MAX_DRAWN_MINOR_LOOPS: usize = 10;
 
-/// Points per drawn arc (plus the turning points inside it, when there are not too many).
-const POINTS_PER_ARC: usize = 600;
-
 /// The loop in the (u, y°) plane as the paper's Fig. 15 draws it.
 fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
     let major = &loops[0];
@@ -432,30 +430,4 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
         ));
     }
     fig
-}
-
-/// `(u, y°)` along the arc `[rho0, rho1]`: evenly spaced points and the turning points inside.
-pub(crate) fn arc_points(hl: &HysteresisLoop, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
-    let mut rhos: Vec<f64> = (0..=POINTS_PER_ARC)
-        .map(|i| rho0 + (rho1 - rho0) * (i as f64 / POINTS_PER_ARC as f64))
-        .collect();
-    let p = hl.period();
-    let turning = hl.turning_rho();
-    if turning.len() <= 20 * POINTS_PER_ARC {
-        for shift in [0.0, p, 2.0 * p] {
-            rhos.extend(
-                turning
-                    .iter()
-                    .map(|r| r + shift)
-                    .filter(|r| *r > rho0 && *r < rho1),
-            );
-        }
-    }
-    rhos.sort_by(f64::total_cmp);
-    rhos.iter()
-        .map(|&r| {
-            let pt = hl.point_at(r);
-            (pt.u, pt.y)
-        })
-        .collect()
 }

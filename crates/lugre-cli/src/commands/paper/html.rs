@@ -11,8 +11,8 @@
 use lugre::LoopKind;
 use std::fmt::Write;
 
+use super::{LoopExample, Paper, PaperFigure};
 use crate::fmt::{exact, sig};
-use crate::paper::{LoopExample, Paper, PaperFigure};
 
 /// A section of the page: an anchor, a heading, an introduction, its figures and the loop
 /// examples it tabulates.
