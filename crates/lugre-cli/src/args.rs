@@ -245,3 +245,28 @@ impl PeriodicInput {
         }
     }
 }
+
+/// `--json` and `--csv FILE`, the outputs besides the table. What the CSV holds is each
+/// command's to say: its arguments set `--csv`'s help (and `--json`'s, when it prints more than
+/// "one JSON document") with `#[command(mut_arg(...))]`.
+#[derive(Args, Debug, Clone)]
+pub struct OutputArgs {
+    /// Print one JSON document instead of the table.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
+    pub csv: Option<PathBuf>,
+}
+
+/// `--plot FILE`, a figure (SVG or PNG, by the file's extension). Each command says what it
+/// draws, with `#[command(mut_arg("plot", ...))]`.
+#[derive(Args, Debug, Clone)]
+pub struct PlotArgs {
+    #[arg(
+        id = "plot",
+        long = "plot",
+        value_name = "FILE.svg|FILE.png",
+        help_heading = "Output"
+    )]
+    pub path: Option<PathBuf>,
+}

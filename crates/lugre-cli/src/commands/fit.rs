@@ -22,7 +22,7 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::args::{ModelArgs, ModelKind};
+use crate::args::{ModelArgs, ModelKind, OutputArgs, PlotArgs};
 use crate::fmt::{excerpt, quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::csv::{read_table, Columns};
@@ -44,7 +44,20 @@ pub enum FitChoice {
     Full,
 }
 
+/// The help of `--csv` for this command.
+const CSV_HELP: &str =
+    "Write the data with the fitted curve and the residuals ([t,]u,F,fit,residual) to \
+    this CSV file";
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str =
+    "Draw the data and the fit in the (u, F) plane, and beside them the residuals, to \
+    an SVG or PNG file";
+
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
 pub struct FitArgs {
     #[command(flatten)]
     pub model: ModelArgs,
@@ -88,17 +101,10 @@ pub struct FitArgs {
         help_heading = "Fit"
     )]
     pub starts: Option<usize>,
-    /// Print one JSON document instead of the table.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// Write the data with the fitted curve and the residuals ([t,]u,F,fit,residual) to this CSV
-    /// file.
-    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
-    /// Draw the data and the fit in the (u, F) plane, and beside them the residuals, to an SVG
-    /// or PNG file.
-    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
-    pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
 }
 
 /// The measured record.
@@ -125,7 +131,7 @@ pub fn run(args: &FitArgs) -> Result<()> {
             bail!("--starts applies to the full fit (add --fit full)");
         }
     }
-    if let Some(plot) = &args.plot {
+    if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
     let record = read_record(path)?;
@@ -171,10 +177,10 @@ pub fn run(args: &FitArgs) -> Result<()> {
     };
 
     let residuals = report.residuals(&record.f);
-    if let Some(csv) = &args.csv {
+    if let Some(csv) = &args.output.csv {
         write_atomic(csv, |w| write_csv(w, &record, &report, &residuals))?;
     }
-    if let Some(plot) = &args.plot {
+    if let Some(plot) = &args.plot.path {
         figure(&record, &report, &residuals).save(plot)?;
     }
     if !report.converged {
@@ -185,12 +191,12 @@ pub fn run(args: &FitArgs) -> Result<()> {
         );
     }
     let stdout = std::io::stdout();
-    if args.json {
+    if args.output.json {
         write_json(JsonOut::new(stdout.lock()), &report, path)?;
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
         print_table(&mut out, &report, path)?;
-        if let Some(csv) = &args.csv {
+        if let Some(csv) = &args.output.csv {
             writeln!(
                 out,
                 "\nWrote the data, fit and residuals ({}u,F,fit,residual) to {}",
@@ -198,7 +204,7 @@ pub fn run(args: &FitArgs) -> Result<()> {
                 csv.display()
             )?;
         }
-        if let Some(plot) = &args.plot {
+        if let Some(plot) = &args.plot.path {
             writeln!(
                 out,
                 "Drew the data, the fit and the residuals to {}",

@@ -5,9 +5,8 @@ use anyhow::{bail, Result};
 use clap::Args;
 use lugre::{HysteresisLoop, Loop, LoopKind, LoopPoint, TheoremA};
 use std::io::Write;
-use std::path::PathBuf;
 
-use crate::args::{ModelArgs, ModelChoice, PeriodicInput, PeriodicInputArgs};
+use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{exact, sig};
 use crate::hysteresis::arc_points;
 use crate::io::atomic::write_atomic;
@@ -24,7 +23,20 @@ const DEFAULT_CSV_SAMPLES: usize = 1001;
 /// The most points `--samples` may ask for (24 bytes each in memory, more as text).
 const MAX_SAMPLES: usize = 10_000_000;
 
+/// The help of `--csv` for this command.
+const CSV_HELP: &str =
+    "Write the sampled curve (columns rho,u,y) to this CSV file (1001 samples unless \
+    --samples or --at is given)";
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str =
+    "Draw the loop in the (u, y°) plane, the minor loops solid with their start \
+    (circle) and end (square) marked, to an SVG or PNG file";
+
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
 pub struct LoopArgs {
     #[command(flatten)]
     pub model: ModelArgs,
@@ -47,17 +59,10 @@ pub struct LoopArgs {
         help_heading = "Output"
     )]
     pub samples: Option<usize>,
-    /// Print one JSON document instead of the table.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// Write the sampled curve (columns rho,u,y) to this CSV file (1001 samples unless
-    /// --samples or --at is given).
-    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
-    /// Draw the loop in the (u, y°) plane, the minor loops solid with their start (circle) and
-    /// end (square) marked, to an SVG or PNG file.
-    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
-    pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
 }
 
 pub fn run(args: &LoopArgs) -> Result<()> {
@@ -92,7 +97,7 @@ pub fn run(args: &LoopArgs) -> Result<()> {
         }
     }
 
-    if let Some(path) = &args.csv {
+    if let Some(path) = &args.output.csv {
         let csv_points = match &points {
             Some(p) => p.clone(),
             None => hl.sample(DEFAULT_CSV_SAMPLES),
@@ -106,12 +111,12 @@ pub fn run(args: &LoopArgs) -> Result<()> {
         })?;
     }
 
-    if let Some(path) = &args.plot {
+    if let Some(path) = &args.plot.path {
         loop_figure(&hl, &loops).save(path)?;
     }
 
     let stdout = std::io::stdout();
-    if args.json {
+    if args.output.json {
         let report = Report {
             model: &model,
             hl: &hl,
@@ -130,14 +135,14 @@ pub fn run(args: &LoopArgs) -> Result<()> {
             theorem_a.as_ref(),
             points.as_deref(),
         )?;
-        if let Some(path) = &args.csv {
+        if let Some(path) = &args.output.csv {
             writeln!(
                 out,
                 "\nWrote the sampled curve (rho,u,y) to {}",
                 path.display()
             )?;
         }
-        if let Some(path) = &args.plot {
+        if let Some(path) = &args.plot.path {
             writeln!(out, "Drew the loop to {}", path.display())?;
         }
         out.flush()?;

@@ -12,10 +12,9 @@ use clap::Args;
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{Gamma, PiecewiseLinear, SimulateError, Simulator, Sine, Tolerance, Trajectory};
 use std::io::{IsTerminal, Write};
-use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use crate::args::{ModelArgs, PeriodicInputArgs};
+use crate::args::{ModelArgs, OutputArgs, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -35,7 +34,22 @@ const MAX_ROWS: usize = 50_000_000;
 /// A run shorter than this shows no progress bar.
 const PROGRESS_AFTER: Duration = Duration::from_secs(1);
 
+/// The help of `--json` for this command.
+const JSON_HELP: &str =
+    r#"Print {"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]} instead of the table"#;
+/// The help of `--csv` for this command.
+const CSV_HELP: &str = "Write the columns t,u,z,dz,y to this CSV file";
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str =
+    "Draw the response to an SVG or PNG file: y against t (left panel) and y against \
+    u (right panel), side by side";
+
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("json", |a| a.help(JSON_HELP)),
+    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
 pub struct SimulateArgs {
     #[command(flatten)]
     pub model: ModelArgs,
@@ -108,16 +122,10 @@ pub struct SimulateArgs {
         help_heading = "Output"
     )]
     pub samples_per_period: Option<usize>,
-    /// Print {"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]} instead of the table.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// Write the columns t,u,z,dz,y to this CSV file.
-    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
-    /// Draw the response to an SVG or PNG file: y against t (left panel) and y against u
-    /// (right panel), side by side.
-    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
-    pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
 }
 
 /// What drives the simulation.
@@ -148,7 +156,7 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     let tol =
         Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
     let (drive, input_text) = build_drive(args)?;
-    if let Some(path) = &args.plot {
+    if let Some(path) = &args.plot.path {
         // Before a possibly long run, not after it.
         crate::plot::check_path(path)?;
     }
@@ -221,10 +229,10 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
         _ => anyhow!("{e}"),
     })?;
 
-    if let Some(path) = &args.csv {
+    if let Some(path) = &args.output.csv {
         write_atomic(path, |w| write_csv(w, &out))?;
     }
-    if let Some(path) = &args.plot {
+    if let Some(path) = &args.plot.path {
         let what = if gamma.is_infinite() {
             "y⋆ᵤ (γ = ∞)".to_string()
         } else {
@@ -233,7 +241,7 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
         response_figure(&out, &what).save(path)?;
     }
     let stdout = std::io::stdout();
-    if args.json {
+    if args.output.json {
         let mut j = JsonOut::new(stdout.lock());
         j.raw("{\"t\":")?;
         j.array(&out.t)?;
@@ -260,7 +268,7 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
             tol_value: tol.value(),
         };
         print_table(&mut w, &summary, &out)?;
-        if let Some(path) = &args.csv {
+        if let Some(path) = &args.output.csv {
             writeln!(
                 w,
                 "\nWrote t,u,z,dz,y ({} rows) to {}",
@@ -268,7 +276,7 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
                 path.display()
             )?;
         }
-        if let Some(path) = &args.plot {
+        if let Some(path) = &args.plot.path {
             writeln!(w, "Drew y against t and y against u to {}", path.display())?;
         }
         w.flush()?;

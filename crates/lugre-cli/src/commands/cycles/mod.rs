@@ -22,7 +22,7 @@ use lugre::{
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use crate::args::{ModelArgs, ModelChoice, ModelKind};
+use crate::args::{ModelArgs, ModelChoice, ModelKind, OutputArgs};
 use crate::fmt::{exact, num, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::csv::{Columns, SampleReader};
@@ -45,7 +45,13 @@ const SPOOL_IN_MEMORY: usize = 8 << 20;
 const DEFAULT_BINS: usize = 10;
 const MAX_BINS: usize = 1000;
 
+/// The help of `--csv` for this command.
+const CSV_HELP: &str = "Write the cycles to this CSV file, one row per cycle";
+
 #[derive(Args, Debug)]
+#[command(
+    mut_arg("csv", |a| a.help(CSV_HELP))
+)]
 pub struct CyclesArgs {
     /// The history from a CSV file: a column 'u' (header 'u' or 't,u', or no header), or the
     /// column --column names; a column 't' is checked as strictly increasing times.
@@ -91,12 +97,8 @@ pub struct CyclesArgs {
     pub x0: Option<f64>,
     #[command(flatten)]
     pub model: ModelArgs,
-    /// Print one JSON document instead of the table.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// Write the cycles to this CSV file, one row per cycle.
-    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
+    #[command(flatten)]
+    pub output: OutputArgs,
     /// Bin the counts by range, and by range and mean (the rainflow matrix), over the
     /// history's span.
     #[arg(long, help_heading = "Output")]
@@ -259,10 +261,10 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
     // First pass (JSON, histogram): validate, find the span, collect the reversals. With a
     // model it follows the energies too, so that an overflow there is reported before the
     // second pass streams anything to stdout.
-    let first = if args.json || args.histogram {
+    let first = if args.output.json || args.histogram {
         let mut spool = Spool::new(SPOOL_IN_MEMORY);
         let mut pass = FirstPass {
-            json: args.json.then(|| JsonOut::new(&mut spool)),
+            json: args.output.json.then(|| JsonOut::new(&mut spool)),
             reversals: 0,
             min: f64::INFINITY,
             max: f64::NEG_INFINITY,
@@ -292,7 +294,7 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
         _ => None,
     };
     let stdout = io::stdout();
-    let mut json = if args.json {
+    let mut json = if args.output.json {
         let mut j = JsonOut::new(stdout.lock());
         j.raw("{\"reversals\":[")?;
         if let Some((_, _, spool)) = &first {
@@ -340,7 +342,7 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
             max_range: pass.max_range,
         })
     };
-    let report = match &args.csv {
+    let report = match &args.output.csv {
         Some(path) => {
             let mut report = None;
             write_atomic(path, |w| {
@@ -360,7 +362,7 @@ pub fn run(args: &CyclesArgs) -> Result<()> {
         None => {
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
             report.print_table(&mut out, &source, gate, energy.as_ref())?;
-            if let Some(path) = &args.csv {
+            if let Some(path) = &args.output.csv {
                 writeln!(
                     out,
                     "\nWrote the cycles (one row per cycle) to {}",
