@@ -1,6 +1,15 @@
-//! What `lugre loop` and `lugre paper` both draw from a hysteresis loop.
+//! What `lugre loop` and `lugre paper` both take from a hysteresis loop: the points of an arc,
+//! to draw it, and the name of a loop's kind.
 
-use lugre::HysteresisLoop;
+use lugre::{HysteresisLoop, LoopKind};
+
+/// `major` or `minor`, as the tables and the JSON documents name a loop's kind.
+pub(crate) fn kind_name(kind: LoopKind) -> &'static str {
+    match kind {
+        LoopKind::Major => "major",
+        LoopKind::Minor => "minor",
+    }
+}
 
 /// Points per drawn arc (plus the turning points inside it, when there are not too many).
 const POINTS_PER_ARC: usize = 600;

@@ -3,12 +3,12 @@
 
 use anyhow::{bail, Result};
 use clap::Args;
-use lugre::{HysteresisLoop, Loop, LoopKind, LoopPoint, TheoremA};
+use lugre::{HysteresisLoop, Loop, LoopPoint, TheoremA};
 use std::io::Write;
 
 use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{exact, sig};
-use crate::hysteresis::arc_points;
+use crate::hysteresis::{arc_points, kind_name};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
@@ -65,7 +65,31 @@ pub struct LoopArgs {
     pub plot: PlotArgs,
 }
 
+/// The request, from the flags (all checked before anything is computed).
+struct Request {
+    model: ModelChoice,
+    input: PeriodicInput,
+    /// The rhos of `--at`.
+    at: Option<Vec<f64>>,
+    samples: Option<usize>,
+}
+
+/// What `lugre loop` computes, every number finite: the loop, its loops, Theorem A for a
+/// bimodal input, and the points asked for (`--at`, `--samples`).
+struct Outcome {
+    hl: HysteresisLoop,
+    loops: Vec<Loop>,
+    theorem_a: Option<TheoremA>,
+    points: Option<Vec<LoopPoint>>,
+}
+
 pub fn run(args: &LoopArgs) -> Result<()> {
+    let request = parse(args)?;
+    let outcome = compute(&request)?;
+    report(args, &request.model, &outcome)
+}
+
+fn parse(args: &LoopArgs) -> Result<Request> {
     let model = args.model.build()?;
     let input = args.input.build()?;
     let at = match &args.at {
@@ -77,16 +101,27 @@ pub fn run(args: &LoopArgs) -> Result<()> {
             bail!("--samples must be at most {MAX_SAMPLES}, got {n}");
         }
     }
+    Ok(Request {
+        model,
+        input,
+        at,
+        samples: args.samples,
+    })
+}
 
-    let hl = HysteresisLoop::new(model.rate_independent(), &input.turning_points())?;
+fn compute(request: &Request) -> Result<Outcome> {
+    let hl = HysteresisLoop::new(
+        request.model.rate_independent(),
+        &request.input.turning_points(),
+    )?;
     hl.check_finite()?;
     let loops = hl.loops();
     check_loops_finite(&loops)?;
-    let theorem_a = match &input {
+    let theorem_a = match &request.input {
         PeriodicInput::Bimodal(b) => Some(TheoremA::new(b, &hl)),
         _ => None,
     };
-    let points: Option<Vec<LoopPoint>> = match (&at, args.samples) {
+    let points: Option<Vec<LoopPoint>> = match (&request.at, request.samples) {
         (Some(rhos), _) => Some(rhos.iter().map(|&r| hl.point_at(r)).collect()),
         (None, Some(n)) => Some(hl.sample(n)),
         (None, None) => None,
@@ -96,45 +131,29 @@ pub fn run(args: &LoopArgs) -> Result<()> {
             bail!("a requested point overflows f64 (rho too large?)");
         }
     }
+    Ok(Outcome {
+        hl,
+        loops,
+        theorem_a,
+        points,
+    })
+}
 
+/// Writes the CSV and the figure asked for, then prints the JSON document or the table.
+fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()> {
     if let Some(path) = &args.output.csv {
-        let csv_points = match &points {
-            Some(p) => p.clone(),
-            None => hl.sample(DEFAULT_CSV_SAMPLES),
-        };
-        write_atomic(path, |w| {
-            writeln!(w, "rho,u,y")?;
-            for p in &csv_points {
-                writeln!(w, "{},{},{}", exact(p.rho), exact(p.u), exact(p.y))?;
-            }
-            Ok(())
-        })?;
+        write_atomic(path, |w| outcome.write_csv(w))?;
     }
-
     if let Some(path) = &args.plot.path {
-        loop_figure(&hl, &loops).save(path)?;
+        loop_figure(&outcome.hl, &outcome.loops).save(path)?;
     }
 
     let stdout = std::io::stdout();
     if args.output.json {
-        let report = Report {
-            model: &model,
-            hl: &hl,
-            theorem_a: theorem_a.as_ref(),
-            loops: &loops,
-            points: points.as_deref(),
-        };
-        report.write(JsonOut::new(stdout.lock()))?;
+        outcome.write_json(model, JsonOut::new(stdout.lock()))?;
     } else {
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
-        print_table(
-            &mut out,
-            &model.describe(),
-            &hl,
-            &loops,
-            theorem_a.as_ref(),
-            points.as_deref(),
-        )?;
+        outcome.print_table(&mut out, &model.describe())?;
         if let Some(path) = &args.output.csv {
             writeln!(
                 out,
@@ -148,75 +167,6 @@ pub fn run(args: &LoopArgs) -> Result<()> {
         out.flush()?;
     }
     Ok(())
-}
-
-/// Everything `lugre loop --json` prints (the documented schema; keys may be added, never
-/// renamed).
-struct Report<'a> {
-    model: &'a ModelChoice,
-    hl: &'a HysteresisLoop,
-    theorem_a: Option<&'a TheoremA>,
-    loops: &'a [Loop],
-    points: Option<&'a [LoopPoint]>,
-}
-
-impl Report<'_> {
-    fn write<W: Write>(&self, mut j: JsonOut<W>) -> std::io::Result<()> {
-        let hl = self.hl;
-        j.raw("{\"model\":")?;
-        j.raw(&self.model.to_json().to_string())?;
-        j.field(",\"g0\":", hl.model().g0())?;
-        j.field(",\"a\":", hl.model().a())?;
-        j.field(",\"period\":", hl.period())?;
-        j.raw(",\"turning_points\":")?;
-        j.points(&hl.turning_loop_points())?;
-        if let Some(ta) = self.theorem_a {
-            j.raw(",\"theorem_a\":{\"rho\":")?;
-            j.array(&ta.rho)?;
-            j.raw(",\"y\":")?;
-            j.array(&ta.y)?;
-            j.raw(",\"minor_loop\":")?;
-            j.array(&ta.minor_loop)?;
-            j.raw("}")?;
-        }
-        j.raw(",\"loops\":[")?;
-        for (i, l) in self.loops.iter().enumerate() {
-            j.raw(if i == 0 {
-                "{\"kind\":\""
-            } else {
-                ",{\"kind\":\""
-            })?;
-            j.raw(match l.kind {
-                LoopKind::Major => "major\",\"start\":",
-                LoopKind::Minor => "minor\",\"start\":",
-            })?;
-            j.point(&l.start)?;
-            j.raw(",\"reversal\":")?;
-            j.point(&l.reversal)?;
-            j.raw(",\"end\":")?;
-            j.point(&l.end)?;
-            j.field(",\"work\":", l.work)?;
-            j.field(",\"stored_energy_change\":", l.stored_energy_change)?;
-            j.field(",\"dissipation\":", l.dissipation)?;
-            j.field(",\"closure_gap\":", l.closure_gap)?;
-            j.raw(",\"parent\":")?;
-            match l.parent {
-                Some(p) => j.int(p)?,
-                None => j.raw("null")?,
-            }
-            j.raw(",\"depth\":")?;
-            j.int(l.depth)?;
-            j.raw("}")?;
-        }
-        j.raw("]")?;
-        j.field(",\"work_per_period\":", hl.work_per_period())?;
-        if let Some(points) = self.points {
-            j.raw(",\"points\":")?;
-            j.points(points)?;
-        }
-        j.raw("}\n")?;
-        j.finish()
-    }
 }
 
 fn check_loops_finite(loops: &[Loop]) -> Result<()> {
@@ -235,59 +185,147 @@ fn check_loops_finite(loops: &[Loop]) -> Result<()> {
     Ok(())
 }
 
-fn print_table(
-    out: &mut impl Write,
-    model: &str,
-    hl: &HysteresisLoop,
-    loops: &[Loop],
-    theorem_a: Option<&TheoremA>,
-    points: Option<&[LoopPoint]>,
-) -> Result<()> {
-    let m = hl.model();
-    writeln!(out, "{model}")?;
-    writeln!(
-        out,
-        "g(0) = {}   a = sigma0/g(0) = {}   period P = {} (total variation of u per period)",
-        sig(m.g0(), 10),
-        sig(m.a(), 10),
-        sig(hl.period(), 10)
-    )?;
+impl Outcome {
+    /// `rho,u,y` at the points asked for, else at [`DEFAULT_CSV_SAMPLES`] points.
+    fn write_csv(&self, w: &mut dyn Write) -> Result<()> {
+        let sampled;
+        let points = match &self.points {
+            Some(p) => p,
+            None => {
+                sampled = self.hl.sample(DEFAULT_CSV_SAMPLES);
+                &sampled
+            }
+        };
+        writeln!(w, "rho,u,y")?;
+        for p in points {
+            writeln!(w, "{},{},{}", exact(p.rho), exact(p.u), exact(p.y))?;
+        }
+        Ok(())
+    }
 
-    writeln!(out, "\nHysteresis loop y° at the turning points")?;
-    writeln!(out, "{:>6} {:>16} {:>16} {:>18}", "k", "rho", "u", "y°")?;
-    let tp = hl.turning_loop_points();
-    for (k, p) in tp.iter().enumerate().take(MAX_TABLE_ROWS) {
+    /// Everything `lugre loop --json` prints (the documented schema; keys may be added, never
+    /// renamed).
+    fn write_json<W: Write>(&self, model: &ModelChoice, mut j: JsonOut<W>) -> std::io::Result<()> {
+        let hl = &self.hl;
+        j.raw("{\"model\":")?;
+        j.raw(&model.to_json().to_string())?;
+        j.field(",\"g0\":", hl.model().g0())?;
+        j.field(",\"a\":", hl.model().a())?;
+        j.field(",\"period\":", hl.period())?;
+        j.raw(",\"turning_points\":")?;
+        j.points(&hl.turning_loop_points())?;
+        if let Some(ta) = &self.theorem_a {
+            j.raw(",\"theorem_a\":{\"rho\":")?;
+            j.array(&ta.rho)?;
+            j.raw(",\"y\":")?;
+            j.array(&ta.y)?;
+            j.raw(",\"minor_loop\":")?;
+            j.array(&ta.minor_loop)?;
+            j.raw("}")?;
+        }
+        j.raw(",\"loops\":[")?;
+        for (i, l) in self.loops.iter().enumerate() {
+            j.raw(if i == 0 { "{" } else { ",{" })?;
+            write_loop_json(&mut j, l)?;
+            j.raw("}")?;
+        }
+        j.raw("]")?;
+        j.field(",\"work_per_period\":", hl.work_per_period())?;
+        if let Some(points) = &self.points {
+            j.raw(",\"points\":")?;
+            j.points(points)?;
+        }
+        j.raw("}\n")?;
+        j.finish()
+    }
+
+    fn print_table(&self, out: &mut impl Write, model: &str) -> Result<()> {
+        let hl = &self.hl;
+        let m = hl.model();
+        writeln!(out, "{model}")?;
         writeln!(
             out,
-            "{:>6} {:>16} {:>16} {:>18}",
-            k,
-            sig(p.rho, 10),
-            sig(p.u, 10),
-            sig(p.y, 12)
+            "g(0) = {}   a = sigma0/g(0) = {}   period P = {} (total variation of u per period)",
+            sig(m.g0(), 10),
+            sig(m.a(), 10),
+            sig(hl.period(), 10)
         )?;
-    }
-    more(out, tp.len())?;
 
-    if let Some(ta) = theorem_a {
-        writeln!(out, "\nTheorem A (bimodal input)")?;
-        writeln!(out, "{:>6} {:>16} {:>18}", "i", "rho_i", "y°(rho_i)")?;
-        for i in 0..6 {
+        writeln!(out, "\nHysteresis loop y° at the turning points")?;
+        writeln!(out, "{:>6} {:>16} {:>16} {:>18}", "k", "rho", "u", "y°")?;
+        let tp = hl.turning_loop_points();
+        for (k, p) in tp.iter().enumerate().take(MAX_TABLE_ROWS) {
             writeln!(
                 out,
-                "{:>6} {:>16} {:>18}",
-                i,
-                sig(ta.rho[i], 10),
-                sig(ta.y[i], 12)
+                "{:>6} {:>16} {:>16} {:>18}",
+                k,
+                sig(p.rho, 10),
+                sig(p.u, 10),
+                sig(p.y, 12)
             )?;
         }
+        more(out, tp.len())?;
+        if let Some(ta) = &self.theorem_a {
+            print_theorem_a(out, ta)?;
+        }
+        print_loops(out, &self.loops)?;
         writeln!(
             out,
-            "minor loop: rho in [rho_1, rho_5] = [{}, {}]",
-            sig(ta.minor_loop[0], 10),
-            sig(ta.minor_loop[1], 10)
+            "\nWork per period (energy dissipated per cycle): {}",
+            sig(hl.work_per_period(), 12)
+        )?;
+        if let Some(points) = &self.points {
+            print_points(out, points)?;
+        }
+        Ok(())
+    }
+}
+
+/// The fields of one loop in the JSON document, from `"kind"` to `"depth"`.
+fn write_loop_json<W: Write>(j: &mut JsonOut<W>, l: &Loop) -> std::io::Result<()> {
+    j.raw("\"kind\":\"")?;
+    j.raw(kind_name(l.kind))?;
+    j.raw("\",\"start\":")?;
+    j.point(&l.start)?;
+    j.raw(",\"reversal\":")?;
+    j.point(&l.reversal)?;
+    j.raw(",\"end\":")?;
+    j.point(&l.end)?;
+    j.field(",\"work\":", l.work)?;
+    j.field(",\"stored_energy_change\":", l.stored_energy_change)?;
+    j.field(",\"dissipation\":", l.dissipation)?;
+    j.field(",\"closure_gap\":", l.closure_gap)?;
+    j.raw(",\"parent\":")?;
+    match l.parent {
+        Some(p) => j.int(p)?,
+        None => j.raw("null")?,
+    }
+    j.raw(",\"depth\":")?;
+    j.int(l.depth)
+}
+
+fn print_theorem_a(out: &mut impl Write, ta: &TheoremA) -> Result<()> {
+    writeln!(out, "\nTheorem A (bimodal input)")?;
+    writeln!(out, "{:>6} {:>16} {:>18}", "i", "rho_i", "y°(rho_i)")?;
+    for i in 0..6 {
+        writeln!(
+            out,
+            "{:>6} {:>16} {:>18}",
+            i,
+            sig(ta.rho[i], 10),
+            sig(ta.y[i], 12)
         )?;
     }
+    writeln!(
+        out,
+        "minor loop: rho in [rho_1, rho_5] = [{}, {}]",
+        sig(ta.minor_loop[0], 10),
+        sig(ta.minor_loop[1], 10)
+    )?;
+    Ok(())
+}
 
+fn print_loops(out: &mut impl Write, loops: &[Loop]) -> Result<()> {
     writeln!(
         out,
         "\nLoops (arc from rho_A through the reversal rho_B to the first return rho_C; energies over the arc)"
@@ -314,10 +352,7 @@ fn print_table(
             out,
             "{:>5} {:>5} {:>6} {:>6} {:>11} {:>11} {:>11} {:>11} {:>11} {:>13} {:>13} {:>13} {:>13}",
             i,
-            match l.kind {
-                LoopKind::Major => "major",
-                LoopKind::Minor => "minor",
-            },
+            kind_name(l.kind),
             l.depth,
             l.parent.map_or("-".to_string(), |p| p.to_string()),
             sig(l.start.rho, 8),
@@ -331,28 +366,22 @@ fn print_table(
             sig(l.closure_gap, 8),
         )?;
     }
-    more(out, loops.len())?;
-    writeln!(
-        out,
-        "\nWork per period (energy dissipated per cycle): {}",
-        sig(hl.work_per_period(), 12)
-    )?;
+    more(out, loops.len())
+}
 
-    if let Some(points) = points {
-        writeln!(out, "\nPoints")?;
-        writeln!(out, "{:>16} {:>16} {:>18}", "rho", "u", "y°")?;
-        for p in points.iter().take(MAX_TABLE_ROWS) {
-            writeln!(
-                out,
-                "{:>16} {:>16} {:>18}",
-                sig(p.rho, 10),
-                sig(p.u, 10),
-                sig(p.y, 12)
-            )?;
-        }
-        more(out, points.len())?;
+fn print_points(out: &mut impl Write, points: &[LoopPoint]) -> Result<()> {
+    writeln!(out, "\nPoints")?;
+    writeln!(out, "{:>16} {:>16} {:>18}", "rho", "u", "y°")?;
+    for p in points.iter().take(MAX_TABLE_ROWS) {
+        writeln!(
+            out,
+            "{:>16} {:>16} {:>18}",
+            sig(p.rho, 10),
+            sig(p.u, 10),
+            sig(p.y, 12)
+        )?;
     }
-    Ok(())
+    more(out, points.len())
 }
 
 fn more(out: &mut impl Write, n: usize) -> Result<()> {

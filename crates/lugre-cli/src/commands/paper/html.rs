@@ -8,11 +8,11 @@
 //! `lugre loop ARGS --json` for the table's `data-args`, so that they can be checked
 //! mechanically (the integration tests do).
 
-use lugre::LoopKind;
 use std::fmt::Write;
 
 use super::{LoopExample, Paper, PaperFigure};
 use crate::fmt::{exact, sig};
+use crate::hysteresis::kind_name;
 
 /// A section of the page: an anchor, a heading, an introduction, its figures and the loop
 /// examples it tabulates.
@@ -205,10 +205,7 @@ fn table(h: &mut String, ex: &LoopExample) {
          <th>stored ΔV</th><th>dissipated D = W − ΔV</th><th>gap y_C − y_A</th></tr>\n",
     );
     for (i, l) in ex.loops.iter().enumerate() {
-        let kind = match l.kind {
-            LoopKind::Major => "major",
-            LoopKind::Minor => "minor",
-        };
+        let kind = kind_name(l.kind);
         let _ = write!(h, "<tr><td>{i}</td><td>{kind}</td>");
         num(h, &format!("loops.{i}.start.rho"), l.start.rho);
         num(h, &format!("loops.{i}.reversal.rho"), l.reversal.rho);

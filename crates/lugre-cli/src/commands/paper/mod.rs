@@ -19,7 +19,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use crate::fmt::{exact, sig};
-use crate::hysteresis::arc_points;
+use crate::hysteresis::{arc_points, kind_name};
 use crate::io::atomic::write_atomic;
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, BLUE, GREEN, GREY, ORANGE, RED};
 
@@ -875,10 +875,7 @@ fn print_summary(
             writeln!(
                 out,
                 "    {} loop, rho in [{}, {}]: work W = {}, stored dV = {}, dissipated D = {}",
-                match l.kind {
-                    lugre::LoopKind::Major => "major",
-                    lugre::LoopKind::Minor => "minor",
-                },
+                kind_name(l.kind),
                 sig(l.start.rho, 6),
                 sig(l.end.rho, 6),
                 sig(l.work, 10),
