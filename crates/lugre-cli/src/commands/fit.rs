@@ -15,26 +15,26 @@
 
 use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
+use indicatif::ProgressBar;
 use lugre::fit::{
     fit_full, fit_slow, Family, FitError, FitKind, FitProgress, FitReport, FitSpec, FullOptions,
 };
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::args::{ModelArgs, ModelKind, OutputArgs, PlotArgs};
 use crate::fmt::{excerpt, quoted, sig};
 use crate::io::atomic::write_atomic;
+use crate::io::csv::NumberRows;
 use crate::io::csv::{read_table, Columns};
 use crate::io::json::JsonOut;
+use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
 
 /// Vertical strokes in the residual figure (at most).
 const RESIDUAL_BINS: usize = 600;
-
-/// A fit shorter than this shows no progress bar.
-const PROGRESS_AFTER: Duration = Duration::from_secs(1);
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FitChoice {
@@ -114,7 +114,35 @@ struct Record {
     f: Vec<f64>,
 }
 
+impl Record {
+    /// The times, which a full fit needs (`path` names the file in the error).
+    fn times_for_full_fit(&self, path: &Path) -> Result<&[f64]> {
+        match &self.t {
+            Some(t) => Ok(t),
+            None => bail!(
+                "{}: a full fit needs the samples' times: columns t,u,F (this file has u,F)",
+                path.display()
+            ),
+        }
+    }
+}
+
+/// The request: the flags and the record, each checked in turn before the fit runs.
+struct Request<'a> {
+    path: &'a Path,
+    spec: FitSpec,
+    record: Record,
+    /// The full fit's options; `None` for the slow fit.
+    full: Option<FullOptions>,
+}
+
 pub fn run(args: &FitArgs) -> Result<()> {
+    let request = parse(args)?;
+    let report = compute(&request)?;
+    report_fit(args, &request, &report)
+}
+
+fn parse(args: &FitArgs) -> Result<Request<'_>> {
     let Some(path) = &args.input else {
         bail!("no data: give --input FILE.csv (columns u,F or t,u,F)");
     };
@@ -135,6 +163,32 @@ pub fn run(args: &FitArgs) -> Result<()> {
         crate::plot::check_path(plot)?;
     }
     let record = read_record(path)?;
+    let full = match kind {
+        FitKind::Slow => None,
+        FitKind::Full => {
+            // Checked here, in its turn; `compute` takes the times again.
+            record.times_for_full_fit(path)?;
+            let x0 = match &args.x0 {
+                Some(text) => parse_number("--x0", 1, text)?,
+                None => 0.0,
+            };
+            Some(FullOptions {
+                x0,
+                starts: args.starts.unwrap_or(FullOptions::default().starts),
+            })
+        }
+    };
+    Ok(Request {
+        path,
+        spec,
+        record,
+        full,
+    })
+}
+
+/// The fit, with a progress indicator for a long full fit.
+fn compute(r: &Request) -> Result<FitReport> {
+    let record = &r.record;
     let with_file = |e: FitError| -> anyhow::Error {
         match e {
             FitError::TooFewSamples { .. }
@@ -142,46 +196,36 @@ pub fn run(args: &FitArgs) -> Result<()> {
             | FitError::ZeroForce
             | FitError::LengthMismatch { .. }
             | FitError::NotFinite { .. }
-            | FitError::TimesNotIncreasing { .. } => anyhow!("{}: {e}", path.display()),
+            | FitError::TimesNotIncreasing { .. } => anyhow!("{}: {e}", r.path.display()),
             other => explain(other),
         }
     };
-    let report = match kind {
-        FitKind::Slow => {
-            // Times, if any, were checked when read; the slow loop depends on the turning
-            // points alone.
-            fit_slow(&spec, &record.u, &record.f).map_err(with_file)?
-        }
-        FitKind::Full => {
-            let Some(t) = &record.t else {
-                bail!(
-                    "{}: a full fit needs the samples' times: columns t,u,F (this file has u,F)",
-                    path.display()
-                );
-            };
-            let x0 = match &args.x0 {
-                Some(text) => parse_number("--x0", 1, text)?,
-                None => 0.0,
-            };
-            let options = FullOptions {
-                x0,
-                starts: args.starts.unwrap_or(FullOptions::default().starts),
-            };
-            let mut progress = Progress::new();
-            let result = fit_full(&spec, t, &record.u, &record.f, &options, &mut |p| {
+    Ok(match &r.full {
+        // Times, if any, were checked when read; the slow loop depends on the turning points
+        // alone.
+        None => fit_slow(&r.spec, &record.u, &record.f).map_err(with_file)?,
+        Some(options) => {
+            let t = record.times_for_full_fit(r.path)?;
+            let mut progress = FitProgressBar::new();
+            let result = fit_full(&r.spec, t, &record.u, &record.f, options, &mut |p| {
                 progress.update(p)
             });
             progress.finish();
             result.map_err(with_file)?
         }
-    };
+    })
+}
 
+/// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
+/// the JSON document or the table.
+fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
+    let record = &r.record;
     let residuals = report.residuals(&record.f);
     if let Some(csv) = &args.output.csv {
-        write_atomic(csv, |w| write_csv(w, &record, &report, &residuals))?;
+        write_atomic(csv, |w| write_csv(w, record, report, &residuals))?;
     }
     if let Some(plot) = &args.plot.path {
-        figure(&record, &report, &residuals).save(plot)?;
+        figure(record, report, &residuals).save(plot)?;
     }
     if !report.converged {
         let _ = writeln!(
@@ -192,10 +236,10 @@ pub fn run(args: &FitArgs) -> Result<()> {
     }
     let stdout = std::io::stdout();
     if args.output.json {
-        write_json(JsonOut::new(stdout.lock()), &report, path)?;
+        write_json(JsonOut::new(stdout.lock()), report, r.path)?;
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
-        print_table(&mut out, &report, path)?;
+        print_table(&mut out, report, r.path)?;
         if let Some(csv) = &args.output.csv {
             writeln!(
                 out,
@@ -335,24 +379,17 @@ fn read_record(path: &Path) -> Result<Record> {
 }
 
 fn write_csv(w: &mut dyn Write, record: &Record, report: &FitReport, res: &[f64]) -> Result<()> {
-    let mut buf = zmij::Buffer::new();
-    let mut num = |w: &mut dyn Write, x: f64, end: u8| -> std::io::Result<()> {
-        let s = buf.format_finite(x);
-        w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
-        w.write_all(&[end])
-    };
+    let mut rows = NumberRows::new();
     match &record.t {
         Some(_) => writeln!(w, "t,u,F,fit,residual")?,
         None => writeln!(w, "u,F,fit,residual")?,
     }
     for i in 0..record.u.len() {
-        if let Some(t) = &record.t {
-            num(w, t[i], b',')?;
+        let (u, f, fit, r) = (record.u[i], record.f[i], report.fitted[i], res[i]);
+        match &record.t {
+            Some(t) => rows.write(w, &[t[i], u, f, fit, r])?,
+            None => rows.write(w, &[u, f, fit, r])?,
         }
-        num(w, record.u[i], b',')?;
-        num(w, record.f[i], b',')?;
-        num(w, report.fitted[i], b',')?;
-        num(w, res[i], b'\n')?;
     }
     Ok(())
 }
@@ -388,6 +425,11 @@ fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
                 .label("data"),
         )
         .curve(Curve::new(fit, LineStyle::Dashed, RED).label("fit"));
+    Panels::side_by_side(fit_fig, residual_figure(record, res))
+}
+
+/// The residuals against t (or the sample).
+fn residual_figure(record: &Record, res: &[f64]) -> Figure {
     let (x_label, xs): (&str, Vec<f64>) = match &record.t {
         Some(t) => ("time t", t.clone()),
         None => ("sample", (0..res.len()).map(|i| i as f64).collect()),
@@ -420,17 +462,11 @@ fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
         res_fig =
             res_fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
     }
-    res_fig = res_fig.curve(Curve::new(
+    res_fig.curve(Curve::new(
         vec![(xs[0], 0.0), (xs[n - 1], 0.0)],
         LineStyle::Dashed,
         RED,
-    ));
-    Panels {
-        title: None,
-        panels: vec![fit_fig, res_fig],
-        cols: 2,
-        size: (1600, 650),
-    }
+    ))
 }
 
 /// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit).
@@ -502,20 +538,25 @@ fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Result<()> {
         r.iterations, r.evaluations, r.termination
     )?;
     if r.estimates.len() > 1 {
+        print_correlation(w, r)?;
+    }
+    Ok(())
+}
+
+fn print_correlation(w: &mut impl Write, r: &FitReport) -> Result<()> {
+    writeln!(
+        w,
+        "correlation of the estimates (condition number of the scaled J^T J: {}):",
+        sig(r.condition_number, 3)
+    )?;
+    for (i, row) in r.correlation.iter().enumerate() {
+        let cells: Vec<String> = row.iter().map(|c| format!("{c:>7.3}")).collect();
         writeln!(
             w,
-            "correlation of the estimates (condition number of the scaled J^T J: {}):",
-            sig(r.condition_number, 3)
+            "  {:<12} {}",
+            label(r, r.estimates[i].name),
+            cells.join(" ")
         )?;
-        for (i, row) in r.correlation.iter().enumerate() {
-            let cells: Vec<String> = row.iter().map(|c| format!("{c:>7.3}")).collect();
-            writeln!(
-                w,
-                "  {:<12} {}",
-                label(r, r.estimates[i].name),
-                cells.join(" ")
-            )?;
-        }
     }
     Ok(())
 }
@@ -523,32 +564,24 @@ fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Result<()> {
 /// `{"parameters": {name: {"value", "stderr", "ci95": [lo, hi], "at_bound"}}, "rms",
 /// "iterations", ...}` (keys may be added, never renamed).
 fn write_json<W: Write>(mut j: JsonOut<W>, r: &FitReport, path: &Path) -> std::io::Result<()> {
-    let q = |s: &str| serde_json::Value::from(s).to_string();
-    let num = |j: &mut JsonOut<W>, x: f64| {
-        if x.is_finite() {
-            j.num(x)
-        } else {
-            j.raw("null")
-        }
-    };
     j.raw("{\"parameters\":{")?;
     for (k, e) in r.estimates.iter().enumerate() {
         if k > 0 {
             j.raw(",")?;
         }
-        j.raw(&q(e.name))?;
+        j.raw(&quote(e.name))?;
         j.raw(":{\"value\":")?;
-        num(&mut j, e.value)?;
+        num_or_null(&mut j, e.value)?;
         j.raw(",\"stderr\":")?;
-        num(&mut j, e.stderr)?;
+        num_or_null(&mut j, e.stderr)?;
         j.raw(",\"ci95\":[")?;
-        num(&mut j, e.ci95[0])?;
+        num_or_null(&mut j, e.ci95[0])?;
         j.raw(",")?;
-        num(&mut j, e.ci95[1])?;
+        num_or_null(&mut j, e.ci95[1])?;
         j.raw(&format!("],\"at_bound\":{}}}", e.at_bound))?;
     }
     j.raw("},\"rms\":")?;
-    num(&mut j, r.rms)?;
+    num_or_null(&mut j, r.rms)?;
     j.raw(",\"iterations\":")?;
     j.int(r.iterations)?;
     j.raw(",\"evaluations\":")?;
@@ -558,12 +591,12 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &FitReport, path: &Path) -> std::i
     j.raw(&format!(
         ",\"converged\":{},\"termination\":{}",
         r.converged,
-        q(&r.termination)
+        quote(&r.termination)
     ))?;
     j.raw(&format!(
         ",\"model\":{},\"fit\":{}",
-        q(&r.family.label().to_ascii_lowercase()),
-        q(match r.kind {
+        quote(&r.family.label().to_ascii_lowercase()),
+        quote(match r.kind {
             FitKind::Slow => "slow",
             FitKind::Full => "full",
         })
@@ -573,20 +606,48 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &FitReport, path: &Path) -> std::i
         if k > 0 {
             j.raw(",")?;
         }
-        j.raw(&q(n))?;
+        j.raw(&quote(n))?;
         j.raw(":")?;
-        num(&mut j, *v)?;
+        num_or_null(&mut j, *v)?;
     }
     j.raw("},\"samples\":")?;
     j.int(r.samples)?;
     j.raw(",\"dof\":")?;
     j.int(r.dof)?;
     j.raw(",\"t_quantile\":")?;
-    num(&mut j, r.t_quantile)?;
+    num_or_null(&mut j, r.t_quantile)?;
     j.raw(",\"condition_number\":")?;
-    num(&mut j, r.condition_number)?;
-    j.raw(",\"correlation\":[")?;
-    for (k, row) in r.correlation.iter().enumerate() {
+    num_or_null(&mut j, r.condition_number)?;
+    j.raw(",\"correlation\":")?;
+    write_matrix(&mut j, &r.correlation)?;
+    if let Some(n) = r.turning_points {
+        j.raw(",\"turning_points\":")?;
+        j.int(n)?;
+    }
+    j.raw(",\"input\":")?;
+    j.raw(&quote(&path.display().to_string()))?;
+    j.raw("}\n")?;
+    j.finish()
+}
+
+/// `s` as a JSON string.
+fn quote(s: &str) -> String {
+    serde_json::Value::from(s).to_string()
+}
+
+/// `x`, or `null` when it is not finite (JSON has no NaN or infinity).
+fn num_or_null<W: Write>(j: &mut JsonOut<W>, x: f64) -> std::io::Result<()> {
+    if x.is_finite() {
+        j.num(x)
+    } else {
+        j.raw("null")
+    }
+}
+
+/// `[[a, b, ...], ...]`, non-finite entries as `null`.
+fn write_matrix<W: Write>(j: &mut JsonOut<W>, rows: &[Vec<f64>]) -> std::io::Result<()> {
+    j.raw("[")?;
+    for (k, row) in rows.iter().enumerate() {
         if k > 0 {
             j.raw(",")?;
         }
@@ -595,42 +656,29 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &FitReport, path: &Path) -> std::i
             if c > 0 {
                 j.raw(",")?;
             }
-            num(&mut j, x)?;
+            num_or_null(j, x)?;
         }
         j.raw("]")?;
     }
-    j.raw("]")?;
-    if let Some(n) = r.turning_points {
-        j.raw(",\"turning_points\":")?;
-        j.int(n)?;
-    }
-    j.raw(",\"input\":")?;
-    j.raw(&q(&path.display().to_string()))?;
-    j.raw("}\n")?;
-    j.finish()
+    j.raw("]")
 }
 
-/// A progress bar on stderr for the full fit, only on a terminal and only after a second.
-struct Progress {
-    start: Instant,
-    terminal: bool,
-    bar: Option<indicatif::ProgressBar>,
+/// A spinner on stderr for the full fit (see [`Progress`]), redrawn at most 20 times a second.
+struct FitProgressBar {
+    progress: Progress,
     last: Instant,
 }
 
-impl Progress {
+impl FitProgressBar {
     fn new() -> Self {
-        let now = Instant::now();
         Self {
-            start: now,
-            terminal: std::io::stderr().is_terminal(),
-            bar: None,
-            last: now,
+            progress: Progress::new(),
+            last: Instant::now(),
         }
     }
 
     fn update(&mut self, p: &FitProgress) {
-        if !self.terminal {
+        if !self.progress.is_terminal() {
             return;
         }
         let now = Instant::now();
@@ -639,17 +687,14 @@ impl Progress {
             return;
         }
         self.last = now;
-        if self.bar.is_none() && self.start.elapsed() >= PROGRESS_AFTER {
-            // Elapsed from the start of the fit, not from when the bar appears.
-            let bar = indicatif::ProgressBar::new_spinner().with_elapsed(self.start.elapsed());
-            if let Ok(style) =
-                indicatif::ProgressStyle::with_template("{spinner} fitting: {msg} ({elapsed})")
-            {
-                bar.set_style(style);
-            }
-            self.bar = Some(bar);
-        }
-        if let Some(bar) = &self.bar {
+        // Elapsed from the start of the fit, not from when the spinner appears.
+        let bar = self.progress.bar(|elapsed| {
+            styled(
+                ProgressBar::new_spinner().with_elapsed(elapsed),
+                "{spinner} fitting: {msg} ({elapsed})",
+            )
+        });
+        if let Some(bar) = bar {
             bar.set_message(format!(
                 "start {}/{}, {} evaluations, residual RMS {}",
                 p.start,
@@ -662,8 +707,6 @@ impl Progress {
     }
 
     fn finish(&mut self) {
-        if let Some(bar) = self.bar.take() {
-            bar.finish_and_clear();
-        }
+        self.progress.finish();
     }
 }

@@ -9,15 +9,17 @@
 
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
+use indicatif::ProgressBar;
 use lugre::simulate::{merge_times, uniform_times};
-use lugre::{Gamma, PiecewiseLinear, SimulateError, Simulator, Sine, Tolerance, Trajectory};
-use std::io::{IsTerminal, Write};
-use std::time::{Duration, Instant};
+use lugre::{Gamma, LuGre, PiecewiseLinear, SimulateError, Simulator, Sine, Tolerance, Trajectory};
+use std::io::Write;
 
-use crate::args::{ModelArgs, OutputArgs, PeriodicInputArgs, PlotArgs};
+use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
+use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
+use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
@@ -30,9 +32,6 @@ const TABLE_HEAD: usize = 20;
 
 /// At most this many output rows (40 bytes each in memory, more as text).
 const MAX_ROWS: usize = 50_000_000;
-
-/// A run shorter than this shows no progress bar.
-const PROGRESS_AFTER: Duration = Duration::from_secs(1);
 
 /// The help of `--json` for this command.
 const JSON_HELP: &str =
@@ -147,7 +146,28 @@ impl Drive {
     }
 }
 
+/// The request, from the flags, each checked in turn before anything is computed.
+struct Request {
+    choice: ModelChoice,
+    model: LuGre,
+    gamma: Gamma,
+    periods: u32,
+    x0: f64,
+    tol: Tolerance,
+    drive: Drive,
+    /// The input, described for the table.
+    input: String,
+    /// The output times (`None`: the knots of a piecewise-linear input, its samples).
+    times: Option<Vec<f64>>,
+}
+
 pub fn run(args: &SimulateArgs) -> Result<()> {
+    let request = parse(args)?;
+    let out = compute(&request)?;
+    report(args, &request, &out)
+}
+
+fn parse(args: &SimulateArgs) -> Result<Request> {
     let choice = args.model.build()?;
     let model = choice.lugre();
     let gamma = parse_gamma(&args.gamma)?;
@@ -155,24 +175,44 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
     let x0 = parse_scalar("--x0", &args.x0)?;
     let tol =
         Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
-    let (drive, input_text) = build_drive(args)?;
+    let (drive, input) = build_drive(args)?;
     if let Some(path) = &args.plot.path {
         // Before a possibly long run, not after it.
         crate::plot::check_path(path)?;
     }
-    let sim = Simulator::new(&model, gamma, x0).map_err(|e| anyhow!("--x0: {e}"))?;
-
-    let (start, period) = drive.period();
+    // Checked here, in its turn; `compute` builds the simulator again.
+    Simulator::new(&model, gamma, x0).map_err(|e| anyhow!("--x0: {e}"))?;
     if args.times.is_some() && args.samples_per_period.is_some() {
         bail!("give --times or --samples-per-period, not both");
     }
-    let times: Option<Vec<f64>> = match (&args.times, args.samples_per_period) {
+    let times = output_times(args, &drive, periods)?;
+    if let (Drive::TurningPoints(pl) | Drive::Samples(pl), None) = (&drive, &times) {
+        check_rows((pl.len() - 1).saturating_mul(periods as usize) + 1)?;
+    }
+    Ok(Request {
+        choice,
+        model,
+        gamma,
+        periods,
+        x0,
+        tol,
+        drive,
+        input,
+        times,
+    })
+}
+
+/// The output times: `--times`, `--samples-per-period`, or the default for the input (`None`
+/// for sampled data: its own samples).
+fn output_times(args: &SimulateArgs, drive: &Drive, periods: u32) -> Result<Option<Vec<f64>>> {
+    let (start, period) = drive.period();
+    Ok(match (&args.times, args.samples_per_period) {
         (Some(text), _) => Some(parse_list("--times", text)?),
         (None, Some(n)) => {
             check_rows((periods as usize).saturating_mul(n).saturating_add(1))?;
             Some(uniform_times(start, period, periods, n))
         }
-        (None, None) => match &drive {
+        (None, None) => match drive {
             Drive::Samples(_) => None,
             Drive::TurningPoints(pl) => {
                 check_rows(
@@ -193,28 +233,29 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
                 ))
             }
         },
-    };
+    })
+}
 
-    if let (Drive::TurningPoints(pl) | Drive::Samples(pl), None) = (&drive, &times) {
-        check_rows((pl.len() - 1).saturating_mul(periods as usize) + 1)?;
-    }
+/// The response, with a progress bar for a long run.
+fn compute(r: &Request) -> Result<Trajectory> {
+    let sim = Simulator::new(&r.model, r.gamma, r.x0).map_err(|e| anyhow!("--x0: {e}"))?;
     let mut progress = Progress::new();
     let mut out = Trajectory::default();
     let result = {
-        let mut report = |fraction: f64| progress.update(fraction);
-        match (&drive, &times) {
+        let mut report = |fraction: f64| show_progress(&mut progress, fraction);
+        match (&r.drive, &r.times) {
             (Drive::TurningPoints(pl) | Drive::Samples(pl), None) => {
-                sim.at_knots(pl, periods, &mut out, &mut report)
+                sim.at_knots(pl, r.periods, &mut out, &mut report)
             }
             (Drive::TurningPoints(pl) | Drive::Samples(pl), Some(times)) => {
-                sim.at_times(pl, periods, times, &mut out, &mut report)
+                sim.at_times(pl, r.periods, times, &mut out, &mut report)
             }
-            // A sine always has output times (the default is set above).
+            // A sine always has output times (the default is set by `output_times`).
             (Drive::Sine(sine), times) => sim.sine(
                 sine,
-                periods,
+                r.periods,
                 times.as_deref().unwrap_or_default(),
-                tol,
+                r.tol,
                 &mut out,
                 &mut report,
             ),
@@ -228,46 +269,40 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
         SimulateError::NotClosed { .. } => anyhow!("--periods: {e}"),
         _ => anyhow!("{e}"),
     })?;
+    Ok(out)
+}
 
+fn show_progress(progress: &mut Progress, fraction: f64) {
+    let bar = progress.bar(|_| {
+        styled(
+            ProgressBar::new(1000),
+            "simulating {bar:40} {percent:>3}% ({elapsed} elapsed, about {eta} left)",
+        )
+    });
+    if let Some(bar) = bar {
+        bar.set_position((fraction.clamp(0.0, 1.0) * 1000.0) as u64);
+    }
+}
+
+/// Writes the CSV and the figure asked for, then prints the JSON document or the table.
+fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
     if let Some(path) = &args.output.csv {
-        write_atomic(path, |w| write_csv(w, &out))?;
+        write_atomic(path, |w| write_csv(w, out))?;
     }
     if let Some(path) = &args.plot.path {
-        let what = if gamma.is_infinite() {
+        let what = if r.gamma.is_infinite() {
             "y⋆ᵤ (γ = ∞)".to_string()
         } else {
-            format!("γ = {}", sig(gamma.value(), 6))
+            format!("γ = {}", sig(r.gamma.value(), 6))
         };
-        response_figure(&out, &what).save(path)?;
+        response_figure(out, &what).save(path)?;
     }
     let stdout = std::io::stdout();
     if args.output.json {
-        let mut j = JsonOut::new(stdout.lock());
-        j.raw("{\"t\":")?;
-        j.array(&out.t)?;
-        j.raw(",\"u\":")?;
-        j.array(&out.u)?;
-        j.raw(",\"z\":")?;
-        j.array(&out.z)?;
-        j.raw(",\"dz\":")?;
-        j.array(&out.dz)?;
-        j.raw(",\"y\":")?;
-        j.array(&out.y)?;
-        j.raw("}\n")?;
-        j.finish()?;
+        write_json(JsonOut::new(stdout.lock()), out)?;
     } else {
         let mut w = std::io::BufWriter::new(stdout.lock());
-        let summary = Summary {
-            model: &choice.describe(),
-            input: &input_text,
-            gamma,
-            periods,
-            period,
-            x0,
-            tol: matches!(drive, Drive::Sine(_)) && !gamma.is_infinite(),
-            tol_value: tol.value(),
-        };
-        print_table(&mut w, &summary, &out)?;
+        print_table(&mut w, r, out)?;
         if let Some(path) = &args.output.csv {
             writeln!(
                 w,
@@ -282,6 +317,22 @@ pub fn run(args: &SimulateArgs) -> Result<()> {
         w.flush()?;
     }
     Ok(())
+}
+
+/// `{"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]}`.
+fn write_json<W: Write>(mut j: JsonOut<W>, out: &Trajectory) -> std::io::Result<()> {
+    j.raw("{\"t\":")?;
+    j.array(&out.t)?;
+    j.raw(",\"u\":")?;
+    j.array(&out.u)?;
+    j.raw(",\"z\":")?;
+    j.array(&out.z)?;
+    j.raw(",\"dz\":")?;
+    j.array(&out.dz)?;
+    j.raw(",\"y\":")?;
+    j.array(&out.y)?;
+    j.raw("}\n")?;
+    j.finish()
 }
 
 /// The input flag given (exactly one), with a description for the summary.
@@ -369,12 +420,7 @@ fn response_figure(out: &Trajectory, what: &str) -> Panels {
     let input = Figure::new("input u", "output y")
         .title(format!("y against u, {what}"))
         .curve(Curve::new(pick(&out.u), LineStyle::Solid, BLUE));
-    Panels {
-        title: None,
-        panels: vec![time, input],
-        cols: 2,
-        size: (1600, 650),
-    }
+    Panels::side_by_side(time, input)
 }
 
 /// Indices of the samples to draw: all of them when there are at most `4 buckets`, else per
@@ -451,55 +497,16 @@ fn check_rows(rows: usize) -> Result<()> {
 }
 
 fn write_csv(w: &mut dyn Write, out: &Trajectory) -> Result<()> {
-    let mut buf = zmij::Buffer::new();
-    let mut num = |w: &mut dyn Write, x: f64, end: u8| -> std::io::Result<()> {
-        let s = buf.format_finite(x);
-        w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
-        w.write_all(&[end])
-    };
+    let mut rows = NumberRows::new();
     writeln!(w, "t,u,z,dz,y")?;
     for i in 0..out.len() {
-        num(w, out.t[i], b',')?;
-        num(w, out.u[i], b',')?;
-        num(w, out.z[i], b',')?;
-        num(w, out.dz[i], b',')?;
-        num(w, out.y[i], b'\n')?;
+        rows.write(w, &[out.t[i], out.u[i], out.z[i], out.dz[i], out.y[i]])?;
     }
     Ok(())
 }
 
-struct Summary<'a> {
-    model: &'a str,
-    input: &'a str,
-    gamma: Gamma,
-    periods: u32,
-    period: f64,
-    x0: f64,
-    tol: bool,
-    tol_value: f64,
-}
-
-fn print_table(w: &mut impl Write, s: &Summary, out: &Trajectory) -> Result<()> {
-    writeln!(w, "{}", s.model)?;
-    writeln!(w, "Input: {}", s.input)?;
-    let what = if s.gamma.is_infinite() {
-        "gamma = inf: the rate-independent limit y*_u (eq. 6)".to_string()
-    } else {
-        format!("gamma = {} (eq. 5)", sig(s.gamma.value(), 10))
-    };
-    writeln!(
-        w,
-        "{what}; period T = {}; {} period{}; x0 = {}{}",
-        sig(s.period, 10),
-        s.periods,
-        if s.periods == 1 { "" } else { "s" },
-        sig(s.x0, 10),
-        if s.tol {
-            format!("; adaptive integration to tol = {}", sig(s.tol_value, 3))
-        } else {
-            String::new()
-        }
-    )?;
+fn print_table(w: &mut impl Write, r: &Request, out: &Trajectory) -> Result<()> {
+    print_summary(w, r)?;
     let n = out.len();
     if n == 0 {
         return Ok(());
@@ -549,46 +556,30 @@ fn print_table(w: &mut impl Write, s: &Summary, out: &Trajectory) -> Result<()> 
     Ok(())
 }
 
-/// A progress bar on stderr, shown only for runs longer than [`PROGRESS_AFTER`] and only when
-/// stderr is a terminal.
-struct Progress {
-    start: Instant,
-    terminal: bool,
-    bar: Option<indicatif::ProgressBar>,
-}
-
-impl Progress {
-    fn new() -> Self {
-        Self {
-            start: Instant::now(),
-            terminal: std::io::stderr().is_terminal(),
-            bar: None,
+/// The model, the input, gamma, the periods, x0 and (for a sine) the tolerance.
+fn print_summary(w: &mut impl Write, r: &Request) -> Result<()> {
+    writeln!(w, "{}", r.choice.describe())?;
+    writeln!(w, "Input: {}", r.input)?;
+    let what = if r.gamma.is_infinite() {
+        "gamma = inf: the rate-independent limit y*_u (eq. 6)".to_string()
+    } else {
+        format!("gamma = {} (eq. 5)", sig(r.gamma.value(), 10))
+    };
+    let adaptive = matches!(r.drive, Drive::Sine(_)) && !r.gamma.is_infinite();
+    writeln!(
+        w,
+        "{what}; period T = {}; {} period{}; x0 = {}{}",
+        sig(r.drive.period().1, 10),
+        r.periods,
+        if r.periods == 1 { "" } else { "s" },
+        sig(r.x0, 10),
+        if adaptive {
+            format!("; adaptive integration to tol = {}", sig(r.tol.value(), 3))
+        } else {
+            String::new()
         }
-    }
-
-    fn update(&mut self, fraction: f64) {
-        if !self.terminal {
-            return;
-        }
-        if self.bar.is_none() && self.start.elapsed() >= PROGRESS_AFTER {
-            let bar = indicatif::ProgressBar::new(1000);
-            if let Ok(style) = indicatif::ProgressStyle::with_template(
-                "simulating {bar:40} {percent:>3}% ({elapsed} elapsed, about {eta} left)",
-            ) {
-                bar.set_style(style);
-            }
-            self.bar = Some(bar);
-        }
-        if let Some(bar) = &self.bar {
-            bar.set_position((fraction.clamp(0.0, 1.0) * 1000.0) as u64);
-        }
-    }
-
-    fn finish(&mut self) {
-        if let Some(bar) = self.bar.take() {
-            bar.finish_and_clear();
-        }
-    }
+    )?;
+    Ok(())
 }
 
 #[cfg(test)]

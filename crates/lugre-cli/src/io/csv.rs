@@ -8,12 +8,14 @@
 //! memory); [`read_series`] and [`read_table`] collect it. All share the per-row parsing and
 //! validation. With a column name (`lugre cycles --column NAME`), any header naming that column
 //! is accepted, a column `t` is read as times, and other columns are ignored.
+//!
+//! [`NumberRows`] writes the rows of the CSV files the commands produce.
 
 use anyhow::{bail, Context, Result};
-use std::io::Read;
+use std::io::{Read, Write};
+use std::path::Path;
 
 use crate::fmt::{excerpt, num, quoted};
-use std::path::Path;
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
 #[derive(Debug, Clone)]
@@ -452,6 +454,31 @@ impl<R: Read> Read for SkipBom<R> {
             return Ok(n);
         }
         self.inner.read(buf)
+    }
+}
+
+/// Writes rows of finite numbers, each in its shortest round-trip form (as
+/// [`crate::fmt::exact`] writes it) without an allocation per number: a CSV file may have 10^8
+/// of them.
+pub struct NumberRows {
+    buf: zmij::Buffer,
+}
+
+impl NumberRows {
+    pub fn new() -> Self {
+        Self {
+            buf: zmij::Buffer::new(),
+        }
+    }
+
+    /// One row: the numbers separated by commas, then a line break.
+    pub fn write(&mut self, w: &mut dyn Write, row: &[f64]) -> std::io::Result<()> {
+        for (i, &x) in row.iter().enumerate() {
+            let s = self.buf.format_finite(x);
+            w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
+            w.write_all(if i + 1 == row.len() { b"\n" } else { b"," })?;
+        }
+        Ok(())
     }
 }
 

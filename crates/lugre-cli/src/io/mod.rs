@@ -1,6 +1,8 @@
-//! Files and streams: the CSV reader, the JSON writer, atomic files and the spool.
+//! Files and streams: CSV in and out, the JSON writer, atomic files, the spool, and progress on
+//! stderr.
 
 pub mod atomic;
 pub mod csv;
 pub mod json;
+pub mod progress;
 pub mod spool;

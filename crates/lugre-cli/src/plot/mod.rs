@@ -188,6 +188,16 @@ pub struct Panels {
 }
 
 impl Panels {
+    /// Two figures side by side, 1600 x 650 pixels in all.
+    pub fn side_by_side(left: Figure, right: Figure) -> Self {
+        Self {
+            title: None,
+            panels: vec![left, right],
+            cols: 2,
+            size: (1600, 650),
+        }
+    }
+
     /// Writes the panels as SVG or PNG, chosen by the file's extension.
     pub fn save(&self, path: &Path) -> Result<()> {
         save(self, self.size, path)
