@@ -16,7 +16,7 @@
 //! legend samples plotters lacks, and `output` writes SVG and PNG files.
 
 use anyhow::Result;
-use plotters::prelude::RGBColor;
+pub use plotters::prelude::RGBColor;
 use std::path::Path;
 
 mod dashes;
