@@ -9,52 +9,52 @@ use std::path::PathBuf;
 use crate::numbers::{parse_list, Real};
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ModelKind {
+pub(crate) enum ModelKind {
     Lugre,
     Dahl,
 }
 
 /// Model flags shared by every command. Defaults: the paper's Examples 2-3.
 #[derive(Args, Debug, Clone)]
-pub struct ModelArgs {
+pub(crate) struct ModelArgs {
     /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).
     #[arg(long, value_enum, default_value = "lugre", help_heading = "Model")]
-    pub model: ModelKind,
+    pub(crate) model: ModelKind,
     /// LuGre bristle stiffness sigma0 > 0 [N/m] (default 1).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma0: Option<f64>,
+    pub(crate) sigma0: Option<f64>,
     /// LuGre micro-damping sigma1 >= 0 [N s/m] (default 1).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma1: Option<f64>,
+    pub(crate) sigma1: Option<f64>,
     /// LuGre viscous coefficient sigma2 >= 0 [N s/m], f(v) = sigma2 v (default 0).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma2: Option<f64>,
+    pub(crate) sigma2: Option<f64>,
     /// Coulomb force Fc > 0 [N] (LuGre and Dahl; default 1).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub fc: Option<f64>,
+    pub(crate) fc: Option<f64>,
     /// LuGre stiction force Fs > 0 [N]; g(0) = Fs (default 2).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub fs: Option<f64>,
+    pub(crate) fs: Option<f64>,
     /// LuGre Stribeck velocity vs > 0 [m/s] (default 1).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub vs: Option<f64>,
+    pub(crate) vs: Option<f64>,
     /// LuGre Stribeck exponent beta > 0: g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta) (default 1).
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub beta: Option<f64>,
+    pub(crate) beta: Option<f64>,
     /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub rho: Option<f64>,
+    pub(crate) rho: Option<f64>,
 }
 
 /// A validated model as chosen on the command line.
 #[derive(Debug, Clone)]
-pub enum ModelChoice {
+pub(crate) enum ModelChoice {
     LuGre(LuGre),
     Dahl(Dahl),
 }
 
 impl ModelArgs {
-    pub fn build(&self) -> Result<ModelChoice> {
+    pub(crate) fn build(&self) -> Result<ModelChoice> {
         match self.model {
             ModelKind::Lugre => {
                 if self.rho.is_some() {
@@ -94,7 +94,7 @@ impl ModelArgs {
 }
 
 impl ModelChoice {
-    pub fn rate_independent(&self) -> RateIndependent {
+    pub(crate) fn rate_independent(&self) -> RateIndependent {
         match self {
             ModelChoice::LuGre(m) => m.rate_independent(),
             ModelChoice::Dahl(m) => m.rate_independent(),
@@ -102,7 +102,7 @@ impl ModelChoice {
     }
 
     /// The equivalent LuGre model (Dahl maps exactly).
-    pub fn lugre(&self) -> LuGre {
+    pub(crate) fn lugre(&self) -> LuGre {
         match self {
             ModelChoice::LuGre(m) => m.clone(),
             ModelChoice::Dahl(m) => m.to_lugre(),
@@ -110,7 +110,7 @@ impl ModelChoice {
     }
 
     /// The model as a JSON object: `kind` and its parameters.
-    pub fn to_json(&self) -> serde_json::Value {
+    pub(crate) fn to_json(&self) -> serde_json::Value {
         match self {
             ModelChoice::LuGre(m) => {
                 let p = m.params();
@@ -126,7 +126,7 @@ impl ModelChoice {
     }
 
     /// One line describing the model.
-    pub fn describe(&self) -> String {
+    pub(crate) fn describe(&self) -> String {
         use crate::fmt::sig;
         match self {
             ModelChoice::LuGre(m) => {
@@ -149,7 +149,7 @@ impl ModelChoice {
 
 /// Periodic input flags shared by `loop` and `simulate`: exactly one of them.
 #[derive(Args, Debug, Clone)]
-pub struct PeriodicInputArgs {
+pub(crate) struct PeriodicInputArgs {
     /// One period as its turning points, e.g. 0,1,0.2,1.5 (negative numbers work, with or
     /// without '=').
     #[arg(
@@ -158,7 +158,7 @@ pub struct PeriodicInputArgs {
         allow_hyphen_values = true,
         help_heading = "Input"
     )]
-    pub turning_points: Option<String>,
+    pub(crate) turning_points: Option<String>,
     /// The paper's bimodal input (Definition 1), visited umin1 -> umax1 -> umin2 -> umax2.
     #[arg(
         long,
@@ -166,16 +166,16 @@ pub struct PeriodicInputArgs {
         allow_hyphen_values = true,
         help_heading = "Input"
     )]
-    pub bimodal: Option<String>,
+    pub(crate) bimodal: Option<String>,
     /// One period of samples from a CSV file: header 't,u' or a single column 'u' (header
     /// optional; '#' comments allowed).
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
-    pub input: Option<PathBuf>,
+    pub(crate) input: Option<PathBuf>,
 }
 
 /// The periodic input as given.
 #[derive(Debug, Clone)]
-pub enum PeriodicInput {
+pub(crate) enum PeriodicInput {
     TurningPoints(lugre::TurningPoints),
     Bimodal(lugre::Bimodal),
     /// One period of samples, reduced to its turning points.
@@ -184,7 +184,7 @@ pub enum PeriodicInput {
 
 impl PeriodicInputArgs {
     /// The flags given, by name.
-    pub fn given(&self) -> Vec<&'static str> {
+    pub(crate) fn given(&self) -> Vec<&'static str> {
         let mut v = Vec::new();
         if self.turning_points.is_some() {
             v.push("--turning-points");
@@ -198,7 +198,7 @@ impl PeriodicInputArgs {
         v
     }
 
-    pub fn build(&self) -> Result<PeriodicInput> {
+    pub(crate) fn build(&self) -> Result<PeriodicInput> {
         let given = self.given();
         if given.len() > 1 {
             bail!("give one input, not {}", given.join(" and "));
@@ -237,7 +237,7 @@ impl PeriodicInputArgs {
 }
 
 impl PeriodicInput {
-    pub fn turning_points(&self) -> lugre::TurningPoints {
+    pub(crate) fn turning_points(&self) -> lugre::TurningPoints {
         match self {
             PeriodicInput::TurningPoints(tp) => tp.clone(),
             PeriodicInput::Bimodal(b) => b.turning_points(),
@@ -250,23 +250,23 @@ impl PeriodicInput {
 /// command's to say: its arguments set `--csv`'s help (and `--json`'s, when it prints more than
 /// "one JSON document") with `#[command(mut_arg(...))]`.
 #[derive(Args, Debug, Clone)]
-pub struct OutputArgs {
+pub(crate) struct OutputArgs {
     /// Print one JSON document instead of the table.
     #[arg(long, help_heading = "Output")]
-    pub json: bool,
+    pub(crate) json: bool,
     #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
+    pub(crate) csv: Option<PathBuf>,
 }
 
 /// `--plot FILE`, a figure (SVG or PNG, by the file's extension). Each command says what it
 /// draws, with `#[command(mut_arg("plot", ...))]`.
 #[derive(Args, Debug, Clone)]
-pub struct PlotArgs {
+pub(crate) struct PlotArgs {
     #[arg(
         id = "plot",
         long = "plot",
         value_name = "FILE.svg|FILE.png",
         help_heading = "Output"
     )]
-    pub path: Option<PathBuf>,
+    pub(crate) path: Option<PathBuf>,
 }

@@ -18,11 +18,11 @@ use crate::commands::{cycles, fit, loops, paper, simulate};
 )]
 pub struct Cli {
     #[command(subcommand)]
-    pub command: Command,
+    command: Command,
 }
 
 #[derive(Subcommand, Debug)]
-pub enum Command {
+enum Command {
     /// The hysteresis loop y° and every minor loop of a periodic input, with energies.
     Loop(loops::LoopArgs),
     /// Minor loops in a measured history: reversals, ASTM E1049 rainflow cycles, where each

@@ -3,7 +3,7 @@
 //! Exit status: 0 success, 2 bad input or usage, 1 internal error (a bug).
 
 use clap::Parser;
-use lugre_cli::cli;
+use lugre_cli::Cli;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -28,7 +28,7 @@ fn main() -> ExitCode {
         );
     }));
 
-    let cli = match cli::Cli::try_parse() {
+    let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
@@ -74,7 +74,7 @@ fn clap_error(e: clap::Error) -> ExitCode {
             let msg = head.join(" ");
             let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
             // clap quotes a bad argument whole, however long.
-            let msg = lugre_cli::fmt::shorten_quoted(msg);
+            let msg = lugre_cli::shorten_quoted(msg);
             let _ = writeln!(
                 std::io::stderr(),
                 "lugre: error: {msg} (see 'lugre --help')"

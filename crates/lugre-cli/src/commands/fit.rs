@@ -37,7 +37,7 @@ use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
 const RESIDUAL_BINS: usize = 600;
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FitChoice {
+pub(crate) enum FitChoice {
     /// The slow loop (rate-independent limit): sigma0 and g(0) = Fs (Dahl: rho, Fc).
     Slow,
     /// The exact simulation of rate-dependent data: sigma0, sigma1, sigma2, Fc, Fs, vs.
@@ -58,23 +58,23 @@ const PLOT_HELP: &str =
     mut_arg("csv", |a| a.help(CSV_HELP)),
     mut_arg("plot", |a| a.help(PLOT_HELP))
 )]
-pub struct FitArgs {
+pub(crate) struct FitArgs {
     #[command(flatten)]
-    pub model: ModelArgs,
+    pub(crate) model: ModelArgs,
     /// The measured record: columns 'u,F' or 't,u,F' (header optional, in this order without
     /// one; '#' comments allowed). Times, when given, must be strictly increasing.
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
-    pub input: Option<PathBuf>,
+    pub(crate) input: Option<PathBuf>,
     /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
-    pub fit: FitChoice,
+    pub(crate) fit: FitChoice,
     /// Parameters held at the model flags' values (e.g. --fix sigma2,fs).
     #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
-    pub fix: Option<String>,
+    pub(crate) fix: Option<String>,
     /// Parameters fitted besides the default ones (e.g. --free beta in a full fit).
     #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
-    pub free: Option<String>,
+    pub(crate) free: Option<String>,
     /// Bounds on fitted parameters, 0 <= LO < HI (HI may be 'inf'); default (0, inf).
     #[arg(
         long,
@@ -82,7 +82,7 @@ pub struct FitArgs {
         allow_hyphen_values = true,
         help_heading = "Fit"
     )]
-    pub bounds: Option<String>,
+    pub(crate) bounds: Option<String>,
     /// Full fit: the initial state x0 = x(0) of eq. 1 (not fitted; default 0).
     #[arg(
         long,
@@ -90,7 +90,7 @@ pub struct FitArgs {
         allow_hyphen_values = true,
         help_heading = "Fit"
     )]
-    pub x0: Option<String>,
+    pub(crate) x0: Option<String>,
     /// Full fit: the number of starts (the first from the data, then sigma0 and vs scaled by 4
     /// or 1/4; default 3).
     #[arg(
@@ -100,11 +100,11 @@ pub struct FitArgs {
         value_parser = Whole(1),
         help_heading = "Fit"
     )]
-    pub starts: Option<usize>,
+    pub(crate) starts: Option<usize>,
     #[command(flatten)]
-    pub output: OutputArgs,
+    pub(crate) output: OutputArgs,
     #[command(flatten)]
-    pub plot: PlotArgs,
+    pub(crate) plot: PlotArgs,
 }
 
 /// The measured record.
@@ -136,7 +136,7 @@ struct Request<'a> {
     full: Option<FullOptions>,
 }
 
-pub fn run(args: &FitArgs) -> Result<()> {
+pub(crate) fn run(args: &FitArgs) -> Result<()> {
     let request = parse(args)?;
     let report = compute(&request)?;
     report_fit(args, &request, &report)

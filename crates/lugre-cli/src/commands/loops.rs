@@ -37,11 +37,11 @@ const PLOT_HELP: &str =
     mut_arg("csv", |a| a.help(CSV_HELP)),
     mut_arg("plot", |a| a.help(PLOT_HELP))
 )]
-pub struct LoopArgs {
+pub(crate) struct LoopArgs {
     #[command(flatten)]
-    pub model: ModelArgs,
+    pub(crate) model: ModelArgs,
     #[command(flatten)]
-    pub input: PeriodicInputArgs,
+    pub(crate) input: PeriodicInputArgs,
     /// Evaluate the loop at these rho (any real numbers; the loop is periodic).
     #[arg(
         long,
@@ -49,7 +49,7 @@ pub struct LoopArgs {
         allow_hyphen_values = true,
         help_heading = "Output"
     )]
-    pub at: Option<String>,
+    pub(crate) at: Option<String>,
     /// N >= 2 evenly spaced points over one period, rho = 0 and rho = P included.
     #[arg(
         long,
@@ -58,11 +58,11 @@ pub struct LoopArgs {
         value_parser = Whole(2),
         help_heading = "Output"
     )]
-    pub samples: Option<usize>,
+    pub(crate) samples: Option<usize>,
     #[command(flatten)]
-    pub output: OutputArgs,
+    pub(crate) output: OutputArgs,
     #[command(flatten)]
-    pub plot: PlotArgs,
+    pub(crate) plot: PlotArgs,
 }
 
 /// The request, from the flags (all checked before anything is computed).
@@ -83,7 +83,7 @@ struct Outcome {
     points: Option<Vec<LoopPoint>>,
 }
 
-pub fn run(args: &LoopArgs) -> Result<()> {
+pub(crate) fn run(args: &LoopArgs) -> Result<()> {
     let request = parse(args)?;
     let outcome = compute(&request)?;
     report(args, &request.model, &outcome)

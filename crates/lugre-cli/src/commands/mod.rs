@@ -2,8 +2,8 @@
 //! (`io`), figures (`plot`) and formatting (`fmt`, `numbers`, `hysteresis`), never another
 //! command: what two commands share lives in one of those.
 
-pub mod cycles;
-pub mod fit;
-pub mod loops;
-pub mod paper;
-pub mod simulate;
+pub(crate) mod cycles;
+pub(crate) mod fit;
+pub(crate) mod loops;
+pub(crate) mod paper;
+pub(crate) mod simulate;

@@ -49,11 +49,11 @@ const PLOT_HELP: &str =
     mut_arg("csv", |a| a.help(CSV_HELP)),
     mut_arg("plot", |a| a.help(PLOT_HELP))
 )]
-pub struct SimulateArgs {
+pub(crate) struct SimulateArgs {
     #[command(flatten)]
-    pub model: ModelArgs,
+    pub(crate) model: ModelArgs,
     #[command(flatten)]
-    pub input: PeriodicInputArgs,
+    pub(crate) input: PeriodicInputArgs,
     /// A sine u(t) = A sin(2 pi t / T + PHASE) + OFFSET, A > 0, T > 0, PHASE in radians
     /// (PHASE and OFFSET default to 0).
     #[arg(
@@ -62,7 +62,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Input"
     )]
-    pub sine: Option<String>,
+    pub(crate) sine: Option<String>,
     /// Slowness gamma of eq. 5 (the input runs as u(t / gamma) in physical time): a number > 0
     /// (1 = the model as given, eq. 1) or 'inf' (the rate-independent limit y*_u, eq. 6).
     #[arg(
@@ -72,7 +72,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Simulation"
     )]
-    pub gamma: String,
+    pub(crate) gamma: String,
     /// Number of periods K >= 1. An --input file is one period, repeated only if it ends where
     /// it starts.
     #[arg(
@@ -82,7 +82,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Simulation"
     )]
-    pub periods: String,
+    pub(crate) periods: String,
     /// Initial state x0 = x(0) of eq. 1 (the bristle deflection [m]; for the Dahl model
     /// w(0) / rho).
     #[arg(
@@ -92,7 +92,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Simulation"
     )]
-    pub x0: String,
+    pub(crate) x0: String,
     /// Relative tolerance of the adaptive integrator for --sine, in [1e-14, 1).
     #[arg(
         long,
@@ -101,7 +101,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Simulation"
     )]
-    pub tol: String,
+    pub(crate) tol: String,
     /// Output at these times (eq. 5's time t: the period does not depend on gamma), strictly
     /// increasing, within the K periods. At a kink the value just after it.
     #[arg(
@@ -110,7 +110,7 @@ pub struct SimulateArgs {
         allow_hyphen_values = true,
         help_heading = "Output"
     )]
-    pub times: Option<String>,
+    pub(crate) times: Option<String>,
     /// N >= 1 evenly spaced output times per period, both ends of the run included. Default:
     /// the samples of an --input file; 200 per period plus every turning point otherwise.
     #[arg(
@@ -120,11 +120,11 @@ pub struct SimulateArgs {
         value_parser = Whole(1),
         help_heading = "Output"
     )]
-    pub samples_per_period: Option<usize>,
+    pub(crate) samples_per_period: Option<usize>,
     #[command(flatten)]
-    pub output: OutputArgs,
+    pub(crate) output: OutputArgs,
     #[command(flatten)]
-    pub plot: PlotArgs,
+    pub(crate) plot: PlotArgs,
 }
 
 /// What drives the simulation.
@@ -161,7 +161,7 @@ struct Request {
     times: Option<Vec<f64>>,
 }
 
-pub fn run(args: &SimulateArgs) -> Result<()> {
+pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
     let request = parse(args)?;
     let out = compute(&request)?;
     report(args, &request, &out)

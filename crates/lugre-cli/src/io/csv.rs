@@ -19,17 +19,17 @@ use crate::fmt::{excerpt, num, quoted};
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
 #[derive(Debug, Clone)]
-pub struct Series {
-    pub t: Option<Vec<f64>>,
-    pub u: Vec<f64>,
+pub(crate) struct Series {
+    pub(crate) t: Option<Vec<f64>>,
+    pub(crate) u: Vec<f64>,
 }
 
 /// Every row of a file: optional times (strictly increasing) and each value column (all
 /// finite), in the order of [`Columns`].
 #[derive(Debug, Clone)]
-pub struct Table {
-    pub t: Option<Vec<f64>>,
-    pub columns: Vec<Vec<f64>>,
+pub(crate) struct Table {
+    pub(crate) t: Option<Vec<f64>>,
+    pub(crate) columns: Vec<Vec<f64>>,
 }
 
 /// Which columns a file holds.
@@ -64,12 +64,12 @@ impl From<Table> for Series {
     }
 }
 
-pub fn read_series(path: &Path) -> Result<Series> {
+pub(crate) fn read_series(path: &Path) -> Result<Series> {
     read_table(path, Columns::Series).map(Series::from)
 }
 
 /// Reads every row of `path` (at least one).
-pub fn read_table(path: &Path, columns: Columns) -> Result<Table> {
+pub(crate) fn read_table(path: &Path, columns: Columns) -> Result<Table> {
     collect(SampleReader::open(path, columns)?).with_context(|| path.display().to_string())
 }
 
@@ -472,19 +472,19 @@ impl<R: Read> Read for SkipBom<R> {
 /// Writes rows of finite numbers, each in its shortest round-trip form (as
 /// [`crate::fmt::exact`] writes it) without an allocation per number: a CSV file may have 10^8
 /// of them.
-pub struct NumberRows {
+pub(crate) struct NumberRows {
     buf: zmij::Buffer,
 }
 
 impl NumberRows {
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             buf: zmij::Buffer::new(),
         }
     }
 
     /// One row: the numbers separated by commas, then a line break.
-    pub fn write(&mut self, w: &mut dyn Write, row: &[f64]) -> std::io::Result<()> {
+    pub(crate) fn write(&mut self, w: &mut dyn Write, row: &[f64]) -> std::io::Result<()> {
         for (i, &x) in row.iter().enumerate() {
             let s = self.buf.format_finite(x);
             w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;

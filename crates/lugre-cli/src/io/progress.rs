@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 const PROGRESS_AFTER: Duration = Duration::from_secs(1);
 
 /// A progress indicator that appears late, if at all, and is cleared at the end.
-pub struct Progress {
+pub(crate) struct Progress {
     start: Instant,
     terminal: bool,
     bar: Option<ProgressBar>,
@@ -17,7 +17,7 @@ pub struct Progress {
 
 impl Progress {
     /// Starts the clock.
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             start: Instant::now(),
             terminal: std::io::stderr().is_terminal(),
@@ -26,13 +26,16 @@ impl Progress {
     }
 
     /// Whether stderr is a terminal (if not, nothing is ever shown).
-    pub fn is_terminal(&self) -> bool {
+    pub(crate) fn is_terminal(&self) -> bool {
         self.terminal
     }
 
     /// The indicator to update: made by `make`, from the time elapsed since the start, once the
     /// run has lasted [`PROGRESS_AFTER`]; `None` before then, and when stderr is no terminal.
-    pub fn bar(&mut self, make: impl FnOnce(Duration) -> ProgressBar) -> Option<&ProgressBar> {
+    pub(crate) fn bar(
+        &mut self,
+        make: impl FnOnce(Duration) -> ProgressBar,
+    ) -> Option<&ProgressBar> {
         if !self.terminal {
             return None;
         }
@@ -43,7 +46,7 @@ impl Progress {
     }
 
     /// Clears the indicator, if it was shown.
-    pub fn finish(&mut self) {
+    pub(crate) fn finish(&mut self) {
         if let Some(bar) = self.bar.take() {
             bar.finish_and_clear();
         }
@@ -51,7 +54,7 @@ impl Progress {
 }
 
 /// `bar` drawn with `template` (indicatif's syntax; a template it refuses leaves its default).
-pub fn styled(bar: ProgressBar, template: &str) -> ProgressBar {
+pub(crate) fn styled(bar: ProgressBar, template: &str) -> ProgressBar {
     if let Ok(style) = ProgressStyle::with_template(template) {
         bar.set_style(style);
     }

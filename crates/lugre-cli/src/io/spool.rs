@@ -7,14 +7,14 @@ use std::io::{self, BufWriter, Read, Write};
 use std::path::PathBuf;
 
 /// Bytes kept in memory up to a limit, then in a temporary file removed on drop.
-pub struct Spool {
+pub(crate) struct Spool {
     limit: usize,
     memory: Vec<u8>,
     file: Option<(PathBuf, BufWriter<File>)>,
 }
 
 impl Spool {
-    pub fn new(limit: usize) -> Self {
+    pub(crate) fn new(limit: usize) -> Self {
         Self {
             limit,
             memory: Vec::new(),
@@ -23,7 +23,7 @@ impl Spool {
     }
 
     /// Hands the bytes to `f`, in order, in chunks.
-    pub fn replay(&self, mut f: impl FnMut(&[u8]) -> Result<()>) -> Result<()> {
+    pub(crate) fn replay(&self, mut f: impl FnMut(&[u8]) -> Result<()>) -> Result<()> {
         f(&self.memory)?;
         if let Some((path, w)) = &self.file {
             // The writer was flushed by `JsonOut::finish`.

@@ -16,7 +16,7 @@
 //! legend samples plotters lacks, and `output` writes SVG and PNG files.
 
 use anyhow::Result;
-pub use plotters::prelude::RGBColor;
+pub(crate) use plotters::prelude::RGBColor;
 use std::path::Path;
 
 mod dashes;
@@ -25,22 +25,22 @@ mod elements;
 mod legend;
 mod output;
 
-pub use output::check_path;
+pub(crate) use output::check_path;
 use output::save;
 
 /// Colours that stay distinct in grey scale too (dark to mid tones).
-pub const BLACK: RGBColor = RGBColor(0, 0, 0);
-pub const BLUE: RGBColor = RGBColor(0, 90, 181);
-pub const RED: RGBColor = RGBColor(200, 30, 40);
-pub const GREEN: RGBColor = RGBColor(0, 130, 70);
-pub const ORANGE: RGBColor = RGBColor(220, 120, 0);
-pub const GREY: RGBColor = RGBColor(80, 80, 80);
+pub(crate) const BLACK: RGBColor = RGBColor(0, 0, 0);
+pub(crate) const BLUE: RGBColor = RGBColor(0, 90, 181);
+pub(crate) const RED: RGBColor = RGBColor(200, 30, 40);
+pub(crate) const GREEN: RGBColor = RGBColor(0, 130, 70);
+pub(crate) const ORANGE: RGBColor = RGBColor(220, 120, 0);
+pub(crate) const GREY: RGBColor = RGBColor(80, 80, 80);
 
 /// The palette in order of use for a family of curves.
-pub const PALETTE: [RGBColor; 5] = [BLUE, RED, GREEN, ORANGE, BLACK];
+pub(crate) const PALETTE: [RGBColor; 5] = [BLUE, RED, GREEN, ORANGE, BLACK];
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LineStyle {
+pub(crate) enum LineStyle {
     Solid,
     Dashed,
     Dotted,
@@ -48,18 +48,18 @@ pub enum LineStyle {
 }
 
 #[derive(Debug, Clone)]
-pub struct Curve {
-    pub label: Option<String>,
+pub(crate) struct Curve {
+    pub(crate) label: Option<String>,
     /// A short ASCII name for the curve's data file (e.g. `steady-gamma20`).
-    pub key: Option<String>,
-    pub points: Vec<(f64, f64)>,
-    pub style: LineStyle,
-    pub color: RGBColor,
-    pub width: u32,
+    pub(crate) key: Option<String>,
+    pub(crate) points: Vec<(f64, f64)>,
+    pub(crate) style: LineStyle,
+    pub(crate) color: RGBColor,
+    pub(crate) width: u32,
 }
 
 impl Curve {
-    pub fn new(points: Vec<(f64, f64)>, style: LineStyle, color: RGBColor) -> Self {
+    pub(crate) fn new(points: Vec<(f64, f64)>, style: LineStyle, color: RGBColor) -> Self {
         Self {
             label: None,
             key: None,
@@ -70,65 +70,65 @@ impl Curve {
         }
     }
 
-    pub fn label(mut self, label: impl Into<String>) -> Self {
+    pub(crate) fn label(mut self, label: impl Into<String>) -> Self {
         self.label = Some(label.into());
         self
     }
 
-    pub fn key(mut self, key: impl Into<String>) -> Self {
+    pub(crate) fn key(mut self, key: impl Into<String>) -> Self {
         self.key = Some(key.into());
         self
     }
 
-    pub fn width(mut self, width: u32) -> Self {
+    pub(crate) fn width(mut self, width: u32) -> Self {
         self.width = width;
         self
     }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
+pub(crate) enum Shape {
     Circle,
     Square,
 }
 
 #[derive(Debug, Clone)]
-pub struct Marker {
-    pub label: Option<String>,
-    pub at: (f64, f64),
-    pub shape: Shape,
-    pub color: RGBColor,
+pub(crate) struct Marker {
+    pub(crate) label: Option<String>,
+    pub(crate) at: (f64, f64),
+    pub(crate) shape: Shape,
+    pub(crate) color: RGBColor,
 }
 
 /// A short text centred at a data point shifted by `offset` pixels (x right, y down), e.g.
 /// `t₁` next to a marker.
 #[derive(Debug, Clone)]
-pub struct Note {
-    pub at: (f64, f64),
-    pub text: String,
-    pub offset: (i32, i32),
+pub(crate) struct Note {
+    pub(crate) at: (f64, f64),
+    pub(crate) text: String,
+    pub(crate) offset: (i32, i32),
 }
 
 /// One chart: curves, markers and notes in data coordinates, axis labels, and a legend of the
 /// labelled curves and markers, in the inside corner that hides none of them (when every
 /// corner would, the y axis is extended upwards to make room above the data).
 #[derive(Debug, Clone)]
-pub struct Figure {
-    pub title: Option<String>,
-    pub x_label: String,
-    pub y_label: String,
-    pub curves: Vec<Curve>,
-    pub markers: Vec<Marker>,
-    pub notes: Vec<Note>,
+pub(crate) struct Figure {
+    pub(crate) title: Option<String>,
+    pub(crate) x_label: String,
+    pub(crate) y_label: String,
+    pub(crate) curves: Vec<Curve>,
+    pub(crate) markers: Vec<Marker>,
+    pub(crate) notes: Vec<Note>,
     /// Axis ranges; `None`: the data's, padded by 5 %.
-    pub x_range: Option<(f64, f64)>,
-    pub y_range: Option<(f64, f64)>,
+    pub(crate) x_range: Option<(f64, f64)>,
+    pub(crate) y_range: Option<(f64, f64)>,
     /// Pixels of the PNG (the SVG uses the same units).
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
 }
 
 impl Figure {
-    pub fn new(x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
+    pub(crate) fn new(x_label: impl Into<String>, y_label: impl Into<String>) -> Self {
         Self {
             title: None,
             x_label: x_label.into(),
@@ -142,22 +142,27 @@ impl Figure {
         }
     }
 
-    pub fn title(mut self, title: impl Into<String>) -> Self {
+    pub(crate) fn title(mut self, title: impl Into<String>) -> Self {
         self.title = Some(title.into());
         self
     }
 
-    pub fn curve(mut self, curve: Curve) -> Self {
+    pub(crate) fn curve(mut self, curve: Curve) -> Self {
         self.curves.push(curve);
         self
     }
 
-    pub fn marker(mut self, marker: Marker) -> Self {
+    pub(crate) fn marker(mut self, marker: Marker) -> Self {
         self.markers.push(marker);
         self
     }
 
-    pub fn note(mut self, at: (f64, f64), text: impl Into<String>, offset: (i32, i32)) -> Self {
+    pub(crate) fn note(
+        mut self,
+        at: (f64, f64),
+        text: impl Into<String>,
+        offset: (i32, i32),
+    ) -> Self {
         self.notes.push(Note {
             at,
             text: text.into(),
@@ -166,30 +171,30 @@ impl Figure {
         self
     }
 
-    pub fn y_range(mut self, lo: f64, hi: f64) -> Self {
+    pub(crate) fn y_range(mut self, lo: f64, hi: f64) -> Self {
         self.y_range = Some((lo, hi));
         self
     }
 
     /// Writes the figure as SVG or PNG, chosen by the file's extension.
-    pub fn save(&self, path: &Path) -> Result<()> {
+    pub(crate) fn save(&self, path: &Path) -> Result<()> {
         save(self, self.size, path)
     }
 }
 
 /// Several figures side by side (and in rows) in one image, each with its own axes.
 #[derive(Debug, Clone)]
-pub struct Panels {
-    pub title: Option<String>,
-    pub panels: Vec<Figure>,
-    pub cols: usize,
+pub(crate) struct Panels {
+    pub(crate) title: Option<String>,
+    pub(crate) panels: Vec<Figure>,
+    pub(crate) cols: usize,
     /// Pixels of the whole image.
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
 }
 
 impl Panels {
     /// Two figures side by side, 1600 x 650 pixels in all.
-    pub fn side_by_side(left: Figure, right: Figure) -> Self {
+    pub(crate) fn side_by_side(left: Figure, right: Figure) -> Self {
         Self {
             title: None,
             panels: vec![left, right],
@@ -199,7 +204,7 @@ impl Panels {
     }
 
     /// Writes the panels as SVG or PNG, chosen by the file's extension.
-    pub fn save(&self, path: &Path) -> Result<()> {
+    pub(crate) fn save(&self, path: &Path) -> Result<()> {
         save(self, self.size, path)
     }
 }

@@ -34,7 +34,7 @@ fn format_of(path: &Path) -> Result<Format> {
 }
 
 /// Checks that a plot can be written to `path` (its extension), before any work is done.
-pub fn check_path(path: &Path) -> Result<()> {
+pub(crate) fn check_path(path: &Path) -> Result<()> {
     format_of(path).map(|_| ())
 }
 

@@ -54,15 +54,15 @@ const CSV_HELP: &str = "Write the cycles to this CSV file, one row per cycle";
 #[command(
     mut_arg("csv", |a| a.help(CSV_HELP))
 )]
-pub struct CyclesArgs {
+pub(crate) struct CyclesArgs {
     /// The history from a CSV file: a column 'u' (header 'u' or 't,u', or no header), or the
     /// column --column names; a column 't' is checked as strictly increasing times.
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
-    pub input: Option<PathBuf>,
+    pub(crate) input: Option<PathBuf>,
     /// The column of FILE.csv holding the history, by its header name (default u); other
     /// columns are ignored.
     #[arg(long, value_name = "NAME", requires = "input", help_heading = "Input")]
-    pub column: Option<String>,
+    pub(crate) column: Option<String>,
     /// The history on the command line, e.g. -2,1,-3,5,-1,3,-4,4,-2.
     #[arg(
         long,
@@ -71,7 +71,7 @@ pub struct CyclesArgs {
         conflicts_with = "input",
         help_heading = "Input"
     )]
-    pub values: Option<String>,
+    pub(crate) values: Option<String>,
     /// Noise gate: ignore reversals smaller than H (in units of u; 0, the default, is no
     /// gate). Every range between consecutive reversals is then >= H.
     #[arg(
@@ -81,12 +81,12 @@ pub struct CyclesArgs {
         value_parser = Real,
         help_heading = "Counting"
     )]
-    pub gate: Option<f64>,
+    pub(crate) gate: Option<f64>,
     /// Follow y* (eq. 6) along the history and report each full cycle's work, stored-energy
     /// change, dissipation and closure gap (implied by --x0, --model dahl and any model
     /// parameter; the model defaults to the paper's Examples 2-3).
     #[arg(long, help_heading = "Energy")]
-    pub energy: bool,
+    pub(crate) energy: bool,
     /// Initial bristle deflection x(0), with |sigma0 x0| <= g(0): y*(0) = sigma0 x0 (default
     /// 0; for Dahl, x0 = w(0) / rho).
     #[arg(
@@ -96,15 +96,15 @@ pub struct CyclesArgs {
         value_parser = Real,
         help_heading = "Energy"
     )]
-    pub x0: Option<f64>,
+    pub(crate) x0: Option<f64>,
     #[command(flatten)]
-    pub model: ModelArgs,
+    pub(crate) model: ModelArgs,
     #[command(flatten)]
-    pub output: OutputArgs,
+    pub(crate) output: OutputArgs,
     /// Bin the counts by range, and by range and mean (the rainflow matrix), over the
     /// history's span.
     #[arg(long, help_heading = "Output")]
-    pub histogram: bool,
+    pub(crate) histogram: bool,
     /// Bins per axis for --histogram (default 10).
     #[arg(
         long,
@@ -114,7 +114,7 @@ pub struct CyclesArgs {
         requires = "histogram",
         help_heading = "Output"
     )]
-    pub bins: Option<usize>,
+    pub(crate) bins: Option<usize>,
 }
 
 impl CyclesArgs {
@@ -192,7 +192,7 @@ struct FirstPassResult {
     reversals: Spool,
 }
 
-pub fn run(args: &CyclesArgs) -> Result<()> {
+pub(crate) fn run(args: &CyclesArgs) -> Result<()> {
     let request = parse(args)?;
     let first = if args.output.json || args.histogram {
         Some(first_pass(&request, args.output.json)?)

@@ -16,19 +16,19 @@ pub(crate) enum PaperInput {
 /// A model and input whose hysteresis loop the page tabulates, as `lugre loop` computes it.
 pub(crate) struct LoopExample {
     /// HTML id and short name, e.g. `example3`.
-    pub id: &'static str,
-    pub title: String,
-    pub figures: Vec<u32>,
-    pub sigma0: f64,
-    pub input: PaperInput,
-    pub hl: HysteresisLoop,
-    pub loops: Vec<Loop>,
-    pub theorem_a: Option<TheoremA>,
-    pub note: Option<String>,
+    pub(crate) id: &'static str,
+    pub(crate) title: String,
+    pub(crate) figures: Vec<u32>,
+    pub(crate) sigma0: f64,
+    pub(crate) input: PaperInput,
+    pub(crate) hl: HysteresisLoop,
+    pub(crate) loops: Vec<Loop>,
+    pub(crate) theorem_a: Option<TheoremA>,
+    pub(crate) note: Option<String>,
 }
 
 impl LoopExample {
-    pub fn new(
+    pub(crate) fn new(
         id: &'static str,
         title: impl Into<String>,
         figures: Vec<u32>,
@@ -60,7 +60,7 @@ impl LoopExample {
 
     /// The bimodal input (the figures that need one are only built for the examples that have
     /// one).
-    pub fn bimodal(&self) -> Result<Bimodal> {
+    pub(crate) fn bimodal(&self) -> Result<Bimodal> {
         match &self.input {
             PaperInput::Bimodal(b) => Ok(*b),
             PaperInput::TurningPoints(_) => anyhow::bail!("{} has no bimodal input", self.id),
@@ -68,7 +68,7 @@ impl LoopExample {
     }
 
     /// The `lugre loop` arguments that print the same numbers (with `--json`).
-    pub fn loop_args(&self) -> Vec<String> {
+    pub(crate) fn loop_args(&self) -> Vec<String> {
         let mut args = vec!["loop".to_string()];
         match &self.input {
             PaperInput::TurningPoints(u) => {

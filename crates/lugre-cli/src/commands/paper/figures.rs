@@ -14,23 +14,23 @@ const EXAMPLE_1_GAMMAS: [f64; 3] = [20.0, 200.0, 2000.0];
 
 /// One redrawn figure.
 pub(crate) struct PaperFigure {
-    pub number: u32,
+    pub(crate) number: u32,
     /// What the figure shows, in a few words (for the summary).
-    pub title: String,
+    pub(crate) title: String,
     /// The paper's caption, then what this redrawing chose where the paper does not say.
-    pub caption: String,
-    pub figure: Figure,
+    pub(crate) caption: String,
+    pub(crate) figure: Figure,
     /// CSV column names of the x and y coordinates.
-    pub columns: [&'static str; 2],
+    pub(crate) columns: [&'static str; 2],
 }
 
 impl PaperFigure {
-    pub fn stem(&self) -> String {
+    pub(crate) fn stem(&self) -> String {
         format!("fig{:02}", self.number)
     }
 
     /// `(file name, curve)` of every curve's CSV file.
-    pub fn csv_files(&self) -> Vec<(String, &Curve)> {
+    pub(crate) fn csv_files(&self) -> Vec<(String, &Curve)> {
         self.figure
             .curves
             .iter()
@@ -85,13 +85,14 @@ pub(super) fn fig03(ex: &LoopExample) -> Result<PaperFigure> {
         shape: Shape::Square,
         color: BLUE,
     });
-    let names = ["ρ₀", "ρ₁", "ρ₂", "ρ₃", "ρ₄"];
-    for (i, &p) in psi.iter().enumerate() {
-        // Maxima get their name above, minima below.
-        let up = i % 2 == 1;
-        fig = fig.note(p, names[i], (0, if up { -24 } else { 24 }));
-    }
-    fig = fig.note((rho[5], b.umax1), "ρ₅", (24, 12));
+    let fig = name_turning_points(
+        fig,
+        &psi,
+        ["ρ₀", "ρ₁", "ρ₂", "ρ₃", "ρ₄"],
+        "ρ₅",
+        rho[5],
+        b.umax1,
+    );
     Ok(PaperFigure {
         number: 3,
         title: "ψᵤ(ρ), the normalized input of a bimodal input".into(),
@@ -113,6 +114,24 @@ pub(super) fn fig03(ex: &LoopExample) -> Result<PaperFigure> {
         figure: fig.y_range(b.umin1 - 0.2, b.umax2 + 0.25),
         columns: ["rho", "psi_u"],
     })
+}
+
+/// `fig` with the turning points of one period of a bimodal input named (`names[i]` at
+/// `points[i]`; maxima get their name above, minima below), and the return to u_max,1 at
+/// (`rho5`, `umax1`) named `fifth`.
+fn name_turning_points(
+    mut fig: Figure,
+    points: &[(f64, f64)],
+    names: [&str; 5],
+    fifth: &str,
+    rho5: f64,
+    umax1: f64,
+) -> Figure {
+    for (i, &p) in points.iter().enumerate() {
+        let up = i % 2 == 1;
+        fig = fig.note(p, names[i], (0, if up { -24 } else { 24 }));
+    }
+    fig.note((rho5, umax1), fifth, (24, 12))
 }
 
 /// Fig. 4: Example 1 (eq. 18), the output-versus-input graph for gamma = 20, 200, 2000.
@@ -218,7 +237,7 @@ pub(super) fn fig14(ex: &LoopExample) -> Result<PaperFigure> {
     let b = ex.bimodal()?;
     let rho = b.rho();
     let u: Vec<(f64, f64)> = rho[..5].iter().map(|&r| (r, ex.hl.psi_at(r))).collect();
-    let mut fig = Figure::new("t", "u(t)")
+    let fig = Figure::new("t", "u(t)")
         .curve(
             Curve::new(u.clone(), LineStyle::Solid, BLACK)
                 .label("u(t), one period")
@@ -237,12 +256,14 @@ pub(super) fn fig14(ex: &LoopExample) -> Result<PaperFigure> {
             shape: Shape::Square,
             color: RED,
         });
-    let names = ["t₀", "t₁", "t₂", "t₃", "t₄"];
-    for (i, &p) in u.iter().enumerate() {
-        let up = i % 2 == 1;
-        fig = fig.note(p, names[i], (0, if up { -24 } else { 24 }));
-    }
-    fig = fig.note((rho[5], b.umax1), "t₅", (24, 12));
+    let fig = name_turning_points(
+        fig,
+        &u,
+        ["t₀", "t₁", "t₂", "t₃", "t₄"],
+        "t₅",
+        rho[5],
+        b.umax1,
+    );
     Ok(PaperFigure {
         number: 14,
         title: "Example 4: the input u(t), t₁ … t₅ marked".into(),

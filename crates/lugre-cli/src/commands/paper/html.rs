@@ -80,7 +80,7 @@ fn sections(paper: &Paper) -> [Section<'_>; 5] {
     ]
 }
 
-pub fn page(paper: &Paper) -> String {
+pub(crate) fn page(paper: &Paper) -> String {
     let sections = sections(paper);
     let mut h = String::with_capacity(64 * 1024);
     h.push_str(HEAD);

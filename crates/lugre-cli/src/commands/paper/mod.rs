@@ -28,19 +28,19 @@ use examples::{LoopExample, PaperInput};
 use figures::{fig03, fig04, fig05, fig14, loop_figure, PaperFigure};
 
 #[derive(Args, Debug)]
-pub struct PaperArgs {
+pub(crate) struct PaperArgs {
     /// Directory to write the figures, their data and index.html to (created if missing).
     #[arg(long, value_name = "DIR", default_value = "paper-figures")]
-    pub out: PathBuf,
+    pub(crate) out: PathBuf,
 }
 
 /// Everything `lugre paper` draws and tabulates.
 pub(crate) struct Paper {
-    pub figures: Vec<PaperFigure>,
-    pub examples: Vec<LoopExample>,
+    pub(crate) figures: Vec<PaperFigure>,
+    pub(crate) examples: Vec<LoopExample>,
 }
 
-pub fn run(args: &PaperArgs) -> Result<()> {
+pub(crate) fn run(args: &PaperArgs) -> Result<()> {
     let started = std::time::Instant::now();
     let paper = build()?;
     let dir = &args.out;
