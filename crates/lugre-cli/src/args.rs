@@ -1,5 +1,7 @@
-//! The flags several commands share: the model (`--model`, `--sigma0`, ...) and the periodic
-//! input (`--turning-points`, `--bimodal`, `--input`), each with what it builds.
+//! The flags several commands share, each defined once and flattened into the commands' own
+//! flags: the model (`--model`, `--sigma0`, ...) and the periodic input (`--turning-points`,
+//! `--bimodal`, `--input`), each with what it builds, and the outputs (`--json`, `--csv`,
+//! `--plot`).
 
 use anyhow::{bail, Result};
 use clap::{Args, ValueEnum};

@@ -11,24 +11,25 @@ use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use indicatif::ProgressBar;
 use lugre::simulate::{merge_times, uniform_times};
-use lugre::{Gamma, LuGre, PiecewiseLinear, SimulateError, Simulator, Sine, Tolerance, Trajectory};
+use lugre::{Gamma, LuGre, SimulateError, Simulator, Tolerance, Trajectory};
 use std::io::Write;
 
 use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
-use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_list, Whole};
-use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+
+mod drive;
+mod output;
+
+use drive::{build_drive, Drive};
+use output::{print_table, response_figure, write_csv, write_json};
 
 /// Output times per period when none are asked for (piecewise-linear inputs also get their
 /// kinks; sampled data get exactly their samples).
 const DEFAULT_SAMPLES_PER_PERIOD: usize = 200;
-
-/// Rows of the table printed before the rest is summarised (all of it is in --json / --csv).
-const TABLE_HEAD: usize = 20;
 
 /// At most this many output rows (40 bytes each in memory, more as text).
 const MAX_ROWS: usize = 50_000_000;
@@ -125,25 +126,6 @@ pub(crate) struct SimulateArgs {
     pub(crate) output: OutputArgs,
     #[command(flatten)]
     pub(crate) plot: PlotArgs,
-}
-
-/// What drives the simulation.
-enum Drive {
-    /// Periodic turning points at unit speed.
-    TurningPoints(PiecewiseLinear),
-    /// Sampled data, linear between samples.
-    Samples(PiecewiseLinear),
-    Sine(Sine),
-}
-
-impl Drive {
-    /// `(start, period)`.
-    fn period(&self) -> (f64, f64) {
-        match self {
-            Drive::TurningPoints(pl) | Drive::Samples(pl) => (pl.times()[0], pl.period()),
-            Drive::Sine(s) => (0.0, s.period()),
-        }
-    }
 }
 
 /// The request, from the flags, each checked in turn before anything is computed.
@@ -319,141 +301,6 @@ fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
     Ok(())
 }
 
-/// `{"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]}`.
-fn write_json<W: Write>(mut j: JsonOut<W>, out: &Trajectory) -> std::io::Result<()> {
-    j.raw("{\"t\":")?;
-    j.array(&out.t)?;
-    j.raw(",\"u\":")?;
-    j.array(&out.u)?;
-    j.raw(",\"z\":")?;
-    j.array(&out.z)?;
-    j.raw(",\"dz\":")?;
-    j.array(&out.dz)?;
-    j.raw(",\"y\":")?;
-    j.array(&out.y)?;
-    j.raw("}\n")?;
-    j.finish()
-}
-
-/// The input flag given (exactly one), with a description for the summary.
-fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
-    let mut given = args.input.given();
-    if args.sine.is_some() {
-        given.push("--sine");
-    }
-    if given.len() > 1 {
-        bail!("give one input, not {}", given.join(" and "));
-    }
-    if let Some(text) = &args.sine {
-        let v = parse_list("--sine", text)?;
-        if !(2..=4).contains(&v.len()) {
-            bail!(
-                "--sine takes A,T[,PHASE[,OFFSET]] (2 to 4 numbers), got {}",
-                v.len()
-            );
-        }
-        let sine = Sine::new(
-            v[0],
-            v[1],
-            v.get(2).copied().unwrap_or(0.0),
-            v.get(3).copied().unwrap_or(0.0),
-        )
-        .map_err(|e| anyhow!("--sine: {e}"))?;
-        let text = format!(
-            "sine u(t) = {} sin(2 pi t / {} + {}) + {}",
-            sig(sine.amplitude(), 10),
-            sig(sine.period(), 10),
-            sig(sine.phase(), 10),
-            sig(sine.offset(), 10)
-        );
-        return Ok((Drive::Sine(sine), text));
-    }
-    if let Some(path) = &args.input.input {
-        let series = crate::io::csv::read_series(path)?;
-        let Some(t) = series.t else {
-            bail!(
-                "{}: simulate needs the samples' times: a header 't,u' and two columns (a single column 'u' has no time)",
-                path.display()
-            );
-        };
-        let n = t.len();
-        let pl =
-            PiecewiseLinear::new(t, series.u).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        let text = format!(
-            "{} samples from {}, linear between samples, t in [{}, {}]",
-            n,
-            path.display(),
-            sig(pl.times()[0], 10),
-            sig(pl.times()[n - 1], 10)
-        );
-        return Ok((Drive::Samples(pl), text));
-    }
-    if given.is_empty() {
-        bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2, --input FILE.csv (t,u) or --sine A,T[,PHASE[,OFFSET]]");
-    }
-    let tp = args.input.build()?.turning_points();
-    let pl = PiecewiseLinear::from_turning_points(&tp, 1.0)?;
-    let values: Vec<String> = tp.values().iter().map(|&u| sig(u, 10)).collect();
-    let text = format!(
-        "turning points {} at unit speed (t = rho)",
-        if values.len() > 8 {
-            format!("{},... ({} in all)", values[..8].join(","), values.len())
-        } else {
-            values.join(",")
-        }
-    );
-    Ok((Drive::TurningPoints(pl), text))
-}
-
-/// Points drawn per panel at most: beyond this, buckets of consecutive samples are reduced to
-/// their first, lowest, highest and last points (in order), which keeps every peak and jump a
-/// plot can show at its resolution.
-const MAX_DRAWN_BUCKETS: usize = 20_000;
-
-/// The response as two panels: y against t, and y against u.
-fn response_figure(out: &Trajectory, what: &str) -> Panels {
-    let keep = envelope_indices(&out.y, MAX_DRAWN_BUCKETS);
-    let pick = |x: &[f64]| -> Vec<(f64, f64)> { keep.iter().map(|&i| (x[i], out.y[i])).collect() };
-    let time = Figure::new("time t", "output y")
-        .title(format!("y against t, {what}"))
-        .curve(Curve::new(pick(&out.t), LineStyle::Solid, BLUE));
-    let input = Figure::new("input u", "output y")
-        .title(format!("y against u, {what}"))
-        .curve(Curve::new(pick(&out.u), LineStyle::Solid, BLUE));
-    Panels::side_by_side(time, input)
-}
-
-/// Indices of the samples to draw: all of them when there are at most `4 buckets`, else per
-/// bucket of consecutive samples the first, the lowest, the highest and the last of `y`.
-fn envelope_indices(y: &[f64], buckets: usize) -> Vec<usize> {
-    let n = y.len();
-    if n <= 4 * buckets {
-        return (0..n).collect();
-    }
-    let size = n.div_ceil(buckets);
-    let mut keep = Vec::with_capacity(4 * buckets);
-    for start in (0..n).step_by(size) {
-        let end = (start + size).min(n);
-        let (mut lo, mut hi) = (start, start);
-        for i in start..end {
-            if y[i] < y[lo] {
-                lo = i;
-            }
-            if y[i] > y[hi] {
-                hi = i;
-            }
-        }
-        let mut four = [start, lo, hi, end - 1];
-        four.sort_unstable();
-        for i in four {
-            if keep.last() != Some(&i) {
-                keep.push(i);
-            }
-        }
-    }
-    keep
-}
-
 fn parse_scalar(flag: &str, text: &str) -> Result<f64> {
     let t = text.trim();
     match t.parse::<f64>() {
@@ -494,110 +341,4 @@ fn check_rows(rows: usize) -> Result<()> {
         bail!("the run would produce {rows} output rows (more than {MAX_ROWS}): lower --periods or --samples-per-period, or give --times");
     }
     Ok(())
-}
-
-fn write_csv(w: &mut dyn Write, out: &Trajectory) -> Result<()> {
-    let mut rows = NumberRows::new();
-    writeln!(w, "t,u,z,dz,y")?;
-    for i in 0..out.len() {
-        rows.write(w, &[out.t[i], out.u[i], out.z[i], out.dz[i], out.y[i]])?;
-    }
-    Ok(())
-}
-
-fn print_table(w: &mut impl Write, r: &Request, out: &Trajectory) -> Result<()> {
-    print_summary(w, r)?;
-    let n = out.len();
-    if n == 0 {
-        return Ok(());
-    }
-    let (imin, imax) = (0..n).fold((0, 0), |(lo, hi), i| {
-        (
-            if out.y[i] < out.y[lo] { i } else { lo },
-            if out.y[i] > out.y[hi] { i } else { hi },
-        )
-    });
-    writeln!(
-        w,
-        "{} rows, t from {} to {} (at a kink: the value just after it); y from {} (t = {}) to {} (t = {}); y at the end {}",
-        n,
-        sig(out.t[0], 10),
-        sig(out.t[n - 1], 10),
-        sig(out.y[imin], 10),
-        sig(out.t[imin], 10),
-        sig(out.y[imax], 10),
-        sig(out.t[imax], 10),
-        sig(out.y[n - 1], 10),
-    )?;
-    writeln!(
-        w,
-        "\n{:>16} {:>16} {:>16} {:>16} {:>16}",
-        "t", "u", "z", "z'", "y"
-    )?;
-    for i in 0..n.min(TABLE_HEAD) {
-        writeln!(
-            w,
-            "{:>16} {:>16} {:>16} {:>16} {:>16}",
-            sig(out.t[i], 10),
-            sig(out.u[i], 10),
-            sig(out.z[i], 10),
-            sig(out.dz[i], 10),
-            sig(out.y[i], 10)
-        )?;
-    }
-    if n > TABLE_HEAD {
-        writeln!(
-            w,
-            "{:>16} ... {} more rows: use --json or --csv FILE to get all",
-            "",
-            n - TABLE_HEAD
-        )?;
-    }
-    Ok(())
-}
-
-/// The model, the input, gamma, the periods, x0 and (for a sine) the tolerance.
-fn print_summary(w: &mut impl Write, r: &Request) -> Result<()> {
-    writeln!(w, "{}", r.choice.describe())?;
-    writeln!(w, "Input: {}", r.input)?;
-    let what = if r.gamma.is_infinite() {
-        "gamma = inf: the rate-independent limit y*_u (eq. 6)".to_string()
-    } else {
-        format!("gamma = {} (eq. 5)", sig(r.gamma.value(), 10))
-    };
-    let adaptive = matches!(r.drive, Drive::Sine(_)) && !r.gamma.is_infinite();
-    writeln!(
-        w,
-        "{what}; period T = {}; {} period{}; x0 = {}{}",
-        sig(r.drive.period().1, 10),
-        r.periods,
-        if r.periods == 1 { "" } else { "s" },
-        sig(r.x0, 10),
-        if adaptive {
-            format!("; adaptive integration to tol = {}", sig(r.tol.value(), 3))
-        } else {
-            String::new()
-        }
-    )?;
-    Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_drawn_envelope_keeps_every_extreme_in_order() {
-        let y: Vec<f64> = (0..100_000)
-            .map(|i| ((i as f64) * 0.01).sin() + if i == 54_321 { 5.0 } else { 0.0 })
-            .collect();
-        let keep = envelope_indices(&y, 1000);
-        assert!(keep.len() <= 4000 && keep.len() > 1000);
-        assert!(keep.windows(2).all(|w| w[0] < w[1]));
-        assert!(keep.contains(&54_321) && keep[0] == 0 && keep[keep.len() - 1] == 99_999);
-        assert_eq!(
-            envelope_indices(&y[..10], 1000),
-            (0..10).collect::<Vec<_>>()
-        );
-    }
 }
