@@ -1,11 +1,11 @@
-//! The CSV reader (`lugre_cli::csv_in::SampleReader`) on arbitrary bytes, for a series (with
+//! The CSV reader (`lugre_cli::fuzzing::SampleReader`) on arbitrary bytes, for a series (with
 //! and without a named column) and a `u,F` record: no panic; every row it returns has as many
 //! values as the columns asked for, all finite, and, when the file has times, strictly
 //! increasing finite times; every error names a line.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use lugre_cli::csv_in::{Columns, SampleReader};
+use lugre_cli::fuzzing::{Columns, SampleReader};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&mode, bytes)) = data.split_first() else {

@@ -4,8 +4,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use lugre_cli::fmt::exact;
-use lugre_cli::numbers::{parse_list, parse_number};
+use lugre_cli::fuzzing::{exact, parse_list, parse_number};
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);

@@ -1,11 +1,10 @@
-//! Command-line interface: the flags every command shares (model, input) and each command's.
+//! The command line: the parser, the commands, and the dispatch to them (the only place that
+//! names every command).
 
-use anyhow::{bail, Result};
-use clap::{Args, Parser, Subcommand, ValueEnum};
-use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
-use std::path::PathBuf;
+use anyhow::Result;
+use clap::{Parser, Subcommand};
 
-use crate::numbers::{parse_list, Real, Whole};
+use crate::commands::{cycles, fit, loops, paper, simulate};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -19,299 +18,60 @@ use crate::numbers::{parse_list, Real, Whole};
 )]
 pub struct Cli {
     #[command(subcommand)]
-    pub command: Command,
+    command: Command,
 }
 
 #[derive(Subcommand, Debug)]
-pub enum Command {
+enum Command {
     /// The hysteresis loop y° and every minor loop of a periodic input, with energies.
-    Loop(LoopArgs),
+    Loop(loops::LoopArgs),
     /// Minor loops in a measured history: reversals, ASTM E1049 rainflow cycles, where each
     /// loop closes, and (with a model) the energy over each loop.
-    Cycles(crate::cycles_cmd::CyclesArgs),
+    Cycles(cycles::CyclesArgs),
     /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
     /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
-    Simulate(crate::simulate_cmd::SimulateArgs),
+    Simulate(simulate::SimulateArgs),
     /// Parameter identification from a measured record: sigma0 and g(0) from a slow loop
     /// (--fit slow, columns u,F), or the full LuGre set from rate-dependent data (--fit full,
     /// columns t,u,F), with standard errors and 95 % confidence intervals.
-    Fit(crate::fit_cmd::FitArgs),
+    Fit(fit::FitArgs),
     /// Redraw the paper's Figures 3-17 (SVG, PNG, the CSV of every curve) and write
     /// index.html: every figure with its caption, each example's loop numbers, and the errata
     /// of Theorem A.
-    Paper(crate::paper::PaperArgs),
+    Paper(paper::PaperArgs),
 }
 
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ModelKind {
-    Lugre,
-    Dahl,
-}
-
-/// Model flags shared by every command. Defaults: the paper's Examples 2-3.
-#[derive(Args, Debug, Clone)]
-pub struct ModelArgs {
-    /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).
-    #[arg(long, value_enum, default_value = "lugre", help_heading = "Model")]
-    pub model: ModelKind,
-    /// LuGre bristle stiffness sigma0 > 0 [N/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma0: Option<f64>,
-    /// LuGre micro-damping sigma1 >= 0 [N s/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma1: Option<f64>,
-    /// LuGre viscous coefficient sigma2 >= 0 [N s/m], f(v) = sigma2 v (default 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub sigma2: Option<f64>,
-    /// Coulomb force Fc > 0 [N] (LuGre and Dahl; default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub fc: Option<f64>,
-    /// LuGre stiction force Fs > 0 [N]; g(0) = Fs (default 2).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub fs: Option<f64>,
-    /// LuGre Stribeck velocity vs > 0 [m/s] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub vs: Option<f64>,
-    /// LuGre Stribeck exponent beta > 0: g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta) (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub beta: Option<f64>,
-    /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub rho: Option<f64>,
-}
-
-/// A validated model as chosen on the command line.
-#[derive(Debug, Clone)]
-pub enum ModelChoice {
-    LuGre(LuGre),
-    Dahl(Dahl),
-}
-
-impl ModelArgs {
-    pub fn build(&self) -> Result<ModelChoice> {
-        match self.model {
-            ModelKind::Lugre => {
-                if self.rho.is_some() {
-                    bail!("--rho is the Dahl model's parameter (add --model dahl)");
-                }
-                let d = LuGreParams::default();
-                let p = LuGreParams {
-                    sigma0: self.sigma0.unwrap_or(d.sigma0),
-                    sigma1: self.sigma1.unwrap_or(d.sigma1),
-                    sigma2: self.sigma2.unwrap_or(d.sigma2),
-                    fc: self.fc.unwrap_or(d.fc),
-                    fs: self.fs.unwrap_or(d.fs),
-                    vs: self.vs.unwrap_or(d.vs),
-                    beta: self.beta.unwrap_or(d.beta),
-                };
-                Ok(ModelChoice::LuGre(LuGre::from_params(p)?))
-            }
-            ModelKind::Dahl => {
-                let lugre_only = [
-                    ("--sigma0", self.sigma0),
-                    ("--sigma1", self.sigma1),
-                    ("--sigma2", self.sigma2),
-                    ("--fs", self.fs),
-                    ("--vs", self.vs),
-                    ("--beta", self.beta),
-                ];
-                if let Some((flag, _)) = lugre_only.iter().find(|(_, v)| v.is_some()) {
-                    bail!("{flag} is a LuGre parameter; the Dahl model takes --rho and --fc");
-                }
-                Ok(ModelChoice::Dahl(Dahl::new(
-                    self.rho.unwrap_or(1.0),
-                    self.fc.unwrap_or(1.0),
-                )?))
-            }
+impl Cli {
+    /// Runs the command given.
+    pub fn run(self) -> Result<()> {
+        match self.command {
+            Command::Loop(args) => loops::run(&args),
+            Command::Cycles(args) => cycles::run(&args),
+            Command::Simulate(args) => simulate::run(&args),
+            Command::Fit(args) => fit::run(&args),
+            Command::Paper(args) => paper::run(&args),
         }
     }
 }
 
-impl ModelChoice {
-    pub fn rate_independent(&self) -> RateIndependent {
-        match self {
-            ModelChoice::LuGre(m) => m.rate_independent(),
-            ModelChoice::Dahl(m) => m.rate_independent(),
-        }
-    }
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
 
-    /// The equivalent LuGre model (Dahl maps exactly).
-    pub fn lugre(&self) -> LuGre {
-        match self {
-            ModelChoice::LuGre(m) => m.clone(),
-            ModelChoice::Dahl(m) => m.to_lugre(),
-        }
-    }
-
-    /// The model as a JSON object: `kind` and its parameters.
-    pub fn to_json(&self) -> serde_json::Value {
-        match self {
-            ModelChoice::LuGre(m) => {
-                let p = m.params();
-                serde_json::json!({
-                    "kind": "lugre", "sigma0": p.sigma0, "sigma1": p.sigma1, "sigma2": p.sigma2,
-                    "fc": p.fc, "fs": p.fs, "vs": p.vs, "beta": p.beta,
-                })
-            }
-            ModelChoice::Dahl(m) => serde_json::json!({
-                "kind": "dahl", "rho": m.rho(), "fc": m.fc(),
-            }),
-        }
-    }
-
-    /// One line describing the model.
-    pub fn describe(&self) -> String {
-        use crate::fmt::sig;
-        match self {
-            ModelChoice::LuGre(m) => {
-                let p = m.params();
-                format!(
-                    "LuGre: sigma0 = {}, sigma1 = {}, sigma2 = {}, Fc = {}, Fs = {}, vs = {}, beta = {}",
-                    sig(p.sigma0, 10), sig(p.sigma1, 10), sig(p.sigma2, 10), sig(p.fc, 10),
-                    sig(p.fs, 10), sig(p.vs, 10), sig(p.beta, 10)
-                )
-            }
-            ModelChoice::Dahl(m) => format!(
-                "Dahl: rho = {}, Fc = {} (LuGre with sigma0 = rho Fc = {}, g = Fc)",
-                sig(m.rho(), 10),
-                sig(m.fc(), 10),
-                sig(m.rho() * m.fc(), 10)
-            ),
-        }
-    }
-}
-
-/// Periodic input flags shared by `loop` and `simulate`: exactly one of them.
-#[derive(Args, Debug, Clone)]
-pub struct PeriodicInputArgs {
-    /// One period as its turning points, e.g. 0,1,0.2,1.5 (negative numbers work, with or
-    /// without '=').
-    #[arg(
-        long,
-        value_name = "U0,U1,...",
-        allow_hyphen_values = true,
-        help_heading = "Input"
-    )]
-    pub turning_points: Option<String>,
-    /// The paper's bimodal input (Definition 1), visited umin1 -> umax1 -> umin2 -> umax2.
-    #[arg(
-        long,
-        value_name = "UMIN1,UMIN2,UMAX1,UMAX2",
-        allow_hyphen_values = true,
-        help_heading = "Input"
-    )]
-    pub bimodal: Option<String>,
-    /// One period of samples from a CSV file: header 't,u' or a single column 'u' (header
-    /// optional; '#' comments allowed).
-    #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
-    pub input: Option<PathBuf>,
-}
-
-/// The periodic input as given.
-#[derive(Debug, Clone)]
-pub enum PeriodicInput {
-    TurningPoints(lugre::TurningPoints),
-    Bimodal(lugre::Bimodal),
-    /// One period of samples, reduced to its turning points.
-    Samples(lugre::TurningPoints),
-}
-
-impl PeriodicInputArgs {
-    /// The flags given, by name.
-    pub fn given(&self) -> Vec<&'static str> {
-        let mut v = Vec::new();
-        if self.turning_points.is_some() {
-            v.push("--turning-points");
-        }
-        if self.bimodal.is_some() {
-            v.push("--bimodal");
-        }
-        if self.input.is_some() {
-            v.push("--input");
-        }
-        v
-    }
-
-    pub fn build(&self) -> Result<PeriodicInput> {
-        let given = self.given();
-        if given.len() > 1 {
-            bail!("give one input, not {}", given.join(" and "));
-        }
-        if let Some(text) = &self.turning_points {
-            let u = parse_list("--turning-points", text)?;
-            return Ok(PeriodicInput::TurningPoints(
-                lugre::TurningPoints::new(&u)
-                    .map_err(|e| anyhow::anyhow!("--turning-points: {e}"))?,
-            ));
-        }
-        if let Some(text) = &self.bimodal {
-            let v = parse_list("--bimodal", text)?;
-            if v.len() != 4 {
-                bail!(
-                    "--bimodal takes 4 numbers UMIN1,UMIN2,UMAX1,UMAX2, got {}",
-                    v.len()
+    #[test]
+    fn the_parser_is_consistent_and_every_flag_has_help() {
+        let cli = Cli::command();
+        cli.clone().debug_assert();
+        for command in cli.get_subcommands() {
+            for arg in command.get_arguments() {
+                assert!(
+                    arg.get_help().is_some(),
+                    "lugre {} --{}: no help",
+                    command.get_name(),
+                    arg.get_id()
                 );
             }
-            return Ok(PeriodicInput::Bimodal(
-                lugre::Bimodal::new(v[0], v[1], v[2], v[3])
-                    .map_err(|e| anyhow::anyhow!("--bimodal: {e}"))?,
-            ));
-        }
-        if let Some(path) = &self.input {
-            let series = crate::csv_in::read_series(path)?;
-            let turning_points = match &series.t {
-                Some(t) => lugre::TurningPoints::from_samples(t, &series.u),
-                None => lugre::TurningPoints::new(&series.u),
-            }
-            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-            return Ok(PeriodicInput::Samples(turning_points));
-        }
-        bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2 or --input FILE.csv")
-    }
-}
-
-impl PeriodicInput {
-    pub fn turning_points(&self) -> lugre::TurningPoints {
-        match self {
-            PeriodicInput::TurningPoints(tp) => tp.clone(),
-            PeriodicInput::Bimodal(b) => b.turning_points(),
-            PeriodicInput::Samples(turning_points) => turning_points.clone(),
         }
     }
-}
-
-#[derive(Args, Debug)]
-pub struct LoopArgs {
-    #[command(flatten)]
-    pub model: ModelArgs,
-    #[command(flatten)]
-    pub input: PeriodicInputArgs,
-    /// Evaluate the loop at these rho (any real numbers; the loop is periodic).
-    #[arg(
-        long,
-        value_name = "R1,R2,...",
-        allow_hyphen_values = true,
-        help_heading = "Output"
-    )]
-    pub at: Option<String>,
-    /// N >= 2 evenly spaced points over one period, rho = 0 and rho = P included.
-    #[arg(
-        long,
-        value_name = "N",
-        allow_hyphen_values = true,
-        value_parser = Whole(2),
-        help_heading = "Output"
-    )]
-    pub samples: Option<usize>,
-    /// Print one JSON document instead of the table.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// Write the sampled curve (columns rho,u,y) to this CSV file (1001 samples unless
-    /// --samples or --at is given).
-    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
-    pub csv: Option<PathBuf>,
-    /// Draw the loop in the (u, y°) plane, the minor loops solid with their start (circle) and
-    /// end (square) marked, to an SVG or PNG file.
-    #[arg(long, value_name = "FILE.svg|FILE.png", help_heading = "Output")]
-    pub plot: Option<PathBuf>,
 }

@@ -3,12 +3,12 @@
 //! a number the same way), and text quoted in messages ([`quoted`], [`excerpt`]).
 
 /// A number in a message: shortest round-trip, exponent form beyond 1e-5..1e16 (`1e299`).
-pub use lugre::error::num;
+pub(crate) use lugre::error::num;
 
 /// `x` with up to `digits` significant digits, plain notation for moderate magnitudes. Never
 /// more digits than `x`'s shortest round-trip form has: a subnormal typed as `1e-320` is
 /// stored as 9.99988867...e-321 (it has fewer bits), and prints as `1e-320`, as typed.
-pub fn sig(x: f64, digits: usize) -> String {
+pub(crate) fn sig(x: f64, digits: usize) -> String {
     if x == 0.0 {
         return "0".into();
     }
@@ -60,7 +60,7 @@ pub fn exact(x: f64) -> String {
 
 /// Text from a file, quoted for a message: whole up to [`QUOTE_CHARS`] characters, else its
 /// start, '...' and its length (a cell or a header may run to a megabyte).
-pub fn quoted(text: &str) -> String {
+pub(crate) fn quoted(text: &str) -> String {
     match shortened(text) {
         (start, None) => format!("'{start}'"),
         (start, Some(n)) => format!("'{start}...' ({n} characters)"),
@@ -68,7 +68,7 @@ pub fn quoted(text: &str) -> String {
 }
 
 /// [`quoted`] without the quotes.
-pub fn excerpt(text: &str) -> String {
+pub(crate) fn excerpt(text: &str) -> String {
     match shortened(text) {
         (start, None) => start,
         (start, Some(n)) => format!("{start}... ({n} characters)"),
@@ -76,7 +76,7 @@ pub fn excerpt(text: &str) -> String {
 }
 
 /// A message written elsewhere (clap's, which quote the command line whole: `unexpected
-/// argument '...' found`) with every '-quoted text cut short as [`quoted`] cuts it.
+/// argument '...' found`) with every '-quoted text cut short as `quoted` cuts it.
 pub fn shorten_quoted(message: &str) -> String {
     let parts: Vec<&str> = message.split('\'').collect();
     let mut out = String::with_capacity(message.len().min(1024));

@@ -1,18 +1,29 @@
-//! The `lugre` command as a library: argument parsing, CSV and JSON I/O, figures and the
-//! commands themselves. The binary (`main.rs`) parses the arguments, runs a command and maps
-//! errors to exit statuses; the modules are public so that the fuzz targets (`fuzz/`) can drive
-//! the CSV reader and the number-list parser directly.
+//! The `lugre` command as a library. The binary (`main.rs`) parses the arguments into a
+//! [`Cli`], runs it and maps errors to exit statuses; everything else is private to the crate,
+//! except the two parsers the fuzz targets (`fuzz/`) drive directly, in [`fuzzing`].
+//!
+//! Modules: `cli` (the parser and the dispatch to the commands), `args` (the flags several
+//! commands share), `commands` (one module per command), `io` (CSV in and out, JSON out, atomic
+//! files, the spool, progress), `plot` (figures), `hysteresis` (what `loop` and `paper` both
+//! draw), `fmt` and `numbers` (numbers out and in).
+#![warn(unreachable_pub)]
 
-pub mod atomic;
-pub mod cli;
-pub mod csv_in;
-pub mod cycles_cmd;
-pub mod fit_cmd;
-pub mod fmt;
-pub mod json_out;
-pub mod loop_cmd;
-pub mod numbers;
-pub mod paper;
-mod paper_html;
-pub mod plot;
-pub mod simulate_cmd;
+mod args;
+mod cli;
+mod commands;
+mod fmt;
+mod hysteresis;
+mod io;
+mod numbers;
+mod plot;
+
+pub use cli::Cli;
+pub use fmt::shorten_quoted;
+
+/// What the fuzz targets drive: the CSV reader and the parser of number lists. Not an API.
+#[doc(hidden)]
+pub mod fuzzing {
+    pub use crate::fmt::exact;
+    pub use crate::io::csv::{Columns, SampleReader};
+    pub use crate::numbers::{parse_list, parse_number};
+}

@@ -3,7 +3,7 @@
 //! Exit status: 0 success, 2 bad input or usage, 1 internal error (a bug).
 
 use clap::Parser;
-use lugre_cli::{cli, cycles_cmd, fit_cmd, loop_cmd, paper, simulate_cmd};
+use lugre_cli::Cli;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -28,11 +28,11 @@ fn main() -> ExitCode {
         );
     }));
 
-    let cli = match cli::Cli::try_parse() {
+    let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return clap_error(e),
     };
-    let result = std::panic::catch_unwind(|| run(cli));
+    let result = std::panic::catch_unwind(|| cli.run());
     match result {
         Ok(Ok(())) => ExitCode::SUCCESS,
         // A reader that stopped early (`| head`) is not an error.
@@ -46,16 +46,6 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
         Err(_) => ExitCode::from(1),
-    }
-}
-
-fn run(cli: cli::Cli) -> anyhow::Result<()> {
-    match cli.command {
-        cli::Command::Loop(args) => loop_cmd::run(&args),
-        cli::Command::Cycles(args) => cycles_cmd::run(&args),
-        cli::Command::Simulate(args) => simulate_cmd::run(&args),
-        cli::Command::Fit(args) => fit_cmd::run(&args),
-        cli::Command::Paper(args) => paper::run(&args),
     }
 }
 
@@ -84,7 +74,7 @@ fn clap_error(e: clap::Error) -> ExitCode {
             let msg = head.join(" ");
             let msg = msg.strip_prefix("error: ").unwrap_or(&msg);
             // clap quotes a bad argument whole, however long.
-            let msg = lugre_cli::fmt::shorten_quoted(msg);
+            let msg = lugre_cli::shorten_quoted(msg);
             let _ = writeln!(
                 std::io::stderr(),
                 "lugre: error: {msg} (see 'lugre --help')"

@@ -45,12 +45,12 @@ pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
 /// named with the flag in one sentence: `--fc expects a number, got '--'`. The model or the
 /// command judges the number itself (finite, positive, in range, ...).
 #[derive(Clone, Copy, Debug)]
-pub struct Real;
+pub(crate) struct Real;
 
 /// The value parser of a flag that takes a whole number of at least `.0` (`--samples`,
 /// `--bins`): `--samples must be a whole number >= 2, got -1`.
 #[derive(Clone, Copy, Debug)]
-pub struct Whole(pub usize);
+pub(crate) struct Whole(pub usize);
 
 impl TypedValueParser for Real {
     type Value = f64;

@@ -8,26 +8,28 @@
 //! memory); [`read_series`] and [`read_table`] collect it. All share the per-row parsing and
 //! validation. With a column name (`lugre cycles --column NAME`), any header naming that column
 //! is accepted, a column `t` is read as times, and other columns are ignored.
+//!
+//! [`NumberRows`] writes the rows of the CSV files the commands produce.
 
 use anyhow::{bail, Context, Result};
-use std::io::Read;
+use std::io::{Read, Write};
+use std::path::Path;
 
 use crate::fmt::{excerpt, num, quoted};
-use std::path::Path;
 
 /// A sampled series: optional times (strictly increasing) and values, all finite.
 #[derive(Debug, Clone)]
-pub struct Series {
-    pub t: Option<Vec<f64>>,
-    pub u: Vec<f64>,
+pub(crate) struct Series {
+    pub(crate) t: Option<Vec<f64>>,
+    pub(crate) u: Vec<f64>,
 }
 
 /// Every row of a file: optional times (strictly increasing) and each value column (all
 /// finite), in the order of [`Columns`].
 #[derive(Debug, Clone)]
-pub struct Table {
-    pub t: Option<Vec<f64>>,
-    pub columns: Vec<Vec<f64>>,
+pub(crate) struct Table {
+    pub(crate) t: Option<Vec<f64>>,
+    pub(crate) columns: Vec<Vec<f64>>,
 }
 
 /// Which columns a file holds.
@@ -62,12 +64,12 @@ impl From<Table> for Series {
     }
 }
 
-pub fn read_series(path: &Path) -> Result<Series> {
+pub(crate) fn read_series(path: &Path) -> Result<Series> {
     read_table(path, Columns::Series).map(Series::from)
 }
 
 /// Reads every row of `path` (at least one).
-pub fn read_table(path: &Path, columns: Columns) -> Result<Table> {
+pub(crate) fn read_table(path: &Path, columns: Columns) -> Result<Table> {
     collect(SampleReader::open(path, columns)?).with_context(|| path.display().to_string())
 }
 
@@ -250,74 +252,89 @@ fn utf8_fields(record: &csv::ByteRecord, line: u64) -> Result<Vec<&str>> {
 
 /// The layout from the first row (a header, or numbers), and whether that row is a header.
 fn layout(fields: &[&str], columns: Columns, line: u64) -> Result<(Layout, bool)> {
+    if fields.iter().all(|f| f.parse::<f64>().is_ok()) {
+        return Ok((layout_without_header(fields.len(), columns, line)?, false));
+    }
+    let layout = match columns {
+        Columns::Named(name) => named_column(fields, name, line)?,
+        _ => header_layout(fields, columns, line)?,
+    };
+    Ok((layout, true))
+}
+
+/// The layout of a file whose first row is numbers (`n` of them): the values in order, after
+/// the time if there is one more column.
+fn layout_without_header(n: usize, columns: Columns, line: u64) -> Result<Layout> {
     let wanted = columns.names();
     let listed = wanted.join(",");
-    let numeric = fields.iter().all(|f| f.parse::<f64>().is_ok());
-    if numeric {
-        if let Columns::Named(name) = columns {
-            if !name.eq_ignore_ascii_case("u") {
-                bail!("line {line}: no header line, so no column '{name}' (a file without a header has the columns u or t,u)");
-            }
+    if let Columns::Named(name) = columns {
+        if !name.eq_ignore_ascii_case("u") {
+            bail!("line {line}: no header line, so no column '{name}' (a file without a header has the columns u or t,u)");
         }
-        // Without a header, the values in order, after the time if there is one more column.
-        let k = wanted.len();
-        let n = fields.len();
-        if n != k && n != k + 1 {
-            let s = if k == 1 { "" } else { "s" };
-            bail!("line {line}: expected {k} column{s} ({listed}) or {} columns (t,{listed}), found {n}", k + 1);
-        }
-        let t = (n == k + 1).then_some(0);
-        let first = usize::from(t.is_some());
-        return Ok((
-            Layout {
-                width: n,
-                t,
-                values: (first..)
-                    .zip(wanted)
-                    .map(|(k, name)| (k, name.to_string()))
-                    .collect(),
-                header: if t.is_some() {
-                    format!("t,{listed}")
-                } else {
-                    listed
-                },
-            },
-            false,
-        ));
     }
+    let k = wanted.len();
+    if n != k && n != k + 1 {
+        let s = if k == 1 { "" } else { "s" };
+        bail!(
+            "line {line}: expected {k} column{s} ({listed}) or {} columns (t,{listed}), found {n}",
+            k + 1
+        );
+    }
+    let t = (n == k + 1).then_some(0);
+    let first = usize::from(t.is_some());
+    Ok(Layout {
+        width: n,
+        t,
+        values: (first..)
+            .zip(wanted)
+            .map(|(k, name)| (k, name.to_string()))
+            .collect(),
+        header: if t.is_some() {
+            format!("t,{listed}")
+        } else {
+            listed
+        },
+    })
+}
+
+/// The layout of the column `name` in the header `fields` (and of `t`, if there is one).
+fn named_column(fields: &[&str], name: &str, line: u64) -> Result<Layout> {
     let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
     let header = fields.join(",");
     let find = |n: &str| names.iter().position(|x| x.eq_ignore_ascii_case(n));
-    if let Columns::Named(name) = columns {
-        let Some(u) = find(name) else {
-            bail!(
-                "line {line}: no column '{name}' in the header {}",
-                quoted(&header)
-            );
-        };
-        if names
-            .iter()
-            .filter(|x| x.eq_ignore_ascii_case(name))
-            .count()
-            > 1
-        {
-            bail!(
-                "line {line}: the header {} names '{name}' more than once",
-                quoted(&header)
-            );
-        }
-        let t = find("t").filter(|&k| k != u);
-        return Ok((
-            Layout {
-                width: fields.len(),
-                t,
-                values: vec![(u, fields[u].to_string())],
-                header: excerpt(&header),
-            },
-            true,
-        ));
+    let Some(u) = find(name) else {
+        bail!(
+            "line {line}: no column '{name}' in the header {}",
+            quoted(&header)
+        );
+    };
+    if names
+        .iter()
+        .filter(|x| x.eq_ignore_ascii_case(name))
+        .count()
+        > 1
+    {
+        bail!(
+            "line {line}: the header {} names '{name}' more than once",
+            quoted(&header)
+        );
     }
-    // Exactly the value columns, and perhaps `t`, each once, in any order.
+    let t = find("t").filter(|&k| k != u);
+    Ok(Layout {
+        width: fields.len(),
+        t,
+        values: vec![(u, fields[u].to_string())],
+        header: excerpt(&header),
+    })
+}
+
+/// The layout of a header naming exactly the value columns, and perhaps `t`, each once, in
+/// any order.
+fn header_layout(fields: &[&str], columns: Columns, line: u64) -> Result<Layout> {
+    let wanted = columns.names();
+    let listed = wanted.join(",");
+    let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
+    let find = |n: &str| names.iter().position(|x| x.eq_ignore_ascii_case(n));
     let t = find("t");
     let values: Option<Vec<(usize, String)>> = wanted
         .iter()
@@ -336,19 +353,16 @@ fn layout(fields: &[&str], columns: Columns, line: u64) -> Result<(Layout, bool)
             } else {
                 listed
             };
-            Ok((
-                Layout {
-                    width: names.len(),
-                    t,
-                    values,
-                    header,
-                },
-                true,
-            ))
+            Ok(Layout {
+                width: names.len(),
+                t,
+                values,
+                header,
+            })
         }
         _ => bail!(
             "line {line}: unexpected header {}: expected '{listed}' or 't,{listed}'",
-            quoted(&header)
+            quoted(&fields.join(","))
         ),
     }
 }
@@ -452,6 +466,31 @@ impl<R: Read> Read for SkipBom<R> {
             return Ok(n);
         }
         self.inner.read(buf)
+    }
+}
+
+/// Writes rows of finite numbers, each in its shortest round-trip form (as
+/// [`crate::fmt::exact`] writes it) without an allocation per number: a CSV file may have 10^8
+/// of them.
+pub(crate) struct NumberRows {
+    buf: zmij::Buffer,
+}
+
+impl NumberRows {
+    pub(crate) fn new() -> Self {
+        Self {
+            buf: zmij::Buffer::new(),
+        }
+    }
+
+    /// One row: the numbers separated by commas, then a line break.
+    pub(crate) fn write(&mut self, w: &mut dyn Write, row: &[f64]) -> std::io::Result<()> {
+        for (i, &x) in row.iter().enumerate() {
+            let s = self.buf.format_finite(x);
+            w.write_all(s.strip_suffix(".0").unwrap_or(s).as_bytes())?;
+            w.write_all(if i + 1 == row.len() { b"\n" } else { b"," })?;
+        }
+        Ok(())
     }
 }
 

@@ -27,7 +27,10 @@ fn temporary_sibling(path: &Path) -> Result<std::path::PathBuf> {
 }
 
 /// Writes `path` atomically with `fill`.
-pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
+pub(crate) fn write_atomic(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn Write) -> Result<()>,
+) -> Result<()> {
     let tmp = temporary_sibling(path)?;
     let result = (|| -> Result<()> {
         let file = std::fs::File::create(&tmp)

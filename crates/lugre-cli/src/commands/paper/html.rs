@@ -8,11 +8,12 @@
 //! `lugre loop ARGS --json` for the table's `data-args`, so that they can be checked
 //! mechanically (the integration tests do).
 
-use lugre::LoopKind;
+use lugre::{Loop, TheoremA};
 use std::fmt::Write;
 
+use super::{LoopExample, Paper, PaperFigure};
 use crate::fmt::{exact, sig};
-use crate::paper::{LoopExample, Paper, PaperFigure};
+use crate::hysteresis::kind_name;
 
 /// A section of the page: an anchor, a heading, an introduction, its figures and the loop
 /// examples it tabulates.
@@ -24,9 +25,10 @@ struct Section<'a> {
     examples: Vec<&'a LoopExample>,
 }
 
-pub fn page(paper: &Paper) -> String {
+/// The page's sections, in order.
+fn sections(paper: &Paper) -> [Section<'_>; 5] {
     let example = |id: &'static str| paper.examples.iter().filter(move |e| e.id == id);
-    let sections = [
+    [
         Section {
             id: "normalized-input",
             heading: "§3.2.2 The normalized input",
@@ -75,8 +77,11 @@ pub fn page(paper: &Paper) -> String {
                 .filter(|e| matches!(e.id, "example4" | "fig16" | "fig17"))
                 .collect(),
         },
-    ];
+    ]
+}
 
+pub(crate) fn page(paper: &Paper) -> String {
+    let sections = sections(paper);
     let mut h = String::with_capacity(64 * 1024);
     h.push_str(HEAD);
     let _ = write!(
@@ -97,27 +102,31 @@ pub fn page(paper: &Paper) -> String {
     h.push_str("<li><a href=\"#numbers\">About the numbers</a></li></ul></nav>\n");
 
     for s in &sections {
-        let _ = write!(
-            h,
-            "<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>\n",
-            s.id,
-            esc(s.heading),
-            esc(s.intro)
-        );
-        for &n in s.figures {
-            if let Some(f) = paper.figures.iter().find(|f| f.number == n) {
-                figure(&mut h, f);
-            }
-            for ex in s.examples.iter().filter(|e| e.figures.last() == Some(&n)) {
-                table(&mut h, ex);
-            }
-        }
-        h.push_str("</section>\n");
+        section(&mut h, paper, s);
     }
     errata(&mut h);
     h.push_str(NUMBERS);
     h.push_str("</body>\n</html>\n");
     h
+}
+
+fn section(h: &mut String, paper: &Paper, s: &Section) {
+    let _ = write!(
+        h,
+        "<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>\n",
+        s.id,
+        esc(s.heading),
+        esc(s.intro)
+    );
+    for &n in s.figures {
+        if let Some(f) = paper.figures.iter().find(|f| f.number == n) {
+            figure(h, f);
+        }
+        for ex in s.examples.iter().filter(|e| e.figures.last() == Some(&n)) {
+            table(h, ex);
+        }
+    }
+    h.push_str("</section>\n");
 }
 
 fn figure(h: &mut String, f: &PaperFigure) {
@@ -181,22 +190,39 @@ fn table(h: &mut String, ex: &LoopExample) {
     h.push_str("</table>\n");
 
     if let Some(ta) = &ex.theorem_a {
-        h.push_str(
-            "<table>\n<caption>Theorem A: ρ₀ … ρ₅ and y° there</caption>\n\
-             <tr><th>i</th><th>ρᵢ</th><th>y°(ρᵢ)</th></tr>\n",
-        );
-        for i in 0..6 {
-            let _ = write!(h, "<tr><td>{i}</td>");
-            num(h, &format!("theorem_a.rho.{i}"), ta.rho[i]);
-            num(h, &format!("theorem_a.y.{i}"), ta.y[i]);
-            h.push_str("</tr>\n");
-        }
-        h.push_str("<tr><td>minor loop [ρ₁, ρ₅]</td>");
-        num(h, "theorem_a.minor_loop.0", ta.minor_loop[0]);
-        num(h, "theorem_a.minor_loop.1", ta.minor_loop[1]);
-        h.push_str("</tr>\n</table>\n");
+        theorem_a_table(h, ta);
     }
 
+    loops_table(h, &ex.loops);
+    let _ = write!(
+        h,
+        "<p>Energy dissipated per period (the work over the whole loop): \
+         <span data-json=\"work_per_period\">{}</span> (≈ {}).</p>\n</div><!-- /numbers -->\n",
+        exact(hl.work_per_period()),
+        sig(hl.work_per_period(), 6)
+    );
+}
+
+/// Theorem A's rho_0 .. rho_5 and y° there, and the minor loop.
+fn theorem_a_table(h: &mut String, ta: &TheoremA) {
+    h.push_str(
+        "<table>\n<caption>Theorem A: ρ₀ … ρ₅ and y° there</caption>\n\
+         <tr><th>i</th><th>ρᵢ</th><th>y°(ρᵢ)</th></tr>\n",
+    );
+    for i in 0..6 {
+        let _ = write!(h, "<tr><td>{i}</td>");
+        num(h, &format!("theorem_a.rho.{i}"), ta.rho[i]);
+        num(h, &format!("theorem_a.y.{i}"), ta.y[i]);
+        h.push_str("</tr>\n");
+    }
+    h.push_str("<tr><td>minor loop [ρ₁, ρ₅]</td>");
+    num(h, "theorem_a.minor_loop.0", ta.minor_loop[0]);
+    num(h, "theorem_a.minor_loop.1", ta.minor_loop[1]);
+    h.push_str("</tr>\n</table>\n");
+}
+
+/// Every loop: its arc, its turning points and its energies.
+fn loops_table(h: &mut String, loops: &[Loop]) {
     h.push_str(
         "<table class=\"wide\">\n<caption>Every loop: the arc from ρ_A through the reversal \
          ρ_B to ρ_C, the first return to u_A, and the energy over it</caption>\n\
@@ -204,11 +230,8 @@ fn table(h: &mut String, ex: &LoopExample) {
          <th>u_B</th><th>y°(ρ_A)</th><th>y°(ρ_C)</th><th>work W = ∫ y° dψ</th>\
          <th>stored ΔV</th><th>dissipated D = W − ΔV</th><th>gap y_C − y_A</th></tr>\n",
     );
-    for (i, l) in ex.loops.iter().enumerate() {
-        let kind = match l.kind {
-            LoopKind::Major => "major",
-            LoopKind::Minor => "minor",
-        };
+    for (i, l) in loops.iter().enumerate() {
+        let kind = kind_name(l.kind);
         let _ = write!(h, "<tr><td>{i}</td><td>{kind}</td>");
         num(h, &format!("loops.{i}.start.rho"), l.start.rho);
         num(h, &format!("loops.{i}.reversal.rho"), l.reversal.rho);
@@ -228,13 +251,6 @@ fn table(h: &mut String, ex: &LoopExample) {
         h.push_str("</tr>\n");
     }
     h.push_str("</table>\n");
-    let _ = write!(
-        h,
-        "<p>Energy dissipated per period (the work over the whole loop): \
-         <span data-json=\"work_per_period\">{}</span> (≈ {}).</p>\n</div><!-- /numbers -->\n",
-        exact(hl.work_per_period()),
-        sig(hl.work_per_period(), 6)
-    );
 }
 
 fn errata(h: &mut String) {

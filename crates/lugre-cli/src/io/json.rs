@@ -7,14 +7,14 @@ use std::io::{self, Write};
 
 const FLUSH_AT: usize = 1 << 20;
 
-pub struct JsonOut<W: Write> {
+pub(crate) struct JsonOut<W: Write> {
     out: W,
     buf: Vec<u8>,
     fmt: zmij::Buffer,
 }
 
 impl<W: Write> JsonOut<W> {
-    pub fn new(out: W) -> Self {
+    pub(crate) fn new(out: W) -> Self {
         Self {
             out,
             buf: Vec::with_capacity(FLUSH_AT + 4096),
@@ -24,14 +24,14 @@ impl<W: Write> JsonOut<W> {
 
     /// Raw JSON text (punctuation, keys, or an already-serialized value).
     #[inline]
-    pub fn raw(&mut self, s: &str) -> io::Result<()> {
+    pub(crate) fn raw(&mut self, s: &str) -> io::Result<()> {
         self.buf.extend_from_slice(s.as_bytes());
         self.maybe_flush()
     }
 
     /// A finite number (callers check finiteness first: JSON has no NaN/inf).
     #[inline]
-    pub fn num(&mut self, x: f64) -> io::Result<()> {
+    pub(crate) fn num(&mut self, x: f64) -> io::Result<()> {
         debug_assert!(x.is_finite());
         let s = self.fmt.format_finite(x);
         self.buf.extend_from_slice(s.as_bytes());
@@ -39,20 +39,20 @@ impl<W: Write> JsonOut<W> {
     }
 
     #[inline]
-    pub fn int(&mut self, x: usize) -> io::Result<()> {
+    pub(crate) fn int(&mut self, x: usize) -> io::Result<()> {
         write!(self.buf, "{x}")
     }
 
     /// `prefix` (punctuation and key, e.g. `,"work":`) then a number: one copy each.
     #[inline]
-    pub fn field(&mut self, prefix: &str, x: f64) -> io::Result<()> {
+    pub(crate) fn field(&mut self, prefix: &str, x: f64) -> io::Result<()> {
         self.buf.extend_from_slice(prefix.as_bytes());
         self.num(x)
     }
 
     /// `{"rho":..,"u":..,"y":..}`.
     #[inline]
-    pub fn point(&mut self, p: &LoopPoint) -> io::Result<()> {
+    pub(crate) fn point(&mut self, p: &LoopPoint) -> io::Result<()> {
         self.field("{\"rho\":", p.rho)?;
         self.field(",\"u\":", p.u)?;
         self.field(",\"y\":", p.y)?;
@@ -61,7 +61,7 @@ impl<W: Write> JsonOut<W> {
     }
 
     /// `[x0,x1,...]`.
-    pub fn array(&mut self, xs: &[f64]) -> io::Result<()> {
+    pub(crate) fn array(&mut self, xs: &[f64]) -> io::Result<()> {
         self.buf.push(b'[');
         for (i, &x) in xs.iter().enumerate() {
             if i > 0 {
@@ -74,7 +74,7 @@ impl<W: Write> JsonOut<W> {
     }
 
     /// `[{point},...]`.
-    pub fn points(&mut self, ps: &[LoopPoint]) -> io::Result<()> {
+    pub(crate) fn points(&mut self, ps: &[LoopPoint]) -> io::Result<()> {
         self.buf.push(b'[');
         for (i, p) in ps.iter().enumerate() {
             if i > 0 {
@@ -95,7 +95,7 @@ impl<W: Write> JsonOut<W> {
         Ok(())
     }
 
-    pub fn finish(mut self) -> io::Result<()> {
+    pub(crate) fn finish(mut self) -> io::Result<()> {
         self.out.write_all(&self.buf)?;
         self.buf.clear();
         self.out.flush()

@@ -1,0 +1,274 @@
+//! The flags several commands share, each defined once and flattened into the commands' own
+//! flags: the model (`--model`, `--sigma0`, ...) and the periodic input (`--turning-points`,
+//! `--bimodal`, `--input`), each with what it builds, and the outputs (`--json`, `--csv`,
+//! `--plot`).
+
+use anyhow::{bail, Result};
+use clap::{Args, ValueEnum};
+use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
+use std::path::PathBuf;
+
+use crate::numbers::{parse_list, Real};
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ModelKind {
+    Lugre,
+    Dahl,
+}
+
+/// Model flags shared by every command. Defaults: the paper's Examples 2-3.
+#[derive(Args, Debug, Clone)]
+pub(crate) struct ModelArgs {
+    /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).
+    #[arg(long, value_enum, default_value = "lugre", help_heading = "Model")]
+    pub(crate) model: ModelKind,
+    /// LuGre bristle stiffness sigma0 > 0 [N/m] (default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) sigma0: Option<f64>,
+    /// LuGre micro-damping sigma1 >= 0 [N s/m] (default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) sigma1: Option<f64>,
+    /// LuGre viscous coefficient sigma2 >= 0 [N s/m], f(v) = sigma2 v (default 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) sigma2: Option<f64>,
+    /// Coulomb force Fc > 0 [N] (LuGre and Dahl; default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) fc: Option<f64>,
+    /// LuGre stiction force Fs > 0 [N]; g(0) = Fs (default 2).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) fs: Option<f64>,
+    /// LuGre Stribeck velocity vs > 0 [m/s] (default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) vs: Option<f64>,
+    /// LuGre Stribeck exponent beta > 0: g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta) (default 1).
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) beta: Option<f64>,
+    /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
+    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
+    pub(crate) rho: Option<f64>,
+}
+
+/// A validated model as chosen on the command line.
+#[derive(Debug, Clone)]
+pub(crate) enum ModelChoice {
+    LuGre(LuGre),
+    Dahl(Dahl),
+}
+
+impl ModelArgs {
+    pub(crate) fn build(&self) -> Result<ModelChoice> {
+        match self.model {
+            ModelKind::Lugre => {
+                if self.rho.is_some() {
+                    bail!("--rho is the Dahl model's parameter (add --model dahl)");
+                }
+                let d = LuGreParams::default();
+                let p = LuGreParams {
+                    sigma0: self.sigma0.unwrap_or(d.sigma0),
+                    sigma1: self.sigma1.unwrap_or(d.sigma1),
+                    sigma2: self.sigma2.unwrap_or(d.sigma2),
+                    fc: self.fc.unwrap_or(d.fc),
+                    fs: self.fs.unwrap_or(d.fs),
+                    vs: self.vs.unwrap_or(d.vs),
+                    beta: self.beta.unwrap_or(d.beta),
+                };
+                Ok(ModelChoice::LuGre(LuGre::from_params(p)?))
+            }
+            ModelKind::Dahl => {
+                let lugre_only = [
+                    ("--sigma0", self.sigma0),
+                    ("--sigma1", self.sigma1),
+                    ("--sigma2", self.sigma2),
+                    ("--fs", self.fs),
+                    ("--vs", self.vs),
+                    ("--beta", self.beta),
+                ];
+                if let Some((flag, _)) = lugre_only.iter().find(|(_, v)| v.is_some()) {
+                    bail!("{flag} is a LuGre parameter; the Dahl model takes --rho and --fc");
+                }
+                Ok(ModelChoice::Dahl(Dahl::new(
+                    self.rho.unwrap_or(1.0),
+                    self.fc.unwrap_or(1.0),
+                )?))
+            }
+        }
+    }
+}
+
+impl ModelChoice {
+    pub(crate) fn rate_independent(&self) -> RateIndependent {
+        match self {
+            ModelChoice::LuGre(m) => m.rate_independent(),
+            ModelChoice::Dahl(m) => m.rate_independent(),
+        }
+    }
+
+    /// The equivalent LuGre model (Dahl maps exactly).
+    pub(crate) fn lugre(&self) -> LuGre {
+        match self {
+            ModelChoice::LuGre(m) => m.clone(),
+            ModelChoice::Dahl(m) => m.to_lugre(),
+        }
+    }
+
+    /// The model as a JSON object: `kind` and its parameters.
+    pub(crate) fn to_json(&self) -> serde_json::Value {
+        match self {
+            ModelChoice::LuGre(m) => {
+                let p = m.params();
+                serde_json::json!({
+                    "kind": "lugre", "sigma0": p.sigma0, "sigma1": p.sigma1, "sigma2": p.sigma2,
+                    "fc": p.fc, "fs": p.fs, "vs": p.vs, "beta": p.beta,
+                })
+            }
+            ModelChoice::Dahl(m) => serde_json::json!({
+                "kind": "dahl", "rho": m.rho(), "fc": m.fc(),
+            }),
+        }
+    }
+
+    /// One line describing the model.
+    pub(crate) fn describe(&self) -> String {
+        use crate::fmt::sig;
+        match self {
+            ModelChoice::LuGre(m) => {
+                let p = m.params();
+                format!(
+                    "LuGre: sigma0 = {}, sigma1 = {}, sigma2 = {}, Fc = {}, Fs = {}, vs = {}, beta = {}",
+                    sig(p.sigma0, 10), sig(p.sigma1, 10), sig(p.sigma2, 10), sig(p.fc, 10),
+                    sig(p.fs, 10), sig(p.vs, 10), sig(p.beta, 10)
+                )
+            }
+            ModelChoice::Dahl(m) => format!(
+                "Dahl: rho = {}, Fc = {} (LuGre with sigma0 = rho Fc = {}, g = Fc)",
+                sig(m.rho(), 10),
+                sig(m.fc(), 10),
+                sig(m.rho() * m.fc(), 10)
+            ),
+        }
+    }
+}
+
+/// Periodic input flags shared by `loop` and `simulate`: exactly one of them.
+#[derive(Args, Debug, Clone)]
+pub(crate) struct PeriodicInputArgs {
+    /// One period as its turning points, e.g. 0,1,0.2,1.5 (negative numbers work, with or
+    /// without '=').
+    #[arg(
+        long,
+        value_name = "U0,U1,...",
+        allow_hyphen_values = true,
+        help_heading = "Input"
+    )]
+    pub(crate) turning_points: Option<String>,
+    /// The paper's bimodal input (Definition 1), visited umin1 -> umax1 -> umin2 -> umax2.
+    #[arg(
+        long,
+        value_name = "UMIN1,UMIN2,UMAX1,UMAX2",
+        allow_hyphen_values = true,
+        help_heading = "Input"
+    )]
+    pub(crate) bimodal: Option<String>,
+    /// One period of samples from a CSV file: header 't,u' or a single column 'u' (header
+    /// optional; '#' comments allowed).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
+    pub(crate) input: Option<PathBuf>,
+}
+
+/// The periodic input as given.
+#[derive(Debug, Clone)]
+pub(crate) enum PeriodicInput {
+    TurningPoints(lugre::TurningPoints),
+    Bimodal(lugre::Bimodal),
+    /// One period of samples, reduced to its turning points.
+    Samples(lugre::TurningPoints),
+}
+
+impl PeriodicInputArgs {
+    /// The flags given, by name.
+    pub(crate) fn given(&self) -> Vec<&'static str> {
+        let mut v = Vec::new();
+        if self.turning_points.is_some() {
+            v.push("--turning-points");
+        }
+        if self.bimodal.is_some() {
+            v.push("--bimodal");
+        }
+        if self.input.is_some() {
+            v.push("--input");
+        }
+        v
+    }
+
+    pub(crate) fn build(&self) -> Result<PeriodicInput> {
+        let given = self.given();
+        if given.len() > 1 {
+            bail!("give one input, not {}", given.join(" and "));
+        }
+        if let Some(text) = &self.turning_points {
+            let u = parse_list("--turning-points", text)?;
+            return Ok(PeriodicInput::TurningPoints(
+                lugre::TurningPoints::new(&u)
+                    .map_err(|e| anyhow::anyhow!("--turning-points: {e}"))?,
+            ));
+        }
+        if let Some(text) = &self.bimodal {
+            let v = parse_list("--bimodal", text)?;
+            if v.len() != 4 {
+                bail!(
+                    "--bimodal takes 4 numbers UMIN1,UMIN2,UMAX1,UMAX2, got {}",
+                    v.len()
+                );
+            }
+            return Ok(PeriodicInput::Bimodal(
+                lugre::Bimodal::new(v[0], v[1], v[2], v[3])
+                    .map_err(|e| anyhow::anyhow!("--bimodal: {e}"))?,
+            ));
+        }
+        if let Some(path) = &self.input {
+            let series = crate::io::csv::read_series(path)?;
+            let turning_points = match &series.t {
+                Some(t) => lugre::TurningPoints::from_samples(t, &series.u),
+                None => lugre::TurningPoints::new(&series.u),
+            }
+            .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+            return Ok(PeriodicInput::Samples(turning_points));
+        }
+        bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2 or --input FILE.csv")
+    }
+}
+
+impl PeriodicInput {
+    pub(crate) fn turning_points(&self) -> lugre::TurningPoints {
+        match self {
+            PeriodicInput::TurningPoints(tp) => tp.clone(),
+            PeriodicInput::Bimodal(b) => b.turning_points(),
+            PeriodicInput::Samples(turning_points) => turning_points.clone(),
+        }
+    }
+}
+
+/// `--json` and `--csv FILE`, the outputs besides the table. What the CSV holds is each
+/// command's to say: its arguments set `--csv`'s help (and `--json`'s, when it prints more than
+/// "one JSON document") with `#[command(mut_arg(...))]`.
+#[derive(Args, Debug, Clone)]
+pub(crate) struct OutputArgs {
+    /// Print one JSON document instead of the table.
+    #[arg(long, help_heading = "Output")]
+    pub(crate) json: bool,
+    #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
+    pub(crate) csv: Option<PathBuf>,
+}
+
+/// `--plot FILE`, a figure (SVG or PNG, by the file's extension). Each command says what it
+/// draws, with `#[command(mut_arg("plot", ...))]`.
+#[derive(Args, Debug, Clone)]
+pub(crate) struct PlotArgs {
+    #[arg(
+        id = "plot",
+        long = "plot",
+        value_name = "FILE.svg|FILE.png",
+        help_heading = "Output"
+    )]
+    pub(crate) path: Option<PathBuf>,
+}

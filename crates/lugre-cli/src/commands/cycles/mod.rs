@@ -1,0 +1,345 @@
+//! `lugre cycles`: the minor loops of a measured (non-periodic) history. Reversals, ASTM E1049-85
+//! rainflow cycles (as the Python package `rainflow` counts them), where each loop closes, and
+//! with a model the energy over each loop; a table, JSON, a CSV of the cycles, and a histogram.
+//!
+//! Everything streams: the file is read row by row into blocks for the counter, cycles are
+//! written as they close, and the table keeps only its first rows, so a 10^8-sample file runs
+//! in constant memory. JSON lists the reversals before the cycles, and the histogram needs the
+//! history's span before the first cycle is binned, so those read the input twice: the first
+//! pass validates everything and collects the reversals (in memory, or in a temporary file past
+//! `SPOOL_IN_MEMORY`), the second counts. Nothing reaches stdout before the input has been read
+//! once without error.
+//!
+//! Energies are computed with `--energy`, and whenever the model is named (`--x0`, `--model
+//! dahl`, or any model parameter): a model flag without energies would be silently ignored.
+
+use anyhow::{anyhow, bail, Context, Result};
+use clap::Args;
+use lugre::cycles::MAX_SAMPLE;
+use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter, Histogram};
+use std::io::{self, BufWriter, Write};
+use std::path::PathBuf;
+
+use crate::args::{ModelArgs, ModelChoice, ModelKind, OutputArgs};
+use crate::fmt::num;
+use crate::io::atomic::write_atomic;
+use crate::io::json::JsonOut;
+use crate::io::spool::Spool;
+use crate::numbers::{parse_list, Real, Whole};
+
+mod passes;
+mod report;
+mod source;
+
+use passes::{FirstPass, SecondPass};
+use report::Report;
+use source::{Counter, Source};
+
+/// Rows of the cycle table printed before the rest is summarised (all of it is in --json and
+/// --csv).
+const MAX_TABLE_ROWS: usize = 40;
+
+/// Reversal JSON kept in memory before it goes to a temporary file.
+const SPOOL_IN_MEMORY: usize = 8 << 20;
+
+/// Bins per axis of `--histogram` when `--bins` is not given, and the most allowed (the
+/// range x mean matrix has `bins^2` cells).
+const DEFAULT_BINS: usize = 10;
+const MAX_BINS: usize = 1000;
+
+/// The help of `--csv` for this command.
+const CSV_HELP: &str = "Write the cycles to this CSV file, one row per cycle";
+
+#[derive(Args, Debug)]
+#[command(
+    mut_arg("csv", |a| a.help(CSV_HELP))
+)]
+pub(crate) struct CyclesArgs {
+    /// The history from a CSV file: a column 'u' (header 'u' or 't,u', or no header), or the
+    /// column --column names; a column 't' is checked as strictly increasing times.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
+    pub(crate) input: Option<PathBuf>,
+    /// The column of FILE.csv holding the history, by its header name (default u); other
+    /// columns are ignored.
+    #[arg(long, value_name = "NAME", requires = "input", help_heading = "Input")]
+    pub(crate) column: Option<String>,
+    /// The history on the command line, e.g. -2,1,-3,5,-1,3,-4,4,-2.
+    #[arg(
+        long,
+        value_name = "V0,V1,...",
+        allow_hyphen_values = true,
+        conflicts_with = "input",
+        help_heading = "Input"
+    )]
+    pub(crate) values: Option<String>,
+    /// Noise gate: ignore reversals smaller than H (in units of u; 0, the default, is no
+    /// gate). Every range between consecutive reversals is then >= H.
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        value_parser = Real,
+        help_heading = "Counting"
+    )]
+    pub(crate) gate: Option<f64>,
+    /// Follow y* (eq. 6) along the history and report each full cycle's work, stored-energy
+    /// change, dissipation and closure gap (implied by --x0, --model dahl and any model
+    /// parameter; the model defaults to the paper's Examples 2-3).
+    #[arg(long, help_heading = "Energy")]
+    pub(crate) energy: bool,
+    /// Initial bristle deflection x(0), with |sigma0 x0| <= g(0): y*(0) = sigma0 x0 (default
+    /// 0; for Dahl, x0 = w(0) / rho).
+    #[arg(
+        long,
+        value_name = "X",
+        allow_hyphen_values = true,
+        value_parser = Real,
+        help_heading = "Energy"
+    )]
+    pub(crate) x0: Option<f64>,
+    #[command(flatten)]
+    pub(crate) model: ModelArgs,
+    #[command(flatten)]
+    pub(crate) output: OutputArgs,
+    /// Bin the counts by range, and by range and mean (the rainflow matrix), over the
+    /// history's span.
+    #[arg(long, help_heading = "Output")]
+    pub(crate) histogram: bool,
+    /// Bins per axis for --histogram (default 10).
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = Whole(1),
+        requires = "histogram",
+        help_heading = "Output"
+    )]
+    pub(crate) bins: Option<usize>,
+}
+
+impl CyclesArgs {
+    /// Whether the model is wanted (see the module docs).
+    fn wants_energy(&self) -> bool {
+        let m = &self.model;
+        self.energy
+            || self.x0.is_some()
+            || m.model == ModelKind::Dahl
+            || [
+                m.sigma0, m.sigma1, m.sigma2, m.fc, m.fs, m.vs, m.beta, m.rho,
+            ]
+            .iter()
+            .any(Option::is_some)
+    }
+}
+
+/// The model and initial state, when energies are wanted.
+struct Energy {
+    model: ModelChoice,
+    x0: f64,
+}
+
+/// The request, from the flags (all checked before any input is read).
+struct Request<'a> {
+    gate: f64,
+    energy: Option<Energy>,
+    /// Bins per axis of the histogram (when one is asked for).
+    bins: usize,
+    source: Source<'a>,
+}
+
+impl Request<'_> {
+    fn counter(&self) -> Result<Counter> {
+        Ok(match &self.energy {
+            Some(e) => Counter::Energy(Box::new(EnergyCycleCounter::new(
+                self.gate,
+                e.model.rate_independent(),
+                e.x0,
+            )?)),
+            None => Counter::Plain(CycleCounter::new(self.gate)?),
+        })
+    }
+
+    /// A counter's error, naming the input.
+    fn source_error(&self, e: lugre::HistoryError) -> anyhow::Error {
+        anyhow!("{}: {e}", self.source.name())
+    }
+
+    /// Streams the history through a new counter into `sink`; `check` reports the sink's
+    /// first error after each block.
+    fn count<S: CycleSink>(
+        &self,
+        sink: &mut S,
+        check: impl Fn(&mut S) -> Result<()>,
+    ) -> Result<CycleSummary> {
+        let mut counter = self.counter()?;
+        self.source.each_block(|block| {
+            counter
+                .push_all(block, sink)
+                .map_err(|e| self.source_error(e))?;
+            check(sink)
+        })?;
+        let summary = counter.finish(sink).map_err(|e| self.source_error(e))?;
+        check(sink)?;
+        check_history(&summary)?;
+        Ok(summary)
+    }
+}
+
+/// What the first pass finds: the span of the reversals, and their JSON.
+struct FirstPassResult {
+    min: f64,
+    max: f64,
+    reversals: Spool,
+}
+
+pub(crate) fn run(args: &CyclesArgs) -> Result<()> {
+    let request = parse(args)?;
+    let first = if args.output.json || args.histogram {
+        Some(first_pass(&request, args.output.json)?)
+    } else {
+        None
+    };
+    let histogram = match (&first, args.histogram) {
+        (Some(f), true) => Some(
+            Histogram::new(request.bins, f.min, f.max).map_err(|e| anyhow!("--histogram: {e}"))?,
+        ),
+        _ => None,
+    };
+    let stdout = io::stdout();
+    let mut json = if args.output.json {
+        let mut j = JsonOut::new(stdout.lock());
+        j.raw("{\"reversals\":[")?;
+        if let Some(f) = &first {
+            f.reversals.replay(|chunk| {
+                j.raw(std::str::from_utf8(chunk).context("reversal spool")?)?;
+                Ok(())
+            })?;
+        }
+        j.raw("],\"cycles\":[")?;
+        Some(j)
+    } else {
+        None
+    };
+    let report = match &args.output.csv {
+        Some(path) => {
+            let mut report = None;
+            write_atomic(path, |w| {
+                report = Some(second_pass(&request, histogram, Some(w), json.as_mut())?);
+                Ok(())
+            })?;
+            report.context("the count did not run")?
+        }
+        None => second_pass(&request, histogram, None, json.as_mut())?,
+    };
+    match json {
+        Some(mut j) => {
+            report.write_json_tail(&mut j, request.gate, request.energy.as_ref())?;
+            j.finish()?;
+        }
+        None => {
+            let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
+            report.print_table(
+                &mut out,
+                &request.source,
+                request.gate,
+                request.energy.as_ref(),
+            )?;
+            if let Some(path) = &args.output.csv {
+                writeln!(
+                    out,
+                    "\nWrote the cycles (one row per cycle) to {}",
+                    path.display()
+                )?;
+            }
+            out.flush()?;
+        }
+    }
+    Ok(())
+}
+
+fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
+    let gate = args.gate.unwrap_or(0.0);
+    // Validated here so that a bad flag is reported before any input is read.
+    CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
+    let energy = if args.wants_energy() {
+        let model = args.model.build()?;
+        let x0 = args.x0.unwrap_or(0.0);
+        EnergyCycleCounter::new(gate, model.rate_independent(), x0)
+            .map_err(|e| anyhow!("--x0: {e}"))?;
+        Some(Energy { model, x0 })
+    } else {
+        None
+    };
+    let bins = args.bins.unwrap_or(DEFAULT_BINS);
+    if args.histogram && !(1..=MAX_BINS).contains(&bins) {
+        bail!("--bins must be between 1 and {MAX_BINS}, got {bins}");
+    }
+    let column = args.column.as_deref().unwrap_or("u");
+    let source = match (&args.input, &args.values) {
+        (Some(path), None) => Source::File { path, column },
+        (None, Some(text)) => {
+            let u = parse_list("--values", text)?;
+            // Finite already (parse_list checks).
+            if let Some(k) = u.iter().position(|v| v.abs() > MAX_SAMPLE) {
+                bail!(
+                    "--values: item {} is {}, which is too large (|u| must be at most {})",
+                    k + 1,
+                    num(u[k]),
+                    num(MAX_SAMPLE)
+                );
+            }
+            Source::Values(u)
+        }
+        _ => bail!("no input: give --input FILE.csv or --values V0,V1,..."),
+    };
+    Ok(Request {
+        gate,
+        energy,
+        bins,
+        source,
+    })
+}
+
+/// The first pass (for JSON and the histogram): validates the history, finds its span and
+/// collects the reversals. With a model it follows the energies too, so that an overflow there
+/// is reported before the second pass streams anything to stdout.
+fn first_pass(request: &Request, json: bool) -> Result<FirstPassResult> {
+    let mut spool = Spool::new(SPOOL_IN_MEMORY);
+    let mut pass = FirstPass::new(json.then(|| JsonOut::new(&mut spool)));
+    request.count(&mut pass, FirstPass::check)?;
+    let (min, max) = pass.finish()?;
+    Ok(FirstPassResult {
+        min,
+        max,
+        reversals: spool,
+    })
+}
+
+/// The second pass (or the only one): counts, with energies, writes each cycle to the JSON
+/// document and the CSV file as it closes, and keeps what the report needs.
+fn second_pass(
+    request: &Request,
+    histogram: Option<Histogram>,
+    csv: Option<&mut dyn Write>,
+    json: Option<&mut JsonOut<io::StdoutLock<'static>>>,
+) -> Result<Report> {
+    let mut pass = SecondPass::new(json, csv, histogram);
+    // The totals are checked before the table is printed and the CSV renamed into place.
+    let summary = request.count(&mut pass, SecondPass::check)?;
+    Ok(pass.into_report(summary))
+}
+
+/// The totals along the history are finite (checked before anything is printed).
+fn check_history(summary: &CycleSummary) -> Result<()> {
+    let Some(h) = summary.energy else {
+        return Ok(());
+    };
+    if [h.work, h.stored_energy_change, h.dissipation, h.y_end]
+        .iter()
+        .all(|x| x.is_finite())
+    {
+        Ok(())
+    } else {
+        bail!("the energies along the history overflow f64 for this model and input (values too large)")
+    }
+}

@@ -1,0 +1,99 @@
+//! Where the samples come from (a CSV file, streamed, or `--values`), and the counter they go
+//! to (with or without energies).
+
+use anyhow::{bail, Context, Result};
+use lugre::cycles::MAX_SAMPLE;
+use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter};
+use std::path::Path;
+
+use crate::fmt::num;
+use crate::io::csv::{Columns, SampleReader};
+
+/// Samples handed to the counter at a time.
+const BLOCK: usize = 4096;
+
+/// Where the samples come from.
+pub(super) enum Source<'a> {
+    File { path: &'a Path, column: &'a str },
+    Values(Vec<f64>),
+}
+
+impl Source<'_> {
+    /// How errors name the input.
+    pub(super) fn name(&self) -> String {
+        match self {
+            Source::File { path, .. } => path.display().to_string(),
+            Source::Values(_) => "--values".into(),
+        }
+    }
+
+    /// How the table names the input.
+    pub(super) fn describe(&self) -> String {
+        match self {
+            Source::File { path, column } => format!("{} (column {column})", path.display()),
+            Source::Values(_) => "--values".into(),
+        }
+    }
+
+    /// Streams the samples in blocks to `f`.
+    pub(super) fn each_block(&self, mut f: impl FnMut(&[f64]) -> Result<()>) -> Result<()> {
+        match self {
+            Source::Values(v) => v.chunks(BLOCK).try_for_each(f),
+            Source::File { path, column } => {
+                let name = || path.display().to_string();
+                let mut reader = SampleReader::open(path, Columns::Named(column))?;
+                let mut block = Vec::with_capacity(BLOCK);
+                while let Some(s) = reader.next_sample().with_context(name)? {
+                    // Finite already (the reader checks).
+                    if s.u.abs() > MAX_SAMPLE {
+                        bail!(
+                            "{}: line {}: u = {} is too large (|u| must be at most {} so that ranges stay finite)",
+                            name(),
+                            reader.line(),
+                            num(s.u),
+                            num(MAX_SAMPLE)
+                        );
+                    }
+                    block.push(s.u);
+                    if block.len() == BLOCK {
+                        f(&block)?;
+                        block.clear();
+                    }
+                }
+                if !block.is_empty() {
+                    f(&block)?;
+                }
+                Ok(())
+            }
+        }
+    }
+}
+
+/// The counter, with or without energies.
+pub(super) enum Counter {
+    Plain(CycleCounter),
+    Energy(Box<EnergyCycleCounter>),
+}
+
+impl Counter {
+    pub(super) fn push_all(
+        &mut self,
+        u: &[f64],
+        sink: &mut impl CycleSink,
+    ) -> Result<(), lugre::HistoryError> {
+        match self {
+            Counter::Plain(c) => c.push_all(u, sink),
+            Counter::Energy(c) => c.push_all(u, sink),
+        }
+    }
+
+    pub(super) fn finish(
+        self,
+        sink: &mut impl CycleSink,
+    ) -> Result<CycleSummary, lugre::HistoryError> {
+        match self {
+            Counter::Plain(c) => c.finish(sink),
+            Counter::Energy(c) => c.finish(sink),
+        }
+    }
+}

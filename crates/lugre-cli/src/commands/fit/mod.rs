@@ -1,0 +1,320 @@
+//! `lugre fit`: parameter identification from a measured record (`lugre::fit`).
+//!
+//! * `--fit slow` (default): `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`) from one or more
+//!   periods of a slow periodic test, columns `u,F` (or `t,u,F`; `t` is then only checked);
+//! * `--fit full`: `sigma0, sigma1, sigma2, Fc, Fs, vs` (`--free beta` adds `beta`) from
+//!   rate-dependent data, columns `t,u,F`, on the exact simulation from `--x0`.
+//!
+//! Fixed parameters keep the values of the usual model flags (defaults: the paper's); a model
+//! flag given for a free parameter is its start value (else the start comes from the data).
+//! Everything is computed and checked before anything is printed or written.
+//!
+//! A fit that ran out of evaluations at a usable point (finite, every parameter identifiable)
+//! is reported with a warning on stderr and exit status 0; every other failure, including a
+//! parameter the data cannot determine, is one line and status 2.
+
+use anyhow::{anyhow, bail, Result};
+use clap::{Args, ValueEnum};
+use indicatif::ProgressBar;
+use lugre::fit::{
+    fit_full, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec, FullOptions,
+};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::args::{ModelArgs, OutputArgs, PlotArgs};
+use crate::fmt::sig;
+use crate::io::atomic::write_atomic;
+use crate::io::csv::{read_table, Columns};
+use crate::io::json::JsonOut;
+use crate::io::progress::{styled, Progress};
+use crate::numbers::{parse_number, Whole};
+
+mod output;
+mod spec;
+
+use output::{figure, print_table, write_csv, write_json};
+use spec::{build_spec, explain};
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum FitChoice {
+    /// The slow loop (rate-independent limit): sigma0 and g(0) = Fs (Dahl: rho, Fc).
+    Slow,
+    /// The exact simulation of rate-dependent data: sigma0, sigma1, sigma2, Fc, Fs, vs.
+    Full,
+}
+
+/// The help of `--csv` for this command.
+const CSV_HELP: &str =
+    "Write the data with the fitted curve and the residuals ([t,]u,F,fit,residual) to \
+    this CSV file";
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str =
+    "Draw the data and the fit in the (u, F) plane, and beside them the residuals, to \
+    an SVG or PNG file";
+
+#[derive(Args, Debug)]
+#[command(
+    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
+pub(crate) struct FitArgs {
+    #[command(flatten)]
+    pub(crate) model: ModelArgs,
+    /// The measured record: columns 'u,F' or 't,u,F' (header optional, in this order without
+    /// one; '#' comments allowed). Times, when given, must be strictly increasing.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
+    pub(crate) input: Option<PathBuf>,
+    /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
+    /// (rate-dependent t,u,F data, exact simulation).
+    #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
+    pub(crate) fit: FitChoice,
+    /// Parameters held at the model flags' values (e.g. --fix sigma2,fs).
+    #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
+    pub(crate) fix: Option<String>,
+    /// Parameters fitted besides the default ones (e.g. --free beta in a full fit).
+    #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
+    pub(crate) free: Option<String>,
+    /// Bounds on fitted parameters, 0 <= LO < HI (HI may be 'inf'); default (0, inf).
+    #[arg(
+        long,
+        value_name = "NAME=LO:HI,...",
+        allow_hyphen_values = true,
+        help_heading = "Fit"
+    )]
+    pub(crate) bounds: Option<String>,
+    /// Full fit: the initial state x0 = x(0) of eq. 1 (not fitted; default 0).
+    #[arg(
+        long,
+        value_name = "X",
+        allow_hyphen_values = true,
+        help_heading = "Fit"
+    )]
+    pub(crate) x0: Option<String>,
+    /// Full fit: the number of starts (the first from the data, then sigma0 and vs scaled by 4
+    /// or 1/4; default 3).
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = Whole(1),
+        help_heading = "Fit"
+    )]
+    pub(crate) starts: Option<usize>,
+    #[command(flatten)]
+    pub(crate) output: OutputArgs,
+    #[command(flatten)]
+    pub(crate) plot: PlotArgs,
+}
+
+/// The measured record.
+struct Record {
+    t: Option<Vec<f64>>,
+    u: Vec<f64>,
+    f: Vec<f64>,
+}
+
+impl Record {
+    /// The times, which a full fit needs (`path` names the file in the error).
+    fn times_for_full_fit(&self, path: &Path) -> Result<&[f64]> {
+        match &self.t {
+            Some(t) => Ok(t),
+            None => bail!(
+                "{}: a full fit needs the samples' times: columns t,u,F (this file has u,F)",
+                path.display()
+            ),
+        }
+    }
+}
+
+/// The request: the flags and the record, each checked in turn before the fit runs.
+struct Request<'a> {
+    path: &'a Path,
+    spec: FitSpec,
+    record: Record,
+    /// The full fit's `x0` and number of starts; `None` for the slow fit.
+    full: Option<(f64, usize)>,
+}
+
+pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    let request = parse(args)?;
+    let report = compute(&request)?;
+    report_fit(args, &request, &report)
+}
+
+fn parse(args: &FitArgs) -> Result<Request<'_>> {
+    let Some(path) = &args.input else {
+        bail!("no data: give --input FILE.csv (columns u,F or t,u,F)");
+    };
+    let spec = build_spec(args)?;
+    let kind = match args.fit {
+        FitChoice::Slow => FitKind::Slow,
+        FitChoice::Full => FitKind::Full,
+    };
+    if kind == FitKind::Slow {
+        if args.x0.is_some() {
+            bail!("--x0 applies to the full fit (add --fit full)");
+        }
+        if args.starts.is_some() {
+            bail!("--starts applies to the full fit (add --fit full)");
+        }
+    }
+    if let Some(plot) = &args.plot.path {
+        crate::plot::check_path(plot)?;
+    }
+    let record = read_record(path)?;
+    let full = match kind {
+        FitKind::Slow => None,
+        FitKind::Full => {
+            // Checked here, in its turn; `compute` takes the times again.
+            record.times_for_full_fit(path)?;
+            let x0 = match &args.x0 {
+                Some(text) => parse_number("--x0", 1, text)?,
+                None => 0.0,
+            };
+            Some((x0, args.starts.unwrap_or(FullOptions::DEFAULT_STARTS)))
+        }
+    };
+    Ok(Request {
+        path,
+        spec,
+        record,
+        full,
+    })
+}
+
+/// The fit, with a progress indicator for a long full fit.
+fn compute(r: &Request) -> Result<FitReport> {
+    let record = &r.record;
+    let with_file = |e: FitError| -> anyhow::Error {
+        match e {
+            FitError::TooFewSamples { .. }
+            | FitError::NoReversal { .. }
+            | FitError::ZeroForce
+            | FitError::LengthMismatch { .. }
+            | FitError::Data(_) => anyhow!("{}: {e}", r.path.display()),
+            other => explain(other),
+        }
+    };
+    Ok(match &r.full {
+        // Times, if any, were checked when read; the slow loop depends on the turning points
+        // alone.
+        None => fit_slow(&r.spec, &record.u, &record.f).map_err(with_file)?,
+        Some((x0, starts)) => {
+            let t = record.times_for_full_fit(r.path)?;
+            let mut progress = FitProgressBar::new();
+            let mut report = |p: &FitProgress| progress.update(p);
+            let options = FullOptions::default()
+                .with_x0(*x0)
+                .with_starts(*starts)
+                .with_progress(&mut report);
+            let result = fit_full(&r.spec, t, &record.u, &record.f, options);
+            progress.finish();
+            result.map_err(with_file)?
+        }
+    })
+}
+
+/// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
+/// the JSON document or the table.
+fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
+    let record = &r.record;
+    let residuals = report.residuals(&record.f);
+    if let Some(csv) = &args.output.csv {
+        write_atomic(csv, |w| write_csv(w, record, report, &residuals))?;
+    }
+    if let Some(plot) = &args.plot.path {
+        figure(record, report, &residuals).save(plot)?;
+    }
+    if !report.converged {
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: warning: the fit did not converge ({}); the best point found is reported",
+            report.termination
+        );
+    }
+    let stdout = std::io::stdout();
+    if args.output.json {
+        write_json(JsonOut::new(stdout.lock()), report, r.path)?;
+    } else {
+        let mut out = std::io::BufWriter::new(stdout.lock());
+        print_table(&mut out, report, r.path)?;
+        if let Some(csv) = &args.output.csv {
+            writeln!(
+                out,
+                "\nWrote the data, fit and residuals ({}u,F,fit,residual) to {}",
+                if record.t.is_some() { "t," } else { "" },
+                csv.display()
+            )?;
+        }
+        if let Some(plot) = &args.plot.path {
+            writeln!(
+                out,
+                "Drew the data, the fit and the residuals to {}",
+                plot.display()
+            )?;
+        }
+        out.flush()?;
+    }
+    Ok(())
+}
+
+/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order).
+fn read_record(path: &Path) -> Result<Record> {
+    let table = read_table(path, Columns::Record)?;
+    let mut columns = table.columns.into_iter();
+    Ok(Record {
+        t: table.t,
+        u: columns.next().unwrap_or_default(),
+        f: columns.next().unwrap_or_default(),
+    })
+}
+
+/// A spinner on stderr for the full fit (see [`Progress`]), redrawn at most 20 times a second.
+struct FitProgressBar {
+    progress: Progress,
+    last: Instant,
+}
+
+impl FitProgressBar {
+    fn new() -> Self {
+        Self {
+            progress: Progress::new(),
+            last: Instant::now(),
+        }
+    }
+
+    fn update(&mut self, p: &FitProgress) {
+        if !self.progress.is_terminal() {
+            return;
+        }
+        let now = Instant::now();
+        // The callback comes after every evaluation: redraw at most 20 times a second.
+        if now.duration_since(self.last) < Duration::from_millis(50) {
+            return;
+        }
+        self.last = now;
+        // Elapsed from the start of the fit, not from when the spinner appears.
+        let bar = self.progress.bar(|elapsed| {
+            styled(
+                ProgressBar::new_spinner().with_elapsed(elapsed),
+                "{spinner} fitting: {msg} ({elapsed})",
+            )
+        });
+        if let Some(bar) = bar {
+            bar.set_message(format!(
+                "start {}/{}, {} evaluations, residual RMS {}",
+                p.start,
+                p.starts,
+                p.evaluations,
+                sig(p.rms, 4)
+            ));
+            bar.tick();
+        }
+    }
+
+    fn finish(&mut self) {
+        self.progress.finish();
+    }
+}

@@ -1,0 +1,310 @@
+//! What `lugre fit` writes: the CSV of the data with the fit and residuals, the figure, the
+//! table and the JSON document.
+
+use anyhow::Result;
+use lugre::fit::{Family, FitKind, FitReport};
+use std::io::Write;
+use std::path::Path;
+
+use super::Record;
+use crate::fmt::sig;
+use crate::io::csv::NumberRows;
+use crate::io::json::JsonOut;
+use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
+
+/// Vertical strokes in the residual figure (at most).
+const RESIDUAL_BINS: usize = 600;
+
+pub(super) fn write_csv(
+    w: &mut dyn Write,
+    record: &Record,
+    report: &FitReport,
+    res: &[f64],
+) -> Result<()> {
+    let mut rows = NumberRows::new();
+    match &record.t {
+        Some(_) => writeln!(w, "t,u,F,fit,residual")?,
+        None => writeln!(w, "u,F,fit,residual")?,
+    }
+    for i in 0..record.u.len() {
+        let (u, f, fit, r) = (record.u[i], record.f[i], report.fitted[i], res[i]);
+        match &record.t {
+            Some(t) => rows.write(w, &[t[i], u, f, fit, r])?,
+            None => rows.write(w, &[u, f, fit, r])?,
+        }
+    }
+    Ok(())
+}
+
+/// Two panels: the data with the fit in the (u, F) plane, and the residuals against t (or the
+/// sample).
+pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
+    let what = match report.kind {
+        FitKind::Slow => "slow-loop fit",
+        FitKind::Full => "full fit",
+    };
+    let data: Vec<(f64, f64)> = record
+        .u
+        .iter()
+        .copied()
+        .zip(record.f.iter().copied())
+        .collect();
+    let fit: Vec<(f64, f64)> = record
+        .u
+        .iter()
+        .copied()
+        .zip(report.fitted.iter().copied())
+        .collect();
+    let fit_fig = Figure::new("input u", "friction force F")
+        .title(format!(
+            "{} {what}: residual RMS {}",
+            report.family.label(),
+            sig(report.rms, 4)
+        ))
+        .curve(
+            Curve::new(data, LineStyle::Solid, BLUE)
+                .width(1)
+                .label("data"),
+        )
+        .curve(Curve::new(fit, LineStyle::Dashed, RED).label("fit"));
+    Panels::side_by_side(fit_fig, residual_figure(record, res))
+}
+
+/// The residuals against t (or the sample).
+fn residual_figure(record: &Record, res: &[f64]) -> Figure {
+    let (x_label, xs): (&str, Vec<f64>) = match &record.t {
+        Some(t) => ("time t", t.clone()),
+        None => ("sample", (0..res.len()).map(|i| i as f64).collect()),
+    };
+    // Noise drawn as one polyline zigzags at sharp angles, which the bitmap backend renders
+    // with long miter spikes: draw separate vertical strokes instead, from 0 to each residual
+    // (few samples) or over the range of each of RESIDUAL_BINS consecutive groups.
+    let n = res.len();
+    let bins = n.min(RESIDUAL_BINS);
+    let mut res_fig = Figure::new(x_label, "residual F - fit").title(if bins < n {
+        format!(
+            "Residuals, min to max of each {}-sample group",
+            n.div_ceil(bins)
+        )
+    } else {
+        "Residuals".to_string()
+    });
+    for b in 0..bins {
+        let (lo, hi) = (b * n / bins, ((b + 1) * n / bins).max(b * n / bins + 1));
+        let x = 0.5 * (xs[lo] + xs[hi - 1]);
+        let (mut r0, mut r1) = if bins < n {
+            (f64::INFINITY, f64::NEG_INFINITY)
+        } else {
+            (0.0, 0.0)
+        };
+        for &r in &res[lo..hi] {
+            r0 = r0.min(r);
+            r1 = r1.max(r);
+        }
+        res_fig =
+            res_fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
+    }
+    res_fig.curve(Curve::new(
+        vec![(xs[0], 0.0), (xs[n - 1], 0.0)],
+        LineStyle::Dashed,
+        RED,
+    ))
+}
+
+/// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit).
+fn label(report: &FitReport, name: &str) -> String {
+    if report.kind == FitKind::Slow && report.family == Family::LuGre && name == "fs" {
+        "fs = g(0)".into()
+    } else {
+        name.into()
+    }
+}
+
+pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Result<()> {
+    let what = match r.kind {
+        FitKind::Slow => "slow-loop fit (the hysteresis loop y°, eqs. 8-10)".to_string(),
+        FitKind::Full => format!(
+            "full fit (exact simulation of eq. 1, {} start{})",
+            r.starts,
+            if r.starts == 1 { "" } else { "s" }
+        ),
+    };
+    writeln!(
+        w,
+        "{} {what} to {} samples from {}{}",
+        r.family.label(),
+        r.samples,
+        path.display(),
+        match r.turning_points {
+            Some(n) => format!(" ({n} turning points)"),
+            None => String::new(),
+        }
+    )?;
+    writeln!(w)?;
+    writeln!(
+        w,
+        "{:<12} {:>16} {:>14}   {:<36}",
+        "parameter", "value", "std. error", "95 % confidence interval"
+    )?;
+    for e in &r.estimates {
+        writeln!(
+            w,
+            "{:<12} {:>16} {:>14}   [{}, {}]{}",
+            label(r, e.name),
+            sig(e.value, 10),
+            sig(e.stderr, 4),
+            sig(e.ci95[0], 8),
+            sig(e.ci95[1], 8),
+            if e.at_bound { "  (at its bound)" } else { "" }
+        )?;
+    }
+    if !r.fixed.is_empty() {
+        let fixed: Vec<String> = r
+            .fixed
+            .iter()
+            .map(|(n, v)| format!("{} = {}", label(r, n), sig(*v, 10)))
+            .collect();
+        writeln!(w, "fixed: {}", fixed.join(", "))?;
+    }
+    writeln!(w)?;
+    writeln!(
+        w,
+        "residual RMS {}   ({} degrees of freedom; intervals: value -+ {} standard errors, Student's t)",
+        sig(r.rms, 6),
+        r.dof,
+        sig(r.t_quantile, 6)
+    )?;
+    writeln!(
+        w,
+        "{} iterations, {} model evaluations: {}",
+        r.iterations, r.evaluations, r.termination
+    )?;
+    if r.estimates.len() > 1 {
+        print_correlation(w, r)?;
+    }
+    Ok(())
+}
+
+fn print_correlation(w: &mut impl Write, r: &FitReport) -> Result<()> {
+    writeln!(
+        w,
+        "correlation of the estimates (condition number of the scaled J^T J: {}):",
+        sig(r.condition_number, 3)
+    )?;
+    for (i, row) in r.correlation.iter().enumerate() {
+        let cells: Vec<String> = row.iter().map(|c| format!("{c:>7.3}")).collect();
+        writeln!(
+            w,
+            "  {:<12} {}",
+            label(r, r.estimates[i].name),
+            cells.join(" ")
+        )?;
+    }
+    Ok(())
+}
+
+/// `{"parameters": {name: {"value", "stderr", "ci95": [lo, hi], "at_bound"}}, "rms",
+/// "iterations", ...}` (keys may be added, never renamed).
+pub(super) fn write_json<W: Write>(
+    mut j: JsonOut<W>,
+    r: &FitReport,
+    path: &Path,
+) -> std::io::Result<()> {
+    j.raw("{\"parameters\":{")?;
+    for (k, e) in r.estimates.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&quote(e.name))?;
+        j.raw(":{\"value\":")?;
+        num_or_null(&mut j, e.value)?;
+        j.raw(",\"stderr\":")?;
+        num_or_null(&mut j, e.stderr)?;
+        j.raw(",\"ci95\":[")?;
+        num_or_null(&mut j, e.ci95[0])?;
+        j.raw(",")?;
+        num_or_null(&mut j, e.ci95[1])?;
+        j.raw(&format!("],\"at_bound\":{}}}", e.at_bound))?;
+    }
+    j.raw("},\"rms\":")?;
+    num_or_null(&mut j, r.rms)?;
+    j.raw(",\"iterations\":")?;
+    j.int(r.iterations)?;
+    j.raw(",\"evaluations\":")?;
+    j.int(r.evaluations)?;
+    j.raw(",\"starts\":")?;
+    j.int(r.starts)?;
+    j.raw(&format!(
+        ",\"converged\":{},\"termination\":{}",
+        r.converged,
+        quote(&r.termination)
+    ))?;
+    j.raw(&format!(
+        ",\"model\":{},\"fit\":{}",
+        quote(&r.family.label().to_ascii_lowercase()),
+        quote(match r.kind {
+            FitKind::Slow => "slow",
+            FitKind::Full => "full",
+        })
+    ))?;
+    j.raw(",\"fixed\":{")?;
+    for (k, (n, v)) in r.fixed.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&quote(n))?;
+        j.raw(":")?;
+        num_or_null(&mut j, *v)?;
+    }
+    j.raw("},\"samples\":")?;
+    j.int(r.samples)?;
+    j.raw(",\"dof\":")?;
+    j.int(r.dof)?;
+    j.raw(",\"t_quantile\":")?;
+    num_or_null(&mut j, r.t_quantile)?;
+    j.raw(",\"condition_number\":")?;
+    num_or_null(&mut j, r.condition_number)?;
+    j.raw(",\"correlation\":")?;
+    write_matrix(&mut j, &r.correlation)?;
+    if let Some(n) = r.turning_points {
+        j.raw(",\"turning_points\":")?;
+        j.int(n)?;
+    }
+    j.raw(",\"input\":")?;
+    j.raw(&quote(&path.display().to_string()))?;
+    j.raw("}\n")?;
+    j.finish()
+}
+
+/// `s` as a JSON string.
+fn quote(s: &str) -> String {
+    serde_json::Value::from(s).to_string()
+}
+
+/// `x`, or `null` when it is not finite (JSON has no NaN or infinity).
+fn num_or_null<W: Write>(j: &mut JsonOut<W>, x: f64) -> std::io::Result<()> {
+    if x.is_finite() {
+        j.num(x)
+    } else {
+        j.raw("null")
+    }
+}
+
+/// `[[a, b, ...], ...]`, non-finite entries as `null`.
+fn write_matrix<W: Write>(j: &mut JsonOut<W>, rows: &[Vec<f64>]) -> std::io::Result<()> {
+    j.raw("[")?;
+    for (k, row) in rows.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw("[")?;
+        for (c, &x) in row.iter().enumerate() {
+            if c > 0 {
+                j.raw(",")?;
+            }
+            num_or_null(j, x)?;
+        }
+        j.raw("]")?;
+    }
+    j.raw("]")
+}

@@ -1,0 +1,117 @@
+//! The fit's specification from the flags (family, start values, fixed and freed parameters,
+//! bounds), and the core's errors explained in terms of the flags.
+
+use anyhow::{anyhow, bail, Result};
+use lugre::fit::{Family, FitError, FitSpec};
+
+use super::FitArgs;
+use crate::args::ModelKind;
+use crate::fmt::{excerpt, quoted};
+use crate::numbers::parse_number;
+
+/// The request from the flags: family, given values, fixed and freed names, bounds.
+pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
+    // The same checks as every command (flags of the other model, invalid values).
+    args.model.build()?;
+    let m = &args.model;
+    let (family, given): (Family, Vec<(&str, Option<f64>)>) = match m.model {
+        ModelKind::Lugre => (
+            Family::LuGre,
+            vec![
+                ("sigma0", m.sigma0),
+                ("sigma1", m.sigma1),
+                ("sigma2", m.sigma2),
+                ("fc", m.fc),
+                ("fs", m.fs),
+                ("vs", m.vs),
+                ("beta", m.beta),
+            ],
+        ),
+        ModelKind::Dahl => (Family::Dahl, vec![("rho", m.rho), ("fc", m.fc)]),
+    };
+    let mut spec = FitSpec::new(family);
+    for (name, value) in given {
+        if let Some(v) = value {
+            spec = spec.set(name, v).map_err(explain)?;
+        }
+    }
+    for name in names("--fix", args.fix.as_deref())? {
+        spec = spec
+            .fix(name)
+            .map_err(|e| anyhow!("--fix: {}", short_name(e)))?;
+    }
+    for name in names("--free", args.free.as_deref())? {
+        spec = spec
+            .free(name)
+            .map_err(|e| anyhow!("--free: {}", short_name(e)))?;
+    }
+    if let Some(text) = &args.bounds {
+        for item in text.split(',') {
+            let Some((name, range)) = item.split_once('=') else {
+                bail!("--bounds: {} is not NAME=LO:HI", quoted(item.trim()));
+            };
+            let Some((lo, hi)) = range.split_once(':') else {
+                bail!("--bounds: {} is not NAME=LO:HI", quoted(item.trim()));
+            };
+            let lo = parse_number("--bounds", 1, lo)?;
+            let hi = match hi.trim().to_ascii_lowercase().as_str() {
+                "inf" | "+inf" | "infinity" => f64::INFINITY,
+                _ => parse_number("--bounds", 2, hi)?,
+            };
+            spec = spec
+                .bounds(name, lo, hi)
+                .map_err(|e| anyhow!("--bounds: {}", short_name(e)))?;
+        }
+    }
+    Ok(spec)
+}
+
+/// `e` with an unknown parameter's name cut short: it is the user's text, of any length.
+fn short_name(e: FitError) -> FitError {
+    match e {
+        FitError::UnknownParameter { name, model, known } => FitError::UnknownParameter {
+            name: excerpt(&name),
+            model,
+            known,
+        },
+        other => other,
+    }
+}
+
+/// The names of a comma-separated list (none for an absent flag).
+fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
+    let Some(text) = text else {
+        return Ok(Vec::new());
+    };
+    let items: Vec<&str> = text.split(',').map(str::trim).collect();
+    if items.iter().any(|s| s.is_empty()) {
+        bail!(
+            "{flag}: empty name in {} (expected names separated by commas)",
+            quoted(text)
+        );
+    }
+    Ok(items)
+}
+
+/// A core error as one line, with what to do about it where the CLI knows.
+pub(super) fn explain(e: FitError) -> anyhow::Error {
+    match &e {
+        FitError::Unidentifiable { parameters } => {
+            let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
+            anyhow!(
+                "{e}; fix {} (--fix {} with the values from the model flags) or fit data that excite {}",
+                if names.len() == 1 { "it" } else { "them" },
+                names.join(","),
+                if names.len() == 1 { "it" } else { "them" }
+            )
+        }
+        FitError::NotInSlowLoop { .. } => anyhow!("{e}"),
+        FitError::StartOutsideBounds { name, .. } => {
+            anyhow!("{e}: change --{name} or --bounds")
+        }
+        FitError::BadStart { name, .. } => {
+            anyhow!("--{name}: {e} (to hold it at that value, add --fix {name})")
+        }
+        _ => anyhow!("{e}"),
+    }
+}

@@ -1,0 +1,295 @@
+//! `lugre simulate`: the response `y_gamma` of eq. 5 (`gamma = 1`: the model as given, eq. 1;
+//! `gamma = inf`: the rate-independent limit `y*_u`, eq. 6) from an initial state `x0`, over K
+//! periods of a periodic input (turning points at unit speed), sampled data (linear between
+//! samples) or a sine. Piecewise-linear inputs are solved exactly; a sine by the adaptive,
+//! L-stable integrator to `--tol` (exactly for `gamma = inf`). See `lugre::simulate`.
+//!
+//! Everything is computed and checked before anything is printed or written: an error leaves no
+//! half-written output.
+
+use anyhow::{anyhow, bail, Result};
+use clap::Args;
+use indicatif::ProgressBar;
+use lugre::simulate::{self, Output};
+use lugre::{Gamma, LuGre, SimulateError, Tolerance, Trajectory};
+use std::io::Write;
+
+use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInputArgs, PlotArgs};
+use crate::fmt::{quoted, sig};
+use crate::io::atomic::write_atomic;
+use crate::io::json::JsonOut;
+use crate::io::progress::{styled, Progress};
+use crate::numbers::{parse_list, Whole};
+
+mod drive;
+mod output;
+
+use drive::build_drive;
+use output::{print_table, response_figure, write_csv, write_json};
+
+/// Output times per period when none are asked for (piecewise-linear inputs also get their
+/// kinks; sampled data get exactly their samples).
+
+/// At most this many output rows (40 bytes each in memory, more as text).
+const MAX_ROWS: usize = 50_000_000;
+
+/// The help of `--json` for this command.
+const JSON_HELP: &str =
+    r#"Print {"t": [...], "u": [...], "z": [...], "dz": [...], "y": [...]} instead of the table"#;
+/// The help of `--csv` for this command.
+const CSV_HELP: &str = "Write the columns t,u,z,dz,y to this CSV file";
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str =
+    "Draw the response to an SVG or PNG file: y against t (left panel) and y against \
+    u (right panel), side by side";
+
+#[derive(Args, Debug)]
+#[command(
+    mut_arg("json", |a| a.help(JSON_HELP)),
+    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
+pub(crate) struct SimulateArgs {
+    #[command(flatten)]
+    pub(crate) model: ModelArgs,
+    #[command(flatten)]
+    pub(crate) input: PeriodicInputArgs,
+    /// A sine u(t) = A sin(2 pi t / T + PHASE) + OFFSET, A > 0, T > 0, PHASE in radians
+    /// (PHASE and OFFSET default to 0).
+    #[arg(
+        long,
+        value_name = "A,T[,PHASE[,OFFSET]]",
+        allow_hyphen_values = true,
+        help_heading = "Input"
+    )]
+    pub(crate) sine: Option<String>,
+    /// Slowness gamma of eq. 5 (the input runs as u(t / gamma) in physical time): a number > 0
+    /// (1 = the model as given, eq. 1) or 'inf' (the rate-independent limit y*_u, eq. 6).
+    #[arg(
+        long,
+        value_name = "G",
+        default_value = "1",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub(crate) gamma: String,
+    /// Number of periods K >= 1. An --input file is one period, repeated only if it ends where
+    /// it starts.
+    #[arg(
+        long,
+        value_name = "K",
+        default_value = "1",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub(crate) periods: String,
+    /// Initial state x0 = x(0) of eq. 1 (the bristle deflection [m]; for the Dahl model
+    /// w(0) / rho).
+    #[arg(
+        long,
+        value_name = "X",
+        default_value = "0",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub(crate) x0: String,
+    /// Relative tolerance of the adaptive integrator for --sine, in [1e-14, 1).
+    #[arg(
+        long,
+        value_name = "TOL",
+        default_value = "1e-10",
+        allow_hyphen_values = true,
+        help_heading = "Simulation"
+    )]
+    pub(crate) tol: String,
+    /// Output at these times (eq. 5's time t: the period does not depend on gamma), strictly
+    /// increasing, within the K periods. At a kink the value just after it.
+    #[arg(
+        long,
+        value_name = "T1,T2,...",
+        allow_hyphen_values = true,
+        help_heading = "Output"
+    )]
+    pub(crate) times: Option<String>,
+    /// N >= 1 evenly spaced output times per period, both ends of the run included. Default:
+    /// the samples of an --input file; 200 per period plus every turning point otherwise.
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = Whole(1),
+        help_heading = "Output"
+    )]
+    pub(crate) samples_per_period: Option<usize>,
+    #[command(flatten)]
+    pub(crate) output: OutputArgs,
+    #[command(flatten)]
+    pub(crate) plot: PlotArgs,
+}
+
+/// The request, from the flags, each checked in turn before anything is computed.
+struct Request {
+    choice: ModelChoice,
+    model: LuGre,
+    /// What to simulate and where to sample it (the core's request, with its defaults).
+    simulation: simulate::Request,
+    /// The input, described for the table.
+    input: String,
+}
+
+pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
+    let request = parse(args)?;
+    let out = compute(&request)?;
+    report(args, &request, &out)
+}
+
+fn parse(args: &SimulateArgs) -> Result<Request> {
+    let choice = args.model.build()?;
+    let model = choice.lugre();
+    let gamma = parse_gamma(&args.gamma)?;
+    let periods = parse_periods(&args.periods)?;
+    let x0 = parse_scalar("--x0", &args.x0)?;
+    let tol =
+        Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
+    let (drive, input) = build_drive(args)?;
+    if let Some(path) = &args.plot.path {
+        // Before a possibly long run, not after it.
+        crate::plot::check_path(path)?;
+    }
+    let simulation = simulate::Request::new(drive)
+        .with_gamma(gamma)
+        .with_periods(periods)?
+        .with_x0(x0)
+        .with_tolerance(tol);
+    // Checked here, in its turn; `compute` builds the simulator again.
+    simulation
+        .simulator(&model)
+        .map_err(|e| anyhow!("--x0: {e}"))?;
+    if args.times.is_some() && args.samples_per_period.is_some() {
+        bail!("give --times or --samples-per-period, not both");
+    }
+    let output = match (&args.times, args.samples_per_period) {
+        (Some(text), _) => Output::Times(parse_list("--times", text)?),
+        (None, Some(n)) => Output::PerPeriod(n),
+        (None, None) => Output::Default,
+    };
+    let simulation = simulation.with_output(output)?;
+    check_rows(simulation.rows().unwrap_or(usize::MAX))?;
+    Ok(Request {
+        choice,
+        model,
+        simulation,
+        input,
+    })
+}
+
+/// The response, with a progress bar for a long run.
+fn compute(r: &Request) -> Result<Trajectory> {
+    let sim = r
+        .simulation
+        .simulator(&r.model)
+        .map_err(|e| anyhow!("--x0: {e}"))?;
+    let mut progress = Progress::new();
+    let result = {
+        let mut report = |fraction: f64| show_progress(&mut progress, fraction);
+        r.simulation.run_on(&sim, Some(&mut report))
+    };
+    progress.finish();
+    let out = result.map_err(|e| match &e {
+        SimulateError::TimeOutOfRange { .. }
+        | SimulateError::TimesNotIncreasing { .. }
+        | SimulateError::TimeNotFinite { .. } => anyhow!("--times: {e}"),
+        SimulateError::NotClosed { .. } => anyhow!("--periods: {e}"),
+        _ => anyhow!("{e}"),
+    })?;
+    Ok(out)
+}
+
+fn show_progress(progress: &mut Progress, fraction: f64) {
+    let bar = progress.bar(|_| {
+        styled(
+            ProgressBar::new(1000),
+            "simulating {bar:40} {percent:>3}% ({elapsed} elapsed, about {eta} left)",
+        )
+    });
+    if let Some(bar) = bar {
+        bar.set_position((fraction.clamp(0.0, 1.0) * 1000.0) as u64);
+    }
+}
+
+/// Writes the CSV and the figure asked for, then prints the JSON document or the table.
+fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
+    if let Some(path) = &args.output.csv {
+        write_atomic(path, |w| write_csv(w, out))?;
+    }
+    if let Some(path) = &args.plot.path {
+        let what = if r.simulation.gamma().is_infinite() {
+            "y⋆ᵤ (γ = ∞)".to_string()
+        } else {
+            format!("γ = {}", sig(r.simulation.gamma().value(), 6))
+        };
+        response_figure(out, &what).save(path)?;
+    }
+    let stdout = std::io::stdout();
+    if args.output.json {
+        write_json(JsonOut::new(stdout.lock()), out)?;
+    } else {
+        let mut w = std::io::BufWriter::new(stdout.lock());
+        print_table(&mut w, r, out)?;
+        if let Some(path) = &args.output.csv {
+            writeln!(
+                w,
+                "\nWrote t,u,z,dz,y ({} rows) to {}",
+                out.len(),
+                path.display()
+            )?;
+        }
+        if let Some(path) = &args.plot.path {
+            writeln!(w, "Drew y against t and y against u to {}", path.display())?;
+        }
+        w.flush()?;
+    }
+    Ok(())
+}
+
+fn parse_scalar(flag: &str, text: &str) -> Result<f64> {
+    let t = text.trim();
+    match t.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => bail!("{flag} must be a finite number, got {}", quoted(t)),
+        Err(_) => bail!("{flag} must be a number, got {}", quoted(t)),
+    }
+}
+
+/// A positive number or `inf`.
+fn parse_gamma(text: &str) -> Result<Gamma> {
+    let t = text.trim();
+    let value = match t.to_ascii_lowercase().as_str() {
+        "inf" | "+inf" | "infinity" | "+infinity" => f64::INFINITY,
+        _ => match t.parse::<f64>() {
+            Ok(v) if v.is_finite() => v,
+            _ => bail!("--gamma must be a number > 0 or 'inf', got {}", quoted(t)),
+        },
+    };
+    Gamma::new(value).map_err(|e| anyhow!("--gamma: {e}"))
+}
+
+fn parse_periods(text: &str) -> Result<u32> {
+    let t = text.trim();
+    match t.parse::<i64>() {
+        Ok(k) if k >= 1 && k <= i64::from(u32::MAX) => Ok(k as u32),
+        Ok(k) if k < 1 => bail!("--periods must be at least 1, got {k}"),
+        _ => bail!(
+            "--periods must be a whole number from 1 to {}, got {}",
+            u32::MAX,
+            quoted(t)
+        ),
+    }
+}
+
+fn check_rows(rows: usize) -> Result<()> {
+    if rows > MAX_ROWS {
+        bail!("the run would produce {rows} output rows (more than {MAX_ROWS}): lower --periods or --samples-per-period, or give --times");
+    }
+    Ok(())
+}

@@ -1,0 +1,8 @@
+//! Files and streams: CSV in and out, the JSON writer, atomic files, the spool, and progress on
+//! stderr.
+
+pub(crate) mod atomic;
+pub(crate) mod csv;
+pub(crate) mod json;
+pub(crate) mod progress;
+pub(crate) mod spool;
