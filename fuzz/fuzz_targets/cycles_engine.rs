@@ -162,7 +162,7 @@ fuzz_target!(|data: &[u8]| {
                 );
                 assert_eq!(e.closure, p.closure);
                 if let Some(en) = e.energy {
-                    assert!(en.dissipation >= 0.0, "{en:?}");
+                    assert!(en.arc.dissipation >= 0.0, "{en:?}");
                     assert!(
                         en.y_start.abs() <= 1.5 && en.y_closure.abs() <= 1.5,
                         "{en:?}"

@@ -401,22 +401,22 @@ impl PyLoop {
     /// W = integral of y° du over the arc, nested loops included.
     #[getter]
     fn work(&self) -> f64 {
-        self.inner.work
+        self.inner.energy.work
     }
     /// dV = (y_C^2 - y_A^2) / (2 sigma0), the change of the energy stored in the bristles.
     #[getter]
     fn stored_energy_change(&self) -> f64 {
-        self.inner.stored_energy_change
+        self.inner.energy.stored_energy_change
     }
     /// D = W - dV = (1/g0) integral of y°^2 drho >= 0.
     #[getter]
     fn dissipation(&self) -> f64 {
-        self.inner.dissipation
+        self.inner.energy.dissipation
     }
     /// y_C - y_A.
     #[getter]
     fn closure_gap(&self) -> f64 {
-        self.inner.closure_gap
+        self.inner.energy.closure_gap
     }
     /// Index of the smallest loop containing this one (None for the major loop).
     #[getter]
@@ -444,10 +444,10 @@ impl PyLoop {
             point(&l.start),
             point(&l.reversal),
             point(&l.end),
-            f(l.work),
-            f(l.stored_energy_change),
-            f(l.dissipation),
-            f(l.closure_gap)
+            f(l.energy.work),
+            f(l.energy.stored_energy_change),
+            f(l.energy.dissipation),
+            f(l.energy.closure_gap)
         )
     }
 
@@ -460,10 +460,10 @@ impl PyLoop {
         d.set_item("start", point_dict(py, &l.start)?)?;
         d.set_item("reversal", point_dict(py, &l.reversal)?)?;
         d.set_item("end", point_dict(py, &l.end)?)?;
-        d.set_item("work", l.work)?;
-        d.set_item("stored_energy_change", l.stored_energy_change)?;
-        d.set_item("dissipation", l.dissipation)?;
-        d.set_item("closure_gap", l.closure_gap)?;
+        d.set_item("work", l.energy.work)?;
+        d.set_item("stored_energy_change", l.energy.stored_energy_change)?;
+        d.set_item("dissipation", l.energy.dissipation)?;
+        d.set_item("closure_gap", l.energy.closure_gap)?;
         d.set_item("parent", l.parent)?;
         d.set_item("depth", l.depth)?;
         Ok(d)

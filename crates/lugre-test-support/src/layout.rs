@@ -50,6 +50,63 @@ pub fn module_graph(src: &Path) -> Graph {
     graph
 }
 
+/// The graph of the submodules of `src/<dir>` (each file or folder directly under it is a node):
+/// which of its siblings each imports, through `crate::<dir>::name` or, from inside, `super::`
+/// paths that lead to `<dir>` (`super::name` in `src/<dir>/a.rs`, `super::super::name` in
+/// `src/<dir>/a/b.rs`). The `mod.rs` of `<dir>` is left out (it declares them all).
+pub fn submodule_graph(src: &Path, dir: &str) -> Graph {
+    let base = src.join(dir);
+    let mut files = Vec::new();
+    collect(&base, &mut files);
+    let mut graph = Graph::new();
+    for path in files {
+        let rel = path.strip_prefix(&base).expect("under the folder");
+        let depth = rel.components().count();
+        let node = rel
+            .components()
+            .next()
+            .expect("a file")
+            .as_os_str()
+            .to_string_lossy()
+            .trim_end_matches(".rs")
+            .to_string();
+        if node == "mod" {
+            continue;
+        }
+        let text = code(&std::fs::read_to_string(&path).unwrap_or_default());
+        let up = "super::".repeat(depth - usize::from(rel.ends_with("mod.rs")));
+        let mut names = BTreeSet::new();
+        for prefix in [format!("crate::{dir}::"), up] {
+            let mut rest = text.as_str();
+            while let Some(i) = rest.find(&prefix) {
+                let before = rest[..i].chars().last();
+                rest = &rest[i + prefix.len()..];
+                // `super::super::x` also contains `super::x`: only whole prefixes count.
+                if before.is_some_and(|c| c == ':' || c.is_alphanumeric() || c == '_') {
+                    continue;
+                }
+                if let Some(group) = rest.strip_prefix('{') {
+                    let end = matching_brace(group);
+                    names.extend(
+                        split_top_level(&group[..end])
+                            .iter()
+                            .filter_map(|item| ident(item.trim())),
+                    );
+                } else if let Some(name) = ident(rest) {
+                    names.insert(name);
+                }
+            }
+        }
+        names.remove(&node);
+        graph.entry(node).or_default().extend(names);
+    }
+    let nodes: BTreeSet<String> = graph.keys().cloned().collect();
+    for deps in graph.values_mut() {
+        deps.retain(|d| nodes.contains(d));
+    }
+    graph
+}
+
 /// The modules that import each other in a circle (strongly connected components of more
 /// than one module, or a module importing itself), each sorted.
 pub fn cycles(graph: &Graph) -> Vec<Vec<String>> {

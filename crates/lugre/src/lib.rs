@@ -14,7 +14,7 @@
 //! let loops = hl.loops();
 //! assert_eq!(loops.len(), 2); // the major loop and one minor loop
 //! assert_eq!([loops[1].start.rho, loops[1].end.rho], [1.0, 2.0]); // [rho_1, rho_5]
-//! assert!(loops.iter().all(|l| l.dissipation >= 0.0));
+//! assert!(loops.iter().all(|l| l.energy.dissipation >= 0.0));
 //! ```
 //!
 //! The core is pure computation: no file or terminal I/O. The mathematics behind every module

@@ -42,7 +42,7 @@ fn dahl_symmetric_triangle_matches_the_closed_form() {
         let loops = hl.loops();
         assert_eq!(loops.len(), 1, "{}", what("a triangle has no minor loop"));
         // D = (1/g0) int y°^2 drho = W for the closed major loop
-        assert_rel(&what("major D"), loops[0].dissipation, work, LOOP);
+        assert_rel(&what("major D"), loops[0].energy.dissipation, work, LOOP);
         check_loop_invariants(&hl, &loops, IDENTITY);
     }
 }
@@ -60,7 +60,7 @@ fn dahl_work_per_period_matches_the_closed_form() {
         )
         .unwrap();
         assert_rel(&what("W per period"), hl.work_per_period(), work, LOOP);
-        assert_rel(&what("major W"), hl.loops()[0].work, work, LOOP);
+        assert_rel(&what("major W"), hl.loops()[0].energy.work, work, LOOP);
     }
 }
 

@@ -238,12 +238,12 @@ fn seven_modal_pairing_parents_depths_and_first_returns() {
         assert_rel(&what("y_A"), l.start.y, r[6], LOOP);
         assert_rel(&what("y_B"), l.reversal.y, r[7], LOOP);
         assert_rel(&what("y_C"), l.end.y, r[8], LOOP);
-        assert_rel(&what("W"), l.work, r[9], LOOP);
-        assert_rel(&what("D"), l.dissipation, r[10], LOOP);
+        assert_rel(&what("W"), l.energy.work, r[9], LOOP);
+        assert_rel(&what("D"), l.energy.dissipation, r[10], LOOP);
         if i == 0 {
-            assert_eq!(l.stored_energy_change, 0.0);
+            assert_eq!(l.energy.stored_energy_change, 0.0);
         } else {
-            assert_rel(&what("dV"), l.stored_energy_change, r[11], LOOP);
+            assert_rel(&what("dV"), l.energy.stored_energy_change, r[11], LOOP);
         }
         assert_eq!(l.parent, SEVEN_PARENTS[i], "{}", what("parent"));
         assert_eq!(l.depth, SEVEN_DEPTHS[i], "{}", what("depth"));
@@ -316,8 +316,8 @@ fn signature(l: &Loop) -> [f64; 11] {
         l.start.y,
         l.reversal.y,
         l.end.y,
-        l.work,
-        l.dissipation,
+        l.energy.work,
+        l.energy.dissipation,
         l.reversal.rho - l.start.rho,
         l.end.rho - l.start.rho,
         l.depth as f64,
@@ -427,7 +427,7 @@ fn repeated_maxima_and_minima() {
         );
         assert_rel(
             "repeated major W",
-            loops[0].work,
+            loops[0].energy.work,
             repeated::WORK_PER_PERIOD,
             LOOP,
         );
@@ -670,7 +670,12 @@ fn loop_table_is_the_loops_in_closing_order() {
                 [t.end_rho()[row], t.end_u()[row], t.end_y()[row]]
             );
             assert_eq!(
-                [r.work, r.stored_energy_change, r.dissipation, r.closure_gap],
+                [
+                    r.energy.work,
+                    r.energy.stored_energy_change,
+                    r.energy.dissipation,
+                    r.energy.closure_gap
+                ],
                 [
                     t.work()[row],
                     t.stored_energy_change()[row],

@@ -180,17 +180,17 @@ fn the_loops_of_the_examples_and_their_energies() {
         );
         assert_rel(
             &format!("{} major W", ex.name),
-            major.work,
+            major.energy.work,
             ex.major_w,
             LOOP,
         );
         assert_rel(
             &format!("{} major D", ex.name),
-            major.dissipation,
+            major.energy.dissipation,
             ex.major_d,
             LOOP,
         );
-        assert_eq!(major.closure_gap, 0.0);
+        assert_eq!(major.energy.closure_gap, 0.0);
         assert_rel(
             &format!("{} W per period", ex.name),
             hl.work_per_period(),
@@ -234,25 +234,25 @@ fn the_loops_of_the_examples_and_their_energies() {
         );
         assert_rel(
             &format!("{} minor W", ex.name),
-            minor.work,
+            minor.energy.work,
             ex.minor_w,
             LOOP,
         );
         assert_rel(
             &format!("{} minor D", ex.name),
-            minor.dissipation,
+            minor.energy.dissipation,
             ex.minor_d,
             LOOP,
         );
         assert_rel(
             &format!("{} minor dV", ex.name),
-            minor.stored_energy_change,
+            minor.energy.stored_energy_change,
             ex.minor_dv,
             LOOP,
         );
         assert_rel(
             &format!("{} minor gap", ex.name),
-            minor.closure_gap,
+            minor.energy.closure_gap,
             ex.minor_gap,
             LOOP,
         );

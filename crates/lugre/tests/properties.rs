@@ -116,7 +116,7 @@ fn loop_of(model: RateIndependent, u: &[f64]) -> HysteresisLoop {
 fn arc_scale(model: RateIndependent, l: &Loop) -> f64 {
     let length = l.end.rho - l.start.rho;
     let direct = model.sigma0() * length * length.min(2.0 / model.a());
-    (l.stored_energy_change.abs() + l.dissipation).max(direct)
+    (l.energy.stored_energy_change.abs() + l.energy.dissipation).max(direct)
 }
 
 /// Whether `[a0, a1]` and `[b0, b1]` are disjoint (touching allowed) or one holds the other.
@@ -135,7 +135,11 @@ fn signature(l: &Loop) -> (LoopKind, f64, f64, f64, usize, [f64; 3]) {
         l.reversal.u,
         l.end.rho - l.start.rho,
         l.depth,
-        [l.work, l.dissipation, l.stored_energy_change],
+        [
+            l.energy.work,
+            l.energy.dissipation,
+            l.energy.stored_energy_change,
+        ],
     )
 }
 
@@ -145,8 +149,8 @@ fn signature(l: &Loop) -> (LoopKind, f64, f64, f64, usize, [f64; 3]) {
 fn same_gap(model: RateIndependent, l: &Loop, m: &Loop) -> bool {
     let length = l.end.rho - l.start.rho;
     let through_start = LOOP * model.g0() * (model.a() * length).min(1.0);
-    (l.closure_gap - m.closure_gap).abs()
-        <= through_start + IDENTITY * l.closure_gap.abs().max(m.closure_gap.abs())
+    (l.energy.closure_gap - m.energy.closure_gap).abs()
+        <= through_start + IDENTITY * l.energy.closure_gap.abs().max(m.energy.closure_gap.abs())
 }
 
 proptest! {
@@ -199,13 +203,13 @@ proptest! {
     fn energies_balance((model, u) in loop_case()) {
         let hl = loop_of(model, &u);
         let loops = hl.loops();
-        prop_assert!(loops[0].work > 0.0 && hl.work_per_period() > 0.0);
+        prop_assert!(loops[0].energy.work > 0.0 && hl.work_per_period() > 0.0);
         prop_assert!(
-            (loops[0].work - hl.work_per_period()).abs() <= IDENTITY * arc_scale(model, &loops[0])
+            (loops[0].energy.work - hl.work_per_period()).abs() <= IDENTITY * arc_scale(model, &loops[0])
         );
         for l in &loops {
-            prop_assert!(l.dissipation >= 0.0, "{l:?}");
-            let balance = l.work - l.stored_energy_change - l.dissipation;
+            prop_assert!(l.energy.dissipation >= 0.0, "{l:?}");
+            let balance = l.energy.work - l.energy.stored_energy_change - l.energy.dissipation;
             prop_assert!(
                 balance.abs() <= IDENTITY * arc_scale(model, l),
                 "W - dV - D = {balance:e} on {l:?}"
@@ -313,9 +317,9 @@ proptest! {
             prop_assert_eq!((a.parent, a.depth), (b.parent, b.depth));
             let scale = arc_scale(model, a) * lambda;
             for (x, y) in [
-                (a.work, b.work),
-                (a.dissipation, b.dissipation),
-                (a.stored_energy_change, b.stored_energy_change),
+                (a.energy.work, b.energy.work),
+                (a.energy.dissipation, b.energy.dissipation),
+                (a.energy.stored_energy_change, b.energy.stored_energy_change),
             ] {
                 prop_assert!((x * lambda - y).abs() <= 1e-11 * scale, "{x:e} * {lambda:e} vs {y:e}");
             }
@@ -418,7 +422,7 @@ proptest! {
             prop_assert_eq!((a.range, a.mean, a.count, a.start, a.end, a.closure),
                             (b.range, b.mean, b.count, b.start, b.end, b.closure));
             if let Some(en) = a.energy {
-                prop_assert!(en.dissipation >= 0.0);
+                prop_assert!(en.arc.dissipation >= 0.0);
             }
         }
     }

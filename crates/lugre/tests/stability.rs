@@ -125,14 +125,19 @@ fn sweep_energies(name: &str, g0: f64, bimodal: [f64; 4], cases: &[SweepCase]) {
                 ));
             }
         };
-        check("major W", major.work, energies[0], 0.0);
+        check("major W", major.energy.work, energies[0], 0.0);
         check("work_per_period", hl.work_per_period(), energies[0], 0.0);
-        check("major D", major.dissipation, energies[1], 0.0);
+        check("major D", major.energy.dissipation, energies[1], 0.0);
         if energies.len() == 5 {
             let stored = (minor.start.y.powi(2) + minor.end.y.powi(2)) / (2.0 * sigma0);
-            check("minor W", minor.work, energies[2], 0.0);
-            check("minor D", minor.dissipation, energies[3], 0.0);
-            check("minor dV", minor.stored_energy_change, energies[4], stored);
+            check("minor W", minor.energy.work, energies[2], 0.0);
+            check("minor D", minor.energy.dissipation, energies[3], 0.0);
+            check(
+                "minor dV",
+                minor.energy.stored_energy_change,
+                energies[4],
+                stored,
+            );
         }
         for v in loop_invariant_violations(&hl, &loops, IDENTITY) {
             failures.push(format!("sigma0 = {sigma0:e} (a P = {a_p:.3e}): {v}"));
@@ -225,10 +230,15 @@ fn realistic_stiffness_where_eq_13_overflows_f64() {
     let loops = hl.loops();
     assert_eq!(loops.len(), 2);
     let (major, minor) = (&loops[0], &loops[1]);
-    assert_rel("realistic major W", major.work, realistic::MAJOR_W, LOOP);
+    assert_rel(
+        "realistic major W",
+        major.energy.work,
+        realistic::MAJOR_W,
+        LOOP,
+    );
     assert_rel(
         "realistic major D",
-        major.dissipation,
+        major.energy.dissipation,
         realistic::MAJOR_D,
         LOOP,
     );
@@ -246,20 +256,25 @@ fn realistic_stiffness_where_eq_13_overflows_f64() {
         realistic::SCALE,
         LOOP,
     );
-    assert_rel("realistic minor W", minor.work, realistic::MINOR_W, LOOP);
+    assert_rel(
+        "realistic minor W",
+        minor.energy.work,
+        realistic::MINOR_W,
+        LOOP,
+    );
     assert_rel(
         "realistic minor D",
-        minor.dissipation,
+        minor.energy.dissipation,
         realistic::MINOR_D,
         LOOP,
     );
     // dV = (y_C^2 - y_A^2) / (2 sigma0) with y_A, y_C both within e^-500 of g0: pure rounding
     // (the reference is ~1e-230); it must be no more than an ulp of y^2 / sigma0.
     assert!(
-        (minor.stored_energy_change - realistic::MINOR_DV).abs()
+        (minor.energy.stored_energy_change - realistic::MINOR_DV).abs()
             <= FEW_ULPS * realistic::G0 * realistic::G0 / realistic::SIGMA0,
         "realistic minor dV = {:e}, reference {:e}",
-        minor.stored_energy_change,
+        minor.energy.stored_energy_change,
         realistic::MINOR_DV
     );
     check_loop_invariants(&hl, &loops, IDENTITY);
@@ -320,14 +335,14 @@ fn narrow_loop_near_saturation_keeps_its_work() {
     let tp = lugre::TurningPoints::new(&[-0.5, 2.0, 1.999999, 2.5]).unwrap();
     let loops = HysteresisLoop::new(model, &tp).unwrap().loops();
     assert_eq!(loops.len(), 2);
-    let w = loops[1].work;
+    let w = loops[1].energy.work;
     let reference = -5.315213545291311e-13;
     // Tolerance: the loop's condition, max|y°| delta / |W| ~ 4e6, times a few ulps.
     assert!(
         ((w - reference) / reference).abs() < 1e-9,
         "W = {w:e}, mpmath {reference:e}"
     );
-    assert!(loops[1].dissipation > 0.0);
+    assert!(loops[1].energy.dissipation > 0.0);
 }
 
 /// The ends of the f64 range, where the robustness catalogue (`lugre-cli/tests/catalogue.rs`)
@@ -344,7 +359,10 @@ fn the_ends_of_the_f64_range() {
     assert_eq!(hl.turning_y(), &[-2.0, 2.0]);
     assert_eq!(hl.work_per_period(), 4e300);
     let loops = hl.loops();
-    assert_eq!((loops[0].work, loops[0].dissipation), (4e300, 4e300));
+    assert_eq!(
+        (loops[0].energy.work, loops[0].energy.dissipation),
+        (4e300, 4e300)
+    );
     // a l overflows for every piece (a = 5e307): W = 4 g0 (A - 1/a) = 4.
     assert_eq!(
         common::loop_of(1e308, 2.0, &[0.0, 1.0]).work_per_period(),
@@ -366,16 +384,16 @@ fn the_ends_of_the_f64_range() {
     }
     for (a, b) in h1.loops().iter().zip(&h2.loops()) {
         for (x, y) in [
-            (a.work, b.work),
-            (a.stored_energy_change, b.stored_energy_change),
-            (a.dissipation, b.dissipation),
+            (a.energy.work, b.energy.work),
+            (a.energy.stored_energy_change, b.energy.stored_energy_change),
+            (a.energy.dissipation, b.energy.dissipation),
         ] {
             assert!(
                 (x * lambda - y).abs() <= IDENTITY * y.abs(),
                 "{x:e} * 2^996 vs {y:e}"
             );
         }
-        assert!((a.closure_gap - b.closure_gap).abs() <= LOOP * 2.0);
+        assert!((a.energy.closure_gap - b.energy.closure_gap).abs() <= LOOP * 2.0);
     }
     // Forces at the ends of the range: sigma0 and g0 -> lambda (sigma0, g0) leaves a and the
     // loops' places as they are and multiplies y° and every energy by lambda, exactly for a
@@ -393,12 +411,12 @@ fn the_ends_of_the_f64_range() {
             );
         }
         for (a, b) in h1.loops().iter().zip(&h2.loops()) {
-            let scale = a.stored_energy_change.abs() + a.dissipation;
+            let scale = a.energy.stored_energy_change.abs() + a.energy.dissipation;
             for (x, y) in [
-                (a.work, b.work),
-                (a.stored_energy_change, b.stored_energy_change),
-                (a.dissipation, b.dissipation),
-                (a.closure_gap, b.closure_gap),
+                (a.energy.work, b.energy.work),
+                (a.energy.stored_energy_change, b.energy.stored_energy_change),
+                (a.energy.dissipation, b.energy.dissipation),
+                (a.energy.closure_gap, b.energy.closure_gap),
             ] {
                 assert!(y.is_finite(), "{y:e} at lambda = {lambda:e}");
                 assert!(

@@ -174,9 +174,9 @@ fn check_loops_finite(loops: &[Loop]) -> Result<()> {
         let ok = finite(&l.start)
             && finite(&l.reversal)
             && finite(&l.end)
-            && l.work.is_finite()
-            && l.stored_energy_change.is_finite()
-            && l.dissipation.is_finite();
+            && l.energy.work.is_finite()
+            && l.energy.stored_energy_change.is_finite()
+            && l.energy.dissipation.is_finite();
         if !ok {
             bail!("the loop energies overflow f64 for this model and input (values too large)");
         }
@@ -290,10 +290,10 @@ fn write_loop_json<W: Write>(j: &mut JsonOut<W>, l: &Loop) -> std::io::Result<()
     j.point(&l.reversal)?;
     j.raw(",\"end\":")?;
     j.point(&l.end)?;
-    j.field(",\"work\":", l.work)?;
-    j.field(",\"stored_energy_change\":", l.stored_energy_change)?;
-    j.field(",\"dissipation\":", l.dissipation)?;
-    j.field(",\"closure_gap\":", l.closure_gap)?;
+    j.field(",\"work\":", l.energy.work)?;
+    j.field(",\"stored_energy_change\":", l.energy.stored_energy_change)?;
+    j.field(",\"dissipation\":", l.energy.dissipation)?;
+    j.field(",\"closure_gap\":", l.energy.closure_gap)?;
     j.raw(",\"parent\":")?;
     match l.parent {
         Some(p) => j.int(p)?,
@@ -359,10 +359,10 @@ fn print_loops(out: &mut impl Write, loops: &[Loop]) -> Result<()> {
             sig(l.end.rho, 8),
             sig(l.start.u, 8),
             sig(l.reversal.u, 8),
-            sig(l.work, 8),
-            sig(l.stored_energy_change, 8),
-            sig(l.dissipation, 8),
-            sig(l.closure_gap, 8),
+            sig(l.energy.work, 8),
+            sig(l.energy.stored_energy_change, 8),
+            sig(l.energy.dissipation, 8),
+            sig(l.energy.closure_gap, 8),
         )?;
     }
     more(out, loops.len())

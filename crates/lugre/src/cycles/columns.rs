@@ -281,11 +281,13 @@ impl CycleSink for CycleColumns {
         }
         if self.keep_energy {
             let e = c.energy;
-            self.work.push(e.map_or(f64::NAN, |e| e.work));
+            self.work.push(e.map_or(f64::NAN, |e| e.arc.work));
             self.stored_energy_change
-                .push(e.map_or(f64::NAN, |e| e.stored_energy_change));
-            self.dissipation.push(e.map_or(f64::NAN, |e| e.dissipation));
-            self.closure_gap.push(e.map_or(f64::NAN, |e| e.closure_gap));
+                .push(e.map_or(f64::NAN, |e| e.arc.stored_energy_change));
+            self.dissipation
+                .push(e.map_or(f64::NAN, |e| e.arc.dissipation));
+            self.closure_gap
+                .push(e.map_or(f64::NAN, |e| e.arc.closure_gap));
         }
     }
 

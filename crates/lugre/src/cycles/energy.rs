@@ -161,18 +161,15 @@ impl Track for EnergyTrack {
         let y_a = a.state.y;
         let e = arc_energy(model, &sums, y_a, y_end);
         let energy = CycleEnergy {
-            work: e.work,
-            stored_energy_change: e.stored_energy_change,
-            dissipation: e.dissipation,
-            closure_gap: e.closure_gap,
+            arc: e,
             y_start: y_a,
             y_closure: y_end,
         };
         let finite = [
-            energy.work,
-            energy.stored_energy_change,
-            energy.dissipation,
-            energy.closure_gap,
+            energy.arc.work,
+            energy.arc.stored_energy_change,
+            energy.arc.dissipation,
+            energy.arc.closure_gap,
             energy.y_closure,
         ]
         .iter()

@@ -82,6 +82,7 @@ pub use histogram::Histogram;
 pub const MAX_SAMPLE: f64 = engine::MAX_ABS;
 
 use crate::error::HistoryError;
+use crate::kernel::ArcEnergy;
 use crate::model::RateIndependent;
 use energy::EnergyTrack;
 use engine::{Engine, NoTrack};
@@ -105,14 +106,9 @@ pub struct Closure {
 /// closure `C`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleEnergy {
-    /// `W = integral y* du` over the arc (nested cycles included).
-    pub work: f64,
-    /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the change of the energy stored in the bristles.
-    pub stored_energy_change: f64,
-    /// `D = W - dV = (1/g0) integral y*^2 drho >= 0`.
-    pub dissipation: f64,
-    /// `y_C - y_A`: loops do not close in general.
-    pub closure_gap: f64,
+    /// Work `W = integral y* du` (nested cycles included), stored-energy change, dissipation
+    /// and closure gap over the arc.
+    pub arc: ArcEnergy,
     /// `y*` at the start `A`.
     pub y_start: f64,
     /// `y*` at the closure `C`.

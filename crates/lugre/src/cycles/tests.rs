@@ -383,24 +383,28 @@ fn energies_match_mpmath() {
             let scale = g0 * c.range;
             let scale_dv = g0 * (c.range + g0 / sigma0);
             for (got, want, what, scale) in [
-                (e.work, w.4, "W", scale),
-                (e.stored_energy_change, w.5, "dV", scale_dv),
-                (e.dissipation, w.6, "D", scale),
+                (e.arc.work, w.4, "W", scale),
+                (e.arc.stored_energy_change, w.5, "dV", scale_dv),
+                (e.arc.dissipation, w.6, "D", scale),
             ] {
                 assert!(
                     (got - want).abs() < CYCLE_ENERGY * scale,
                     "{what}: {got} vs {want} ({c:?})"
                 );
             }
-            for (got, want) in [(e.closure_gap, w.7), (e.y_start, w.8), (e.y_closure, w.9)] {
+            for (got, want) in [
+                (e.arc.closure_gap, w.7),
+                (e.y_start, w.8),
+                (e.y_closure, w.9),
+            ] {
                 assert!((got - want).abs() < LOOP * g0, "{got} vs {want}");
             }
             // The work keeps its own digits even on tiny loops (relative error about
             // 1e-16 / (a range); W = dV + D would keep only 1e-16 / W of them).
             assert!(
-                rel_diff(e.work, w.4) < TINY_LOOP_WORK,
+                rel_diff(e.arc.work, w.4) < TINY_LOOP_WORK,
                 "{} vs {}",
-                e.work,
+                e.arc.work,
                 w.4
             );
         }
@@ -438,12 +442,13 @@ fn work_is_stored_energy_plus_dissipation_on_random_histories() {
         let h = count_cycles_with_energy(&u, gate, model, 0.0).unwrap();
         for c in h.cycles.iter().filter(|c| c.is_full()) {
             let e = c.energy.unwrap();
-            assert!(e.dissipation >= 0.0);
+            assert!(e.arc.dissipation >= 0.0);
             // dV comes from y* at both ends, each good to a few ulps of g0: its error is about
             // 1e-16 g0 |y| / sigma0, not relative to the cycle.
             let scale = 1.5 * (c.range + 1.5 / sigma0);
             assert!(
-                (e.work - e.stored_energy_change - e.dissipation).abs() < CYCLE_ENERGY * scale,
+                (e.arc.work - e.arc.stored_energy_change - e.arc.dissipation).abs()
+                    < CYCLE_ENERGY * scale,
                 "{case}: {e:?}"
             );
             assert!(e.y_start.abs() <= 1.5 && e.y_closure.abs() <= 1.5);
@@ -494,12 +499,14 @@ fn periodic_history_agrees_with_the_loop() {
         );
         assert!((e.y_closure - minor.end.y).abs() < LOOP * 2.0);
         assert!(
-            (e.work - minor.work).abs() < CYCLE_ENERGY * scale,
+            (e.arc.work - minor.energy.work).abs() < CYCLE_ENERGY * scale,
             "{e:?} {minor:?}"
         );
-        assert!((e.dissipation - minor.dissipation).abs() < CYCLE_ENERGY * scale);
-        assert!((e.stored_energy_change - minor.stored_energy_change).abs() < LOOP * scale);
-        assert!((e.closure_gap - minor.closure_gap).abs() < LOOP * 2.0);
+        assert!((e.arc.dissipation - minor.energy.dissipation).abs() < CYCLE_ENERGY * scale);
+        assert!(
+            (e.arc.stored_energy_change - minor.energy.stored_energy_change).abs() < LOOP * scale
+        );
+        assert!((e.arc.closure_gap - minor.energy.closure_gap).abs() < LOOP * 2.0);
     }
     // The same history given by its turning points only gives the same y* and energies
     // (rate independence: only the path matters).
@@ -510,7 +517,7 @@ fn periodic_history_agrees_with_the_loop() {
     let minors_t: Vec<&Cycle> = ht.cycles.iter().filter(|c| c.range == 0.5).collect();
     for (a, b) in minors.iter().zip(minors_t) {
         let (ea, eb) = (a.energy.unwrap(), b.energy.unwrap());
-        assert!((ea.work - eb.work).abs() < CYCLE_ENERGY * scale);
+        assert!((ea.arc.work - eb.arc.work).abs() < CYCLE_ENERGY * scale);
         assert!((ea.y_closure - eb.y_closure).abs() < LOOP * 2.0);
     }
 }
@@ -815,10 +822,10 @@ fn columns_with_energies() {
     for (k, c) in h.cycles.iter().enumerate() {
         match c.energy {
             Some(e) => {
-                assert_eq!(columns.work[k], e.work);
-                assert_eq!(columns.dissipation[k], e.dissipation);
-                assert_eq!(columns.stored_energy_change[k], e.stored_energy_change);
-                assert_eq!(columns.closure_gap[k], e.closure_gap);
+                assert_eq!(columns.work[k], e.arc.work);
+                assert_eq!(columns.dissipation[k], e.arc.dissipation);
+                assert_eq!(columns.stored_energy_change[k], e.arc.stored_energy_change);
+                assert_eq!(columns.closure_gap[k], e.arc.closure_gap);
             }
             None => assert!(columns.work[k].is_nan() && c.count == 0.5),
         }

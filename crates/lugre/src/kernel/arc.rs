@@ -164,12 +164,18 @@ impl std::ops::Sub for Sums {
     }
 }
 
-/// The energies over an arc.
+/// The energies over an arc from `A` to `C` on which the input returns to its start
+/// (`u_C = u_A`): a periodic input's loop ([`crate::Loop`]) or a measured history's full cycle
+/// ([`crate::CycleEnergy`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ArcEnergy {
+    /// `W = integral y dpsi` over the arc, nested loops included.
     pub work: f64,
+    /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the change of the energy stored in the bristles.
     pub stored_energy_change: f64,
+    /// `D = W - dV = (1/g0) integral y^2 drho >= 0`.
     pub dissipation: f64,
+    /// `y_C - y_A`: loops do not close in general (paper Fig. 15).
     pub closure_gap: f64,
 }
 

@@ -2,6 +2,7 @@
 //! [`LoopTable`](super::LoopTable) the engine writes, for callers that want one value per loop.
 
 use super::{HysteresisLoop, LoopPoint};
+use crate::kernel::ArcEnergy;
 
 /// Whether a loop is the major loop (the whole period) or a minor loop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -20,14 +21,8 @@ pub struct Loop {
     pub reversal: LoopPoint,
     /// Where the input first returns to `u_A` (`rho_C`; may exceed `P` when the arc wraps).
     pub end: LoopPoint,
-    /// `W = integral y° dpsi` over the arc, nested loops included.
-    pub work: f64,
-    /// `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the change of the energy stored in the bristles.
-    pub stored_energy_change: f64,
-    /// `D = W - dV = (1/g0) integral y°^2 drho >= 0`.
-    pub dissipation: f64,
-    /// `y_C - y_A`: minor loops do not close in general (paper Fig. 15).
-    pub closure_gap: f64,
+    /// Work, stored-energy change, dissipation and closure gap over the arc.
+    pub energy: ArcEnergy,
     /// Index of the smallest loop whose arc contains this one (`None` for the major loop).
     pub parent: Option<usize>,
     /// 0 for the major loop, parent's depth + 1 otherwise.
@@ -64,10 +59,12 @@ pub(super) fn minor_loops(hl: &HysteresisLoop) -> Vec<Loop> {
                     u: table.end_u()[row],
                     y: table.end_y()[row],
                 },
-                work: table.work()[row],
-                stored_energy_change: table.stored_energy_change()[row],
-                dissipation: table.dissipation()[row],
-                closure_gap: table.closure_gap()[row],
+                energy: ArcEnergy {
+                    work: table.work()[row],
+                    stored_energy_change: table.stored_energy_change()[row],
+                    dissipation: table.dissipation()[row],
+                    closure_gap: table.closure_gap()[row],
+                },
                 parent: table.parent(row).map(|p| place[p]),
                 depth: table.depth()[row],
             }

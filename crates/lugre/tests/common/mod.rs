@@ -145,45 +145,51 @@ pub fn loop_invariant_violations(hl: &HysteresisLoop, loops: &[Loop], tol: f64) 
         rel(span, p) <= FEW_ULPS,
         format!("major arc length {span} != period {p}"),
     );
-    check(major.work > 0.0, format!("major W = {:e} <= 0", major.work));
+    check(
+        major.energy.work > 0.0,
+        format!("major W = {:e} <= 0", major.energy.work),
+    );
     let ymax = hl.turning_y().iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let wp = hl.work_per_period();
     check(
-        (major.work - wp).abs() <= tol * ymax * p,
+        (major.energy.work - wp).abs() <= tol * ymax * p,
         format!(
             "major W = {:e} but work_per_period = {wp:e} (rel {:.2e})",
-            major.work,
-            rel(major.work, wp)
+            major.energy.work,
+            rel(major.energy.work, wp)
         ),
     );
     for (i, l) in loops.iter().enumerate() {
         let scale = ymax * (l.end.rho - l.start.rho);
-        let resid = l.work - l.stored_energy_change - l.dissipation;
+        let resid = l.energy.work - l.energy.stored_energy_change - l.energy.dissipation;
         check(
             resid.abs() <= tol * scale,
             format!(
                 "loop {i}: W = {:e} but dV + D = {:e} + {:e} (residual {:.2e} of max|y°| (rho_C - rho_A))",
-                l.work,
-                l.stored_energy_change,
-                l.dissipation,
+                l.energy.work,
+                l.energy.stored_energy_change,
+                l.energy.dissipation,
                 resid.abs() / scale
             ),
         );
         check(
-            l.dissipation >= 0.0,
-            format!("loop {i}: D = {:e} < 0", l.dissipation),
+            l.energy.dissipation >= 0.0,
+            format!("loop {i}: D = {:e} < 0", l.energy.dissipation),
         );
         check(
-            l.work.is_finite() && l.dissipation.is_finite(),
-            format!("loop {i}: W = {}, D = {}", l.work, l.dissipation),
+            l.energy.work.is_finite() && l.energy.dissipation.is_finite(),
+            format!(
+                "loop {i}: W = {}, D = {}",
+                l.energy.work, l.energy.dissipation
+            ),
         );
         // The crate computes the gap without differencing the two values (it is O(a) on short
         // arcs); the difference agrees to its own rounding.
         check(
-            (l.closure_gap - (l.end.y - l.start.y)).abs() <= FEW_ULPS * ymax,
+            (l.energy.closure_gap - (l.end.y - l.start.y)).abs() <= FEW_ULPS * ymax,
             format!(
                 "loop {i}: gap {} != y_C - y_A = {}",
-                l.closure_gap,
+                l.energy.closure_gap,
                 l.end.y - l.start.y
             ),
         );
@@ -192,12 +198,12 @@ pub fn loop_invariant_violations(hl: &HysteresisLoop, loops: &[Loop], tol: f64) 
         // differences the two values, whose rounding the second term below allows.
         let dv_scale = (l.end.y.abs() + l.start.y.abs()).powi(2) / (2.0 * sigma0);
         check(
-            (l.stored_energy_change - dv).abs()
+            (l.energy.stored_energy_change - dv).abs()
                 <= CLOSED_FORM * dv_scale
                     + FEW_ULPS * ymax * (l.end.y.abs() + l.start.y.abs()) / (2.0 * sigma0),
             format!(
                 "loop {i}: dV = {:e}, (y_C^2 - y_A^2) / 2 sigma0 = {dv:e}",
-                l.stored_energy_change
+                l.energy.stored_energy_change
             ),
         );
         // |y°| < g0 holds exactly in the mathematics; here within 2 ulps, so that the rounding

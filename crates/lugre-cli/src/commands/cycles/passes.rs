@@ -147,10 +147,10 @@ impl<'a, 'b> SecondPass<'a, 'b> {
             }
             match c.energy {
                 Some(e) => {
-                    j.field(",\"work\":", e.work)?;
-                    j.field(",\"stored_energy_change\":", e.stored_energy_change)?;
-                    j.field(",\"dissipation\":", e.dissipation)?;
-                    j.field(",\"closure_gap\":", e.closure_gap)?;
+                    j.field(",\"work\":", e.arc.work)?;
+                    j.field(",\"stored_energy_change\":", e.arc.stored_energy_change)?;
+                    j.field(",\"dissipation\":", e.arc.dissipation)?;
+                    j.field(",\"closure_gap\":", e.arc.closure_gap)?;
                     j.field(",\"y_start\":", e.y_start)?;
                     j.field(",\"y_closure\":", e.y_closure)?;
                 }
@@ -173,10 +173,10 @@ impl<'a, 'b> SecondPass<'a, 'b> {
                 c.end,
                 c.closure.map(|cl| cl.index.to_string()).unwrap_or_default(),
                 opt(c.closure.map(|cl| cl.position)),
-                opt(e.map(|e| e.work)),
-                opt(e.map(|e| e.stored_energy_change)),
-                opt(e.map(|e| e.dissipation)),
-                opt(e.map(|e| e.closure_gap)),
+                opt(e.map(|e| e.arc.work)),
+                opt(e.map(|e| e.arc.stored_energy_change)),
+                opt(e.map(|e| e.arc.dissipation)),
+                opt(e.map(|e| e.arc.closure_gap)),
                 opt(e.map(|e| e.y_start)),
                 opt(e.map(|e| e.y_closure)),
             )?;

@@ -198,10 +198,10 @@ fn cycle_row(i: usize, c: &Cycle, with_energy: bool) -> String {
     if let Some(e) = c.energy {
         row += &format!(
             " {:>13} {:>13} {:>13} {:>13}",
-            sig(e.work, 8),
-            sig(e.stored_energy_change, 8),
-            sig(e.dissipation, 8),
-            sig(e.closure_gap, 8)
+            sig(e.arc.work, 8),
+            sig(e.arc.stored_energy_change, 8),
+            sig(e.arc.dissipation, 8),
+            sig(e.arc.closure_gap, 8)
         );
     } else if with_energy {
         row += &format!(" {:>13} {:>13} {:>13} {:>13}", "-", "-", "-", "-");

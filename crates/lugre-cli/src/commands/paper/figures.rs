@@ -328,7 +328,7 @@ pub(super) fn loop_figure(number: u32, ex: &LoopExample) -> Result<PaperFigure> 
         .loops
         .iter()
         .find(|l| l.kind == LoopKind::Minor)
-        .map_or(0.0, |l| l.work);
+        .map_or(0.0, |l| l.energy.work);
     Ok(PaperFigure {
         number,
         title: format!(

@@ -240,14 +240,14 @@ fn loops_table(h: &mut String, loops: &[Loop]) {
         num(h, &format!("loops.{i}.reversal.u"), l.reversal.u);
         num(h, &format!("loops.{i}.start.y"), l.start.y);
         num(h, &format!("loops.{i}.end.y"), l.end.y);
-        num(h, &format!("loops.{i}.work"), l.work);
+        num(h, &format!("loops.{i}.work"), l.energy.work);
         num(
             h,
             &format!("loops.{i}.stored_energy_change"),
-            l.stored_energy_change,
+            l.energy.stored_energy_change,
         );
-        num(h, &format!("loops.{i}.dissipation"), l.dissipation);
-        num(h, &format!("loops.{i}.closure_gap"), l.closure_gap);
+        num(h, &format!("loops.{i}.dissipation"), l.energy.dissipation);
+        num(h, &format!("loops.{i}.closure_gap"), l.energy.closure_gap);
         h.push_str("</tr>\n");
     }
     h.push_str("</table>\n");

@@ -220,9 +220,9 @@ fn print_example(out: &mut impl Write, ex: &LoopExample) -> Result<()> {
             kind_name(l.kind),
             sig(l.start.rho, 6),
             sig(l.end.rho, 6),
-            sig(l.work, 10),
-            sig(l.stored_energy_change, 10),
-            sig(l.dissipation, 10)
+            sig(l.energy.work, 10),
+            sig(l.energy.stored_energy_change, 10),
+            sig(l.energy.dissipation, 10)
         )?;
     }
     Ok(())

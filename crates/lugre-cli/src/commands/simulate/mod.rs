@@ -27,9 +27,6 @@ mod output;
 use drive::build_drive;
 use output::{print_table, response_figure, write_csv, write_json};
 
-/// Output times per period when none are asked for (piecewise-linear inputs also get their
-/// kinks; sampled data get exactly their samples).
-
 /// At most this many output rows (40 bytes each in memory, more as text).
 const MAX_ROWS: usize = 50_000_000;
 
