@@ -5,6 +5,7 @@
 
 use anyhow::{bail, Result};
 use clap::{Args, ValueEnum};
+use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use std::path::PathBuf;
 
@@ -56,39 +57,51 @@ pub(crate) enum ModelChoice {
 }
 
 impl ModelArgs {
+    /// The value given for a parameter's flag (`--sigma0` for [`Parameter::Sigma0`], ...).
+    pub(crate) fn given(&self, p: Parameter) -> Option<f64> {
+        match p {
+            Parameter::Sigma0 => self.sigma0,
+            Parameter::Sigma1 => self.sigma1,
+            Parameter::Sigma2 => self.sigma2,
+            Parameter::Fc => self.fc,
+            Parameter::Fs => self.fs,
+            Parameter::Vs => self.vs,
+            Parameter::Beta => self.beta,
+            Parameter::Rho => self.rho,
+            _ => None,
+        }
+    }
+
+    /// The given value, else the parameter's default.
+    fn value(&self, p: Parameter) -> f64 {
+        self.given(p).unwrap_or(p.default_value())
+    }
+
     pub(crate) fn build(&self) -> Result<ModelChoice> {
         match self.model {
             ModelKind::Lugre => {
                 if self.rho.is_some() {
                     bail!("--rho is the Dahl model's parameter (add --model dahl)");
                 }
-                let d = LuGreParams::default();
-                let p = LuGreParams {
-                    sigma0: self.sigma0.unwrap_or(d.sigma0),
-                    sigma1: self.sigma1.unwrap_or(d.sigma1),
-                    sigma2: self.sigma2.unwrap_or(d.sigma2),
-                    fc: self.fc.unwrap_or(d.fc),
-                    fs: self.fs.unwrap_or(d.fs),
-                    vs: self.vs.unwrap_or(d.vs),
-                    beta: self.beta.unwrap_or(d.beta),
-                };
+                let mut p = LuGreParams::default();
+                for q in Parameter::LUGRE {
+                    p.set(q, self.value(q));
+                }
                 Ok(ModelChoice::LuGre(LuGre::from_params(p)?))
             }
             ModelKind::Dahl => {
-                let lugre_only = [
-                    ("--sigma0", self.sigma0),
-                    ("--sigma1", self.sigma1),
-                    ("--sigma2", self.sigma2),
-                    ("--fs", self.fs),
-                    ("--vs", self.vs),
-                    ("--beta", self.beta),
-                ];
-                if let Some((flag, _)) = lugre_only.iter().find(|(_, v)| v.is_some()) {
-                    bail!("{flag} is a LuGre parameter; the Dahl model takes --rho and --fc");
+                let lugre_only = Parameter::LUGRE
+                    .into_iter()
+                    .filter(|q| !Parameter::DAHL.contains(q));
+                if let Some(q) = lugre_only.into_iter().find(|&q| self.given(q).is_some()) {
+                    bail!(
+                        "--{} is a LuGre parameter; the Dahl model takes --rho and --fc",
+                        q.name()
+                    );
                 }
                 Ok(ModelChoice::Dahl(Dahl::new(
-                    self.rho.unwrap_or(1.0),
-                    self.fc.unwrap_or(1.0),
+                    self.value(Parameter::Rho),
+                    self.value(Parameter::Fc),
                 )?))
             }
         }
@@ -115,11 +128,11 @@ impl ModelChoice {
     pub(crate) fn to_json(&self) -> serde_json::Value {
         match self {
             ModelChoice::LuGre(m) => {
-                let p = m.params();
-                serde_json::json!({
-                    "kind": "lugre", "sigma0": p.sigma0, "sigma1": p.sigma1, "sigma2": p.sigma2,
-                    "fc": p.fc, "fs": p.fs, "vs": p.vs, "beta": p.beta,
-                })
+                let mut j = serde_json::json!({ "kind": "lugre" });
+                for (q, value) in m.params().named() {
+                    j[q.name()] = value.into();
+                }
+                j
             }
             ModelChoice::Dahl(m) => serde_json::json!({
                 "kind": "dahl", "rho": m.rho(), "fc": m.fc(),

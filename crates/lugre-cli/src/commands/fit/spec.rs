@@ -3,6 +3,7 @@
 
 use anyhow::{anyhow, bail, Result};
 use lugre::fit::{Family, FitError, FitSpec};
+use lugre::model::Parameter;
 
 use super::FitArgs;
 use crate::args::ModelKind;
@@ -14,25 +15,14 @@ pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
     // The same checks as every command (flags of the other model, invalid values).
     args.model.build()?;
     let m = &args.model;
-    let (family, given): (Family, Vec<(&str, Option<f64>)>) = match m.model {
-        ModelKind::Lugre => (
-            Family::LuGre,
-            vec![
-                ("sigma0", m.sigma0),
-                ("sigma1", m.sigma1),
-                ("sigma2", m.sigma2),
-                ("fc", m.fc),
-                ("fs", m.fs),
-                ("vs", m.vs),
-                ("beta", m.beta),
-            ],
-        ),
-        ModelKind::Dahl => (Family::Dahl, vec![("rho", m.rho), ("fc", m.fc)]),
+    let (family, parameters) = match m.model {
+        ModelKind::Lugre => (Family::LuGre, &Parameter::LUGRE[..]),
+        ModelKind::Dahl => (Family::Dahl, &Parameter::DAHL[..]),
     };
     let mut spec = FitSpec::new(family);
-    for (name, value) in given {
-        if let Some(v) = value {
-            spec = spec.set(name, v).map_err(explain)?;
+    for &p in parameters {
+        if let Some(v) = m.given(p) {
+            spec = spec.set(p.name(), v).map_err(explain)?;
         }
     }
     for name in names("--fix", args.fix.as_deref())? {
