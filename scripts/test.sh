@@ -25,6 +25,7 @@ cargo clippy -p lugre --all-targets --features bench-internals -- -D warnings
 cargo clippy -p lugre --all-targets --no-default-features -- -D warnings
 python3 scripts/check-msrv.py
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+RUSTDOCFLAGS="-D warnings" cargo doc -p lugre --no-deps --document-private-items --quiet
 
 step "benchmarks and fuzz targets build"
 cargo bench -p lugre --features bench-internals --no-run --quiet

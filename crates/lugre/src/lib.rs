@@ -67,3 +67,9 @@ pub use simulate::{
     paper_example_1, Example1, Gamma, PiecewiseLinear, Sample, Simulator, Sine, Tolerance,
     Trajectory,
 };
+
+/// The README's Rust example, compiled and run as a doctest (`cargo test --doc`), so that it
+/// cannot drift from the API.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeDoctests;

@@ -2,8 +2,9 @@
 //! default; without it, plain allocations of the same sizes).
 //!
 //! Writing tens of MB of fresh memory costs one page fault per 4 KiB page, and a fault with its
-//! zeroing costs microseconds in a virtual machine: at 10^6 turning points that was 40 % of the
-//! time of [`crate::HysteresisLoop::new`]. With huge pages it is one fault per 2 MiB.
+//! zeroing costs microseconds in a virtual machine (a large part of
+//! [`crate::HysteresisLoop::new`] at 10^6 turning points: BENCHMARKS.md). With huge pages it is
+//! one fault per 2 MiB.
 
 /// A transparent huge page; outputs of at least this many bytes get them.
 const HUGE_PAGE: usize = 2 << 20;

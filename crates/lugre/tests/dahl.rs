@@ -49,7 +49,7 @@ fn dahl_symmetric_triangle_matches_the_closed_form() {
 
 /// Regression: at `rho A = 2e-6` (`a P = 8e-6`) the first version's `W` lost relative accuracy
 /// like `1e-16 / (a P)` (got 3.2000000014e-11, closed form 3.1999999999949e-11); `W` now comes
-/// from the form that rounds less (`arc_energy.rs`).
+/// from the form that rounds less (`kernel/arc.rs`).
 #[test]
 fn dahl_work_per_period_matches_the_closed_form() {
     for &(rho, fc, amp, _, work, _) in DAHL {

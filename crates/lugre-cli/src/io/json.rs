@@ -1,6 +1,6 @@
 //! A streaming JSON emitter for large reports: numbers go straight from `zmij` (shortest
 //! round-trip representation, as serde_json prints them) into a buffer flushed in large
-//! chunks. serde_json's generic path costs about 1.5x more on a 10^6-turning-point loop.
+//! chunks, cheaper than serde_json's generic path on large reports (BENCHMARKS.md).
 
 use lugre::LoopPoint;
 use std::io::{self, Write};

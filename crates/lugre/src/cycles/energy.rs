@@ -6,7 +6,7 @@
 //! from `y_k` the work is `s y_k c + e` with `(c, e)` from `hysteresis::piece`. The sums over
 //! an arc's pieces ([`crate::kernel::arc::Sums`]) give its work, stored-energy change,
 //! dissipation and closure gap in O(1) per cycle without keeping samples, each in the form
-//! that rounds least ([`crate::arc_energy`]).
+//! that rounds least (`kernel::arc`).
 //!
 //! Sums are kept per stack segment, from one open reversal to the next (and from the top one
 //! to the current sample), never from the start of the history: the rounding of a sum then

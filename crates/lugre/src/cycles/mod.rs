@@ -5,7 +5,7 @@
 //! computed in one streaming pass with memory bounded by the rainflow stack (the open
 //! reversals), so histories of any length can be fed as they are read ([`CycleCounter`],
 //! [`EnergyCycleCounter`]; blocks of a few thousand samples through `push_all` are fastest,
-//! over 100 M samples/s without gate and energies, more into [`CycleColumns`]);
+//! and fastest of all without gate and energies into [`CycleColumns`]: BENCHMARKS.md);
 //! [`count_cycles`] and [`count_cycles_with_energy`] take a slice.
 //!
 //! Conventions (those of the Python package `rainflow` 3.x, so results compare row by row with
@@ -27,7 +27,7 @@
 //! * **Closure** (full cycles): the first sample after `B` at which the history is back at
 //!   `u_A` (reached or passed, by the same test `|u - u_B| >= Y` that counts the cycle), and
 //!   the fractional position there by linear interpolation between samples, where `u = u_A`:
-//!   the end `C` of the loop's arc `A -> B -> C`, as for periodic inputs (DESIGN §1).
+//!   the end `C` of the loop's arc `A -> B -> C`, as for periodic inputs (`docs/mathematics.md`, section 4).
 //! * **Energy**: with a model, `y*` (eq. 6) from `y*(0) = sigma0 x0` along the history, and over
 //!   each full cycle's arc the work `W = integral y* du`, the change of stored energy
 //!   `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the dissipation `D = W - dV >= 0` and the closure gap

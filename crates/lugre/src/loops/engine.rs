@@ -155,7 +155,7 @@ impl Period<'_> {
     /// The pass is compiled a second time for AVX2, chosen at run time: the sums are lane
     /// arrays, and adding two of them is then a few vector instructions, as is the series of a
     /// block of pieces. Results are bit for bit the same (no fused multiply-adds are
-    /// introduced). (An AVX-512 build measured no faster.)
+    /// introduced). Why not AVX-512: BENCHMARKS.md.
     pub fn loops(&self, y: &mut [f64]) -> LoopTable {
         #[cfg(target_arch = "x86_64")]
         {

@@ -1,5 +1,5 @@
 //! The hysteresis loop `y°` of the LuGre and Dahl models (paper eqs. 8-10) for any periodic
-//! input, by the stable closed form of DESIGN §1.
+//! input, by the stable closed form (`docs/mathematics.md`, section 2).
 //!
 //! In the normalized variable `rho` (the variation, eq. 7) the input `psi_u` runs at unit speed
 //! between turning points `u_k` at `rho_k` (eq. 12). On segment `k`, of length

@@ -177,7 +177,7 @@ impl LoopTable {
         }
     }
 
-    /// The loop in row `row` (its parent entry was made when it closed, [`adopt`]).
+    /// The loop in row `row` (its parent entry was made when it closed, the engine's `adopt`).
     #[inline]
     pub(super) fn set(
         &mut self,

@@ -7,7 +7,7 @@ forms worked out by hand.
 
     cd crates/lugre/tests && python3 reference/make_reference.py > common/reference_values.rs
 
-Sources of the numbers (symbols as in the paper and DESIGN.md, a = sigma0 / g0):
+Sources of the numbers (symbols as in the paper and docs/mathematics.md, a = sigma0 / g0):
 
 * EQ13  -- the paper's eqs. 13-16 (proof of Theorem A) evaluated literally:
       y°(0) = g0 e^{-a r4} / (1 - e^{-a r4}) (2 e^{a r1} - 2 e^{a r2} + 2 e^{a r3} - e^{a r4} - 1)

@@ -38,7 +38,7 @@
 //! work one sample at a time and serves the gate and the energies.
 //!
 //! Counting a block's reversals has the same problem: whether the three-point test counts a
-//! cycle is a coin toss on a noisy history. Into [`CycleColumns`] (which takes whole blocks of
+//! cycle is a coin toss on a noisy history. Into [`CycleColumns`](crate::CycleColumns) (which takes whole blocks of
 //! cycles at once), stretches of reversals are therefore counted without a branch on the test
 //! ([`Engine::count_fast`]): each step pops a pair or pushes the next reversal, chosen by masks,
 //! and the full cycles are written out afterwards, their closures searched as above.
