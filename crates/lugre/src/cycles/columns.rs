@@ -134,27 +134,33 @@ impl CycleColumns {
 
     /// Frees the room no row uses.
     pub fn shrink_to_fit(&mut self) {
-        for v in [
-            &mut self.reversal_index,
-            &mut self.start,
-            &mut self.end,
-            &mut self.closure,
-        ] {
-            v.shrink_to_fit();
-        }
-        for v in [
-            &mut self.reversal_u,
-            &mut self.range,
-            &mut self.mean,
-            &mut self.count,
-            &mut self.closure_position,
-            &mut self.work,
-            &mut self.stored_energy_change,
-            &mut self.dissipation,
-            &mut self.closure_gap,
-        ] {
-            v.shrink_to_fit();
-        }
+        let (indices, reals) = self.all_columns();
+        indices.into_iter().for_each(Vec::shrink_to_fit);
+        reals.into_iter().for_each(Vec::shrink_to_fit);
+    }
+
+    /// Every column, the index columns and the real ones.
+    #[allow(clippy::type_complexity)]
+    fn all_columns(&mut self) -> ([&mut Vec<i64>; 4], [&mut Vec<f64>; 9]) {
+        (
+            [
+                &mut self.reversal_index,
+                &mut self.start,
+                &mut self.end,
+                &mut self.closure,
+            ],
+            [
+                &mut self.reversal_u,
+                &mut self.range,
+                &mut self.mean,
+                &mut self.count,
+                &mut self.closure_position,
+                &mut self.work,
+                &mut self.stored_energy_change,
+                &mut self.dissipation,
+                &mut self.closure_gap,
+            ],
+        )
     }
 
     pub fn keeps_reversals(&self) -> bool {
@@ -172,27 +178,9 @@ impl CycleColumns {
     /// Empties every column, keeping its memory (to count another history, or to take the
     /// next piece of a long one after writing this one out).
     pub fn clear(&mut self) {
-        for v in [
-            &mut self.reversal_u,
-            &mut self.range,
-            &mut self.mean,
-            &mut self.count,
-            &mut self.closure_position,
-            &mut self.work,
-            &mut self.stored_energy_change,
-            &mut self.dissipation,
-            &mut self.closure_gap,
-        ] {
-            v.clear();
-        }
-        for v in [
-            &mut self.reversal_index,
-            &mut self.start,
-            &mut self.end,
-            &mut self.closure,
-        ] {
-            v.clear();
-        }
+        let (indices, reals) = self.all_columns();
+        indices.into_iter().for_each(Vec::clear);
+        reals.into_iter().for_each(Vec::clear);
     }
 
     /// The number of cycles held.
