@@ -174,7 +174,7 @@ class Case:
             self.input = dict(t=t, u=u)
         # The knots exactly as lugre places them (for turning points: cumulated |du| at unit
         # speed), taken from a knots-only run.
-        knots = self.model.simulate(**self.input, gamma=gamma, periods=periods)
+        knots = self.model.simulate(**self.input, gamma=gamma, periods=periods, times="knots")
         self.kt = np.asarray(knots["t"])  # every knot over all periods, the run's end last
         self.ku = np.asarray(knots["u"])
         nper = (len(self.kt) - 1) // periods

@@ -160,7 +160,8 @@ impl PyLuGre {
     /// * sine=(A, T[, phase[, offset]]): u(t) = A sin(2 pi t / T + phase) + offset, from
     ///   t = 0 (an adaptive L-stable integrator with relative tolerance `tol`).
     ///
-    /// Output at `times` (strictly increasing, inside the simulated interval), or at
+    /// Output at `times` (strictly increasing, inside the simulated interval; or "knots":
+    /// at every knot of a piecewise-linear input), or at
     /// `samples_per_period` evenly spaced times per period, or else as `lugre simulate` does:
     /// samples t, u at their knots; turning points at 200 evenly spaced times per period and
     /// at every turning point (where y jumps by the sigma1 term); a sine at 200 evenly spaced

@@ -143,6 +143,9 @@ pub fn simulate<'py>(
                 "give times or samples_per_period, not both",
             ))
         }
+        (Some(times), None) if times.extract::<String>().is_ok_and(|s| s == "knots") => {
+            Output::Knots
+        }
         (Some(times), None) => Output::Times(one_dimensional(times, "times")?),
         (None, Some(n)) => {
             let n = count(n, "samples_per_period")?;

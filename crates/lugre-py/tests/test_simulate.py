@@ -65,6 +65,15 @@ def test_returns_a_mapping_of_float64_arrays():
         assert r["u"][i] == u
 
 
+def test_knots_on_request():
+    r = lugre.LuGre().simulate(EX3_TURNING_POINTS, gamma=10, periods=3, times="knots")
+    assert len(r["t"]) == 4 * 3 + 1  # every knot of 3 periods
+    np.testing.assert_allclose(r["t"][:5], [0.0, 1.0, 1.8, 3.1, 4.6], rtol=1e-15)
+    np.testing.assert_array_equal(r["u"][:5], [0.0, 1.0, 0.2, 1.5, 0.0])
+    with pytest.raises(ValueError, match="a sine has no knots"):
+        lugre.LuGre().simulate(sine=(1, 2), times="knots")
+
+
 def test_example_3_gamma_10_against_an_independent_ode_solver():
     t, want = EX3_GAMMA10
     r = lugre.LuGre().simulate(turning_points=EX3_TURNING_POINTS, gamma=10, times=t)

@@ -77,7 +77,7 @@ class LuGre:
         gamma: _Real = 1.0,
         periods: SupportsIndex = 1,
         x0: _Real = 0.0,
-        times: Optional[_Reals] = None,
+        times: Optional[Union[_Reals, Literal["knots"]]] = None,
         samples_per_period: Optional[SupportsIndex] = None,
         tol: _Real = 1e-10,
     ) -> dict[str, _Floats]: ...
@@ -110,7 +110,7 @@ class Dahl:
         gamma: _Real = 1.0,
         periods: SupportsIndex = 1,
         x0: _Real = 0.0,
-        times: Optional[_Reals] = None,
+        times: Optional[Union[_Reals, Literal["knots"]]] = None,
         samples_per_period: Optional[SupportsIndex] = None,
         tol: _Real = 1e-10,
     ) -> dict[str, _Floats]: ...
