@@ -33,7 +33,7 @@ sign s (so the right-hand side is analytic where the Taylor method expands it):
           [mpf("0.25"), mpf(1), mpf("1.75"), mpf(2)])
 
 Rate-independent limit (gamma = inf) from x0 = 0, by hand: y* obeys eq. 8's recursion from
-y*(0) = 0, so y*(t) = y°(t) - y°(0) exp(-a rho_u(t)) (docs/mathematics.md, section 5; here rho_u(t) = t).
+y*(0) = 0, so y*(t) = y°(t) - y°(0) exp(-a rho_u(t)) (docs/mathematics.md#transient-and-convergence-to-the-loop; here rho_u(t) = t).
 """
 
 import math

@@ -10,7 +10,7 @@ use super::{Cycle, CycleSink, Reversal};
 ///
 /// Counting into columns is also the fastest way to count: without a gate and without energies
 /// the counter writes a block's full cycles straight into the columns instead of handing them
-/// over one by one (about twice as fast on a random walk).
+/// over one by one (BENCHMARKS.md, "Rainflow").
 ///
 /// The fields are public so that a caller can hand in vectors it allocated (e.g. with capacity
 /// reserved up front) and take the filled ones out.

@@ -27,7 +27,7 @@
 //! * **Closure** (full cycles): the first sample after `B` at which the history is back at
 //!   `u_A` (reached or passed, by the same test `|u - u_B| >= Y` that counts the cycle), and
 //!   the fractional position there by linear interpolation between samples, where `u = u_A`:
-//!   the end `C` of the loop's arc `A -> B -> C`, as for periodic inputs (`docs/mathematics.md`, section 4).
+//!   the end `C` of the loop's arc `A -> B -> C`, as for periodic inputs (`docs/mathematics.md#measured-histories`).
 //! * **Energy**: with a model, `y*` (eq. 6) from `y*(0) = sigma0 x0` along the history, and over
 //!   each full cycle's arc the work `W = integral y* du`, the change of stored energy
 //!   `dV = (y_C^2 - y_A^2) / (2 sigma0)`, the dissipation `D = W - dV >= 0` and the closure gap
@@ -45,12 +45,13 @@
 //!
 //! Closed forms per step as in `lugre loop` (see [`crate::loops`]), summed in
 //! double-double per stack segment (see the `energy` submodule), so one cycle costs O(1) and
-//! the rounding scales with its arc, not with the history before it. The work is summed
-//! relative to the loop's start value, `integral (y* - y_A) du`, not formed as `dV + D`: on a
-//! loop much narrower than `1/a` away from `y* = 0`, `dV` and `D` are `~1e6` times `W` and
-//! cancel, while the direct sum keeps about `1e-16 / (a range)` relative accuracy (against
-//! mpmath: 1e-11 on loops 1e-5 wide). `W = dV + D` holds to the rounding of `dV`, which comes
-//! from `y*` at both ends (`~1e-16 g0 |y*| / sigma0`).
+//! the rounding scales with its arc, not with the history before it. The work is carried in
+//! both of its forms, summed relative to the loop's start value, `integral (y* - y_A) du`, and
+//! as `dV + D`, and taken from the one whose rounding bound is smaller (the kernel's
+//! `best_work`, as for periodic loops): on a loop much narrower than `1/a` away from `y* = 0`,
+//! `dV` and `D` are `~1e6` times `W` and cancel, while the direct sum keeps about
+//! `1e-16 / (a range)` relative accuracy (against mpmath: 1e-11 on loops 1e-5 wide); in the
+//! elastic regime it is the other way round.
 //!
 //! ```
 //! use lugre::count_cycles;

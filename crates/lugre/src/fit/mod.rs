@@ -135,7 +135,8 @@ pub struct FitReport {
     pub starts: usize,
     pub converged: bool,
     pub termination: String,
-    /// Turning points per period of the data (slow fit).
+    /// Turning points of the whole record (slow fit; two periods of a four-turning-point input
+    /// have 8).
     pub turning_points: Option<usize>,
     /// The model's output at every sample: `y°(rho_i)` from [`crate::HysteresisLoop`] (slow fit)
     /// or the exact simulation from [`Simulator`] (full fit).

@@ -3,7 +3,7 @@
 //! The samples' turning points are found once (cyclically: the record is one or more periods
 //! of a periodic input, closed from its last sample back to its first, as `lugre loop --input`
 //! reads it). Sample `i` lies on segment `k` at the offset `l_i = |u_i - u_k|` from the turning
-//! point `u_k`, at `rho_i = rho_k + l_i`, where (`docs/mathematics.md`, section 2, with `a = sigma0 / g0`,
+//! point `u_k`, at `rho_i = rho_k + l_i`, where (`docs/mathematics.md#slow-loop-fit`, with `a = sigma0 / g0`,
 //! `s_k = +-1` the segment's direction and `y_k = y°(rho_k)` from [`HysteresisLoop`])
 //!
 //! ```text

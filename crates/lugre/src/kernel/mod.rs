@@ -12,7 +12,8 @@
 //!   work (eq. 8 integrated);
 //! * `arc`: the sums of pieces over an arc and the energies of the arc ([`ArcEnergy`]).
 //!
-//! The mathematics is in `docs/mathematics.md` ("The stable closed form", "Energy").
+//! The mathematics is in `docs/mathematics.md` (`#the-stable-closed-form`,
+//! `#the-energy-identity-and-the-dissipation-series`).
 //!
 //! **Inlining rule.** The loop engine is compiled twice, portable and AVX2, chosen at run time
 //! ([`crate::loops`]). A helper it calls that is not inlined is compiled once, without AVX2,

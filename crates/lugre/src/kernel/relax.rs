@@ -1,6 +1,7 @@
 //! One step of a linear relaxation, exactly: the primitive behind the loop's closed form
 //! (eq. 8 on one piece of the normalized input) and the exact simulation (eq. 5 on one segment
-//! of a piecewise-linear input); `docs/mathematics.md`, "Exact finite-rate simulation".
+//! of a piecewise-linear input); `docs/mathematics.md#the-stable-closed-form` and
+//! `#piecewise-linear-inputs-in-closed-form`.
 
 /// The exact solution of `w' = -r w + q` with constant `r >= 0` and `q` over a duration
 /// `tau`, from `w0`: `w0 exp(-c) + d phi(c)` with `c = r tau`, `d = q tau` and

@@ -1,5 +1,5 @@
 //! The hysteresis loop `y°` of the LuGre and Dahl models (paper eqs. 8-10) for any periodic
-//! input, by the stable closed form (`docs/mathematics.md`, section 2).
+//! input, by the stable closed form (`docs/mathematics.md#the-stable-closed-form`).
 //!
 //! In the normalized variable `rho` (the variation, eq. 7) the input `psi_u` runs at unit speed
 //! between turning points `u_k` at `rho_k` (eq. 12). On segment `k`, of length
@@ -28,9 +28,11 @@
 //! Energy. Along the loop `dy/drho = a (s g0 - y)`, so `y dpsi = d(y^2 / (2 sigma0)) + y^2 / g0
 //! drho`: over any arc the work `W = integral y dpsi` is the change of the stored energy
 //! `dV = (y_end^2 - y_start^2) / (2 sigma0)` plus the dissipation `D = (1/g0) integral y^2 drho`.
-//! `W` is reported as `dV + D`: summing `W`'s own closed form `sigma0 l^2 h(z) + s y_k l phi(z)`
-//! piece by piece cancels (its terms are `O(sigma0 l^2)`, the elastic energy that comes back,
-//! while `W` is `O(a sigma0 P^3)` for small `a P`), whereas `D`'s terms are all positive:
+//! Summing `W`'s own closed form `sigma0 l^2 h(z) + s y_k l phi(z)` piece by piece cancels
+//! where its terms are `O(sigma0 l^2)` (the elastic energy that comes back) while `W` is
+//! `O(a sigma0 P^3)` (small `a P`), whereas `D`'s terms are all positive; `dV + D` cancels in
+//! turn on loops much narrower than `1/a` far from `y = 0`. Each loop's `W` is taken from the
+//! form whose rounding bound is smaller (the kernel's `best_work`). Per piece:
 //!
 //! ```text
 //! D over a piece = a y_k^2 l phi(2z) / sigma0 + 2 s y_k l (phi(z) - phi(2z)) + sigma0 l^2 q(z)/z

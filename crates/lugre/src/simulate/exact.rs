@@ -1,5 +1,5 @@
-//! The exact solution of eq. 5 for piecewise-linear inputs (`docs/mathematics.md`, section 5,
-//! "Exact finite-rate simulation").
+//! The exact solution of eq. 5 for piecewise-linear inputs
+//! (`docs/mathematics.md#piecewise-linear-inputs-in-closed-form`).
 //!
 //! On a segment from knot `(t_i, u_i)` to `(t_{i+1}, u_{i+1})` the input's slope is the
 //! constant `v = du / dt` (`du = u_{i+1} - u_i`, `dt = t_{i+1} - t_i`) and eq. 5 is linear with
