@@ -251,6 +251,48 @@ pub enum SimulateError {
     Input(#[from] InputError),
 }
 
+/// An invalid closed-loop system or request, or a run that cannot be completed
+/// ([`crate::dynamics`]).
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum DynamicsError {
+    #[error("{name} must be a finite number > 0, got {value}", value = num(*.value))]
+    NotPositive { name: &'static str, value: f64 },
+    #[error("{name} must be a finite number >= 0, got {value}", value = num(*.value))]
+    Negative { name: &'static str, value: f64 },
+    #[error("{name} must be a finite number, got {value}", value = num(*.value))]
+    NotFinite { name: &'static str, value: f64 },
+    #[error("{what} needs as many times as values (at least one), got {times} times and {values} values")]
+    BadProfile {
+        what: &'static str,
+        times: usize,
+        values: usize,
+    },
+    #[error("{what}: point {index} is not a pair of finite numbers")]
+    ProfileNotFinite { what: &'static str, index: usize },
+    #[error("{what}: times must be strictly increasing, t = {value} follows t = {prev} (point {index})", value = num(*.value), prev = num(*.prev))]
+    ProfileTimes {
+        what: &'static str,
+        index: usize,
+        prev: f64,
+        value: f64,
+    },
+    #[error("the tolerance {name} must be a number in (0, 1) (atol: > 0), got {value}", value = num(*.value))]
+    BadTolerance { name: &'static str, value: f64 },
+    #[error("output time t[{index}] = {value} is outside the run [0, {t_end}]", value = num(*.value), t_end = num(*.t_end))]
+    TimeOutOfRange {
+        index: usize,
+        value: f64,
+        t_end: f64,
+    },
+    #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
+    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    #[error("the motion overflows f64 near t = {t}", t = num(*.t))]
+    Overflow { t: f64 },
+    #[error("the integrator failed near t = {t}: {reason}", t = num(*.t))]
+    Solver { t: f64, reason: String },
+}
+
 /// A parameter the data do not determine, and why ([`crate::fit`] module docs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Unidentified {
@@ -339,6 +381,8 @@ pub enum Error {
     Simulate(#[from] SimulateError),
     #[error(transparent)]
     Fit(#[from] FitError),
+    #[error(transparent)]
+    Dynamics(#[from] DynamicsError),
 }
 
 #[cfg(test)]

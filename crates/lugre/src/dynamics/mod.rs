@@ -1,0 +1,194 @@
+//! Closed-loop friction dynamics: a mass driven by forces, a spring and a controller, with
+//! LuGre (or Dahl) friction, solved to a stated accuracy with the instants where the velocity
+//! changes sign located as events.
+//!
+//! ```text
+//! M x'' = F_d(t, x, x', q) - F                 x(0) = x'(0) = 0, z(0) = 0, q(0) = 0
+//! z'    = v - sigma0 |v| z / g(v)              v = x'
+//! F     = sigma0 z + sigma1 z' + f(v)          (the friction force on the mass)
+//! F_d   = P(t) + k (x_e(t) - x) - c v - Kv v - Kp (x - x_d(t)) - Ki q,       q' = x - x_d(t)
+//! ```
+//!
+//! with an applied force `P` (a piecewise-linear profile or a ramp `r t`), an optional linear
+//! spring `k` to a free end moving along `x_e(t)` (a constant speed or a profile), a linear
+//! damper `c`, and an optional PID controller on position (gains `Kp, Ki, Kv`, set point `x_d`
+//! piecewise constant). In SI units: `M` in kg, forces in N, `k` in N/m, `c` and `Kv` in N s/m,
+//! `Kp` in N/m, `Ki` in N/(m s). A **rotational** reading is the same equations with the
+//! inertia `J` (kg m^2) for `M`, angles (rad) for `x`, torques (N m) for forces, and `sigma0`
+//! in N m/rad, `vs` in rad/s.
+//!
+//! **Non-smooth points.** `|v|` makes the right-hand side only Lipschitz at `v = 0`, and the
+//! drive's slope jumps at its kinks. Both are handled exactly: the integration stops at every
+//! kink, and between kinks it runs with the sign of `v` frozen (`|v| -> s v`, a smooth
+//! extension) until `v` crosses 0, which is located as an event on the integrator's dense
+//! output; it then restarts with the other sign. Where the mass rings down to rest (a stuck
+//! mass under a constant force) the crossings never end; once the ringing amplitude, estimated
+//! from `|v'|` at a crossing over the natural frequency `sqrt(sigma0 / M)`, is below the
+//! velocity tolerance, the sign is no longer frozen until the next kink (the kinks of the
+//! ringing are then below the tolerance).
+//!
+//! **The integrator** (`integrator.rs`) is Radau IIA of order 5 written for this small system:
+//! L-stable (stable at any `sigma0 / M`), error-controlled by step doubling, with the
+//! collocation polynomial as dense output for the output times and for locating sign changes,
+//! and a step of its own to each located event. The `differential-equations` crate's Radau5,
+//! tried first, failed here ("step size became too small" on the PID experiment at `rtol`
+//! 1e-7 and 1e-8, in a sliding phase, with or without the sign splitting); its figures are in
+//! BENCHMARKS.md. Accuracy against an independent scipy reference: `tests/dynamics.rs`.
+
+mod integrator;
+mod profile;
+mod solver;
+
+pub use profile::{Profile, Steps};
+pub use solver::{Event, EventKind, Motion, Stats, Tolerances};
+
+use crate::error::DynamicsError;
+use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
+
+/// A PID controller on position: `u = -Kv v - Kp (x - x_d) - Ki integral (x - x_d)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pid {
+    pub kp: f64,
+    pub ki: f64,
+    pub kv: f64,
+    pub setpoint: Steps,
+}
+
+/// The one-degree-of-freedom system.
+#[derive(Debug, Clone)]
+pub struct System<G = Stribeck, F = Viscous> {
+    model: LuGre<G, F>,
+    mass: f64,
+    damping: f64,
+    force: Option<Profile>,
+    spring: Option<(f64, Profile)>,
+    pid: Option<Pid>,
+}
+
+impl<G: VelocityFn, F: VelocityFn> System<G, F> {
+    /// A mass `M > 0` with the friction `model`, nothing driving it yet.
+    pub fn new(model: LuGre<G, F>, mass: f64) -> Result<Self, DynamicsError> {
+        positive("the mass", mass)?;
+        Ok(Self {
+            model,
+            mass,
+            damping: 0.0,
+            force: None,
+            spring: None,
+            pid: None,
+        })
+    }
+
+    /// An applied force `P(t)` (a profile, or [`Profile::ramp`]).
+    pub fn with_force(mut self, force: Profile) -> Self {
+        self.force = Some(force);
+        self
+    }
+
+    /// A linear spring `k >= 0` from the mass to a free end at `x_e(t)`.
+    pub fn with_spring(mut self, k: f64, end: Profile) -> Result<Self, DynamicsError> {
+        non_negative("the spring stiffness", k)?;
+        self.spring = Some((k, end));
+        Ok(self)
+    }
+
+    /// A linear damper `c >= 0` to the ground.
+    pub fn with_damping(mut self, c: f64) -> Result<Self, DynamicsError> {
+        non_negative("the damping", c)?;
+        self.damping = c;
+        Ok(self)
+    }
+
+    /// A PID controller on position (gains finite).
+    pub fn with_pid(mut self, pid: Pid) -> Result<Self, DynamicsError> {
+        for (name, value) in [("Kp", pid.kp), ("Ki", pid.ki), ("Kv", pid.kv)] {
+            if !value.is_finite() {
+                return Err(DynamicsError::NotFinite { name, value });
+            }
+        }
+        self.pid = Some(pid);
+        Ok(self)
+    }
+
+    pub fn model(&self) -> &LuGre<G, F> {
+        &self.model
+    }
+
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// The times in `(0, t_end)` where the drive's slope or the set point jumps.
+    pub(crate) fn kinks(&self, t_end: f64) -> Vec<f64> {
+        let mut k: Vec<f64> = self
+            .force
+            .iter()
+            .chain(self.spring.iter().map(|(_, end)| end))
+            .flat_map(|p| p.kinks().iter().copied())
+            .chain(
+                self.pid
+                    .iter()
+                    .flat_map(|p| p.setpoint.steps().iter().copied()),
+            )
+            .filter(|&t| t > 0.0 && t < t_end)
+            .collect();
+        k.sort_by(f64::total_cmp);
+        k.dedup();
+        k
+    }
+
+    /// The driving force `F_d` at `t` in state `(x, v, q)`.
+    pub fn drive_force(&self, t: f64, x: f64, v: f64, q: f64) -> f64 {
+        let mut f = -self.damping * v;
+        if let Some(p) = &self.force {
+            f += p.value(t);
+        }
+        if let Some((k, end)) = &self.spring {
+            f += k * (end.value(t) - x);
+        }
+        if let Some(pid) = &self.pid {
+            f -= pid.kv * v + pid.kp * (x - pid.setpoint.value(t)) + pid.ki * q;
+        }
+        f
+    }
+
+    /// The set point's deviation `x - x_d(t)` (the integral state's rate), 0 without a PID.
+    pub(crate) fn deviation(&self, t: f64, x: f64) -> f64 {
+        self.pid.as_ref().map_or(0.0, |p| x - p.setpoint.value(t))
+    }
+
+    /// The friction force and `z'` in state `(v, z)`, with `|v|` taken as `s v` (`s = +-1`), or
+    /// as `|v|` when `s = 0`.
+    #[inline]
+    pub(crate) fn friction(&self, v: f64, z: f64, s: f64) -> (f64, f64) {
+        let m = &self.model;
+        let speed = if s == 0.0 { v.abs() } else { s * v };
+        let dz = v - m.sigma0() * speed * z / m.g(v);
+        (m.sigma0() * z + m.sigma1() * dz + m.f(v), dz)
+    }
+
+    /// The state's rate `(x', v', z', q')` with the sign `s` (see [`Self::friction`]).
+    #[inline]
+    pub(crate) fn rate(&self, t: f64, y: &[f64; 4], s: f64) -> [f64; 4] {
+        let [x, v, z, q] = *y;
+        let (friction, dz) = self.friction(v, z, s);
+        let a = (self.drive_force(t, x, v, q) - friction) / self.mass;
+        [v, a, dz, self.deviation(t, x)]
+    }
+}
+
+fn positive(name: &'static str, value: f64) -> Result<f64, DynamicsError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(DynamicsError::NotPositive { name, value })
+    }
+}
+
+fn non_negative(name: &'static str, value: f64) -> Result<f64, DynamicsError> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(DynamicsError::Negative { name, value })
+    }
+}

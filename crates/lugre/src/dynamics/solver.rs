@@ -1,0 +1,441 @@
+//! The solver: the dedicated Radau IIA integrator (`integrator.rs`) with error control, landing
+//! exactly on every kink of the drive and restarted at every located sign change of the
+//! velocity (module docs of [`super`]).
+//!
+//! Absolute tolerances follow the system's own scales: `atol` on displacements (`x`, `z`, and
+//! the integral `q` per second), `atol w0` on the velocity, with the natural frequency
+//! `w0 = sqrt(sigma0 / M)` of the mass on its bristles.
+
+use super::integrator::{dense, radau_step, Step, N, NODES};
+use super::System;
+use crate::error::DynamicsError;
+use crate::model::VelocityFn;
+
+/// The solver's tolerances: relative `rtol` and absolute `atol` on displacements (in metres;
+/// the velocity gets `atol w0`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerances {
+    rtol: f64,
+    atol: Option<f64>,
+}
+
+impl Tolerances {
+    /// The default relative tolerance.
+    pub const DEFAULT_RTOL: f64 = 1e-8;
+
+    /// `rtol` in `(0, 1)`; `atol` finite and `> 0`, or `None` for `rtol` times the bristle
+    /// length `g(0) / sigma0`.
+    pub fn new(rtol: f64, atol: Option<f64>) -> Result<Self, DynamicsError> {
+        if !(rtol > 0.0 && rtol < 1.0) {
+            return Err(DynamicsError::BadTolerance {
+                name: "rtol",
+                value: rtol,
+            });
+        }
+        if let Some(a) = atol {
+            if !(a.is_finite() && a > 0.0) {
+                return Err(DynamicsError::BadTolerance {
+                    name: "atol",
+                    value: a,
+                });
+            }
+        }
+        Ok(Self { rtol, atol })
+    }
+
+    pub fn rtol(&self) -> f64 {
+        self.rtol
+    }
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Self {
+            rtol: Self::DEFAULT_RTOL,
+            atol: None,
+        }
+    }
+}
+
+/// What happened at an event.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EventKind {
+    /// The velocity changed sign (a reversal; the mass sticks or slips through it).
+    VelocityZero,
+    /// The drive's slope or the set point jumped.
+    Kink,
+}
+
+impl EventKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            EventKind::VelocityZero => "velocity_zero",
+            EventKind::Kink => "kink",
+        }
+    }
+}
+
+/// An event, located to the integrator's accuracy.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Event {
+    pub t: f64,
+    pub kind: EventKind,
+    /// The position there.
+    pub x: f64,
+}
+
+/// What the solver did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    pub steps: usize,
+    pub rejected: usize,
+    pub rhs_evaluations: usize,
+    pub jacobians: usize,
+    /// Restarts of the integrator (at kinks and velocity sign changes).
+    pub restarts: usize,
+}
+
+/// The motion at the requested times.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Motion {
+    pub t: Vec<f64>,
+    pub x: Vec<f64>,
+    pub v: Vec<f64>,
+    pub z: Vec<f64>,
+    /// The friction force `F` on the mass.
+    pub friction: Vec<f64>,
+    /// The driving force `F_d` (just after a jump of the set point).
+    pub drive: Vec<f64>,
+    pub events: Vec<Event>,
+    pub stats: Stats,
+}
+
+/// The largest factor a step may grow by, and the safety factor of the step-size rule.
+const MAX_GROWTH: f64 = 5.0;
+const SAFETY: f64 = 0.9;
+/// The sign of `v` stops being frozen once the ringing amplitude `|v'| / w0` at a sign change
+/// is below this fraction of the velocity tolerance (so that stepping over the remaining kinks
+/// costs less than the tolerance; above it the kinks of a ringing mass cost accuracy).
+const RINGING: f64 = 1e-3;
+/// Steps before the solver gives up.
+const MAX_STEPS: usize = 10_000_000;
+
+impl<G: VelocityFn, F: VelocityFn> System<G, F> {
+    /// The motion from rest over `[0, t_end]`, reported at `times` (strictly increasing, in
+    /// `[0, t_end]`), with the sign changes of `v` and the kinks of the drive as events.
+    pub fn solve(
+        &self,
+        t_end: f64,
+        times: &[f64],
+        tol: Tolerances,
+    ) -> Result<Motion, DynamicsError> {
+        check_times(t_end, times)?;
+        let m = self.model();
+        let w0 = (m.sigma0() / self.mass()).sqrt();
+        let length = m.g0() / m.sigma0();
+        let atol = tol.atol.unwrap_or(tol.rtol * length);
+        let atol = [atol, atol * w0, atol, atol];
+        let mut run = Run {
+            system: self,
+            rtol: tol.rtol,
+            atol,
+            w0,
+            out: Motion::default(),
+            times,
+            next_time: 0,
+        };
+        let kinks = self.kinks(t_end);
+        let mut y = [0.0; N];
+        let mut t = 0.0;
+        let mut h = 0.01 / w0;
+        run.report_until(t, &y, 0.0, None);
+        for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
+            let mut s = self.start_sign(t, &y);
+            while t < bound {
+                if run.out.stats.steps + run.out.stats.rejected > MAX_STEPS {
+                    return Err(DynamicsError::Solver {
+                        t,
+                        reason: format!("more than {MAX_STEPS} steps"),
+                    });
+                }
+                let last = t + h >= bound;
+                let step = if last { bound - t } else { h };
+                match run.double_step(t, &y, step, s) {
+                    Err(factor) => {
+                        run.out.stats.rejected += 1;
+                        h = step * factor;
+                        if h.is_nan() || h <= f64::EPSILON * t.abs().max(1.0) {
+                            return Err(DynamicsError::Solver {
+                                t,
+                                reason: "the step fell below the resolution of t".into(),
+                            });
+                        }
+                    }
+                    Ok((halves, factor)) => {
+                        run.out.stats.steps += 1;
+                        let end = if last { bound } else { t + step };
+                        match run.crossing(t, &y, step, &halves, s) {
+                            Some((tc, yc)) => {
+                                // v changed sign: the step is kept up to the crossing only,
+                                // and the state there is a step of its own (the dense output
+                                // is of lower order than the step).
+                                let yc = run.step_to(t, &y, tc, s).unwrap_or(yc);
+                                run.report_until(tc, &yc, s, Some((t, &y, step, &halves)));
+                                let (yc, s_next) = run.reversal(tc, yc, s);
+                                (t, y, s) = (tc, yc, s_next);
+                            }
+                            None => {
+                                let y_end = halves[1].0.y;
+                                run.report_until(end, &y_end, s, Some((t, &y, step, &halves)));
+                                (t, y) = (end, y_end);
+                            }
+                        }
+                        check_finite(t, &y)?;
+                        h = if last { h.max(step) } else { step * factor };
+                    }
+                }
+            }
+            if bound < t_end {
+                run.out.events.push(Event {
+                    t: bound,
+                    kind: EventKind::Kink,
+                    x: y[0],
+                });
+                run.out.stats.restarts += 1;
+            }
+        }
+        Ok(run.out)
+    }
+
+    /// The sign `v` takes from `y`: its own, or from rest that of the acceleration.
+    fn start_sign(&self, t: f64, y: &[f64; N]) -> f64 {
+        let v = if y[1] != 0.0 {
+            y[1]
+        } else {
+            self.rate(t, y, 0.0)[1]
+        };
+        if v < 0.0 {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+}
+
+/// Two half steps: `(step, start)` of each.
+type Halves = [(Step, [f64; N]); 2];
+
+struct Run<'a, G, F> {
+    system: &'a System<G, F>,
+    rtol: f64,
+    atol: [f64; N],
+    w0: f64,
+    out: Motion,
+    times: &'a [f64],
+    next_time: usize,
+}
+
+impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
+    /// A step of `h` checked against two of `h / 2` (kept); `Ok` with the halves and the
+    /// factor for the next step, or `Err` with the factor to retry with.
+    fn double_step(&mut self, t: f64, y: &[f64; N], h: f64, s: f64) -> Result<(Halves, f64), f64> {
+        let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
+        let jac = self.jacobian(t, y, s);
+        let w = self.weights(y);
+        let full = radau_step(&f, &jac, t, y, h, &w);
+        let first = radau_step(&f, &jac, t, y, 0.5 * h, &w);
+        let (Some(full), Some(first)) = (full, first) else {
+            return Err(0.25);
+        };
+        let jac_mid = self.jacobian(t + 0.5 * h, &first.y, s);
+        let Some(second) = radau_step(&f, &jac_mid, t + 0.5 * h, &first.y, 0.5 * h, &w) else {
+            return Err(0.25);
+        };
+        self.out.stats.rhs_evaluations += full.evaluations + first.evaluations + second.evaluations;
+        // The two results differ by about (2^5 - 1) times the error of the halves.
+        let w_end = self.weights(&second.y);
+        let err = (0..N)
+            .map(|r| ((second.y[r] - full.y[r]) / (31.0 * w[r].max(w_end[r]))).abs())
+            .fold(0.0f64, f64::max);
+        let factor = if err == 0.0 {
+            MAX_GROWTH
+        } else {
+            (SAFETY * err.powf(-1.0 / 6.0)).clamp(0.2, MAX_GROWTH)
+        };
+        if err.is_nan() || err > 1.0 {
+            return Err(factor.min(0.9));
+        }
+        Ok(([(first, *y), (second, first.y)], factor))
+    }
+
+    /// The state at `t1` by one step from `(t, y)` (two half steps when one does not converge).
+    fn step_to(&mut self, t: f64, y: &[f64; N], t1: f64, s: f64) -> Option<[f64; N]> {
+        let h = t1 - t;
+        if h <= 0.0 {
+            return Some(*y);
+        }
+        let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
+        let jac = self.jacobian(t, y, s);
+        let w = self.weights(y);
+        let first = radau_step(&f, &jac, t, y, 0.5 * h, &w)?;
+        let second = radau_step(&f, &jac, t + 0.5 * h, &first.y, 0.5 * h, &w)?;
+        self.out.stats.rhs_evaluations += first.evaluations + second.evaluations;
+        Some(second.y)
+    }
+
+    /// The error weights `atol + rtol |y|`.
+    fn weights(&self, y: &[f64; N]) -> [f64; N] {
+        std::array::from_fn(|r| self.atol[r] + self.rtol * y[r].abs())
+    }
+
+    /// The Jacobian of the rate by central differences, each step on the component's scale.
+    fn jacobian(&mut self, t: f64, y: &[f64; N], s: f64) -> [[f64; N]; N] {
+        self.out.stats.jacobians += 1;
+        let mut j = [[0.0; N]; N];
+        for c in 0..N {
+            let h = 1e-6 * (y[c].abs() + self.atol[c] / self.rtol);
+            let (mut up, mut down) = (*y, *y);
+            up[c] += h;
+            down[c] -= h;
+            let (fu, fd) = (self.system.rate(t, &up, s), self.system.rate(t, &down, s));
+            for r in 0..N {
+                j[r][c] = (fu[r] - fd[r]) / (2.0 * h);
+            }
+        }
+        self.out.stats.rhs_evaluations += 2 * N;
+        j
+    }
+
+    /// The first crossing of `v` against the sign `s` in the step (none when `s = 0`):
+    /// bracketed at the collocation nodes of the half steps, then located by bisection on the
+    /// collocation polynomial to the resolution of `t`.
+    fn crossing(
+        &self,
+        t: f64,
+        _y: &[f64; N],
+        h: f64,
+        halves: &Halves,
+        s: f64,
+    ) -> Option<(f64, [f64; N])> {
+        if s == 0.0 {
+            return None;
+        }
+        for (k, (step, start)) in halves.iter().enumerate() {
+            let t0 = t + 0.5 * h * k as f64;
+            let at = |theta: f64| dense(start, &step.stages, theta);
+            let mut lo = 0.0;
+            for &node in &NODES[1..] {
+                if s * at(node)[1] < 0.0 {
+                    let mut hi = node;
+                    for _ in 0..80 {
+                        let mid = 0.5 * (lo + hi);
+                        if mid <= lo || mid >= hi {
+                            break;
+                        }
+                        if s * at(mid)[1] < 0.0 {
+                            hi = mid;
+                        } else {
+                            lo = mid;
+                        }
+                    }
+                    return Some((t0 + 0.5 * h * hi, at(hi)));
+                }
+                lo = node;
+            }
+        }
+        None
+    }
+
+    /// At a located sign change: `v = 0` there, an event, and the sign to go on with: that of
+    /// the acceleration (at `v = 0` the rate does not depend on the sign), or none once the
+    /// mass rings down below the velocity tolerance (its amplitude `|v'| / w0`).
+    fn reversal(&mut self, t: f64, mut y: [f64; N], _s: f64) -> ([f64; N], f64) {
+        y[1] = 0.0;
+        self.out.events.push(Event {
+            t,
+            kind: EventKind::VelocityZero,
+            x: y[0],
+        });
+        self.out.stats.restarts += 1;
+        let a = self.system.rate(t, &y, 0.0)[1];
+        let s = if a.abs() / self.w0 < RINGING * self.atol[1] {
+            0.0
+        } else if a < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        (y, s)
+    }
+
+    /// Reports the requested times up to `t_to` (inclusive), from the step's dense output, or
+    /// at `t_to` itself from `y_to` when no step is given.
+    fn report_until(
+        &mut self,
+        t_to: f64,
+        y_to: &[f64; N],
+        s: f64,
+        step: Option<(f64, &[f64; N], f64, &Halves)>,
+    ) {
+        while self.next_time < self.times.len() && self.times[self.next_time] <= t_to {
+            let ti = self.times[self.next_time];
+            let yi = match step {
+                Some((t0, _, h, halves)) if ti < t_to => {
+                    let k = usize::from(ti >= t0 + 0.5 * h);
+                    let (st, start) = &halves[k];
+                    let theta = (ti - (t0 + 0.5 * h * k as f64)) / (0.5 * h);
+                    dense(start, &st.stages, theta.clamp(0.0, 1.0))
+                }
+                _ => *y_to,
+            };
+            self.system.record(&mut self.out, ti, &yi, s);
+            self.next_time += 1;
+        }
+    }
+}
+
+impl<G: VelocityFn, F: VelocityFn> System<G, F> {
+    fn record(&self, out: &mut Motion, t: f64, y: &[f64; N], s: f64) {
+        let [x, v, z, q] = *y;
+        out.t.push(t);
+        out.x.push(x);
+        out.v.push(v);
+        out.z.push(z);
+        out.friction.push(self.friction(v, z, s).0);
+        out.drive.push(self.drive_force(t, x, v, q));
+    }
+}
+
+fn check_times(t_end: f64, times: &[f64]) -> Result<(), DynamicsError> {
+    if !(t_end.is_finite() && t_end > 0.0) {
+        return Err(DynamicsError::NotPositive {
+            name: "t_end",
+            value: t_end,
+        });
+    }
+    for (index, &value) in times.iter().enumerate() {
+        if !(value.is_finite() && (0.0..=t_end).contains(&value)) {
+            return Err(DynamicsError::TimeOutOfRange {
+                index,
+                value,
+                t_end,
+            });
+        }
+        if index > 0 && value <= times[index - 1] {
+            return Err(DynamicsError::TimesNotIncreasing {
+                index,
+                prev: times[index - 1],
+                value,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn check_finite(t: f64, y: &[f64; N]) -> Result<(), DynamicsError> {
+    if y.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(DynamicsError::Overflow { t })
+    }
+}

@@ -1,0 +1,231 @@
+//! The closed-loop system (`lugre::dynamics`) against the independent references of
+//! `tests/reference/dynamics/` (scipy Radau, LSODA and DOP853 agreeing to ~1e-10; the command
+//! that made them, the definitions and the estimated errors are in its README.md and in
+//! `reference.json`), the experiments of Canudas de Wit et al. (1995) with their Table I.
+
+use lugre::dynamics::{EventKind, Motion, Pid, Profile, Steps, System, Tolerances};
+use lugre::{LuGre, LuGreParams};
+use serde_json::Value;
+
+/// The relative accuracy the solver must reach at its default tolerance (rtol 1e-8), and at
+/// rtol 1e-11 (the targets: 1e-6 and 1e-9); relative to the quantity's natural scale.
+const AT_DEFAULT: f64 = 1e-6;
+const AT_1E_11: f64 = 1e-9;
+
+fn reference() -> Value {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/reference/dynamics/reference.json"
+    );
+    serde_json::from_str(&std::fs::read_to_string(path).expect("reference.json")).expect("JSON")
+}
+
+fn table1() -> LuGre {
+    LuGre::from_params(LuGreParams::canudas_de_wit_1995()).expect("Table I is valid")
+}
+
+fn samples(r: &Value, experiment: &str) -> Vec<(f64, f64)> {
+    r[experiment]["values"]["samples"]
+        .as_array()
+        .expect("samples")
+        .iter()
+        .map(|s| (s["t"].as_f64().unwrap(), s["x"].as_f64().unwrap()))
+        .collect()
+}
+
+/// The largest `|x - x_ref| / scale` over the samples.
+fn worst(m: &Motion, want: &[(f64, f64)], scale: f64) -> f64 {
+    m.x.iter()
+        .zip(want)
+        .map(|(x, (_, w))| (x - w).abs() / scale)
+        .fold(0.0, f64::max)
+}
+
+/// Fig. 2: a force ramped to +-95 % of Fs with holds.
+fn presliding() -> System {
+    let t = vec![0.0, 10.0, 15.0, 35.0, 40.0, 60.0, 65.0];
+    let f = vec![0.0, 1.425, 1.425, -1.425, -1.425, 1.425, 1.425];
+    System::new(table1(), 1.0)
+        .unwrap()
+        .with_force(Profile::new("the force profile", t, f).unwrap())
+}
+
+/// Fig. 6: a spring k = 2 N/m whose free end moves at 0.1 m/s.
+fn stick_slip() -> System {
+    System::new(table1(), 1.0)
+        .unwrap()
+        .with_spring(2.0, Profile::ramp(0.0, 0.1).unwrap())
+        .unwrap()
+}
+
+/// Fig. 8: PID with Kp = 3, Ki = 4, Kv = 6 towards xd = 1.
+fn pid() -> System {
+    let pid = Pid {
+        kp: 3.0,
+        ki: 4.0,
+        kv: 6.0,
+        setpoint: Steps::constant(1.0).unwrap(),
+    };
+    System::new(table1(), 1.0).unwrap().with_pid(pid).unwrap()
+}
+
+#[test]
+fn presliding_displacements() {
+    let r = reference();
+    let want = samples(&r, "presliding");
+    let times: Vec<f64> = want.iter().map(|s| s.0).collect();
+    // The displacement's scale: the largest, 4.5e-5 m.
+    let scale = r["presliding"]["values"]["x_max"].as_f64().unwrap();
+    for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
+        let m = presliding()
+            .solve(65.0, &times, Tolerances::new(rtol, None).unwrap())
+            .unwrap();
+        let e = worst(&m, &want, scale);
+        assert!(e <= bound, "rtol {rtol:e}: {e:e}");
+    }
+}
+
+#[test]
+fn stick_slip_positions_and_stick_onsets() {
+    let r = reference();
+    let want = samples(&r, "stickslip");
+    let times: Vec<f64> = want.iter().map(|s| s.0).collect();
+    let onsets: Vec<f64> = r["stickslip"]["values"]["stick_onsets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["t"].as_f64().unwrap())
+        .collect();
+    for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
+        let m = stick_slip()
+            .solve(30.0, &times, Tolerances::new(rtol, None).unwrap())
+            .unwrap();
+        let e = worst(&m, &want, 1.0);
+        assert!(e <= bound, "rtol {rtol:e}: x {e:e}");
+        // A stick onset is the first v = 0 after a slip: the first of each cluster of located
+        // sign changes (the mass rings down after it).
+        let zeros: Vec<f64> = m
+            .events
+            .iter()
+            .filter(|e| e.kind == EventKind::VelocityZero)
+            .map(|e| e.t)
+            .collect();
+        let firsts: Vec<f64> = zeros
+            .iter()
+            .enumerate()
+            .filter(|&(i, &t)| i == 0 || t - zeros[i - 1] > 1.0)
+            .map(|(_, &t)| t)
+            .collect();
+        assert_eq!(firsts.len(), onsets.len(), "{zeros:?}");
+        for (got, want) in firsts.iter().zip(&onsets) {
+            // Relative to the period (6.36 s).
+            assert!(
+                (got - want).abs() / 6.36 <= bound,
+                "rtol {rtol:e}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn pid_hunting_positions() {
+    let r = reference();
+    let want = samples(&r, "pid");
+    let times: Vec<f64> = want.iter().map(|s| s.0).collect();
+    for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
+        let m = pid()
+            .solve(100.0, &times, Tolerances::new(rtol, None).unwrap())
+            .unwrap();
+        let e = worst(&m, &want, 1.0);
+        assert!(e <= bound, "rtol {rtol:e}: {e:e}");
+    }
+}
+
+#[test]
+fn breakaway_states_at_the_reference_instants() {
+    let r = reference();
+    for case in r["breakaway"]["values"]["rates"].as_array().unwrap() {
+        let (rate, t) = (case["rate"].as_f64().unwrap(), case["t"].as_f64().unwrap());
+        let system = System::new(table1(), 1.0)
+            .unwrap()
+            .with_force(Profile::ramp(0.0, rate).unwrap());
+        let m = system.solve(t, &[t], Tolerances::default()).unwrap();
+        let (f, x) = (case["F"].as_f64().unwrap(), case["x"].as_f64().unwrap());
+        assert!(
+            (m.friction[0] - f).abs() / 1.5 <= AT_DEFAULT,
+            "r = {rate}: F {}",
+            m.friction[0]
+        );
+        assert!(
+            (m.x[0] - x).abs() / x <= AT_DEFAULT,
+            "r = {rate}: x {}",
+            m.x[0]
+        );
+    }
+}
+
+/// The global error shrinks with the tolerance (stick-slip, positions at 10, 20, 30 s).
+#[test]
+fn the_error_follows_the_tolerance() {
+    let r = reference();
+    let want = samples(&r, "stickslip");
+    let times: Vec<f64> = want.iter().map(|s| s.0).collect();
+    let errors: Vec<f64> = [1e-6, 1e-8, 1e-10]
+        .iter()
+        .map(|&rtol| {
+            let m = stick_slip()
+                .solve(30.0, &times, Tolerances::new(rtol, None).unwrap())
+                .unwrap();
+            worst(&m, &want, 1.0)
+        })
+        .collect();
+    assert!(
+        errors[0] > 10.0 * errors[1] && errors[1] > 10.0 * errors[2],
+        "{errors:?}"
+    );
+    for (e, rtol) in errors.iter().zip([1e-6, 1e-8, 1e-10]) {
+        assert!(*e <= 30.0 * rtol, "{e:e} at rtol {rtol:e}");
+    }
+}
+
+/// Under a constant force below Fs the mass sticks: its displacement stays at the pre-sliding
+/// level whatever the output spacing (from 1 ms to the whole run in one output).
+#[test]
+fn stiction_holds_at_any_output_spacing() {
+    let hold = |spacing: f64| {
+        let n = (20.0 / spacing).round() as usize;
+        let times: Vec<f64> = (1..=n).map(|i| i as f64 * 20.0 / n as f64).collect();
+        let system = System::new(table1(), 1.0)
+            .unwrap()
+            .with_force(Profile::new("the force", vec![0.0, 1.0], vec![0.0, 1.4]).unwrap());
+        let m = system.solve(20.0, &times, Tolerances::default()).unwrap();
+        m.x.iter().fold(0.0f64, |a, x| a.max(x.abs()))
+    };
+    for spacing in [1e-3, 0.1, 5.0, 20.0] {
+        let x = hold(spacing);
+        // 1.4 N on the bristles alone is 1.4e-5 m; a slip would be metres.
+        assert!(x < 5e-5, "spacing {spacing}: |x| reached {x:e}");
+    }
+}
+
+#[test]
+fn bad_systems_and_requests_are_errors() {
+    use lugre::DynamicsError;
+    assert!(matches!(
+        System::new(table1(), 0.0),
+        Err(DynamicsError::NotPositive { .. })
+    ));
+    let e = stick_slip().with_damping(-1.0).unwrap_err().to_string();
+    assert_eq!(e, "the damping must be a finite number >= 0, got -1");
+    let e = Profile::new("the force profile", vec![0.0, 1.0, 1.0], vec![0.0; 3]).unwrap_err();
+    assert!(e.to_string().contains("strictly increasing"), "{e}");
+    assert!(Tolerances::new(0.0, None).is_err() && Tolerances::new(1e-8, Some(f64::NAN)).is_err());
+    let e = stick_slip()
+        .solve(-1.0, &[], Tolerances::default())
+        .unwrap_err();
+    assert_eq!(e.to_string(), "t_end must be a finite number > 0, got -1");
+    let e = stick_slip()
+        .solve(1.0, &[0.5, 2.0], Tolerances::default())
+        .unwrap_err();
+    assert!(e.to_string().contains("outside the run"), "{e}");
+}
