@@ -3,7 +3,7 @@
 //! that made them, the definitions and the estimated errors are in its README.md and in
 //! `reference.json`), the experiments of Canudas de Wit et al. (1995) with their Table I.
 
-use lugre::dynamics::{EventKind, Motion, Pid, Profile, Steps, System, Tolerances};
+use lugre::dynamics::{EventKind, Motion, Pid, Profile, Steps, System, Tolerances, Velocity};
 use lugre::{LuGre, LuGreParams};
 use serde_json::Value;
 
@@ -161,6 +161,48 @@ fn breakaway_states_at_the_reference_instants() {
             "r = {rate}: x {}",
             m.x[0]
         );
+    }
+}
+
+/// Fig. 3: frictional lag under the prescribed velocity `1e-3 (cos w t + 1.5)`.
+#[test]
+fn frictional_lag() {
+    let r = reference();
+    for case in r["lag"]["values"]["w"].as_array().unwrap() {
+        let w = case["w"].as_f64().unwrap();
+        let want: Vec<(f64, f64, f64)> = case["samples"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| {
+                let g = |k: &str| s[k].as_f64().unwrap();
+                (g("t"), g("z"), g("F"))
+            })
+            .collect();
+        let times: Vec<f64> = want.iter().map(|s| s.0).collect();
+        let velocity = Velocity::Harmonic {
+            mean: 1.5e-3,
+            amplitude: 1e-3,
+            w,
+        };
+        for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
+            let system = System::new(table1(), 1.0)
+                .unwrap()
+                .with_velocity(velocity.clone())
+                .unwrap();
+            let t_end = *times.last().unwrap();
+            let m = system
+                .solve(t_end, &times, Tolerances::new(rtol, None).unwrap())
+                .unwrap();
+            for (i, (t, z, f)) in want.iter().enumerate() {
+                // Scales: Fs and the bristle length Fs / sigma0.
+                let (ez, ef) = ((m.z[i] - z).abs() / 1.5e-5, (m.friction[i] - f).abs() / 1.5);
+                assert!(
+                    ez <= bound && ef <= bound,
+                    "w {w}, t {t}, rtol {rtol:e}: z {ez:e}, F {ef:e}"
+                );
+            }
+        }
     }
 }
 

@@ -40,10 +40,70 @@ mod profile;
 mod solver;
 
 pub use profile::{Profile, Steps};
+
 pub use solver::{Event, EventKind, Motion, Stats, Tolerances};
 
 use crate::error::DynamicsError;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
+
+/// A prescribed velocity (the mass then follows it whatever the forces: the
+/// displacement-driven case, for comparison with `lugre simulate`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Velocity {
+    /// A piecewise-linear profile `v(t)`.
+    Profile(Profile),
+    /// `v(t) = mean + amplitude cos(w t)` (Fig. 3 of Canudas de Wit et al. 1995:
+    /// `1e-3 (cos w t + 1.5)`).
+    Harmonic { mean: f64, amplitude: f64, w: f64 },
+}
+
+impl Velocity {
+    /// `(v(t), v'(t))`.
+    fn at(&self, t: f64) -> (f64, f64) {
+        match self {
+            Velocity::Profile(p) => p.value_and_slope(t),
+            Velocity::Harmonic { mean, amplitude, w } => {
+                let (s, c) = (w * t).sin_cos();
+                (mean + amplitude * c, -amplitude * w * s)
+            }
+        }
+    }
+
+    /// The instants in `(0, t_end)` where `v` changes sign or its slope jumps.
+    fn breakpoints(&self, t_end: f64) -> Vec<f64> {
+        let mut out = Vec::new();
+        match self {
+            Velocity::Profile(p) => {
+                out.extend_from_slice(p.kinks());
+                // Zeros inside the linear pieces.
+                let k = p.kinks();
+                for w in k.windows(2) {
+                    let (a, b) = (p.value(w[0]), p.value(w[1]));
+                    if a * b < 0.0 {
+                        out.push(w[0] + (w[1] - w[0]) * a / (a - b));
+                    }
+                }
+            }
+            Velocity::Harmonic { mean, amplitude, w } => {
+                // cos(w t) = -mean / amplitude.
+                let c = -mean / amplitude;
+                if c.abs() < 1.0 && *w > 0.0 {
+                    let phase = c.acos();
+                    let period = std::f64::consts::TAU / w;
+                    let mut base = 0.0;
+                    while base < t_end {
+                        for t in [base + phase / w, base + period - phase / w] {
+                            out.push(t);
+                        }
+                        base += period;
+                    }
+                }
+            }
+        }
+        out.retain(|&t| t > 0.0 && t < t_end);
+        out
+    }
+}
 
 /// A PID controller on position: `u = -Kv v - Kp (x - x_d) - Ki integral (x - x_d)`.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,6 +123,7 @@ pub struct System<G = Stribeck, F = Viscous> {
     force: Option<Profile>,
     spring: Option<(f64, Profile)>,
     pid: Option<Pid>,
+    velocity: Option<Velocity>,
 }
 
 impl<G: VelocityFn, F: VelocityFn> System<G, F> {
@@ -76,6 +137,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             force: None,
             spring: None,
             pid: None,
+            velocity: None,
         })
     }
 
@@ -110,6 +172,23 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         Ok(self)
     }
 
+    /// A prescribed velocity: the mass follows it (the forces are then only reported).
+    pub fn with_velocity(mut self, velocity: Velocity) -> Result<Self, DynamicsError> {
+        if let Velocity::Harmonic { mean, amplitude, w } = velocity {
+            for (name, value) in [
+                ("the mean velocity", mean),
+                ("the amplitude", amplitude),
+                ("w", w),
+            ] {
+                if !value.is_finite() {
+                    return Err(DynamicsError::NotFinite { name, value });
+                }
+            }
+        }
+        self.velocity = Some(velocity);
+        Ok(self)
+    }
+
     pub fn model(&self) -> &LuGre<G, F> {
         &self.model
     }
@@ -130,6 +209,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                     .iter()
                     .flat_map(|p| p.setpoint.steps().iter().copied()),
             )
+            .chain(self.velocity.iter().flat_map(|v| v.breakpoints(t_end)))
             .filter(|&t| t > 0.0 && t < t_end)
             .collect();
         k.sort_by(f64::total_cmp);
@@ -152,6 +232,11 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         f
     }
 
+    /// `v(0)`: the prescribed velocity's, else at rest.
+    pub(crate) fn initial_velocity(&self) -> f64 {
+        self.velocity.as_ref().map_or(0.0, |v| v.at(0.0).0)
+    }
+
     /// The set point's deviation `x - x_d(t)` (the integral state's rate), 0 without a PID.
     pub(crate) fn deviation(&self, t: f64, x: f64) -> f64 {
         self.pid.as_ref().map_or(0.0, |p| x - p.setpoint.value(t))
@@ -170,6 +255,12 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     /// The state's rate `(x', v', z', q')` with the sign `s` (see [`Self::friction`]).
     #[inline]
     pub(crate) fn rate(&self, t: f64, y: &[f64; 4], s: f64) -> [f64; 4] {
+        if let Some(velocity) = &self.velocity {
+            // Kinematic: v is the prescribed one (the state's v follows it exactly).
+            let (v, dv) = velocity.at(t);
+            let (_, dz) = self.friction(v, y[2], s);
+            return [v, dv, dz, 0.0];
+        }
         let [x, v, z, q] = *y;
         let (friction, dz) = self.friction(v, z, s);
         let a = (self.drive_force(t, x, v, q) - friction) / self.mass;

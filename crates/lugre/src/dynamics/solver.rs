@@ -146,6 +146,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         };
         let kinks = self.kinks(t_end);
         let mut y = [0.0; N];
+        y[1] = self.initial_velocity();
         let mut t = 0.0;
         let mut h = 0.01 / w0;
         run.report_until(t, &y, 0.0, None);
@@ -381,10 +382,14 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
             let ti = self.times[self.next_time];
             let yi = match step {
                 Some((t0, _, h, halves)) if ti < t_to => {
+                    // A step of its own from the half step's start (as accurate as the
+                    // steps); the collocation polynomial if that step does not converge.
                     let k = usize::from(ti >= t0 + 0.5 * h);
                     let (st, start) = &halves[k];
-                    let theta = (ti - (t0 + 0.5 * h * k as f64)) / (0.5 * h);
-                    dense(start, &st.stages, theta.clamp(0.0, 1.0))
+                    let from = t0 + 0.5 * h * k as f64;
+                    let theta = (ti - from) / (0.5 * h);
+                    self.step_to(from, start, ti, s)
+                        .unwrap_or_else(|| dense(start, &st.stages, theta.clamp(0.0, 1.0)))
                 }
                 _ => *y_to,
             };
