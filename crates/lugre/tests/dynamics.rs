@@ -206,6 +206,74 @@ fn frictional_lag() {
     }
 }
 
+/// Fig. 4: the break-away (first local maximum of the friction force) located, for the rates
+/// where it is a sharp peak (above ~35 N/s it is a shallow bump just above Fc: the reference's
+/// README).
+#[test]
+fn breakaway_located() {
+    let r = reference();
+    for case in r["breakaway"]["values"]["rates"].as_array().unwrap() {
+        let rate = case["rate"].as_f64().unwrap();
+        if rate > 30.0 {
+            continue;
+        }
+        let system = System::new(table1(), 1.0)
+            .unwrap()
+            .with_force(Profile::ramp(0.0, rate).unwrap());
+        let b = system
+            .breakaway(2.0 / rate, Tolerances::default())
+            .unwrap()
+            .expect("a peak");
+        let g = |k: &str| case[k].as_f64().unwrap();
+        assert!(
+            (b.t - g("t")).abs() / g("t") <= AT_DEFAULT,
+            "r = {rate}: t {} vs {}",
+            b.t,
+            g("t")
+        );
+        assert!(
+            (b.force - g("F")).abs() / 1.5 <= AT_DEFAULT,
+            "r = {rate}: F {}",
+            b.force
+        );
+        assert!(
+            (b.x - g("x")).abs() / g("x") <= AT_DEFAULT,
+            "r = {rate}: x {}",
+            b.x
+        );
+    }
+}
+
+/// Fig. 6: the slip onsets (the spring force peaks: `v` rising through the pull speed) and the
+/// period.
+#[test]
+fn stick_slip_onsets_and_period() {
+    let r = reference();
+    let want: Vec<f64> = r["stickslip"]["values"]["slip_onsets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["t"].as_f64().unwrap())
+        .collect();
+    let m = stick_slip()
+        .with_velocity_watch(0.1)
+        .unwrap()
+        .solve(30.0, &[], Tolerances::default())
+        .unwrap();
+    let got: Vec<f64> = m
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::VelocityUp)
+        .map(|e| e.t)
+        .collect();
+    assert_eq!(got.len(), want.len(), "{got:?}");
+    for (g, w) in got.iter().zip(&want) {
+        assert!((g - w).abs() / 6.36 <= AT_DEFAULT, "{g} vs {w}");
+    }
+    let period = r["stickslip"]["values"]["periods"][0].as_f64().unwrap();
+    assert!(((got[1] - got[0]) - period).abs() / period <= AT_DEFAULT);
+}
+
 /// The global error shrinks with the tolerance (stick-slip, positions at 10, 20, 30 s).
 #[test]
 fn the_error_follows_the_tolerance() {

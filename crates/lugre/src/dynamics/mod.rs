@@ -41,7 +41,7 @@ mod solver;
 
 pub use profile::{Profile, Steps};
 
-pub use solver::{Event, EventKind, Motion, Stats, Tolerances};
+pub use solver::{Breakaway, Event, EventKind, Motion, Stats, Tolerances};
 
 use crate::error::DynamicsError;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
@@ -124,6 +124,8 @@ pub struct System<G = Stribeck, F = Viscous> {
     spring: Option<(f64, Profile)>,
     pid: Option<Pid>,
     velocity: Option<Velocity>,
+    /// Velocity levels whose upward crossings are reported as events.
+    watch: Vec<f64>,
 }
 
 impl<G: VelocityFn, F: VelocityFn> System<G, F> {
@@ -138,6 +140,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             spring: None,
             pid: None,
             velocity: None,
+            watch: Vec::new(),
         })
     }
 
@@ -186,6 +189,20 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             }
         }
         self.velocity = Some(velocity);
+        Ok(self)
+    }
+
+    /// Reports every upward crossing of the velocity `level` as an event
+    /// ([`EventKind::VelocityUp`]): with a spring pulled at speed `V`, `v = V` rising is where
+    /// the spring force peaks, the slip onset.
+    pub fn with_velocity_watch(mut self, level: f64) -> Result<Self, DynamicsError> {
+        if !level.is_finite() {
+            return Err(DynamicsError::NotFinite {
+                name: "the watched velocity",
+                value: level,
+            });
+        }
+        self.watch.push(level);
         Ok(self)
     }
 
