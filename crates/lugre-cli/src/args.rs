@@ -47,6 +47,17 @@ pub(crate) struct ModelArgs {
     /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
     #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
     pub(crate) rho: Option<f64>,
+    /// LuGre defaults from a published parameter set (the flags above override them):
+    /// canudas1995 is Table I of Canudas de Wit et al. (1995): sigma0 = 1e5, sigma1 =
+    /// sqrt(1e5), sigma2 = 0.4, Fc = 1, Fs = 1.5, vs = 1e-3, beta = 2.
+    #[arg(long, value_enum, help_heading = "Model")]
+    pub(crate) preset: Option<Preset>,
+}
+
+/// A published LuGre parameter set.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Preset {
+    Canudas1995,
 }
 
 /// A validated model as chosen on the command line.
@@ -72,9 +83,13 @@ impl ModelArgs {
         }
     }
 
-    /// The given value, else the parameter's default.
+    /// The given value, else the preset's, else the parameter's default.
     fn value(&self, p: Parameter) -> f64 {
-        self.given(p).unwrap_or(p.default_value())
+        let preset = match self.preset {
+            Some(Preset::Canudas1995) => LuGreParams::canudas_de_wit_1995().get(p),
+            None => None,
+        };
+        self.given(p).or(preset).unwrap_or(p.default_value())
     }
 
     pub(crate) fn build(&self) -> Result<ModelChoice> {
@@ -90,6 +105,9 @@ impl ModelArgs {
                 Ok(ModelChoice::LuGre(LuGre::from_params(p)?))
             }
             ModelKind::Dahl => {
+                if self.preset.is_some() {
+                    bail!("--preset is a LuGre parameter set; the Dahl model takes --rho and --fc");
+                }
                 let lugre_only = Parameter::LUGRE
                     .into_iter()
                     .filter(|q| !Parameter::DAHL.contains(q));

@@ -4,7 +4,7 @@
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use crate::commands::{cycles, fit, loops, paper, simulate};
+use crate::commands::{cycles, dynamics, fit, loops, paper, simulate};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -35,6 +35,10 @@ enum Command {
     /// (--fit slow, columns u,F), or the full LuGre set from rate-dependent data (--fit full,
     /// columns t,u,F), with standard errors and 95 % confidence intervals.
     Fit(fit::FitArgs),
+    /// A mass with LuGre friction driven by a force, a spring, a PID controller or a
+    /// prescribed velocity, solved to a stated tolerance with the velocity's sign changes
+    /// located; --scenario runs the experiments of Canudas de Wit et al. (1995).
+    Dynamics(dynamics::DynamicsArgs),
     /// Redraw the paper's Figures 3-17 (SVG, PNG, the CSV of every curve) and write
     /// index.html: every figure with its caption, each example's loop numbers, and the errata
     /// of Theorem A.
@@ -49,6 +53,7 @@ impl Cli {
             Command::Cycles(args) => cycles::run(&args),
             Command::Simulate(args) => simulate::run(&args),
             Command::Fit(args) => fit::run(&args),
+            Command::Dynamics(args) => dynamics::run(&args),
             Command::Paper(args) => paper::run(&args),
         }
     }

@@ -3,6 +3,7 @@
 //! command: what two commands share lives in one of those.
 
 pub(crate) mod cycles;
+pub(crate) mod dynamics;
 pub(crate) mod fit;
 pub(crate) mod loops;
 pub(crate) mod paper;

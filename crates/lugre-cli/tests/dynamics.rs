@@ -1,0 +1,174 @@
+//! `lugre dynamics` through the real binary: the scenarios' headline numbers against the
+//! independent reference (`crates/lugre/tests/reference/dynamics/`), the JSON document, files,
+//! and bad input.
+
+mod common;
+use common::{accepts, accepts_json, f, rejects};
+
+/// The slip onsets of the reference (scipy Radau at rtol 1e-12; README there), s.
+const SLIP_ONSETS: [f64; 4] = [
+    7.645395363948738,
+    14.008115185014645,
+    20.370835006080426,
+    26.73355482714638,
+];
+const PERIOD: f64 = 6.362719821065907;
+
+#[test]
+fn stick_slip_prints_the_slip_onsets_and_the_period() {
+    let out = accepts(&["dynamics", "--scenario", "stick-slip"]);
+    assert!(out.contains("slip onsets"), "{out}");
+    assert!(out.contains("period:"), "{out}");
+    let j = accepts_json(&["dynamics", "--scenario", "stick-slip", "--json"]);
+    let onsets: Vec<f64> = j["slip_onsets"].as_array().unwrap().iter().map(f).collect();
+    assert_eq!(onsets.len(), 4);
+    for (got, want) in onsets.iter().zip(SLIP_ONSETS) {
+        assert!((got - want).abs() / PERIOD < 1e-6, "{got} vs {want}");
+    }
+    assert!((f(&j["period"]) - PERIOD).abs() / PERIOD < 1e-6);
+    for key in ["t", "x", "v", "z", "friction", "drive", "events", "stats"] {
+        assert!(j.get(key).is_some(), "{key}");
+    }
+    assert_eq!(j["t"].as_array().unwrap().len(), 1001);
+    assert!(j["events"][0]["kind"].is_string());
+}
+
+#[test]
+fn breakaway_under_a_force_ramp() {
+    // Reference at r = 5 N/s: t = 0.2696877519509, F = 1.313208595797, x = 3.4265831633e-5.
+    let j = accepts_json(&[
+        "dynamics",
+        "--scenario",
+        "breakaway",
+        "--force-rate",
+        "5",
+        "--json",
+    ]);
+    let b = &j["breakaway"];
+    assert!((f(&b["t"]) - 0.2696877519509).abs() / 0.27 < 1e-6, "{b}");
+    assert!((f(&b["force"]) - 1.313208595797).abs() / 1.5 < 1e-6, "{b}");
+    assert!((f(&b["x"]) - 3.4265831633e-5).abs() / 3.4e-5 < 1e-6, "{b}");
+}
+
+#[test]
+fn a_system_from_flags() {
+    // The stick-slip scenario spelled out: the same slip onsets.
+    let j = accepts_json(&[
+        "dynamics",
+        "--preset",
+        "canudas1995",
+        "--mass",
+        "1",
+        "--spring",
+        "2",
+        "--pull",
+        "0.1",
+        "--t-end",
+        "30",
+        "--samples",
+        "11",
+        "--json",
+    ]);
+    let onsets: Vec<f64> = j["slip_onsets"].as_array().unwrap().iter().map(f).collect();
+    assert!((onsets[0] - SLIP_ONSETS[0]).abs() < 1e-5, "{onsets:?}");
+    assert_eq!(j["t"].as_array().unwrap().len(), 11);
+    // A PID with a stepping set point and a force profile run.
+    accepts(&[
+        "dynamics",
+        "--preset",
+        "canudas1995",
+        "--pid",
+        "3,4,6",
+        "--setpoint",
+        "0:1,20:0",
+        "--t-end",
+        "40",
+    ]);
+    accepts(&[
+        "dynamics",
+        "--preset",
+        "canudas1995",
+        "--force-profile",
+        "0:0,10:1.425,15:1.425",
+        "--t-end",
+        "15",
+        "--times",
+        "5,10,15",
+    ]);
+}
+
+#[test]
+fn csv_and_plot_files() {
+    let dir = std::env::temp_dir().join(format!("lugre-dynamics-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, png) = (dir.join("m.csv"), dir.join("m.png"));
+    accepts(&[
+        "dynamics",
+        "--scenario",
+        "pid",
+        "--samples",
+        "51",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--plot",
+        png.to_str().unwrap(),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("t,x,v,z,friction,drive\n"));
+    assert_eq!(text.lines().count(), 52);
+    assert!(std::fs::metadata(&png).unwrap().len() > 1000);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_input_is_one_line() {
+    rejects(&["dynamics", "--t-end", "1"], "no drive");
+    rejects(
+        &["dynamics", "--scenario", "pid", "--mass", "0"],
+        "the mass must be a finite number > 0",
+    );
+    rejects(
+        &["dynamics", "--scenario", "pid", "--mass", "-2"],
+        "the mass",
+    );
+    rejects(&["dynamics", "--force-rate", "1"], "--t-end");
+    rejects(
+        &["dynamics", "--force-rate", "1", "--t-end", "-1"],
+        "--t-end must be",
+    );
+    rejects(&["dynamics", "--spring", "2", "--t-end", "1"], "--pull");
+    rejects(
+        &["dynamics", "--spring", "-2", "--pull", "1", "--t-end", "1"],
+        "the spring stiffness",
+    );
+    rejects(
+        &["dynamics", "--scenario", "stick-slip", "--damping", "-1"],
+        "the damping",
+    );
+    rejects(&["dynamics", "--pid", "3,nan,6", "--t-end", "1"], "--pid");
+    rejects(
+        &["dynamics", "--force-profile", "0:0,1:1,1:2", "--t-end", "2"],
+        "strictly increasing",
+    );
+    rejects(&["dynamics", "--scenario", "pid", "--rtol", "2"], "rtol");
+    rejects(
+        &["dynamics", "--scenario", "pid", "--times", "1,200"],
+        "outside the run",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--scenario",
+            "pid",
+            "--times",
+            "1",
+            "--samples",
+            "3",
+        ],
+        "not both",
+    );
+    rejects(
+        &["dynamics", "--model", "dahl", "--preset", "canudas1995"],
+        "--preset",
+    );
+}
