@@ -185,6 +185,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
             let r = rate.unwrap_or(10.0);
             rate = Some(r);
             t_end = t_end.or(Some(2.0 / r));
+            description.push("break-away (Fig. 4)".into());
         }
         Some(Scenario::StickSlip) => {
             system = system.with_spring(2.0, Profile::ramp(0.0, 0.1)?)?;
@@ -416,11 +417,13 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
     )?;
     let n = m.t.len();
     let step = (n / TABLE_HEAD).max(1);
-    for i in (0..n)
+    let last = n.saturating_sub(1);
+    let rows = (0..n)
         .step_by(step)
-        .chain(std::iter::once(n.saturating_sub(1)))
-    {
-        if i < n {
+        .filter(|&i| i != last)
+        .chain((n > 0).then_some(last));
+    for i in rows {
+        {
             writeln!(
                 w,
                 "{:>12} {:>16} {:>14} {:>14} {:>12} {:>12}",
