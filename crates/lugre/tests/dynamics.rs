@@ -3,7 +3,7 @@
 //! that made them, the definitions and the estimated errors are in its README.md and in
 //! `reference.json`), the experiments of Canudas de Wit et al. (1995) with their Table I.
 
-use lugre::dynamics::{EventKind, Motion, Pid, Profile, Steps, System, Tolerances, Velocity};
+use lugre::dynamics::{EventKind, Motion, Profile, Scenario, System, Tolerances};
 use lugre::{LuGre, LuGreParams};
 use serde_json::Value;
 
@@ -41,32 +41,24 @@ fn worst(m: &Motion, want: &[(f64, f64)], scale: f64) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The scenarios' systems (`Scenario::setup`, Table I, 1 kg).
+fn scenario(sc: Scenario) -> System {
+    sc.setup(table1(), 1.0).expect("a valid scenario").system
+}
+
 /// Fig. 2: a force ramped to +-95 % of Fs with holds.
 fn presliding() -> System {
-    let t = vec![0.0, 10.0, 15.0, 35.0, 40.0, 60.0, 65.0];
-    let f = vec![0.0, 1.425, 1.425, -1.425, -1.425, 1.425, 1.425];
-    System::new(table1(), 1.0)
-        .unwrap()
-        .with_force(Profile::new("the force profile", t, f).unwrap())
+    scenario(Scenario::Presliding)
 }
 
 /// Fig. 6: a spring k = 2 N/m whose free end moves at 0.1 m/s.
 fn stick_slip() -> System {
-    System::new(table1(), 1.0)
-        .unwrap()
-        .with_spring(2.0, Profile::ramp(0.0, 0.1).unwrap())
-        .unwrap()
+    scenario(Scenario::StickSlip)
 }
 
 /// Fig. 8: PID with Kp = 3, Ki = 4, Kv = 6 towards xd = 1.
 fn pid() -> System {
-    let pid = Pid {
-        kp: 3.0,
-        ki: 4.0,
-        kv: 6.0,
-        setpoint: Steps::constant(1.0).unwrap(),
-    };
-    System::new(table1(), 1.0).unwrap().with_pid(pid).unwrap()
+    scenario(Scenario::Pid)
 }
 
 #[test]
@@ -180,16 +172,8 @@ fn frictional_lag() {
             })
             .collect();
         let times: Vec<f64> = want.iter().map(|s| s.0).collect();
-        let velocity = Velocity::Harmonic {
-            mean: 1.5e-3,
-            amplitude: 1e-3,
-            w,
-        };
         for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
-            let system = System::new(table1(), 1.0)
-                .unwrap()
-                .with_velocity(velocity.clone())
-                .unwrap();
+            let system = scenario(Scenario::Lag { w });
             let t_end = *times.last().unwrap();
             let m = system
                 .solve(t_end, &times, Tolerances::new(rtol, None).unwrap())
@@ -217,9 +201,7 @@ fn breakaway_located() {
         if rate > 30.0 {
             continue;
         }
-        let system = System::new(table1(), 1.0)
-            .unwrap()
-            .with_force(Profile::ramp(0.0, rate).unwrap());
+        let system = scenario(Scenario::Breakaway { rate });
         let b = system
             .breakaway(2.0 / rate, Tolerances::default())
             .unwrap()
@@ -256,8 +238,6 @@ fn stick_slip_onsets_and_period() {
         .map(|s| s["t"].as_f64().unwrap())
         .collect();
     let m = stick_slip()
-        .with_velocity_watch(0.1)
-        .unwrap()
         .solve(30.0, &[], Tolerances::default())
         .unwrap();
     let got: Vec<f64> = m

@@ -168,55 +168,34 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
     }
     let model: LuGre = model_args.build()?.lugre();
     let mass = args.mass.unwrap_or(1.0);
-    let mut system = System::new(model, mass)?;
     let mut description = Vec::new();
     let mut t_end = args.t_end;
-    let mut rate = args.force_rate;
     let mut pull = args.pull;
-    match scenario {
-        Some(Scenario::Presliding) => {
-            let t = vec![0.0, 10.0, 15.0, 35.0, 40.0, 60.0, 65.0];
-            let f = vec![0.0, 1.425, 1.425, -1.425, -1.425, 1.425, 1.425];
-            system = system.with_force(Profile::new("the force profile", t, f)?);
-            t_end = t_end.or(Some(65.0));
-            description.push("pre-sliding (Fig. 2): force to +-1.425 N with holds".to_string());
-        }
-        Some(Scenario::Breakaway) => {
-            let r = rate.unwrap_or(10.0);
-            rate = Some(r);
-            t_end = t_end.or(Some(2.0 / r));
-            description.push("break-away (Fig. 4)".into());
-        }
-        Some(Scenario::StickSlip) => {
-            system = system.with_spring(2.0, Profile::ramp(0.0, 0.1)?)?;
-            pull = Some(0.1);
-            t_end = t_end.or(Some(30.0));
-            description.push("stick-slip (Fig. 6): spring k = 2 N/m pulled at 0.1 m/s".into());
-        }
-        Some(Scenario::Lag) => {
-            let w = 10.0;
-            system = system.with_velocity(Velocity::Harmonic {
-                mean: 1.5e-3,
-                amplitude: 1e-3,
-                w,
-            })?;
-            t_end = t_end.or(Some(3.0 * std::f64::consts::TAU / w));
-            description.push("frictional lag (Fig. 3): v = 1e-3 (cos 10 t + 1.5) m/s".into());
-        }
-        Some(Scenario::Pid) => {
-            let pid = Pid {
-                kp: 3.0,
-                ki: 4.0,
-                kv: 6.0,
-                setpoint: Steps::constant(1.0)?,
+    // The drive's force ramp, and whether it still has to be added to the system.
+    let (mut system, ramp) = match scenario {
+        Some(sc) => {
+            let core = match sc {
+                Scenario::Presliding => lugre::dynamics::Scenario::Presliding,
+                Scenario::Breakaway => lugre::dynamics::Scenario::Breakaway {
+                    rate: args.force_rate.unwrap_or(10.0),
+                },
+                Scenario::StickSlip => lugre::dynamics::Scenario::StickSlip,
+                Scenario::Lag => lugre::dynamics::Scenario::Lag { w: 10.0 },
+                Scenario::Pid => lugre::dynamics::Scenario::Pid,
             };
-            system = system.with_pid(pid)?;
-            t_end = t_end.or(Some(100.0));
-            description.push("PID hunting (Fig. 8): Kp = 3, Ki = 4, Kv = 6, xd = 1 m".into());
+            let setup = core.setup(model, mass)?;
+            description.push(setup.description.to_string());
+            t_end = t_end.or(Some(setup.t_end));
+            pull = pull.or(setup.pull);
+            (setup.system, setup.rate.map(|r| (r, false)))
         }
-        None => {}
-    }
-    if let Some(r) = rate {
+        None => (
+            System::new(model, mass)?,
+            args.force_rate.map(|r| (r, true)),
+        ),
+    };
+    let rate = ramp.map(|(r, _)| r);
+    if let Some((r, true)) = ramp {
         system = system.with_force(Profile::ramp(0.0, r)?);
         description.push(format!("force ramp F = {} t N", sig(r, 6)));
     }
@@ -277,7 +256,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
             system.with_velocity(Velocity::Profile(Profile::new("--velocity-profile", t, v)?))?;
         description.push("prescribed velocity profile".into());
     }
-    if let Some(v) = pull {
+    if let (Some(v), None) = (pull, scenario) {
         system = system.with_velocity_watch(v)?;
     }
     if description.is_empty() {

@@ -37,9 +37,11 @@
 
 mod integrator;
 mod profile;
+mod scenario;
 mod solver;
 
 pub use profile::{Profile, Steps};
+pub use scenario::{Scenario, Setup};
 
 pub use solver::{Breakaway, Event, EventKind, Motion, Stats, Tolerances};
 
