@@ -5,6 +5,7 @@
 
 mod convert;
 mod cycles;
+mod dynamics;
 mod fit;
 mod loops;
 mod models;
@@ -25,5 +26,6 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<loops::PyCurve>()?;
     m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(dynamics::dynamics, m)?)?;
     Ok(())
 }

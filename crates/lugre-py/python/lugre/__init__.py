@@ -38,6 +38,7 @@ from ._lugre import (
     TheoremA,
     __version__,
     cycles,
+    dynamics,
     fit,
 )
 
@@ -51,5 +52,6 @@ __all__ = [
     "TheoremA",
     "__version__",
     "cycles",
+    "dynamics",
     "fit",
 ]

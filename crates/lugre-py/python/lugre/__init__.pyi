@@ -336,3 +336,64 @@ def fit(
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
     ...
+
+
+class DynamicsEvent(TypedDict):
+    t: float
+    kind: Literal["velocity_zero", "velocity_up", "kink"]
+    x: float
+
+
+class DynamicsStats(TypedDict):
+    steps: int
+    rejected: int
+    rhs_evaluations: int
+    jacobians: int
+    restarts: int
+
+
+class Breakaway(TypedDict):
+    t: float
+    force: float
+    x: float
+
+
+class DynamicsResult(TypedDict, total=False):
+    t: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+    z: np.ndarray
+    friction: np.ndarray
+    drive: np.ndarray
+    events: list[DynamicsEvent]
+    stats: DynamicsStats
+    breakaway: Breakaway
+    slip_onsets: np.ndarray
+    period: float
+
+
+def dynamics(
+    model: Optional[Union[LuGre, Dahl]] = None,
+    *,
+    mass: float = 1.0,
+    scenario: Optional[Literal["presliding", "breakaway", "stick-slip", "lag", "pid"]] = None,
+    force: Optional[Tuple[_Reals, _Reals]] = None,
+    force_rate: Optional[float] = None,
+    spring: Optional[float] = None,
+    pull: Optional[float] = None,
+    end: Optional[Tuple[_Reals, _Reals]] = None,
+    damping: float = 0.0,
+    pid: Optional[Tuple[float, float, float]] = None,
+    setpoint: Optional[Union[_Real, Tuple[_Reals, _Reals]]] = None,
+    velocity: Optional[Tuple[_Reals, _Reals]] = None,
+    t_end: Optional[float] = None,
+    times: Optional[_Reals] = None,
+    samples: int = 1001,
+    rtol: float = 1e-8,
+    atol: Optional[float] = None,
+) -> DynamicsResult:
+    """The motion of a mass with LuGre friction from rest, driven by a force, a spring, a PID
+    controller or a prescribed velocity (``lugre dynamics``), with the sign changes of the
+    velocity located as events; ``scenario`` runs the experiments of Canudas de Wit et al.
+    (1995)."""
+    ...
