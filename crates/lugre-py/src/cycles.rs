@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict};
 
 use crate::convert::{self, real, type_name, value_error, vec_out};
-use crate::models::{PyDahl, PyLuGre};
+use crate::models::lugre_of;
 
 /// Reversals and ASTM E1049-85 rainflow cycles of a measured history `series` (samples joined
 /// by straight lines, not periodic), where each full cycle's loop closes and, with a `model`
@@ -67,16 +67,7 @@ pub fn cycles<'py>(
     let keep_closures = flag(closures, "closures")?;
     let model = match model.filter(|m| !m.is_none()) {
         None => None,
-        Some(m) => Some(if let Ok(l) = m.cast::<PyLuGre>() {
-            l.get().inner.rate_independent()
-        } else if let Ok(d) = m.cast::<PyDahl>() {
-            d.get().inner.rate_independent()
-        } else {
-            return Err(PyTypeError::new_err(format!(
-                "model must be a lugre.LuGre or lugre.Dahl, got {}",
-                type_name(m)
-            )));
-        }),
+        Some(m) => Some(lugre_of(m)?.rate_independent()),
     };
     let u = u.as_slice();
     let (columns, summary) = py

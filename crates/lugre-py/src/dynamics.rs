@@ -6,8 +6,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{floats, real, type_name, value_error, vec_out};
-use crate::models::{PyDahl, PyLuGre};
+use crate::convert::{floats, real, value_error, vec_out};
+use crate::models::lugre_of;
 use lugre::dynamics::{Pid, Profile, Scenario, Steps, System, Tolerances, Velocity};
 
 /// The motion of a mass with friction, from rest.
@@ -58,18 +58,7 @@ pub fn dynamics<'py>(
                 .map_err(value_error)?
         }
         None => lugre::LuGre::paper(),
-        Some(m) => {
-            if let Ok(l) = m.cast::<PyLuGre>() {
-                l.get().inner.clone()
-            } else if let Ok(d) = m.cast::<PyDahl>() {
-                d.get().inner.to_lugre()
-            } else {
-                return Err(PyTypeError::new_err(format!(
-                    "model must be a lugre.LuGre or lugre.Dahl, got {}",
-                    type_name(m)
-                )));
-            }
-        }
+        Some(m) => lugre_of(m)?,
     };
     let mut watch = pull;
     let (mut system, mut rate, t_end) = match scenario {
@@ -162,15 +151,7 @@ pub fn dynamics<'py>(
                     "samples must be at least 2, got {samples}"
                 )));
             }
-            (0..samples)
-                .map(|i| {
-                    if i + 1 == samples {
-                        t_end
-                    } else {
-                        t_end * (i as f64 / (samples - 1) as f64)
-                    }
-                })
-                .collect()
+            lugre::simulate::uniform_times(0.0, t_end, 1, samples - 1)
         }
     };
     let (motion, breakaway) = py

@@ -392,3 +392,17 @@ pub fn reals<const N: usize>(
     }
     Ok(out)
 }
+
+/// The LuGre model of a `lugre.LuGre` or `lugre.Dahl` object (Dahl: its equivalent LuGre).
+pub fn lugre_of(model: &Bound<'_, PyAny>) -> PyResult<lugre::LuGre> {
+    if let Ok(l) = model.cast::<PyLuGre>() {
+        Ok(l.get().inner.clone())
+    } else if let Ok(d) = model.cast::<PyDahl>() {
+        Ok(d.get().inner.to_lugre())
+    } else {
+        Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "model must be a lugre.LuGre or lugre.Dahl, got {}",
+            crate::convert::type_name(model)
+        )))
+    }
+}

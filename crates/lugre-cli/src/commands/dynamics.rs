@@ -7,6 +7,7 @@ use clap::{Args, ValueEnum};
 use lugre::dynamics::{
     Breakaway, EventKind, Motion, Pid, Profile, Steps, System, Tolerances, Velocity,
 };
+use lugre::simulate::uniform_times;
 use lugre::LuGre;
 use std::io::Write;
 
@@ -272,18 +273,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
     }
     let times = match (&args.times, args.samples) {
         (Some(text), _) => parse_list("--times", text)?,
-        (None, n) => {
-            let n = n.unwrap_or(DEFAULT_SAMPLES);
-            (0..n)
-                .map(|i| {
-                    if i + 1 == n {
-                        t_end
-                    } else {
-                        t_end * (i as f64 / (n - 1) as f64)
-                    }
-                })
-                .collect()
-        }
+        (None, n) => uniform_times(0.0, t_end, 1, n.unwrap_or(DEFAULT_SAMPLES) - 1),
     };
     if let Some(path) = &args.plot.path {
         crate::plot::check_path(path)?;
