@@ -472,21 +472,48 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Request, o: &Outcome) -> std::io:
     j.finish()
 }
 
+/// x, v and the friction against t, and the friction against x, in a 2 x 2 grid.
 fn figure(m: &Motion) -> Panels {
-    let series =
+    let against_t =
         |y: &[f64]| -> Vec<(f64, f64)> { m.t.iter().copied().zip(y.iter().copied()).collect() };
-    let time = Figure::new("time t [s]", "friction F [N]")
-        .title("friction against time")
-        .curve(Curve::new(series(&m.friction), LineStyle::Solid, BLUE));
-    let loop_ = Figure::new("position x [m]", "friction F [N]")
-        .title("friction against position")
-        .curve(Curve::new(
-            m.x.iter()
-                .copied()
-                .zip(m.friction.iter().copied())
-                .collect(),
-            LineStyle::Solid,
-            BLUE,
-        ));
-    Panels::side_by_side(time, loop_)
+    let panel = |label: &str, title: &str, points: Vec<(f64, f64)>, x_label: &str| {
+        Figure::new(x_label, label)
+            .title(title)
+            .curve(Curve::new(points, LineStyle::Solid, BLUE))
+    };
+    let t = "time t [s]";
+    Panels {
+        title: None,
+        panels: vec![
+            panel(
+                "position x [m]",
+                "position against time",
+                against_t(&m.x),
+                t,
+            ),
+            panel(
+                "velocity v [m/s]",
+                "velocity against time",
+                against_t(&m.v),
+                t,
+            ),
+            panel(
+                "friction F [N]",
+                "friction against time",
+                against_t(&m.friction),
+                t,
+            ),
+            panel(
+                "friction F [N]",
+                "friction against position",
+                m.x.iter()
+                    .copied()
+                    .zip(m.friction.iter().copied())
+                    .collect(),
+                "position x [m]",
+            ),
+        ],
+        cols: 2,
+        size: (1600, 1200),
+    }
 }
