@@ -114,7 +114,7 @@ pub struct Motion {
 }
 
 /// The largest factor a step may grow by, and the safety factor of the step-size rule.
-const MAX_GROWTH: f64 = 5.0;
+const MAX_GROWTH: f64 = 3.0;
 const SAFETY: f64 = 0.9;
 /// The sign of `v` stops being frozen once the ringing amplitude `|v'| / w0` at a sign change
 /// is below this fraction of the velocity tolerance (so that stepping over the remaining kinks
@@ -153,6 +153,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let mut t = 0.0;
         let mut h = 0.01 / w0;
         run.report_until(t, &y, 0.0, None);
+        let mut rejected = false;
         for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
             let mut s = self.start_sign(t, &y);
             while t < bound {
@@ -167,6 +168,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                 match run.double_step(t, &y, step, s) {
                     Err(factor) => {
                         run.out.stats.rejected += 1;
+                        rejected = true;
                         h = step * factor;
                         if h.is_nan() || h <= f64::EPSILON * t.abs().max(1.0) {
                             return Err(DynamicsError::Solver {
@@ -198,6 +200,10 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                             }
                         }
                         check_finite(t, &y)?;
+                        // No growth right after a rejection (the usual guard against
+                        // alternating accept / reject).
+                        let factor = if rejected { factor.min(1.0) } else { factor };
+                        rejected = false;
                         h = if last { h.max(step) } else { step * factor };
                     }
                 }
