@@ -187,6 +187,13 @@ pub fn dynamics<'py>(
     stats.set_item("rhs_evaluations", s.rhs_evaluations)?;
     stats.set_item("jacobians", s.jacobians)?;
     stats.set_item("restarts", s.restarts)?;
+    let energy = PyDict::new(py);
+    let e = motion.energy;
+    energy.set_item("input", e.input)?;
+    energy.set_item("stored_start", e.stored_start)?;
+    energy.set_item("stored_end", e.stored_end)?;
+    energy.set_item("dissipated", e.dissipated)?;
+    d.set_item("energy", energy)?;
     let lugre::dynamics::Motion {
         t,
         x,

@@ -254,6 +254,34 @@ fn stick_slip_onsets_and_period() {
     assert!(((got[1] - got[0]) - period).abs() / period <= AT_DEFAULT);
 }
 
+/// The energy balance: the drive's work = the change of kinetic + spring + bristle energy + what
+/// the friction and the damper dissipated, to the tolerance, in every scenario.
+#[test]
+fn energy_balance() {
+    for sc in [
+        Scenario::Presliding,
+        Scenario::Breakaway { rate: 10.0 },
+        Scenario::StickSlip,
+        Scenario::Lag { w: 10.0 },
+        Scenario::Pid,
+    ] {
+        let setup = sc.setup(table1(), 1.0).unwrap();
+        for rtol in [1e-6, Tolerances::DEFAULT_RTOL] {
+            let e = setup
+                .system
+                .solve(setup.t_end, &[], Tolerances::new(rtol, None).unwrap())
+                .unwrap()
+                .energy;
+            let scale = e.input.abs().max(e.dissipated);
+            assert!(e.dissipated > 0.0 && scale > 0.0, "{sc:?}: {e:?}");
+            assert!(
+                e.residual().abs() <= 10.0 * rtol * scale,
+                "{sc:?} rtol {rtol:e}: {e:?}"
+            );
+        }
+    }
+}
+
 /// The global error shrinks with the tolerance (stick-slip, positions at 10, 20, 30 s).
 #[test]
 fn the_error_follows_the_tolerance() {

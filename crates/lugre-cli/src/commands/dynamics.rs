@@ -373,6 +373,16 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
             writeln!(w, "period: {} s", periods.join(", "))?;
         }
     }
+    let e = m.energy;
+    writeln!(
+        w,
+        "energy: the drive put in {} J; stored {} -> {} J; dissipated {} J (balance off by {} J)",
+        sig(e.input, 8),
+        sig(e.stored_start, 6),
+        sig(e.stored_end, 6),
+        sig(e.dissipated, 8),
+        sig(e.residual(), 2)
+    )?;
     let reversals = m
         .events
         .iter()
@@ -451,6 +461,12 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Request, o: &Outcome) -> std::io:
         ",\"stats\":{{\"steps\":{},\"rejected\":{},\"rhs_evaluations\":{},\"jacobians\":{},\"restarts\":{}}}",
         s.steps, s.rejected, s.rhs_evaluations, s.jacobians, s.restarts
     ))?;
+    let e = m.energy;
+    j.field(",\"energy\":{\"input\":", e.input)?;
+    j.field(",\"stored_start\":", e.stored_start)?;
+    j.field(",\"stored_end\":", e.stored_end)?;
+    j.field(",\"dissipated\":", e.dissipated)?;
+    j.raw("}")?;
     if let Some(b) = &o.breakaway {
         j.field(",\"breakaway\":{\"t\":", b.t)?;
         j.field(",\"force\":", b.force)?;

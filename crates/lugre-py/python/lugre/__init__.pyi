@@ -358,6 +358,13 @@ class Breakaway(TypedDict):
     x: float
 
 
+class EnergyBalance(TypedDict):
+    input: float
+    stored_start: float
+    stored_end: float
+    dissipated: float
+
+
 class DynamicsResult(TypedDict, total=False):
     t: np.ndarray
     x: np.ndarray
@@ -367,6 +374,7 @@ class DynamicsResult(TypedDict, total=False):
     drive: np.ndarray
     events: list[DynamicsEvent]
     stats: DynamicsStats
+    energy: EnergyBalance
     breakaway: Breakaway
     slip_onsets: np.ndarray
     period: float

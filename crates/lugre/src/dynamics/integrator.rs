@@ -133,6 +133,23 @@ pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; 
     out
 }
 
+/// `integral f(t, y(t)) dt` over a step of size `h` from `t0`, by the Radau quadrature at its
+/// stages (the weights are the tableau's last row): as accurate as the step.
+pub(super) fn quadrature(
+    h: f64,
+    t0: f64,
+    stages: &[[f64; N]; 3],
+    f: impl Fn(f64, &[f64; N]) -> [f64; 2],
+) -> [f64; 2] {
+    let mut out = [0.0; 2];
+    for i in 0..3 {
+        let v = f(t0 + C[i] * h, &stages[i]);
+        out[0] += h * A[2][i] * v[0];
+        out[1] += h * A[2][i] * v[1];
+    }
+    out
+}
+
 /// The nodes of the collocation polynomial, in `theta`.
 pub(super) const NODES: [f64; 4] = [0.0, C[0], C[1], C[2]];
 

@@ -43,7 +43,7 @@ mod solver;
 pub use profile::{Profile, Steps};
 pub use scenario::{Scenario, Setup};
 
-pub use solver::{Breakaway, Event, EventKind, Motion, Stats, Tolerances};
+pub use solver::{Breakaway, EnergyBalance, Event, EventKind, Motion, Stats, Tolerances};
 
 use crate::error::DynamicsError;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};
@@ -269,6 +269,51 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let speed = if s == 0.0 { v.abs() } else { s * v };
         let dz = v - m.sigma0() * speed * z / m.g(v);
         (m.sigma0() * z + m.sigma1() * dz + m.f(v), dz)
+    }
+
+    /// The power put in by the drive and the power dissipated, in state `y` with the sign `s`
+    /// (see [`EnergyBalance`]).
+    pub(crate) fn power(&self, t: f64, y: &[f64; 4], s: f64) -> [f64; 2] {
+        let m = &self.model;
+        let [x, state_v, z, q] = *y;
+        let v = match &self.velocity {
+            Some(velocity) => velocity.at(t).0,
+            None => state_v,
+        };
+        let (friction, dz) = self.friction(v, z, s);
+        let speed = if s == 0.0 { v.abs() } else { s * v };
+        let dissipated_friction =
+            m.sigma0() * m.sigma0() * speed * z * z / m.g(v) + m.sigma1() * dz * v + m.f(v) * v;
+        if self.velocity.is_some() {
+            return [friction * v, dissipated_friction];
+        }
+        let mut input = 0.0;
+        if let Some(p) = &self.force {
+            input += p.value(t) * v;
+        }
+        if let Some(pid) = &self.pid {
+            input -= (pid.kv * v + pid.kp * (x - pid.setpoint.value(t)) + pid.ki * q) * v;
+        }
+        if let Some((k, end)) = &self.spring {
+            let (xe, ve) = end.value_and_slope(t);
+            input += k * (xe - x) * ve;
+        }
+        [input, dissipated_friction + self.damping * v * v]
+    }
+
+    /// The energy stored: kinetic, in the spring and in the bristles (a prescribed velocity:
+    /// the bristles only).
+    pub(crate) fn stored(&self, t: f64, y: &[f64; 4]) -> f64 {
+        let [x, v, z, _] = *y;
+        let bristles = 0.5 * self.model.sigma0() * z * z;
+        if self.velocity.is_some() {
+            return bristles;
+        }
+        let spring = self
+            .spring
+            .as_ref()
+            .map_or(0.0, |(k, end)| 0.5 * k * (end.value(t) - x).powi(2));
+        0.5 * self.mass * v * v + spring + bristles
     }
 
     /// The state's rate `(x', v', z', q')` with the sign `s` (see [`Self::friction`]).

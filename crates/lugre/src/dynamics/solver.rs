@@ -6,7 +6,7 @@
 //! the integral `q` per second), `atol w0` on the velocity, with the natural frequency
 //! `w0 = sqrt(sigma0 / M)` of the mass on its bristles.
 
-use super::integrator::{dense, radau_step, Step, N, NODES};
+use super::integrator::{dense, quadrature, radau_step, Step, N, NODES};
 use super::System;
 use crate::error::DynamicsError;
 use crate::model::VelocityFn;
@@ -111,6 +111,30 @@ pub struct Motion {
     pub drive: Vec<f64>,
     pub events: Vec<Event>,
     pub stats: Stats,
+    /// The energy balance over the run.
+    pub energy: EnergyBalance,
+}
+
+/// The energy balance over a run: what the drive put in equals the change of what is stored
+/// (kinetic, spring and bristle energy) plus what was dissipated (friction, damper), to the
+/// solver's accuracy (each term is integrated by the steps' own quadrature).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct EnergyBalance {
+    /// The work of the applied force, the controller and the spring's moving end (a prescribed
+    /// velocity: the work done against the friction).
+    pub input: f64,
+    /// Kinetic + spring + bristle energy at the start and at the end.
+    pub stored_start: f64,
+    pub stored_end: f64,
+    /// Dissipated by the friction (`sigma0^2 |v| z^2 / g + sigma1 z' v + f(v) v`) and the damper.
+    pub dissipated: f64,
+}
+
+impl EnergyBalance {
+    /// `input - (stored_end - stored_start) - dissipated`: 0 up to the integration's error.
+    pub fn residual(&self) -> f64 {
+        self.input - (self.stored_end - self.stored_start) - self.dissipated
+    }
 }
 
 /// The largest factor a step may grow by, and the safety factor of the step-size rule.
@@ -153,6 +177,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let mut t = 0.0;
         let mut h = 0.01 / w0;
         run.report_until(t, &y, 0.0, None);
+        run.out.energy.stored_start = self.stored(0.0, &y);
         let mut rejected = false;
         for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
             let mut s = self.start_sign(t, &y);
@@ -188,12 +213,22 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                                 // v changed sign: the step is kept up to the crossing only,
                                 // and the state there is a step of its own (the dense output
                                 // is of lower order than the step).
-                                let yc = run.step_to(t, &y, tc, s).unwrap_or(yc);
+                                let yc = match run.step_to_with(t, &y, tc, s) {
+                                    Some((yc, halves_c)) => {
+                                        run.account(t, tc - t, &halves_c, s);
+                                        yc
+                                    }
+                                    None => {
+                                        run.account_dense(t, step, &halves, tc, s);
+                                        yc
+                                    }
+                                };
                                 run.report_until(tc, &yc, s, Some((t, &y, step, &halves)));
                                 let (yc, s_next) = run.reversal(tc, yc, s);
                                 (t, y, s) = (tc, yc, s_next);
                             }
                             None => {
+                                run.account(t, step, &[halves[0].0, halves[1].0], s);
                                 let y_end = halves[1].0.y;
                                 run.report_until(end, &y_end, s, Some((t, &y, step, &halves)));
                                 (t, y) = (end, y_end);
@@ -207,6 +242,9 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                         h = if last { h.max(step) } else { step * factor };
                     }
                 }
+            }
+            if bound >= t_end {
+                run.out.energy.stored_end = self.stored(t, &y);
             }
             if bound < t_end {
                 run.out.events.push(Event {
@@ -283,17 +321,61 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
 
     /// The state at `t1` by one step from `(t, y)` (two half steps when one does not converge).
     fn step_to(&mut self, t: f64, y: &[f64; N], t1: f64, s: f64) -> Option<[f64; N]> {
+        self.step_to_with(t, y, t1, s).map(|(y, _)| y)
+    }
+
+    /// [`Self::step_to`], with its two half steps.
+    fn step_to_with(
+        &mut self,
+        t: f64,
+        y: &[f64; N],
+        t1: f64,
+        s: f64,
+    ) -> Option<([f64; N], [Step; 2])> {
         let h = t1 - t;
-        if h <= 0.0 {
-            return Some(*y);
-        }
         let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
         let jac = self.jacobian(t, y, s);
         let w = self.weights(y);
         let first = radau_step(&f, &jac, t, y, 0.5 * h, &w)?;
         let second = radau_step(&f, &jac, t + 0.5 * h, &first.y, 0.5 * h, &w)?;
         self.out.stats.rhs_evaluations += first.evaluations + second.evaluations;
-        Some(second.y)
+        Some((second.y, [first, second]))
+    }
+
+    /// Adds the input and the dissipation over `[t, t_to]` from the collocation polynomials of
+    /// a step of `h` from `t` (Gauss-Legendre with three nodes on each half step's part): the
+    /// fallback where a step of its own to `t_to` does not converge.
+    fn account_dense(&mut self, t: f64, h: f64, halves: &Halves, t_to: f64, s: f64) {
+        const NODES3: [f64; 3] = [0.112_701_665_379_258_3, 0.5, 0.887_298_334_620_741_7];
+        const WEIGHTS3: [f64; 3] = [5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0];
+        for (k, (step, start)) in halves.iter().enumerate() {
+            let from = t + 0.5 * h * k as f64;
+            let to = (from + 0.5 * h).min(t_to);
+            if to <= from {
+                continue;
+            }
+            for (node, weight) in NODES3.iter().zip(WEIGHTS3) {
+                let ti = from + node * (to - from);
+                let yi = dense(start, &step.stages, (ti - from) / (0.5 * h));
+                let [input, dissipated] = self.system.power(ti, &yi, s);
+                self.out.energy.input += weight * (to - from) * input;
+                self.out.energy.dissipated += weight * (to - from) * dissipated;
+            }
+        }
+    }
+
+    /// Adds the input and the dissipation over two half steps of `[t, t + h]`.
+    fn account(&mut self, t: f64, h: f64, halves: &[Step; 2], s: f64) {
+        if h <= 0.0 {
+            return;
+        }
+        for (k, half) in halves.iter().enumerate() {
+            let t0 = t + 0.5 * h * k as f64;
+            let [input, dissipated] =
+                quadrature(0.5 * h, t0, &half.stages, |t, y| self.system.power(t, y, s));
+            self.out.energy.input += input;
+            self.out.energy.dissipated += dissipated;
+        }
     }
 
     /// The error weights `atol + rtol |y|`.
