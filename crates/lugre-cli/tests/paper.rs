@@ -65,6 +65,7 @@ fn every_figure_is_written_as_svg_png_and_csv() {
     // Nothing else: no temporary files left behind, no figure outside 03..17.
     for name in &names {
         let ok = name == "index.html"
+            || name == "canudas1995"
             || (name.starts_with("fig")
                 && (name.ends_with(".svg") || name.ends_with(".png") || name.ends_with(".csv")));
         assert!(ok, "unexpected file {name}");
@@ -163,6 +164,11 @@ fn the_page_links_only_files_that_exist() {
             assert!(html.contains(&format!("id=\"{anchor}\"")), "#{anchor}");
             continue;
         }
+        if target == "canudas1995/index.html" {
+            // The second report, in its own folder.
+            assert!(dir.join(target).is_file(), "{target} does not exist");
+            continue;
+        }
         assert!(
             !target.contains(':') && !target.contains('/'),
             "not a local file next to the page: {target}"
@@ -171,7 +177,10 @@ fn the_page_links_only_files_that_exist() {
         linked.insert(target.to_string());
     }
     // Every figure, image and data file is reachable from the page.
-    for name in names.iter().filter(|n| *n != "index.html") {
+    for name in names
+        .iter()
+        .filter(|n| *n != "index.html" && *n != "canudas1995")
+    {
         assert!(
             linked.contains(name),
             "{name} is not linked from index.html"
@@ -308,4 +317,34 @@ fn an_unwritable_out_is_one_clear_error() {
     // Nothing was written next to the file.
     assert_eq!(files(&dir).len(), 1);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The second report (Canudas de Wit et al. 1995): Figs. 2, 3, 4, 6, 8 as SVG, PNG and CSV, and
+/// a page that links only its own files and the first report.
+#[test]
+fn the_second_report() {
+    let (dir, _) = paper();
+    let second = dir.join("canudas1995");
+    let names = files(&second);
+    for n in [2, 3, 4, 6, 8] {
+        for ext in ["svg", "png"] {
+            assert!(
+                names.contains(&format!("fig{n:02}.{ext}")),
+                "fig{n:02}.{ext}"
+            );
+        }
+    }
+    let html = std::fs::read_to_string(second.join("index.html")).unwrap();
+    for target in attribute_values(&html, "src")
+        .into_iter()
+        .chain(attribute_values(&html, "href"))
+    {
+        if target == "../index.html" {
+            continue;
+        }
+        assert!(names.contains(target), "{target} does not exist");
+    }
+    // The numbers shown: the stick-slip period and a break-away force.
+    assert!(html.contains("period"), "{html}");
+    assert!(html.contains("r = 10 N/s"), "{html}");
 }

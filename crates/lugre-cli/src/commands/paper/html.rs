@@ -99,7 +99,11 @@ pub(crate) fn page(paper: &Paper) -> String {
         let _ = write!(h, "<li><a href=\"#{}\">{}</a></li>", s.id, esc(s.heading));
     }
     h.push_str("<li><a href=\"#theorem-a\">Theorem A: errata and the stable form</a></li>");
-    h.push_str("<li><a href=\"#numbers\">About the numbers</a></li></ul></nav>\n");
+    h.push_str("<li><a href=\"#numbers\">About the numbers</a></li>");
+    h.push_str(
+        "<li><a href=\"canudas1995/index.html\">Second report: friction in closed loop \
+         (Canudas de Wit et al. 1995, Figs. 2, 3, 4, 6, 8)</a></li></ul></nav>\n",
+    );
 
     for s in &sections {
         section(&mut h, paper, s);
@@ -129,7 +133,7 @@ fn section(h: &mut String, paper: &Paper, s: &Section) {
     h.push_str("</section>\n");
 }
 
-fn figure(h: &mut String, f: &PaperFigure) {
+pub(super) fn figure(h: &mut String, f: &PaperFigure) {
     let stem = f.stem();
     let (w, hgt) = f.figure.size;
     let _ = write!(
@@ -289,7 +293,7 @@ fn errata(h: &mut String) {
 }
 
 /// Escapes text for HTML element content and attribute values.
-fn esc(s: &str) -> String {
+pub(super) fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
@@ -303,7 +307,8 @@ fn esc(s: &str) -> String {
     out
 }
 
-const HEAD: &str = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+pub(super) const HEAD: &str =
+    "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
 <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
 <title>Minor loops of the Dahl and LuGre models: figures redrawn by lugre</title>\n<style>\n\
 body { font-family: 'DejaVu Sans', Verdana, sans-serif; max-width: 1080px; margin: 2em auto; \

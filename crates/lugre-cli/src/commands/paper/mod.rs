@@ -18,6 +18,7 @@ use crate::fmt::{exact, sig};
 use crate::hysteresis::kind_name;
 use crate::io::atomic::write_atomic;
 
+mod canudas;
 mod convergence;
 mod examples;
 mod figures;
@@ -38,6 +39,8 @@ pub(crate) struct PaperArgs {
 pub(crate) struct Paper {
     pub(crate) figures: Vec<PaperFigure>,
     pub(crate) examples: Vec<LoopExample>,
+    /// The second report: the closed-loop experiments of Canudas de Wit et al. (1995).
+    pub(crate) canudas: canudas::Report,
 }
 
 pub(crate) fn run(args: &PaperArgs) -> Result<()> {
@@ -107,17 +110,41 @@ pub(crate) fn build() -> Result<Paper> {
     Ok(Paper {
         figures,
         examples: vec![example2, example3, example4, fig16, fig17],
+        canudas: canudas::build()?,
     })
 }
 
 /// Writes every file; returns their names in the order written.
 fn write_all(paper: &Paper, dir: &Path) -> Result<Vec<String>> {
+    let mut written = write_report(&paper.figures, &html::page(paper), dir, "")?;
+    let second = dir.join(canudas::DIR);
+    std::fs::create_dir_all(&second)
+        .with_context(|| format!("cannot create '{}'", second.display()))?;
+    let prefix = format!("{}/", canudas::DIR);
+    let page = canudas::page(&paper.canudas);
+    written.extend(write_report(
+        &paper.canudas.figures,
+        &page,
+        &second,
+        &prefix,
+    )?);
+    Ok(written)
+}
+
+/// A report's figures (SVG, PNG, the CSV of every curve) and its `index.html` in `dir`; the
+/// names written, each after `prefix`.
+fn write_report(
+    figures: &[PaperFigure],
+    html: &str,
+    dir: &Path,
+    prefix: &str,
+) -> Result<Vec<String>> {
     let mut written = Vec::new();
-    for f in &paper.figures {
+    for f in figures {
         for ext in ["svg", "png"] {
             let name = format!("{}.{ext}", f.stem());
             f.figure.save(&dir.join(&name))?;
-            written.push(name);
+            written.push(format!("{prefix}{name}"));
         }
         for (name, curve) in f.csv_files() {
             write_atomic(&dir.join(&name), |w| {
@@ -127,14 +154,13 @@ fn write_all(paper: &Paper, dir: &Path) -> Result<Vec<String>> {
                 }
                 Ok(())
             })?;
-            written.push(name);
+            written.push(format!("{prefix}{name}"));
         }
     }
-    let html = html::page(paper);
     write_atomic(&dir.join("index.html"), |w| {
         Ok(w.write_all(html.as_bytes())?)
     })?;
-    written.push("index.html".into());
+    written.push(format!("{prefix}index.html"));
     Ok(written)
 }
 
@@ -170,6 +196,12 @@ fn print_summary(
     writeln!(
         out,
         "  index.html                 every figure with its caption, the loop tables, Theorem A's errata"
+    )?;
+    writeln!(
+        out,
+        "  {}/                the second report: Canudas de Wit et al. (1995), Figs. 2, 3, 4, 6, 8 \
+         (lugre dynamics)",
+        canudas::DIR
     )?;
     writeln!(out)?;
     for f in &paper.figures {
@@ -237,7 +269,7 @@ mod tests {
         use ab_glyph::Font;
         let font = ab_glyph::FontRef::try_from_slice(dejavu::sans::regular()).unwrap();
         let paper = build().unwrap();
-        for f in &paper.figures {
+        for f in paper.figures.iter().chain(&paper.canudas.figures) {
             let fig = &f.figure;
             let texts = fig
                 .curves
