@@ -385,3 +385,48 @@ fn bad_systems_and_requests_are_errors() {
         .unwrap_err();
     assert!(e.to_string().contains("outside the run"), "{e}");
 }
+
+/// The cross-check with a well-kept stiff solver: the `differential-equations` crate's Radau5
+/// (the right-hand side written out here, `|v|` unsplit, rtol 1e-10) on stick-slip, where it
+/// runs (on the PID experiment it stops with "step size became too small" at rtol 1e-7 and
+/// 1e-8: BENCHMARKS.md). They agree to the crate's accuracy, 1e-6 m.
+#[test]
+fn agrees_with_the_differential_equations_crate() {
+    use differential_equations::prelude::{ImplicitRungeKutta, IVP, ODE};
+    struct StickSlip;
+    impl ODE<f64, [f64; 3]> for StickSlip {
+        fn diff(&self, t: f64, y: &[f64; 3], dy: &mut [f64; 3]) {
+            // Scaled: x and z in units of 1e-5 m, v in units of 1e-5 * 316 m/s.
+            let (lx, lv) = (1e-5, 1e-5 * 1e5f64.sqrt());
+            let (x, v, z) = (y[0] * lx, y[1] * lv, y[2] * lx);
+            let (s0, s1, s2) = (1e5, 1e5f64.sqrt(), 0.4);
+            let g = 1.0 + 0.5 * (-(v / 1e-3) * (v / 1e-3)).exp();
+            let dz = v - s0 * v.abs() * z / g;
+            let f = s0 * z + s1 * dz + s2 * v;
+            let a = 2.0 * (0.1 * t - x) - f;
+            *dy = [v / lx, a / lv, dz / lx];
+        }
+    }
+    let times = [10.0, 20.0, 30.0];
+    let sol = IVP::ode(&StickSlip, 0.0, 30.0, [0.0; 3])
+        .t_eval(times)
+        .method(ImplicitRungeKutta::radau5().rtol(1e-10).atol(1e-10))
+        .solve()
+        .expect("Radau5 runs on stick-slip");
+    let ours = stick_slip()
+        .solve(30.0, &times, Tolerances::new(1e-10, None).unwrap())
+        .unwrap();
+    for (i, t) in times.iter().enumerate() {
+        let k = sol
+            .t
+            .iter()
+            .position(|s| (s - t).abs() < 1e-9)
+            .expect("the time");
+        let theirs = sol.y[k][0] * 1e-5;
+        assert!(
+            (ours.x[i] - theirs).abs() < 1e-7,
+            "t = {t}: {} vs {theirs}",
+            ours.x[i]
+        );
+    }
+}
