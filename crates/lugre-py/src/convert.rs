@@ -304,3 +304,15 @@ pub fn map_floats<'py>(
     py.detach(|| data.iter_mut().for_each(|v| *v = f(*v)));
     array_out(py, data, &x.shape)
 }
+
+/// Real-number arguments by name (a helper for the bimodal corners).
+pub fn reals<const N: usize>(
+    values: [&Bound<'_, PyAny>; N],
+    names: [&str; N],
+) -> PyResult<[f64; N]> {
+    let mut out = [0.0; N];
+    for i in 0..N {
+        out[i] = real(values[i], names[i])?;
+    }
+    Ok(out)
+}

@@ -10,7 +10,6 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use crate::convert::{
     count, float_repr, floats, list_repr, map_floats, try_vec, value_error, vec_out,
 };
-use crate::models::reals;
 
 /// The hysteresis loop y° of a model for one periodic input (the rate-independent limit,
 /// paper eqs. 8-10), with all its minor loops and their energies.
@@ -86,7 +85,8 @@ impl PyHysteresisLoop {
         corners: [&Bound<'_, PyAny>; 4],
     ) -> PyResult<Self> {
         let py = model_obj.py();
-        let [umin1, umin2, umax1, umax2] = reals(corners, ["umin1", "umin2", "umax1", "umax2"])?;
+        let [umin1, umin2, umax1, umax2] =
+            crate::convert::reals(corners, ["umin1", "umin2", "umax1", "umax2"])?;
         let b = lugre::Bimodal::new(umin1, umin2, umax1, umax2).map_err(value_error)?;
         Self::build(py, model_obj, model, &b.turning_points(), Some(b), "")
     }

@@ -3,7 +3,7 @@
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::convert::{float_repr, map_floats, real, real_or, value_error};
+use crate::convert::{float_repr, map_floats, real_or, value_error};
 use crate::loops::PyHysteresisLoop;
 use crate::simulate::{simulate, SimulateArgs};
 use lugre::model::Parameter;
@@ -379,18 +379,6 @@ impl PyDahl {
     ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
         Ok((PyTuple::empty(py), self.to_dict(py)?))
     }
-}
-
-/// Real-number arguments by name (a helper for the bimodal corners).
-pub fn reals<const N: usize>(
-    values: [&Bound<'_, PyAny>; N],
-    names: [&str; N],
-) -> PyResult<[f64; N]> {
-    let mut out = [0.0; N];
-    for i in 0..N {
-        out[i] = real(values[i], names[i])?;
-    }
-    Ok(out)
 }
 
 /// The LuGre model of a `lugre.LuGre` or `lugre.Dahl` object (Dahl: its equivalent LuGre).
