@@ -594,8 +594,8 @@ pub struct Breakaway {
 impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     /// The first local maximum of the friction force in `(0, t_end)` (the break-away of a
     /// force ramp, Fig. 4 of Canudas de Wit et al.), or `None` if it only rises: found on a
-    /// grid of 2000 steps, refined on a grid of 400 between its neighbours, and located at the
-    /// vertex of the parabola through the three finest samples around it.
+    /// grid of 200 steps, refined twice on grids across its neighbours (200, then 20 steps),
+    /// and located at the vertex of the parabola through the three finest samples around it.
     pub fn breakaway(
         &self,
         t_end: f64,
@@ -608,25 +608,32 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         };
         let first_peak =
             |f: &[f64]| (1..f.len() - 1).find(|&i| f[i] > f[i - 1] && f[i] >= f[i + 1]);
-        let coarse = grid(0.0, t_end, 2000);
+        let coarse = grid(0.0, t_end, 200);
         let m = self.solve(t_end, &coarse, tol)?;
         let Some(i) = first_peak(&m.friction) else {
             return Ok(None);
         };
-        let fine = grid(coarse[i - 1], coarse[i + 1], 400);
-        let m = self.solve(t_end, &fine, tol)?;
-        let j = (1..fine.len() - 1)
-            .max_by(|&a, &b| m.friction[a].total_cmp(&m.friction[b]))
-            .unwrap_or(1);
-        let (f0, f1, f2) = (m.friction[j - 1], m.friction[j], m.friction[j + 1]);
-        let d = fine[1] - fine[0];
-        let curvature = f0 - 2.0 * f1 + f2;
-        let shift = if curvature < 0.0 {
-            (0.5 * d * (f0 - f2) / curvature).clamp(-d, d)
-        } else {
-            0.0
-        };
-        let t = fine[j] + shift;
+        // Two refinements, each on a grid across the previous one's neighbours of the peak,
+        // then the vertex of the parabola through the finest three.
+        let mut window = (coarse[i - 1], coarse[i + 1]);
+        let mut t = coarse[i];
+        for n in [200, 20] {
+            let fine = grid(window.0, window.1, n);
+            let m = self.solve(t_end, &fine, tol)?;
+            let j = (1..fine.len() - 1)
+                .max_by(|&a, &b| m.friction[a].total_cmp(&m.friction[b]))
+                .unwrap_or(1);
+            let (f0, f1, f2) = (m.friction[j - 1], m.friction[j], m.friction[j + 1]);
+            let d = fine[1] - fine[0];
+            let curvature = f0 - 2.0 * f1 + f2;
+            let shift = if curvature < 0.0 {
+                (0.5 * d * (f0 - f2) / curvature).clamp(-d, d)
+            } else {
+                0.0
+            };
+            t = fine[j] + shift;
+            window = (fine[j - 1], fine[j + 1]);
+        }
         let m = self.solve(t_end, &[t], tol)?;
         Ok(Some(Breakaway {
             t,
