@@ -4,25 +4,7 @@
 //! doubling, and the collocation polynomial of each half step as dense output for the output
 //! times and for locating the sign changes of `v`.
 
-/// Radau IIA nodes and coefficients (three stages).
-const C: [f64; 3] = [0.155_051_025_721_682_2, 0.644_948_974_278_317_8, 1.0];
-const A: [[f64; 3]; 3] = [
-    [
-        0.196_815_477_223_660_1,
-        -0.065_535_425_850_198_4,
-        0.023_770_974_348_220_2,
-    ],
-    [
-        0.394_424_314_739_087_4,
-        0.292_073_411_665_228_3,
-        -0.041_548_752_125_997_9,
-    ],
-    [
-        0.376_403_062_700_467_3,
-        0.512_485_826_188_421_5,
-        0.111_111_111_111_111_1,
-    ],
-];
+use crate::kernel::radau::{A, C};
 
 pub(super) const N: usize = 4;
 const M: usize = 3 * N;
@@ -116,14 +98,13 @@ pub(super) fn radau_step(
 /// The collocation polynomial of a step `(t0, y0, h, stages)` at `t0 + theta h`,
 /// `theta` in `[0, 1]`: Lagrange through the nodes `0, c1, c2, 1`.
 pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; N] {
-    let nodes = [0.0, C[0], C[1], C[2]];
     let values = [y0, &stages[0], &stages[1], &stages[2]];
     let mut out = [0.0; N];
     for (k, value) in values.iter().enumerate() {
         let mut l = 1.0;
-        for (m, &node) in nodes.iter().enumerate() {
+        for (m, &node) in NODES.iter().enumerate() {
             if m != k {
-                l *= (theta - node) / (nodes[k] - node);
+                l *= (theta - node) / (NODES[k] - node);
             }
         }
         for r in 0..N {
@@ -205,15 +186,6 @@ impl Lu {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn tableau_is_the_collocation_one() {
-        // Row sums are the nodes; the last row is the weights (stiffly accurate).
-        for i in 0..3 {
-            let s: f64 = A[i].iter().sum();
-            assert!((s - C[i]).abs() < 1e-15, "{i}: {s}");
-        }
-    }
 
     #[test]
     fn exact_for_a_linear_oscillator_to_order_five() {

@@ -10,7 +10,8 @@
 //!   blocks of them for the vectorized passes, and double-double arithmetic;
 //! * `piece`: `y°` at the end of a piece of the loop, its dissipation and the two terms of its
 //!   work (eq. 8 integrated);
-//! * `arc`: the sums of pieces over an arc and the energies of the arc ([`ArcEnergy`]).
+//! * `arc`: the sums of pieces over an arc and the energies of the arc ([`ArcEnergy`]);
+//! * `radau`: the Radau IIA tableau of the two stiff integrators (`simulate`, `dynamics`).
 //!
 //! The mathematics is in `docs/mathematics.md` (`#the-stable-closed-form`,
 //! `#the-energy-identity-and-the-dissipation-series`).
@@ -26,6 +27,7 @@
 pub(crate) mod arc;
 pub(crate) mod numerics;
 pub(crate) mod piece;
+pub(crate) mod radau;
 pub(crate) mod relax;
 
 pub use arc::ArcEnergy;

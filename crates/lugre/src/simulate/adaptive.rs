@@ -29,6 +29,7 @@
 
 use super::inputs::Sine;
 use super::{check_output_times, Sample, SimulateError, Simulator, Tolerance, Trajectory};
+use crate::kernel::radau::{A, C};
 use crate::kernel::relax::relax;
 use crate::model::VelocityFn;
 
@@ -43,21 +44,6 @@ impl<C: Fn(f64) -> (f64, f64)> LinearOde for C {
         self(t)
     }
 }
-
-/// Radau IIA nodes `c = ((4 - sqrt 6) / 10, (4 + sqrt 6) / 10, 1)` (mpmath, 40 digits, rounded).
-const C: [f64; 3] = [0.1550510257216822, 0.6449489742783178, 1.0];
-
-/// Radau IIA coefficients (Hairer & Wanner, Solving ODEs II, Table IV.5.6), e.g.
-/// `a11 = (88 - 7 sqrt 6) / 360` (mpmath, 40 digits, rounded).
-const A: [[f64; 3]; 3] = [
-    [
-        0.1968154772236604,
-        -0.06553542585019839,
-        0.02377097434822015,
-    ],
-    [0.3944243147390873, 0.2920734116652285, -0.04154875212599793],
-    [0.37640306270046725, 0.5124858261884216, 0.1111111111111111],
-];
 
 /// Step-size controller: `h_new = h * clamp(SAFETY * err^(-1/5), MIN_FACTOR, MAX_FACTOR)`.
 /// The exponent is the local order in the stiff regime plus one (stage order 3 + 2 for the
@@ -346,22 +332,6 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn radau_tableau_is_consistent() {
-        // Row sums are the nodes; the last row is the weights, which integrate 1, t, t^2.
-        for i in 0..3 {
-            let s: f64 = A[i].iter().sum();
-            assert!((s - C[i]).abs() < 1e-15, "row {i}: {s}");
-        }
-        for p in 0..5 {
-            let quad: f64 = (0..3).map(|j| A[2][j] * C[j].powi(p)).sum();
-            assert!(
-                (quad - 1.0 / f64::from(p + 1)).abs() < 1e-15,
-                "t^{p}: {quad}"
-            );
-        }
-    }
 
     #[test]
     fn linear_ode_with_known_solution() {
