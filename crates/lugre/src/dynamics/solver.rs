@@ -205,7 +205,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                     Ok((halves, factor)) => {
                         run.out.stats.steps += 1;
                         let end = if last { bound } else { t + step };
-                        let crossing = run.crossing(t, &y, step, &halves, s);
+                        let crossing = run.crossing(t, step, &halves, s);
                         let kept = crossing.map_or(end, |c| c.0);
                         run.watch(t, step, &halves, kept);
                         match crossing {
@@ -224,7 +224,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                                     }
                                 };
                                 run.report_until(tc, &yc, s, Some((t, &y, step, &halves)));
-                                let (yc, s_next) = run.reversal(tc, yc, s);
+                                let (yc, s_next) = run.reversal(tc, yc);
                                 (t, y, s) = (tc, yc, s_next);
                             }
                             None => {
@@ -275,6 +275,23 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
 
 /// Two half steps: `(step, start)` of each.
 type Halves = [(Step, [f64; N]); 2];
+
+/// The point where `past` turns true in `[lo, hi]` (false at `lo`, true at `hi`), by
+/// bisection to the resolution of `f64`: the smallest `theta` found with `past(theta)`.
+fn bisect(past: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if past(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
 
 struct Run<'a, G, F> {
     system: &'a System<G, F>,
@@ -404,35 +421,18 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
     /// The first crossing of `v` against the sign `s` in the step (none when `s = 0`):
     /// bracketed at the collocation nodes of the half steps, then located by bisection on the
     /// collocation polynomial to the resolution of `t`.
-    fn crossing(
-        &self,
-        t: f64,
-        _y: &[f64; N],
-        h: f64,
-        halves: &Halves,
-        s: f64,
-    ) -> Option<(f64, [f64; N])> {
+    fn crossing(&self, t: f64, h: f64, halves: &Halves, s: f64) -> Option<(f64, [f64; N])> {
         if s == 0.0 {
             return None;
         }
         for (k, (step, start)) in halves.iter().enumerate() {
             let t0 = t + 0.5 * h * k as f64;
             let at = |theta: f64| dense(start, &step.stages, theta);
+            let past = |theta: f64| s * at(theta)[1] < 0.0;
             let mut lo = 0.0;
             for &node in &NODES[1..] {
-                if s * at(node)[1] < 0.0 {
-                    let mut hi = node;
-                    for _ in 0..80 {
-                        let mid = 0.5 * (lo + hi);
-                        if mid <= lo || mid >= hi {
-                            break;
-                        }
-                        if s * at(mid)[1] < 0.0 {
-                            hi = mid;
-                        } else {
-                            lo = mid;
-                        }
-                    }
+                if past(node) {
+                    let hi = bisect(past, lo, node);
                     return Some((t0 + 0.5 * h * hi, at(hi)));
                 }
                 lo = node;
@@ -449,22 +449,11 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
             for (k, (step, start)) in halves.iter().enumerate() {
                 let t0 = t + 0.5 * h * k as f64;
                 let at = |theta: f64| dense(start, &step.stages, theta);
+                let past = |theta: f64| at(theta)[1] >= level;
                 let mut lo = 0.0;
                 for &node in &NODES[1..] {
-                    if at(lo)[1] < level && at(node)[1] >= level {
-                        let mut hi = node;
-                        let mut a = lo;
-                        for _ in 0..80 {
-                            let mid = 0.5 * (a + hi);
-                            if mid <= a || mid >= hi {
-                                break;
-                            }
-                            if at(mid)[1] >= level {
-                                hi = mid;
-                            } else {
-                                a = mid;
-                            }
-                        }
+                    if !past(lo) && past(node) {
+                        let hi = bisect(past, lo, node);
                         let tc = t0 + 0.5 * h * hi;
                         if tc <= t_kept {
                             found.push((tc, at(hi)[0]));
@@ -487,7 +476,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
     /// At a located sign change: `v = 0` there, an event, and the sign to go on with: that of
     /// the acceleration (at `v = 0` the rate does not depend on the sign), or none once the
     /// mass rings down below the velocity tolerance (its amplitude `|v'| / w0`).
-    fn reversal(&mut self, t: f64, mut y: [f64; N], _s: f64) -> ([f64; N], f64) {
+    fn reversal(&mut self, t: f64, mut y: [f64; N]) -> ([f64; N], f64) {
         y[1] = 0.0;
         self.out.events.push(Event {
             t,
