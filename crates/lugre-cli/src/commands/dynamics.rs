@@ -402,18 +402,16 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
         .filter(|&i| i != last)
         .chain((n > 0).then_some(last));
     for i in rows {
-        {
-            writeln!(
-                w,
-                "{:>12} {:>16} {:>14} {:>14} {:>12} {:>12}",
-                sig(m.t[i], 6),
-                sig(m.x[i], 9),
-                sig(m.v[i], 6),
-                sig(m.z[i], 6),
-                sig(m.friction[i], 7),
-                sig(m.drive[i], 7)
-            )?;
-        }
+        writeln!(
+            w,
+            "{:>12} {:>16} {:>14} {:>14} {:>12} {:>12}",
+            sig(m.t[i], 6),
+            sig(m.x[i], 9),
+            sig(m.v[i], 6),
+            sig(m.z[i], 6),
+            sig(m.friction[i], 7),
+            sig(m.drive[i], 7)
+        )?;
     }
     writeln!(w, "({n} samples; all of them with --json or --csv)")?;
     w.flush()?;
