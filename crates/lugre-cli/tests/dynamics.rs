@@ -121,6 +121,59 @@ fn csv_and_plot_files() {
 }
 
 #[test]
+fn a_force_history_from_a_file_is_the_same_drive_as_its_profile() {
+    let dir = std::env::temp_dir().join(format!("lugre-dynamics-input-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (good, no_f, no_t) = (dir.join("f.csv"), dir.join("u.csv"), dir.join("nt.csv"));
+    // Columns in any order, one ignored; the run ends at the last time.
+    std::fs::write(&good, "F,note,t\n0,a,0\n1.425,b,10\n1.425,c,15\n").unwrap();
+    std::fs::write(&no_f, "t,u\n0,1\n").unwrap();
+    std::fs::write(&no_t, "F\n0\n1\n").unwrap();
+    let common = [
+        "dynamics",
+        "--preset",
+        "canudas1995",
+        "--times",
+        "5,10,15",
+        "--json",
+    ];
+    let from_file = accepts_json(&[&common[..], &["--input", good.to_str().unwrap()]].concat());
+    let from_profile = accepts_json(
+        &[
+            &common[..],
+            &["--force-profile", "0:0,10:1.425,15:1.425", "--t-end", "15"],
+        ]
+        .concat(),
+    );
+    assert_eq!(from_file, from_profile);
+    rejects(
+        &["dynamics", "--input", no_f.to_str().unwrap()],
+        "no column 'F'",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--input",
+            no_t.to_str().unwrap(),
+            "--t-end",
+            "1",
+        ],
+        "needs a column t",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--input",
+            good.to_str().unwrap(),
+            "--force-profile",
+            "0:0,1:1",
+        ],
+        "not both",
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn bad_input_is_one_line() {
     rejects(&["dynamics", "--t-end", "1"], "no drive");
     rejects(

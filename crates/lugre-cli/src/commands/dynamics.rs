@@ -14,7 +14,7 @@ use std::io::Write;
 use crate::args::{ModelArgs, OutputArgs, PlotArgs, Preset};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::NumberRows;
+use crate::io::csv::{read_table, Columns, NumberRows};
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
@@ -86,6 +86,11 @@ pub(crate) struct DynamicsArgs {
         help_heading = "Drive"
     )]
     pub(crate) force_rate: Option<f64>,
+    /// Applied force from a CSV file with a header naming the columns `t` [s] and `F` [N]
+    /// (others ignored): a measured force history, linear between rows, held after; the run
+    /// ends at its last time unless --t-end is given.
+    #[arg(long, value_name = "FILE.csv", help_heading = "Drive")]
+    pub(crate) input: Option<std::path::PathBuf>,
     /// PID gains KP,KI,KV on position: u = -KV v - KP (x - xd) - KI integral(x - xd).
     #[arg(
         long,
@@ -201,12 +206,26 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
         description.push(format!("force ramp F = {} t N", sig(r, 6)));
     }
     if let Some(text) = &args.force_profile {
-        system = system.with_force(Profile::new(
-            "--force-profile",
-            pairs("--force-profile", text)?.0,
-            pairs("--force-profile", text)?.1,
-        )?);
+        let (t, f) = pairs("--force-profile", text)?;
+        system = system.with_force(Profile::new("--force-profile", t, f)?);
         description.push("applied force profile".into());
+    }
+    if let Some(path) = &args.input {
+        if args.force_profile.is_some() {
+            bail!("give --force-profile or --input, not both");
+        }
+        let table = read_table(path, Columns::Named("F"))?;
+        let Some(t) = table.t else {
+            bail!(
+                "{}: needs a column t (the times of the force F)",
+                path.display()
+            );
+        };
+        let f = table.columns.into_iter().next().unwrap_or_default();
+        // A measured history runs to its last sample unless told otherwise.
+        t_end = t_end.or(t.last().copied());
+        system = system.with_force(Profile::new("--input", t, f)?);
+        description.push(format!("applied force from {}", path.display()));
     }
     if let Some(k) = args.spring {
         let end = match (pull, &args.end_profile) {
@@ -261,7 +280,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
         system = system.with_velocity_watch(v)?;
     }
     if description.is_empty() {
-        bail!("no drive: give --scenario, --force-profile, --force-rate, --spring with --pull, --pid or --velocity-profile");
+        bail!("no drive: give --scenario, --force-profile, --input, --force-rate, --spring with --pull, --pid or --velocity-profile");
     }
     let t_end = t_end.ok_or_else(|| anyhow!("give --t-end T (the end of the run, s)"))?;
     if !(t_end.is_finite() && t_end > 0.0) {
