@@ -247,6 +247,16 @@ pub enum SimulateError {
         t = num(*.t)
     )]
     StepUnderflow { t: f64, tol: f64 },
+    #[error("the step must be a finite number >= 0, got {value}", value = num(*.value))]
+    BadStep { value: f64 },
+    #[error("the displacement must be a finite number, got {value}", value = num(*.value))]
+    BadDisplacement { value: f64 },
+    #[error(
+        "the displacement cannot move in a zero step (from {from} to {to}): give the step its duration",
+        from = num(*.from),
+        to = num(*.to)
+    )]
+    JumpInZeroStep { from: f64, to: f64 },
     #[error(transparent)]
     Input(#[from] InputError),
 }

@@ -152,6 +152,15 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         }
     }
 
+    /// From state `z`, the input moving by `du` over `dt > 0` at a constant speed: the sample
+    /// at the step's end, with the step's slope (the value just before a kink there).
+    #[inline]
+    pub(super) fn advance(&self, z: f64, t_end: f64, u_end: f64, du: f64, dt: f64) -> Sample {
+        let seg = self.segment(du, dt);
+        let z = relax_toward(z, seg.c, seg.z_inf);
+        self.sample(&seg, t_end, u_end, z)
+    }
+
     /// The output where the input's slope is `v` (smooth inputs: no kink).
     #[inline]
     pub(super) fn sample_at_slope(&self, t: f64, u: f64, v: f64, z: f64) -> Sample {

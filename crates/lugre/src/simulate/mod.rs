@@ -56,11 +56,13 @@
 //! ```
 
 pub mod adaptive;
+mod element;
 pub mod exact;
 pub mod example1;
 mod inputs;
 mod request;
 
+pub use element::FrictionElement;
 pub use exact::{Observed, Simulator};
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
