@@ -225,3 +225,56 @@ fn bad_input_is_one_line() {
         "--preset",
     );
 }
+
+/// The pre-sliding scenario reports its friction-displacement loop: x from the first hold's
+/// reversal down to the second's and back. Its rate-independent twin against the closed form
+/// of a two-point loop worked by hand (ascending branch `y = g0 - (g0 + Y) exp(-a rho)` from
+/// `-Y` to `Y = g0 tanh(a L / 2)`, the descending one its mirror):
+/// `W = 2 (g0 L - (g0 + Y)(1 - exp(-a L)) / a)`, `a = sigma0 / g0`, `L` the loop's span. The
+/// dynamic loop's work differs from it by the rate effect of the 0.1425 N/s ramps (1.26e-3,
+/// falling like the rate: `crates/lugre/tests/dynamics.rs`).
+#[test]
+fn presliding_reports_its_friction_displacement_loop() {
+    let out = accepts(&["dynamics", "--scenario", "presliding"]);
+    assert!(out.contains("friction-displacement loops"), "{out}");
+    assert!(out.contains("lugre loop"), "{out}");
+    let j = accepts_json(&["dynamics", "--scenario", "presliding", "--json"]);
+    let loops = j["loops"].as_array().unwrap();
+    assert_eq!(loops.len(), 1, "{loops:?}");
+    let l = &loops[0];
+    let tp: Vec<f64> = l["turning_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(f)
+        .collect();
+    assert_eq!(tp.len(), 2);
+    // Table I: sigma0 = 1e5 N/m, g0 = Fs = 1.5 N.
+    let (g0, a) = (1.5, 1e5 / 1.5);
+    let span = (tp[0] - tp[1]).abs();
+    let y = g0 * (0.5 * a * span).tanh();
+    let closed_form = 2.0 * (g0 * span + (g0 + y) * (-a * span).exp_m1() / a);
+    let ri = f(&l["rate_independent_work"]);
+    assert!(
+        (ri - closed_form).abs() <= 1e-12 * closed_form,
+        "{ri} vs {closed_form}"
+    );
+    // The turning points: the holds' displacements (reference x_max 4.5311842e-5 m at the end
+    // of a hold, plus the ringing of ~1e-11 m; x_min -1.00174e-5 m).
+    assert!(
+        (tp[0] - 4.53118e-5).abs() < 1e-10 && (tp[1] + 1.00174e-5).abs() < 1e-10,
+        "{tp:?}"
+    );
+    let (w, dv, d) = (
+        f(&l["work"]),
+        f(&l["bristle_energy_change"]),
+        f(&l["dissipation"]),
+    );
+    assert!(d > 0.0 && (w - dv - d).abs() <= 1e-15 * w);
+    let rate_effect = (w - ri) / ri;
+    assert!((1.1e-3..1.4e-3).contains(&rate_effect), "{rate_effect:e}");
+    assert!(f(&l["t_start"]) < f(&l["t_turn"]) && f(&l["t_turn"]) < f(&l["t_close"]));
+    // Asked for on another run: the stick-slip's x only grows, no loop closes.
+    let j = accepts_json(&["dynamics", "--scenario", "stick-slip", "--loops", "--json"]);
+    assert!(j["loops"].as_array().unwrap().is_empty());
+}

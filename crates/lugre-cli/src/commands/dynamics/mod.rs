@@ -19,6 +19,9 @@ use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
+mod loops;
+use loops::{friction_loops, FrictionLoop};
+
 /// Output samples over the run when neither `--times` nor `--samples` is given.
 const DEFAULT_SAMPLES: usize = 1001;
 /// Rows of the table printed (all of them are in --json / --csv).
@@ -28,7 +31,9 @@ const TABLE_HEAD: usize = 12;
 /// Table I and a 1 kg mass unless the flags say otherwise.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Scenario {
-    /// Fig. 2: pre-sliding displacement under a force ramped to +-95 % of Fs, with holds.
+    /// Fig. 2: pre-sliding displacement under a force ramped to +-95 % of Fs, with holds;
+    /// its friction-displacement loop.
+    #[value(alias = "pre-sliding")]
     Presliding,
     /// Fig. 4: break-away under F = r t (r from --force-rate, default 10 N/s).
     Breakaway,
@@ -129,6 +134,12 @@ pub(crate) struct DynamicsArgs {
     /// N >= 2 evenly spaced output times over [0, t_end] (default 1001).
     #[arg(long, value_parser = Whole(2), help_heading = "Run")]
     pub(crate) samples: Option<usize>,
+    /// Report the friction-displacement loops of x(t): each closed loop (a rainflow cycle of
+    /// x) with the work of the friction over it, the bristle energy change and the
+    /// dissipation, beside the rate-independent loop of `lugre loop` on the same turning
+    /// points (on by default for --scenario presliding).
+    #[arg(long, help_heading = "Run")]
+    pub(crate) loops: bool,
     /// Relative tolerance in (0, 1) (default 1e-8).
     #[arg(long, allow_hyphen_values = true, help_heading = "Run")]
     pub(crate) rtol: Option<f64>,
@@ -153,11 +164,14 @@ struct Request {
     rate: Option<f64>,
     /// The pull speed, when a spring is pulled (slip onsets are its upward crossings).
     pull: Option<f64>,
+    /// Whether the friction-displacement loops are reported.
+    loops: bool,
 }
 
 struct Outcome {
     motion: Motion,
     breakaway: Option<Breakaway>,
+    loops: Vec<FrictionLoop>,
 }
 
 pub(crate) fn run(args: &DynamicsArgs) -> Result<()> {
@@ -305,6 +319,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
         tol,
         rate,
         pull,
+        loops: args.loops || scenario == Some(Scenario::Presliding),
     })
 }
 
@@ -328,7 +343,16 @@ fn compute(r: &Request) -> Result<Outcome> {
         Some(_) => r.system.breakaway(r.t_end, r.tol)?,
         None => None,
     };
-    Ok(Outcome { motion, breakaway })
+    let loops = if r.loops {
+        friction_loops(&r.system, r.t_end, r.tol)?
+    } else {
+        Vec::new()
+    };
+    Ok(Outcome {
+        motion,
+        breakaway,
+        loops,
+    })
 }
 
 fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
@@ -408,6 +432,9 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
         .filter(|e| e.kind == EventKind::VelocityZero)
         .count();
     writeln!(w, "velocity sign changes: {reversals}")?;
+    if r.loops {
+        write_loops(&mut w, &o.loops)?;
+    }
     writeln!(
         w,
         "\n{:>12} {:>16} {:>14} {:>14} {:>12} {:>12}",
@@ -501,8 +528,53 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Request, o: &Outcome) -> std::io:
             )?;
         }
     }
+    if r.loops {
+        j.raw(",\"loops\":[")?;
+        for (i, l) in o.loops.iter().enumerate() {
+            j.raw(if i == 0 { "{" } else { ",{" })?;
+            j.field("\"t_start\":", l.t_start)?;
+            j.field(",\"t_turn\":", l.t_turn)?;
+            j.field(",\"t_close\":", l.t_close)?;
+            j.raw(",\"turning_points\":")?;
+            j.array(&l.turning_points)?;
+            j.field(",\"work\":", l.work)?;
+            j.field(",\"bristle_energy_change\":", l.bristle_energy_change)?;
+            j.field(",\"dissipation\":", l.dissipation)?;
+            j.field(",\"rate_independent_work\":", l.rate_independent_work)?;
+            j.raw("}")?;
+        }
+        j.raw("]")?;
+    }
     j.raw("}\n")?;
     j.finish()
+}
+
+/// The loops' lines of the summary.
+fn write_loops(w: &mut impl Write, loops: &[FrictionLoop]) -> std::io::Result<()> {
+    if loops.is_empty() {
+        return writeln!(w, "friction-displacement loops: none closed");
+    }
+    writeln!(
+        w,
+        "friction-displacement loops (closed where x returns; work = bristle energy change + dissipated; lugre loop: the rate-independent loop on the same turning points):"
+    )?;
+    for l in loops {
+        let points: Vec<String> = l.turning_points.iter().map(|x| sig(*x, 7)).collect();
+        writeln!(
+            w,
+            "  {} -> {} -> {} s, x through {} m: work {} J = {} + dissipated {} J; lugre loop {} J ({} relative)",
+            sig(l.t_start, 6),
+            sig(l.t_turn, 6),
+            sig(l.t_close, 6),
+            points.join(", "),
+            sig(l.work, 7),
+            sig(l.bristle_energy_change, 3),
+            sig(l.dissipation, 7),
+            sig(l.rate_independent_work, 7),
+            sig((l.work - l.rate_independent_work) / l.rate_independent_work, 2)
+        )?;
+    }
+    Ok(())
 }
 
 /// x, v and the friction against t, and the friction against x, in a 2 x 2 grid.
