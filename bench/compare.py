@@ -21,6 +21,10 @@
 3. Rainflow counting (ASTM E1049-85) of 10^6 and 10^7 random-walk samples: lugre.cycles against
    rainflow.extract_cycles, checking that the cycles are identical (range, mean, count, start
    and end index, in order).
+4. Closed-loop dynamics: the five experiments of Canudas de Wit et al. (1995) with
+   lugre.dynamics, scipy's fastest method reaching the same accuracy and MuJoCo's LuGre
+   (`dcmotor`, Euler h = 1e-3, 2e-3, implicitfast 1e-3), scored against the independent
+   reference in crates/lugre/tests/reference/dynamics (bench/compare_dynamics.py).
 
 Prints one table: case, method, time, error or agreement, ratio (time / lugre's time).
 See bench/README.md for the options and what exactly is timed.
@@ -50,7 +54,7 @@ STAGE_ENV = "LUGRE_BENCH_IN_VENV"
 TARGET = os.path.join(ROOT, os.environ.get("CARGO_TARGET_DIR", "target"))
 LUGRE_EXE = os.path.join(TARGET, "release", "lugre")
 
-REQUIREMENTS = ["numpy", "scipy", "rainflow>=3,<4", "mpmath", "maturin==1.16.*"]
+REQUIREMENTS = ["numpy", "scipy", "rainflow>=3,<4", "mpmath", "mujoco>=3.7", "maturin==1.16.*"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -581,6 +585,10 @@ def compare(args: argparse.Namespace) -> None:
         if args.only in (None, "rainflow"):
             for n in args.sizes:
                 cycles_rows(n, args, rows, summary, tmpdir)
+    if args.only in (None, "dynamics"):
+        sys.path.insert(0, HERE)
+        from compare_dynamics import dynamics_rows
+        dynamics_rows(rows, summary, log, fmt_time, fmt_ratio)
     elapsed = time.perf_counter() - start
     end_load = machine_info()["load"]
 
@@ -614,8 +622,8 @@ def parse_args(argv):
                     help="use the environment as it is (no pip install, no build)")
     ap.add_argument("--no-build", action="store_true", help="install the PyPI packages but do not rebuild lugre")
     ap.add_argument("--no-cli", action="store_true", help="skip the `lugre` CLI rows (and its build)")
-    ap.add_argument("--only", choices=("simulation", "rainflow"),
-                    help="run only the simulation cases or only the rainflow counting")
+    ap.add_argument("--only", choices=("simulation", "rainflow", "dynamics"),
+                    help="run only the simulation cases, the rainflow counting or the closed-loop dynamics")
     ap.add_argument("--quick", action="store_true",
                     help="a smoke test: 10 / 2 periods, 10^5 and 10^6 samples, rtol 1e-6 and 1e-10")
     ap.add_argument("--rtols", type=lambda s: [float(v) for v in s.split(",")], default=None,

@@ -202,27 +202,29 @@ fn breakaway_located() {
             continue;
         }
         let system = scenario(Scenario::Breakaway { rate });
-        let b = system
-            .breakaway(2.0 / rate, Tolerances::default())
-            .unwrap()
-            .expect("a peak");
-        let g = |k: &str| case[k].as_f64().unwrap();
-        assert!(
-            (b.t - g("t")).abs() / g("t") <= AT_DEFAULT,
-            "r = {rate}: t {} vs {}",
-            b.t,
-            g("t")
-        );
-        assert!(
-            (b.force - g("F")).abs() / 1.5 <= AT_DEFAULT,
-            "r = {rate}: F {}",
-            b.force
-        );
-        assert!(
-            (b.x - g("x")).abs() / g("x") <= AT_DEFAULT,
-            "r = {rate}: x {}",
-            b.x
-        );
+        for (rtol, bound) in [(Tolerances::DEFAULT_RTOL, AT_DEFAULT), (1e-11, AT_1E_11)] {
+            let b = system
+                .breakaway(2.0 / rate, Tolerances::new(rtol, None).unwrap())
+                .unwrap()
+                .expect("a peak");
+            let g = |k: &str| case[k].as_f64().unwrap();
+            assert!(
+                (b.t - g("t")).abs() / g("t") <= bound,
+                "r = {rate}, rtol {rtol:e}: t {} vs {}",
+                b.t,
+                g("t")
+            );
+            assert!(
+                (b.force - g("F")).abs() / 1.5 <= bound,
+                "r = {rate}, rtol {rtol:e}: F {}",
+                b.force
+            );
+            assert!(
+                (b.x - g("x")).abs() / g("x") <= bound,
+                "r = {rate}, rtol {rtol:e}: x {}",
+                b.x
+            );
+        }
     }
 }
 

@@ -156,6 +156,19 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         times: &[f64],
         tol: Tolerances,
     ) -> Result<Motion, DynamicsError> {
+        Ok(self.integrate(t_end, times, tol, false)?.0)
+    }
+
+    /// [`Self::solve`]; with `to_peak`, it stops at the first local maximum of the friction
+    /// force (the sign change of `dF/dt` from + to -, located on the collocation polynomial)
+    /// and also returns the state there (`t`, `x`, `F`).
+    fn integrate(
+        &self,
+        t_end: f64,
+        times: &[f64],
+        tol: Tolerances,
+        to_peak: bool,
+    ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
         check_times(t_end, times)?;
         let m = self.model();
         let w0 = (m.sigma0() / self.mass()).sqrt();
@@ -170,6 +183,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             out: Motion::default(),
             times,
             next_time: 0,
+            rising: false,
         };
         let kinks = self.kinks(t_end);
         let mut y = [0.0; N];
@@ -208,6 +222,11 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                         let crossing = run.crossing(t, step, &halves, s);
                         let kept = crossing.map_or(end, |c| c.0);
                         run.watch(t, step, &halves, kept);
+                        if to_peak {
+                            if let Some(tp) = run.friction_peak(t, step, &halves, s, kept) {
+                                return run.peak_at(t, &y, step, &halves, tp, s);
+                            }
+                        }
                         match crossing {
                             Some((tc, yc)) => {
                                 // v changed sign: the step is kept up to the crossing only,
@@ -255,7 +274,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                 run.out.stats.restarts += 1;
             }
         }
-        Ok(run.out)
+        Ok((run.out, None))
     }
 
     /// The sign `v` takes from `y`: its own, or from rest that of the acceleration.
@@ -301,6 +320,8 @@ struct Run<'a, G, F> {
     out: Motion,
     times: &'a [f64],
     next_time: usize,
+    /// Whether the friction force has been seen rising (for the first peak).
+    rising: bool,
 }
 
 impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
@@ -473,6 +494,122 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         }
     }
 
+    /// `dF/dt` at the state `y`: `dF/dz z' + dF/dv v'` with the rates of the system (not the
+    /// derivative of an interpolant) and the partial derivatives by central differences (`F`
+    /// is linear in `z`, smooth in `v` at a frozen sign: no derivative of `g` needed).
+    fn friction_rate(&self, t: f64, y: &[f64; N], s: f64) -> f64 {
+        let rate = self.system.rate(t, y, s);
+        let (v, z) = (y[1], y[2]);
+        let force = |v: f64, z: f64| self.system.friction(v, z, s).0;
+        let dz = z.abs() + self.atol[2];
+        let dv = 1e-6 * (v.abs() + self.atol[1] / self.rtol);
+        let by_z = (force(v, z + dz) - force(v, z - dz)) / (2.0 * dz);
+        let by_v = (force(v + dv, z) - force(v - dv, z)) / (2.0 * dv);
+        by_z * rate[2] + by_v * rate[1]
+    }
+
+    /// The first local maximum of the friction force in the step, up to `t_kept`: where
+    /// `dF/dt` ([`Self::friction_rate`] on the collocation polynomial) turns from > 0 to <= 0,
+    /// bracketed at the nodes of the half steps and located by bisection.
+    fn friction_peak(
+        &mut self,
+        t: f64,
+        h: f64,
+        halves: &Halves,
+        s: f64,
+        t_kept: f64,
+    ) -> Option<f64> {
+        let mut rising = self.rising;
+        let found = self.first_peak(t, h, halves, s, &mut rising);
+        self.rising = rising;
+        found.filter(|&tp| tp <= t_kept)
+    }
+
+    fn first_peak(
+        &self,
+        t: f64,
+        h: f64,
+        halves: &Halves,
+        s: f64,
+        rising: &mut bool,
+    ) -> Option<f64> {
+        for (k, (step, start)) in halves.iter().enumerate() {
+            let t0 = t + 0.5 * h * k as f64;
+            let slope = |theta: f64| {
+                let y = dense(start, &step.stages, theta);
+                self.friction_rate(t0 + 0.5 * h * theta, &y, s)
+            };
+            let past = |theta: f64| slope(theta) <= 0.0;
+            let mut lo = 0.0;
+            for &node in &NODES {
+                let falling = past(node);
+                if falling && *rising {
+                    let theta = if node == 0.0 {
+                        0.0
+                    } else {
+                        bisect(past, lo, node)
+                    };
+                    return Some(t0 + 0.5 * h * theta);
+                }
+                *rising |= !falling;
+                lo = node;
+            }
+        }
+        None
+    }
+
+    /// The run stopped at the friction peak `tp` inside the step `(t, y, h, halves)`: the state
+    /// there by a step of its own (as accurate as the steps), the outputs up to it.
+    fn peak_at(
+        mut self,
+        t: f64,
+        y: &[f64; N],
+        h: f64,
+        halves: &Halves,
+        tp: f64,
+        s: f64,
+    ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
+        let k = usize::from(tp >= t + 0.5 * h);
+        let (st, start) = &halves[k];
+        let from = t + 0.5 * h * k as f64;
+        let exact = |run: &mut Self, tq: f64| -> [f64; N] {
+            if tq > from {
+                run.step_to(from, start, tq, s)
+                    .unwrap_or_else(|| dense(start, &st.stages, (tq - from) / (0.5 * h)))
+            } else {
+                *start
+            }
+        };
+        // The collocation polynomial locates the peak to its own (lower) order; secant steps
+        // on dF/dt at states that are steps of their own bring it to the steps' accuracy.
+        let mut tp = tp;
+        let mut yp = exact(&mut self, tp);
+        let d = 1e-4 * h;
+        for _ in 0..3 {
+            let g1 = self.friction_rate(tp, &yp, s);
+            let y2 = exact(&mut self, tp + d);
+            let g2 = self.friction_rate(tp + d, &y2, s);
+            let next = tp - g1 * d / (g2 - g1);
+            if !(next.is_finite() && next > from && next < t + h) {
+                break;
+            }
+            let moved = (next - tp).abs();
+            tp = next;
+            yp = exact(&mut self, tp);
+            if moved <= 1e-13 * tp.abs() {
+                break;
+            }
+        }
+        self.report_until(tp, &yp, s, Some((t, y, h, halves)));
+        check_finite(tp, &yp)?;
+        let peak = Breakaway {
+            t: tp,
+            force: self.system.friction(yp[1], yp[2], s).0,
+            x: yp[0],
+        };
+        Ok((self.out, Some(peak)))
+    }
+
     /// At a located sign change: `v = 0` there, an event, and the sign to go on with: that of
     /// the acceleration (at `v = 0` the rate does not depend on the sign), or none once the
     /// mass rings down below the velocity tolerance (its amplitude `|v'| / w0`).
@@ -582,52 +719,13 @@ pub struct Breakaway {
 
 impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     /// The first local maximum of the friction force in `(0, t_end)` (the break-away of a
-    /// force ramp, Fig. 4 of Canudas de Wit et al.), or `None` if it only rises: found on a
-    /// grid of 200 steps, refined twice on grids across its neighbours (200, then 20 steps),
-    /// and located at the vertex of the parabola through the three finest samples around it.
+    /// force ramp, Fig. 4 of Canudas de Wit et al.), or `None` if it only rises: located as an
+    /// event during one run, which stops there (see [`Self::solve`] for the events).
     pub fn breakaway(
         &self,
         t_end: f64,
         tol: Tolerances,
     ) -> Result<Option<Breakaway>, DynamicsError> {
-        let grid = |a: f64, b: f64, n: usize| -> Vec<f64> {
-            (0..=n)
-                .map(|i| a + (b - a) * (i as f64 / n as f64))
-                .collect()
-        };
-        let first_peak =
-            |f: &[f64]| (1..f.len() - 1).find(|&i| f[i] > f[i - 1] && f[i] >= f[i + 1]);
-        let coarse = grid(0.0, t_end, 200);
-        let m = self.solve(t_end, &coarse, tol)?;
-        let Some(i) = first_peak(&m.friction) else {
-            return Ok(None);
-        };
-        // Two refinements, each on a grid across the previous one's neighbours of the peak,
-        // then the vertex of the parabola through the finest three.
-        let mut window = (coarse[i - 1], coarse[i + 1]);
-        let mut t = coarse[i];
-        for n in [200, 20] {
-            let fine = grid(window.0, window.1, n);
-            let m = self.solve(t_end, &fine, tol)?;
-            let j = (1..fine.len() - 1)
-                .max_by(|&a, &b| m.friction[a].total_cmp(&m.friction[b]))
-                .unwrap_or(1);
-            let (f0, f1, f2) = (m.friction[j - 1], m.friction[j], m.friction[j + 1]);
-            let d = fine[1] - fine[0];
-            let curvature = f0 - 2.0 * f1 + f2;
-            let shift = if curvature < 0.0 {
-                (0.5 * d * (f0 - f2) / curvature).clamp(-d, d)
-            } else {
-                0.0
-            };
-            t = fine[j] + shift;
-            window = (fine[j - 1], fine[j + 1]);
-        }
-        let m = self.solve(t_end, &[t], tol)?;
-        Ok(Some(Breakaway {
-            t,
-            force: m.friction[0],
-            x: m.x[0],
-        }))
+        Ok(self.integrate(t_end, &[], tol, true)?.1)
     }
 }
