@@ -29,7 +29,12 @@ pub(super) fn radau_step(
     h: f64,
     w: &[f64; N],
 ) -> Option<Step> {
-    // The iteration matrix I - h (A (x) J), factored once.
+    radau_step_with(f, &iteration_matrix(jac, h)?, t, y, h, w, [[0.0; N]; 3])
+}
+
+/// The iteration matrix `I - h (A (x) J)` of steps of size `h` with the Jacobian `jac`, factored
+/// (`None` if singular): one factorization serves every step of that size and Jacobian.
+pub(super) fn iteration_matrix(jac: &[[f64; N]; N], h: f64) -> Option<Lu> {
     let mut mat = [[0.0; M]; M];
     for i in 0..3 {
         for j in 0..3 {
@@ -41,8 +46,22 @@ pub(super) fn radau_step(
             }
         }
     }
-    let lu = Lu::new(mat)?;
-    let mut z = [[0.0; N]; 3]; // stage increments Z_i - y
+    Lu::new(mat)
+}
+
+/// [`radau_step`] with the iteration matrix already factored ([`iteration_matrix`] at the same
+/// `h`), Newton starting from the stage increments `guess` (`Z_i - y`; zeros, or a previous
+/// collocation polynomial extrapolated to the stages).
+pub(super) fn radau_step_with(
+    f: &impl Fn(f64, &[f64; N]) -> [f64; N],
+    lu: &Lu,
+    t: f64,
+    y: &[f64; N],
+    h: f64,
+    w: &[f64; N],
+    guess: [[f64; N]; 3],
+) -> Option<Step> {
+    let mut z = guess; // stage increments Z_i - y
     let mut evaluations = 0;
     let mut previous = f64::INFINITY;
     for _ in 0..8 {
@@ -114,6 +133,16 @@ pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; 
     out
 }
 
+/// The stage increments of the step that follows the one `(y0, stages)` at the same size,
+/// extrapolated from its collocation polynomial (Newton's starting point).
+pub(super) fn next_guess(y0: &[f64; N], stages: &[[f64; N]; 3]) -> [[f64; N]; 3] {
+    let y1 = stages[2];
+    std::array::from_fn(|i| {
+        let p = dense(y0, stages, 1.0 + C[i]);
+        std::array::from_fn(|r| p[r] - y1[r])
+    })
+}
+
 /// `integral f(t, y(t)) dt` over a step of size `h` from `t0`, by the Radau quadrature at its
 /// stages (the weights are the tableau's last row): as accurate as the step.
 pub(super) fn quadrature(
@@ -135,7 +164,7 @@ pub(super) fn quadrature(
 pub(super) const NODES: [f64; 4] = [0.0, C[0], C[1], C[2]];
 
 /// LU factors with partial pivoting of a 12 x 12 matrix.
-struct Lu {
+pub(super) struct Lu {
     a: [[f64; M]; M],
     pivot: [usize; M],
 }

@@ -6,7 +6,9 @@
 //! the integral `q` per second), `atol w0` on the velocity, with the natural frequency
 //! `w0 = sqrt(sigma0 / M)` of the mass on its bristles.
 
-use super::integrator::{dense, quadrature, radau_step, Step, N, NODES};
+use super::integrator::{
+    dense, iteration_matrix, next_guess, quadrature, radau_step, radau_step_with, Step, N, NODES,
+};
 use super::System;
 use crate::error::DynamicsError;
 use crate::model::VelocityFn;
@@ -332,12 +334,17 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         let jac = self.jacobian(t, y, s);
         let w = self.weights(y);
         let full = radau_step(&f, &jac, t, y, h, &w);
-        let first = radau_step(&f, &jac, t, y, 0.5 * h, &w);
+        // Both halves iterate with the Jacobian at the step's start: one factorization.
+        let Some(half) = iteration_matrix(&jac, 0.5 * h) else {
+            return Err(0.25);
+        };
+        let first = radau_step_with(&f, &half, t, y, 0.5 * h, &w, [[0.0; N]; 3]);
         let (Some(full), Some(first)) = (full, first) else {
             return Err(0.25);
         };
-        let jac_mid = self.jacobian(t + 0.5 * h, &first.y, s);
-        let Some(second) = radau_step(&f, &jac_mid, t + 0.5 * h, &first.y, 0.5 * h, &w) else {
+        let guess = next_guess(y, &first.stages);
+        let Some(second) = radau_step_with(&f, &half, t + 0.5 * h, &first.y, 0.5 * h, &w, guess)
+        else {
             return Err(0.25);
         };
         self.out.stats.rhs_evaluations += full.evaluations + first.evaluations + second.evaluations;
