@@ -7,7 +7,10 @@
 #      warnings denied, the benchmarks and the fuzz targets built;
 #   1. the Rust tests of every crate except the Python extension module (it takes its
 #      symbols from the interpreter that imports it, so it has no Rust test harness);
-#   2. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
+#   2. the MATLAB/Octave MEX functions (scripts/build-mex.sh, matlab/tests/test_lugre.m against
+#      the CLI's JSON); Octave is installed from Debian when run as root, else skipped loudly;
+#      (the C ABI's example program is built and run by the Rust tests of crates/lugre-ffi;)
+#   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
 #      and pytest, the package built from crates/lugre-py and installed into it, its pytest
 #      suite.
 #
@@ -17,6 +20,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 step() { printf '\n== %s ==\n' "$*"; }
+# Suites that could not run here (named again at the end).
+skipped=()
 
 step "format, lints, MSRV, docs"
 cargo fmt --all --check
@@ -35,6 +40,21 @@ cargo build --manifest-path fuzz/Cargo.toml --bins --quiet
 
 step "Rust tests"
 cargo test --workspace --exclude lugre-py --no-fail-fast
+
+step "MATLAB/Octave: the MEX functions (the C example runs in the Rust tests)"
+# Octave from Debian when run as root (CI); elsewhere the suite is skipped, loudly.
+if ! command -v mkoctfile >/dev/null && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq octave liboctave-dev >/dev/null
+fi
+if command -v mkoctfile >/dev/null && command -v octave >/dev/null; then
+    bash scripts/build-mex.sh
+    cargo build --release --quiet -p lugre-cli
+    octave --no-gui --quiet --eval "addpath('matlab', 'matlab/tests'); exit(test_lugre())"
+else
+    echo "!!! SKIPPED the Octave/MEX tests: octave and liboctave-dev are not installed (apt-get install octave liboctave-dev, as root) !!!" >&2
+    skipped+=("Octave/MEX")
+fi
 
 venv=${LUGRE_VENV:-.venv}
 case "$venv" in /*) ;; *) venv="$PWD/$venv" ;; esac
@@ -57,3 +77,6 @@ pip=("$py" -m pip install --quiet --disable-pip-version-check)
 step "Python tests"
 # pytest exits non-zero (5) when it collects no test, so an empty run fails here too.
 "$py" -m pytest -q -p no:cacheprovider crates/lugre-py/tests
+if [ ${#skipped[@]} -gt 0 ]; then
+    echo "!!! scripts/test.sh: SKIPPED suites: ${skipped[*]} (CI runs them all) !!!" >&2
+fi
