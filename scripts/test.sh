@@ -12,7 +12,9 @@
 #      (the C ABI's example program is built and run by the Rust tests of crates/lugre-ffi;)
 #   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
 #      and pytest, the package built from crates/lugre-py and installed into it, its pytest
-#      suite.
+#      suite;
+#   4. the FMI 3.0 FMU (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
+#      into the same environment): tests/fmu.
 #
 # Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy and
 # pytest from PyPI. Re-runs reuse the environment and cargo's build cache.
@@ -77,6 +79,11 @@ pip=("$py" -m pip install --quiet --disable-pip-version-check)
 step "Python tests"
 # pytest exits non-zero (5) when it collects no test, so an empty run fails here too.
 "$py" -m pytest -q -p no:cacheprovider crates/lugre-py/tests
+
+step "FMI 3.0: the friction FMU in fmpy"
+"${pip[@]}" fmpy
+bash scripts/build-fmu.sh
+"$py" -m pytest -q -p no:cacheprovider tests/fmu
 if [ ${#skipped[@]} -gt 0 ]; then
     echo "!!! scripts/test.sh: SKIPPED suites: ${skipped[*]} (CI runs them all) !!!" >&2
 fi

@@ -7,35 +7,16 @@
 //! `matlab/tests/speed_lugre.m` times the same two calls through the MEX functions.
 
 use lugre_c::*;
+use lugre_test_support::timing::{best_of, random_walk};
 use std::hint::black_box;
 use std::ptr;
-use std::time::Instant;
 
 const N: usize = 1_000_000;
 
-fn best(mut f: impl FnMut()) -> f64 {
-    (0..7)
-        .map(|_| {
-            let t = Instant::now();
-            f();
-            t.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 fn main() {
     // A random walk in displacement (Table I scale: micrometres), 1 ms apart.
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
-    let mut x = 0.0;
-    let (t, u): (Vec<f64>, Vec<f64>) = (0..N)
-        .map(|i| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            x += ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 1e-6;
-            (i as f64 * 1e-3, x)
-        })
-        .unzip();
+    let u = random_walk(N, 1e-6);
+    let t: Vec<f64> = (0..N).map(|i| i as f64 * 1e-3).collect();
     // The walk for matlab/tests/speed_lugre.m (the same samples through the MEX functions).
     let path = std::env::temp_dir().join("lugre-speed-walk.f64");
     let bytes: Vec<u8> = u.iter().flat_map(|v| v.to_le_bytes()).collect();
@@ -43,7 +24,7 @@ fn main() {
     let params = lugre::LuGreParams::canudas_de_wit_1995();
     let model = lugre::LuGre::from_params(params).unwrap();
 
-    let core_simulate = best(|| {
+    let core_simulate = best_of(7, || {
         let input = lugre::PiecewiseLinear::new(t.clone(), u.clone()).unwrap();
         let mut out = lugre::Trajectory::with_capacity(N);
         lugre::Simulator::new(&model, lugre::Gamma::ONE, 0.0)
@@ -52,7 +33,7 @@ fn main() {
             .unwrap();
         black_box(out.y[N - 1]);
     });
-    let core_cycles = best(|| {
+    let core_cycles = best_of(7, || {
         let mut columns = lugre::CycleColumns::new().with_reversals(false);
         let mut counter = lugre::CycleCounter::new(0.0).unwrap();
         counter.push_all(&u, &mut columns).unwrap();
@@ -64,7 +45,7 @@ fn main() {
     let mut m = ptr::null_mut();
     assert_eq!(lugre_model_new(&c_params, &mut m), LugreStatus::Ok);
     let (mut z, mut f) = (vec![0.0; N], vec![0.0; N]);
-    let abi_simulate = best(|| {
+    let abi_simulate = best_of(7, || {
         let s = lugre_simulate(
             m,
             t.as_ptr(),
@@ -77,7 +58,7 @@ fn main() {
         assert_eq!(s, LugreStatus::Ok);
         black_box(f[N - 1]);
     });
-    let abi_cycles = best(|| {
+    let abi_cycles = best_of(7, || {
         let mut c = ptr::null_mut();
         let s = lugre_cycles_new(u.as_ptr(), N, 0.0, ptr::null(), 0.0, &mut c);
         assert_eq!(s, LugreStatus::Ok);

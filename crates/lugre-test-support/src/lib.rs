@@ -9,3 +9,4 @@
 pub mod layout;
 pub mod prec;
 pub mod reference;
+pub mod timing;
