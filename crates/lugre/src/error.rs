@@ -289,10 +289,11 @@ pub enum DynamicsError {
     },
     #[error("the tolerance {name} must be a number in (0, 1) (atol: > 0), got {value}", value = num(*.value))]
     BadTolerance { name: &'static str, value: f64 },
-    #[error("output time t[{index}] = {value} is outside the run [0, {t_end}]", value = num(*.value), t_end = num(*.t_end))]
+    #[error("output time t[{index}] = {value} is outside the run [{t0}, {t_end}]", value = num(*.value), t0 = num(*.t0), t_end = num(*.t_end))]
     TimeOutOfRange {
         index: usize,
         value: f64,
+        t0: f64,
         t_end: f64,
     },
     #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]

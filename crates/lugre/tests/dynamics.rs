@@ -434,3 +434,27 @@ fn agrees_with_the_differential_equations_crate() {
         );
     }
 }
+
+/// A run continued from a state it passed through ([`System::solve_from`]) is the same run: the
+/// stick-slip experiment stopped at 10 s (mid-slip: 0.068 m/s) and restarted from its state there
+/// agrees with the reference at 20 and 30 s as the one run does.
+#[test]
+fn a_run_continued_from_a_state_is_the_same_run() {
+    let r = reference();
+    let want = samples(&r, "stickslip");
+    let system = stick_slip();
+    let tol = Tolerances::default();
+    let first = system.solve(10.0, &[10.0], tol).unwrap();
+    let start = lugre::dynamics::State {
+        t: 10.0,
+        x: first.x[0],
+        v: first.v[0],
+        z: first.z[0],
+        q: 0.0,
+    };
+    let rest = system.solve_from(start, 30.0, &[10.0, 20.0, 30.0], tol).unwrap();
+    assert_eq!(rest.x[0], first.x[0]);
+    assert!(worst(&rest, &want, 1.0) <= AT_DEFAULT, "{:e}", worst(&rest, &want, 1.0));
+    let e = system.solve_from(start, 5.0, &[], tol).unwrap_err().to_string();
+    assert_eq!(e, "t_end - t0 must be a finite number > 0, got -5");
+}

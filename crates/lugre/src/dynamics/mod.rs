@@ -43,7 +43,7 @@ mod solver;
 pub use profile::{Profile, Steps};
 pub use scenario::{Scenario, Setup};
 
-pub use solver::{Breakaway, EnergyBalance, Event, EventKind, Motion, Stats, Tolerances};
+pub use solver::{Breakaway, EnergyBalance, Event, EventKind, Motion, State, Stats, Tolerances};
 
 use crate::error::DynamicsError;
 use crate::model::{LuGre, Stribeck, VelocityFn, Viscous};

@@ -100,6 +100,19 @@ pub struct Stats {
     pub restarts: usize,
 }
 
+/// A state of the system: where a run starts ([`System::solve_from`]; at rest at `t = 0` by
+/// default).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct State {
+    pub t: f64,
+    pub x: f64,
+    pub v: f64,
+    /// The bristle deflection.
+    pub z: f64,
+    /// The PID's integral of `x - x_d` (0 without a PID).
+    pub q: f64,
+}
+
 /// The motion at the requested times.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Motion {
@@ -158,7 +171,35 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         times: &[f64],
         tol: Tolerances,
     ) -> Result<Motion, DynamicsError> {
-        Ok(self.integrate(t_end, times, tol, false)?.0)
+        let start = State {
+            v: self.initial_velocity(),
+            ..State::default()
+        };
+        Ok(self.integrate(start, t_end, times, tol, false)?.0)
+    }
+
+    /// [`Self::solve`] from the state `start` (its time, position, velocity, deflection and
+    /// the PID's integral) instead of rest at `t = 0`: `times` in `[start.t, t_end]`. What a
+    /// host that advances the system step by step needs (the FMU of the mass).
+    pub fn solve_from(
+        &self,
+        start: State,
+        t_end: f64,
+        times: &[f64],
+        tol: Tolerances,
+    ) -> Result<Motion, DynamicsError> {
+        for (name, value) in [
+            ("the start time", start.t),
+            ("the start position", start.x),
+            ("the start velocity", start.v),
+            ("the start deflection", start.z),
+            ("the start integral", start.q),
+        ] {
+            if !value.is_finite() {
+                return Err(DynamicsError::NotFinite { name, value });
+            }
+        }
+        Ok(self.integrate(start, t_end, times, tol, false)?.0)
     }
 
     /// [`Self::solve`]; with `to_peak`, it stops at the first local maximum of the friction
@@ -166,12 +207,13 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     /// and also returns the state there (`t`, `x`, `F`).
     fn integrate(
         &self,
+        start: State,
         t_end: f64,
         times: &[f64],
         tol: Tolerances,
         to_peak: bool,
     ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
-        check_times(t_end, times)?;
+        check_times(start.t, t_end, times)?;
         let m = self.model();
         let w0 = (m.sigma0() / self.mass()).sqrt();
         let length = m.g0() / m.sigma0();
@@ -187,13 +229,16 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             next_time: 0,
             rising: false,
         };
-        let kinks = self.kinks(t_end);
-        let mut y = [0.0; N];
-        y[1] = self.initial_velocity();
-        let mut t = 0.0;
-        let mut h = 0.01 / w0;
+        let kinks: Vec<f64> = self
+            .kinks(t_end)
+            .into_iter()
+            .filter(|&k| k > start.t)
+            .collect();
+        let mut y = [start.x, start.v, start.z, start.q];
+        let mut t = start.t;
+        let mut h = (0.01 / w0).min(t_end - t);
         run.report_until(t, &y, 0.0, None);
-        run.out.energy.stored_start = self.stored(0.0, &y);
+        run.out.energy.stored_start = self.stored(t, &y);
         let mut rejected = false;
         for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
             let mut s = self.start_sign(t, &y);
@@ -681,18 +726,19 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     }
 }
 
-fn check_times(t_end: f64, times: &[f64]) -> Result<(), DynamicsError> {
-    if !(t_end.is_finite() && t_end > 0.0) {
+fn check_times(t0: f64, t_end: f64, times: &[f64]) -> Result<(), DynamicsError> {
+    if !(t_end.is_finite() && t_end > t0) {
         return Err(DynamicsError::NotPositive {
-            name: "t_end",
-            value: t_end,
+            name: if t0 == 0.0 { "t_end" } else { "t_end - t0" },
+            value: t_end - t0,
         });
     }
     for (index, &value) in times.iter().enumerate() {
-        if !(value.is_finite() && (0.0..=t_end).contains(&value)) {
+        if !(value.is_finite() && (t0..=t_end).contains(&value)) {
             return Err(DynamicsError::TimeOutOfRange {
                 index,
                 value,
+                t0,
                 t_end,
             });
         }
@@ -733,6 +779,10 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         t_end: f64,
         tol: Tolerances,
     ) -> Result<Option<Breakaway>, DynamicsError> {
-        Ok(self.integrate(t_end, &[], tol, true)?.1)
+        let start = State {
+            v: self.initial_velocity(),
+            ..State::default()
+        };
+        Ok(self.integrate(start, t_end, &[], tol, true)?.1)
     }
 }
