@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the FMI 3.0 FMU of lugre's friction element: target/fmu/lugre-friction.fmu, a zip of
-# modelDescription.xml (crates/lugre-fmu/fmu/lugre-friction.xml) and
-# binaries/x86_64-linux/lugre_friction.so (crates/lugre-fmu, release). No FMI tooling needed.
+# Builds lugre's FMI 3.0 FMUs: target/fmu/lugre-friction.fmu (the friction element) and
+# target/fmu/lugre-mass.fmu (a mass with friction), each a zip of its modelDescription.xml
+# (crates/lugre-fmu/fmu/NAME.xml) and binaries/x86_64-linux/<modelIdentifier>.so, the one
+# library of crates/lugre-fmu (release). No FMI tooling needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet -p lugre-fmu
@@ -11,11 +12,12 @@ import os, sys, zipfile
 target = sys.argv[1]
 out = os.path.join(target, "fmu")
 os.makedirs(out, exist_ok=True)
-path = os.path.join(out, "lugre-friction.fmu")
-tmp = path + ".tmp"
-with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
-    z.write("crates/lugre-fmu/fmu/lugre-friction.xml", "modelDescription.xml")
-    z.write(os.path.join(target, "release", "liblugre_fmu.so"), "binaries/x86_64-linux/lugre_friction.so")
-os.replace(tmp, path)  # never a half-written FMU
-print("built", path)
+for name, identifier in (("lugre-friction", "lugre_friction"), ("lugre-mass", "lugre_mass")):
+    path = os.path.join(out, name + ".fmu")
+    tmp = path + ".tmp"
+    with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
+        z.write(f"crates/lugre-fmu/fmu/{name}.xml", "modelDescription.xml")
+        z.write(os.path.join(target, "release", "liblugre_fmu.so"), f"binaries/x86_64-linux/{identifier}.so")
+    os.replace(tmp, path)  # never a half-written FMU
+    print("built", path)
 PY

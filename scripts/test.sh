@@ -13,7 +13,7 @@
 #   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
 #      and pytest, the package built from crates/lugre-py and installed into it, its pytest
 #      suite;
-#   4. the FMI 3.0 FMU (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
+#   4. the FMI 3.0 FMUs (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
 #      into the same environment): tests/fmu.
 #
 # Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy and
@@ -80,7 +80,7 @@ step "Python tests"
 # pytest exits non-zero (5) when it collects no test, so an empty run fails here too.
 "$py" -m pytest -q -p no:cacheprovider crates/lugre-py/tests
 
-step "FMI 3.0: the friction FMU in fmpy"
+step "FMI 3.0: the FMUs in fmpy"
 "${pip[@]}" fmpy
 bash scripts/build-fmu.sh
 "$py" -m pytest -q -p no:cacheprovider tests/fmu

@@ -41,7 +41,7 @@ fn main() {
         );
         fmi3EnterInitializationMode(i, false, 0.0, 0.0, false, 0.0);
         fmi3ExitInitializationMode(i);
-        let (inputs, output) = ([vr::X, vr::V], [vr::F]);
+        let (inputs, output) = ([friction::vr::X, friction::vr::V], [friction::vr::F]);
         let mut sum = 0.0;
         let mut f = [0.0];
         let (mut a, mut b, mut c, mut last) = (false, false, false, 0.0);

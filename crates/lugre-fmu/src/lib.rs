@@ -1,15 +1,23 @@
-//! The FMI 3.0 functions of `lugre-friction.fmu`: the LuGre friction element for any FMI host
-//! (Simulink's FMU block, Dymola, OpenModelica, fmpy), in model exchange and co-simulation.
-//! `bash scripts/build-fmu.sh` bundles this library with `fmu/lugre-friction.xml`.
+//! The FMI 3.0 functions of lugre's FMUs, for any FMI host (Simulink's FMU block, Dymola,
+//! OpenModelica, fmpy), in model exchange and co-simulation. One library serves both FMUs; the
+//! instantiation token says which model an instance is:
+//!
+//! * `lugre-friction.fmu` ([`friction`]): the friction element, relative displacement in,
+//!   friction force out;
+//! * `lugre-mass.fmu` ([`mass`]): the mass with friction of `lugre dynamics`, drive force in,
+//!   position, velocity and friction out.
+//!
+//! `bash scripts/build-fmu.sh` bundles this library with `fmu/lugre-friction.xml` and
+//! `fmu/lugre-mass.xml`.
 //!
 //! **Why hand-written.** The FMI 3.0 C interface is a flat list of functions over plain types;
 //! writing them here against the standard's signatures (`fmi3FunctionTypes.h`) costs no
-//! bindgen/libclang build step, and the few that matter are small. Everything the friction
-//! element does not use (clocks, other types, FMU states, scheduled execution) returns
-//! `fmi3Error` with a logged message.
+//! bindgen/libclang build step, and the few that matter are small. Everything these models do
+//! not use (clocks, other types, FMU states, scheduled execution) returns `fmi3Error` with a
+//! logged message.
 //!
-//! **The model** (SI units; parameters as the CLI's flags; defaults Table I of Canudas de Wit
-//! et al. 1995):
+//! **The friction element** (SI units; parameters as the CLI's flags; defaults Table I of
+//! Canudas de Wit et al. 1995):
 //!
 //! ```text
 //! inputs x [m], v = dx/dt [m/s]     state z [m], z(0) = x0
@@ -22,8 +30,7 @@
 //! * Co-simulation: `fmi3DoStep(t, h)` moves the displacement linearly from where it is to
 //!   `x + v h` (`x`, `v` the inputs set for `t`) and advances the element exactly
 //!   ([`lugre::simulate::FrictionElement`]): exact for a displacement linear over each step at
-//!   any stiffness and step size. A host that gives no `v` holds `x` over each step; a change of
-//!   `x` at the next communication point is then taken linearly over that next step.
+//!   any stiffness and step size. A host that gives no `v` holds `x` over each step.
 //!
 //! No panic crosses the boundary; a bad parameter or a non-finite input is `fmi3Error` with the
 //! message sent to the host's logger.
@@ -33,8 +40,14 @@
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use lugre::simulate::FrictionElement;
-use lugre::{LuGre, LuGreParams};
+use lugre::model::Parameter;
+use lugre::LuGreParams;
+
+pub mod friction;
+pub mod mass;
+
+pub use friction::TOKEN as FRICTION_TOKEN;
+pub use mass::TOKEN as MASS_TOKEN;
 
 /// `fmi3Status`.
 #[repr(C)]
@@ -50,218 +63,130 @@ pub enum Status {
 type Instance = *mut c_void;
 type LogMessage = Option<unsafe extern "C" fn(*mut c_void, Status, *const c_char, *const c_char)>;
 
-/// The token of `fmu/lugre-friction.xml` (`instantiationToken`).
-pub const FRICTION_TOKEN: &str = "{7f6c1c2e-3b1d-4c55-9a57-lugre-friction-1}";
-
-/// Value references (as in `fmu/lugre-friction.xml`).
+/// The value references both models share: time, and the friction parameters from
+/// [`vr::PARAMETERS`] on, in the order of [`Parameter::LUGRE`] (sigma0 = 10, ..., beta = 16).
 pub mod vr {
     pub const TIME: u32 = 0;
-    pub const X: u32 = 1;
-    pub const V: u32 = 2;
-    pub const F: u32 = 3;
-    pub const Z: u32 = 4;
-    pub const DER_Z: u32 = 5;
-    pub const SIGMA0: u32 = 10;
-    pub const SIGMA1: u32 = 11;
-    pub const SIGMA2: u32 = 12;
-    pub const FC: u32 = 13;
-    pub const FS: u32 = 14;
-    pub const VS: u32 = 15;
-    pub const BETA: u32 = 16;
-    pub const X0: u32 = 17;
+    pub const PARAMETERS: u32 = 10;
+}
+
+/// The friction parameter at value reference `r`.
+fn parameter(r: u32) -> Option<Parameter> {
+    let i = r.checked_sub(vr::PARAMETERS)?;
+    Parameter::LUGRE.get(usize::try_from(i).ok()?).copied()
 }
 
 /// The interface an instance runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
+pub(crate) enum Kind {
     ModelExchange,
     CoSimulation,
 }
 
-/// One instance of the friction FMU.
-struct Friction {
-    kind: Kind,
-    name: CString,
-    environment: *mut c_void,
-    log: LogMessage,
-    params: LuGreParams,
-    x0: f64,
-    time: f64,
-    x: f64,
-    v: f64,
-    /// The state (model exchange).
-    z: f64,
-    model: Option<LuGre>,
-    /// The element (co-simulation), from the end of initialization.
-    element: Option<FrictionElement>,
+/// What a model provides to the FMI functions. Values are checked finite before `set`.
+pub(crate) trait Unit {
+    fn name_of(&self, vr: u32) -> &'static str;
+    fn get(&self, vr: u32) -> Option<f64>;
+    fn set(&mut self, vr: u32, value: f64) -> Result<(), String>;
+    /// The end of initialization: the parameters checked, the state set.
+    fn initialize(&mut self, start: f64, tolerance: Option<f64>) -> Result<(), String>;
+    fn set_time(&mut self, t: f64);
+    fn do_step(&mut self, t: f64, h: f64) -> Result<(), String>;
+    fn states(&self) -> Vec<f64>;
+    /// `states` has the model's number of states (checked by the caller).
+    fn set_states(&mut self, states: &[f64]);
+    fn derivatives(&self) -> Vec<f64>;
+    fn nominals(&self) -> Vec<f64>;
+    fn indicators(&self) -> Vec<f64>;
 }
 
-impl Friction {
-    fn new(kind: Kind, name: CString, environment: *mut c_void, log: LogMessage) -> Self {
-        let params = LuGreParams::canudas_de_wit_1995();
-        Self {
-            kind,
-            name,
-            environment,
-            log,
-            params,
-            x0: 0.0,
-            time: 0.0,
-            x: 0.0,
-            v: 0.0,
-            z: 0.0,
-            model: None,
-            element: None,
-        }
-    }
-
-    fn error(&self, message: &str) -> Status {
-        if let Some(log) = self.log {
-            let category = c"logStatusError";
-            let text = CString::new(message.replace('\0', " ")).unwrap_or_default();
-            // SAFETY: the host's callback with its own environment pointer.
-            unsafe {
-                log(
-                    self.environment,
-                    Status::Error,
-                    category.as_ptr(),
-                    text.as_ptr(),
-                )
-            };
-        }
-        let _ = &self.name;
-        Status::Error
-    }
-
-    /// The model from the parameters (validated as the CLI validates its flags).
-    fn build(&mut self) -> Result<(), String> {
-        let model = LuGre::from_params(self.params).map_err(|e| e.to_string())?;
-        self.model = Some(model.clone());
-        if self.kind == Kind::CoSimulation {
-            let element = FrictionElement::starting_at(model, self.time, self.x, self.x0)
-                .map_err(|e| e.to_string())?;
-            self.element = Some(element);
-        } else {
-            self.z = self.x0;
-        }
-        Ok(())
-    }
-
-    /// `z'` and `F` at the current state and inputs (model exchange).
-    fn rates(&self) -> (f64, f64) {
-        let p = &self.params;
-        let Some(m) = &self.model else {
-            return (0.0, p.sigma0 * self.z);
-        };
-        let dz = self.v - p.sigma0 * self.v.abs() * self.z / m.g(self.v);
-        (dz, p.sigma0 * self.z + p.sigma1 * dz + m.f(self.v))
-    }
-
-    fn get(&self, vr: u32) -> Option<f64> {
-        let p = &self.params;
-        Some(match vr {
-            vr::TIME => self.time,
-            vr::X => self.x,
-            vr::V => self.v,
-            vr::F => match &self.element {
-                Some(e) => e.force(),
-                None => self.rates().1,
-            },
-            vr::Z => self.element.as_ref().map_or(self.z, FrictionElement::state),
-            vr::DER_Z => self.rates().0,
-            vr::SIGMA0 => p.sigma0,
-            vr::SIGMA1 => p.sigma1,
-            vr::SIGMA2 => p.sigma2,
-            vr::FC => p.fc,
-            vr::FS => p.fs,
-            vr::VS => p.vs,
-            vr::BETA => p.beta,
-            vr::X0 => self.x0,
-            _ => return None,
-        })
-    }
-
-    fn set(&mut self, vr: u32, value: f64) -> Result<(), String> {
-        if !value.is_finite() {
-            return Err(format!(
-                "the value of {} must be a finite number, got {value}",
-                name_of(vr)
-            ));
-        }
-        let initialized = self.model.is_some();
-        let p = &mut self.params;
-        let parameter = match vr {
-            vr::X => {
-                self.x = value;
-                return Ok(());
-            }
-            vr::V => {
-                self.v = value;
-                return Ok(());
-            }
-            vr::SIGMA0 => &mut p.sigma0,
-            vr::SIGMA1 => &mut p.sigma1,
-            vr::SIGMA2 => &mut p.sigma2,
-            vr::FC => &mut p.fc,
-            vr::FS => &mut p.fs,
-            vr::VS => &mut p.vs,
-            vr::BETA => &mut p.beta,
-            vr::X0 => &mut self.x0,
-            _ => return Err(format!("no settable variable has value reference {vr}")),
-        };
-        if initialized {
-            return Err(format!(
-                "{} is a fixed parameter: set it before the end of initialization",
-                name_of(vr)
-            ));
-        }
-        *parameter = value;
-        Ok(())
-    }
-
-    /// One co-simulation step (see the module docs).
-    fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
-        let (x_end, v) = (self.x + self.v * h, self.v);
-        let Some(e) = self.element.as_mut() else {
-            return Err("fmi3DoStep before the end of initialization".into());
-        };
-        if !x_end.is_finite() {
-            return Err(format!("the displacement x + v h is not finite (v = {v})"));
-        }
-        e.step(x_end, h).map_err(|err| err.to_string())?;
-        self.time = t + h;
-        self.x = x_end;
-        Ok(())
-    }
+/// A friction parameter's value.
+pub(crate) fn param(p: &LuGreParams, r: u32) -> Option<f64> {
+    p.get(parameter(r)?)
 }
 
-fn name_of(vr: u32) -> &'static str {
-    match vr {
-        vr::TIME => "time",
-        vr::X => "x",
-        vr::V => "v",
-        vr::F => "F",
-        vr::Z => "z",
-        vr::DER_Z => "der(z)",
-        vr::SIGMA0 => "sigma0",
-        vr::SIGMA1 => "sigma1",
-        vr::SIGMA2 => "sigma2",
-        vr::FC => "fc",
-        vr::FS => "fs",
-        vr::VS => "vs",
-        vr::BETA => "beta",
-        vr::X0 => "x0",
+/// Sets a friction parameter (before the end of initialization only).
+pub(crate) fn set_param(
+    p: &mut LuGreParams,
+    r: u32,
+    value: f64,
+    initialized: bool,
+    name: &str,
+) -> Result<(), String> {
+    let Some(q) = parameter(r) else {
+        return Err(match name {
+            "an unknown variable" => format!("no settable variable has value reference {r}"),
+            _ => format!("{name} cannot be set (it is computed by the FMU)"),
+        });
+    };
+    if initialized {
+        return Err(format!(
+            "{name} is a fixed parameter: set it before the end of initialization"
+        ));
+    }
+    p.set(q, value);
+    Ok(())
+}
+
+pub(crate) fn param_name(r: u32) -> &'static str {
+    match (r, parameter(r)) {
+        (vr::TIME, _) => "time",
+        (_, Some(q)) => q.name(),
         _ => "an unknown variable",
     }
 }
 
+/// One instance: the host's callbacks and the model.
+struct Fmu {
+    environment: *mut c_void,
+    log: LogMessage,
+    kind: Kind,
+    token: &'static str,
+    start: f64,
+    tolerance: Option<f64>,
+    initialized: bool,
+    unit: Box<dyn Unit>,
+}
+
+impl Fmu {
+    fn error(&self, message: &str) -> Status {
+        log_error(self.environment, self.log, message);
+        Status::Error
+    }
+
+    fn fresh(kind: Kind, token: &'static str) -> Box<dyn Unit> {
+        if token == MASS_TOKEN {
+            Box::new(mass::Mass::new(kind))
+        } else {
+            Box::new(friction::Friction::new(kind))
+        }
+    }
+
+    fn check_states(&self, n: usize) -> Result<usize, String> {
+        let want = self.unit.states().len();
+        if n != want {
+            return Err(format!("{want} continuous states, got {n}"));
+        }
+        Ok(want)
+    }
+}
+
+fn log_error(environment: *mut c_void, log: LogMessage, message: &str) {
+    if let Some(log) = log {
+        let category = c"logStatusError";
+        let text = CString::new(message.replace('\0', " ")).unwrap_or_default();
+        // SAFETY: the host's callback with its own environment pointer.
+        unsafe { log(environment, Status::Error, category.as_ptr(), text.as_ptr()) };
+    }
+}
+
 /// Runs `body` on the instance; a panic becomes `fmi3Fatal`, an error `fmi3Error` (logged).
-fn with(instance: Instance, body: impl FnOnce(&mut Friction) -> Result<(), String>) -> Status {
+fn with(instance: Instance, body: impl FnOnce(&mut Fmu) -> Result<(), String>) -> Status {
     if instance.is_null() {
         return Status::Error;
     }
     // SAFETY: a non-NULL instance is one this library made and has not freed.
-    let fmu = unsafe { &mut *instance.cast::<Friction>() };
+    let fmu = unsafe { &mut *instance.cast::<Fmu>() };
     match catch_unwind(AssertUnwindSafe(|| body(fmu))) {
         Ok(Ok(())) => Status::Ok,
         Ok(Err(message)) => fmu.error(&message),
@@ -297,28 +222,51 @@ fn write<T>(p: *mut T, value: T) {
     }
 }
 
+/// Copies `values` (all finite) to the host's buffer of `n`.
+fn deliver(fmu: &Fmu, what: &str, values: Vec<f64>, out: *mut f64, n: usize) -> Result<(), String> {
+    if values.len() != n {
+        return Err(format!("{} {what}, asked for {n}", values.len()));
+    }
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(format!(
+            "the {what} are not finite at t = {}",
+            fmu.unit.get(vr::TIME).unwrap_or(0.0)
+        ));
+    }
+    slice_mut(out, n).copy_from_slice(&values);
+    Ok(())
+}
+
 fn instantiate(
     kind: Kind,
-    name: *const c_char,
     token: *const c_char,
     environment: *mut c_void,
     log: LogMessage,
 ) -> Instance {
     catch_unwind(|| {
-        let name = if name.is_null() {
-            CString::default()
-        } else {
-            // SAFETY: a NUL-terminated string from the host.
-            unsafe { CStr::from_ptr(name) }.to_owned()
-        };
-        let fmu = Friction::new(kind, name, environment, log);
-        // SAFETY: as above.
-        let token_ok = !token.is_null()
-            && unsafe { CStr::from_ptr(token) }.to_bytes() == FRICTION_TOKEN.as_bytes();
-        if !token_ok {
-            fmu.error("the instantiation token is not lugre-friction's (a different modelDescription.xml?)");
+        // SAFETY: a NUL-terminated string from the host.
+        let given = (!token.is_null()).then(|| unsafe { CStr::from_ptr(token) }.to_bytes());
+        let token = [FRICTION_TOKEN, MASS_TOKEN]
+            .into_iter()
+            .find(|t| given == Some(t.as_bytes()));
+        let Some(token) = token else {
+            log_error(
+                environment,
+                log,
+                "the instantiation token is not one of lugre's FMUs (a different modelDescription.xml?)",
+            );
             return std::ptr::null_mut();
-        }
+        };
+        let fmu = Fmu {
+            environment,
+            log,
+            kind,
+            token,
+            start: 0.0,
+            tolerance: None,
+            initialized: false,
+            unit: Fmu::fresh(kind, token),
+        };
         Box::into_raw(Box::new(fmu)).cast::<c_void>()
     })
     .unwrap_or(std::ptr::null_mut())
@@ -340,9 +288,8 @@ pub extern "C" fn fmi3SetDebugLogging(
 }
 
 #[no_mangle]
-#[allow(clippy::too_many_arguments)]
 pub extern "C" fn fmi3InstantiateModelExchange(
-    name: *const c_char,
+    _name: *const c_char,
     token: *const c_char,
     _resource_path: *const c_char,
     _visible: bool,
@@ -350,13 +297,13 @@ pub extern "C" fn fmi3InstantiateModelExchange(
     environment: *mut c_void,
     log: LogMessage,
 ) -> Instance {
-    instantiate(Kind::ModelExchange, name, token, environment, log)
+    instantiate(Kind::ModelExchange, token, environment, log)
 }
 
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub extern "C" fn fmi3InstantiateCoSimulation(
-    name: *const c_char,
+    _name: *const c_char,
     token: *const c_char,
     _resource_path: *const c_char,
     _visible: bool,
@@ -369,7 +316,7 @@ pub extern "C" fn fmi3InstantiateCoSimulation(
     log: LogMessage,
     _intermediate_update: *const c_void,
 ) -> Instance {
-    instantiate(Kind::CoSimulation, name, token, environment, log)
+    instantiate(Kind::CoSimulation, token, environment, log)
 }
 
 #[no_mangle]
@@ -380,12 +327,19 @@ pub extern "C" fn fmi3InstantiateScheduledExecution(
     _resource_path: *const c_char,
     _visible: bool,
     _logging_on: bool,
-    _environment: *mut c_void,
-    _log: LogMessage,
+    environment: *mut c_void,
+    log: LogMessage,
     _clock_update: *const c_void,
     _lock: *const c_void,
     _unlock: *const c_void,
 ) -> Instance {
+    let _ = catch_unwind(|| {
+        log_error(
+            environment,
+            log,
+            "lugre's FMUs do not support scheduled execution",
+        );
+    });
     std::ptr::null_mut()
 }
 
@@ -393,15 +347,15 @@ pub extern "C" fn fmi3InstantiateScheduledExecution(
 pub extern "C" fn fmi3FreeInstance(instance: Instance) {
     if !instance.is_null() {
         // SAFETY: made by `instantiate`, freed once by the host.
-        let _ = catch_unwind(|| drop(unsafe { Box::from_raw(instance.cast::<Friction>()) }));
+        let _ = catch_unwind(|| drop(unsafe { Box::from_raw(instance.cast::<Fmu>()) }));
     }
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3EnterInitializationMode(
     instance: Instance,
-    _tolerance_defined: bool,
-    _tolerance: f64,
+    tolerance_defined: bool,
+    tolerance: f64,
     start_time: f64,
     _stop_time_defined: bool,
     _stop_time: f64,
@@ -410,14 +364,20 @@ pub extern "C" fn fmi3EnterInitializationMode(
         if !start_time.is_finite() {
             return Err(format!("the start time must be finite, got {start_time}"));
         }
-        fmu.time = start_time;
+        fmu.start = start_time;
+        fmu.unit.set_time(start_time);
+        fmu.tolerance = tolerance_defined.then_some(tolerance);
         Ok(())
     })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3ExitInitializationMode(instance: Instance) -> Status {
-    with(instance, Friction::build)
+    with(instance, |fmu| {
+        fmu.unit.initialize(fmu.start, fmu.tolerance)?;
+        fmu.initialized = true;
+        Ok(())
+    })
 }
 
 #[no_mangle]
@@ -433,7 +393,8 @@ pub extern "C" fn fmi3Terminate(instance: Instance) -> Status {
 #[no_mangle]
 pub extern "C" fn fmi3Reset(instance: Instance) -> Status {
     with(instance, |fmu| {
-        *fmu = Friction::new(fmu.kind, fmu.name.clone(), fmu.environment, fmu.log);
+        fmu.unit = Fmu::fresh(fmu.kind, fmu.token);
+        fmu.initialized = false;
         Ok(())
     })
 }
@@ -455,16 +416,13 @@ pub extern "C" fn fmi3GetFloat64(
                 values.len()
             ));
         }
-        for (vr, out) in vrs.iter().zip(values.iter_mut()) {
+        for (r, out) in vrs.iter().zip(values.iter_mut()) {
             let value = fmu
-                .get(*vr)
-                .ok_or_else(|| format!("no Float64 variable has value reference {vr}"))?;
+                .unit
+                .get(*r)
+                .ok_or_else(|| format!("no Float64 variable has value reference {r}"))?;
             if !value.is_finite() {
-                return Err(format!(
-                    "{} is not finite at t = {}",
-                    name_of(*vr),
-                    fmu.time
-                ));
+                return Err(format!("{} is not finite", fmu.unit.name_of(*r)));
             }
             *out = value;
         }
@@ -489,9 +447,15 @@ pub extern "C" fn fmi3SetFloat64(
                 values.len()
             ));
         }
-        vrs.iter()
-            .zip(values)
-            .try_for_each(|(vr, value)| fmu.set(*vr, *value))
+        vrs.iter().zip(values).try_for_each(|(r, value)| {
+            if !value.is_finite() {
+                return Err(format!(
+                    "the value of {} must be a finite number, got {value}",
+                    fmu.unit.name_of(*r)
+                ));
+            }
+            fmu.unit.set(*r, *value)
+        })
     })
 }
 
@@ -545,7 +509,7 @@ pub extern "C" fn fmi3SetTime(instance: Instance, time: f64) -> Status {
         if !time.is_finite() {
             return Err(format!("the time must be finite, got {time}"));
         }
-        fmu.time = time;
+        fmu.unit.set_time(time);
         Ok(())
     })
 }
@@ -556,13 +520,14 @@ pub extern "C" fn fmi3SetContinuousStates(
     states: *const f64,
     n: usize,
 ) -> Status {
-    with(instance, |fmu| match slice(states, n) {
-        [z] if z.is_finite() => {
-            fmu.z = *z;
-            Ok(())
+    with(instance, |fmu| {
+        fmu.check_states(n)?;
+        let states = slice(states, n);
+        if let Some(bad) = states.iter().find(|v| !v.is_finite()) {
+            return Err(format!("the continuous states must be finite, got {bad}"));
         }
-        [z] => Err(format!("the state z must be finite, got {z}")),
-        other => Err(format!("one continuous state (z), got {}", other.len())),
+        fmu.unit.set_states(states);
+        Ok(())
     })
 }
 
@@ -572,12 +537,8 @@ pub extern "C" fn fmi3GetContinuousStates(
     states: *mut f64,
     n: usize,
 ) -> Status {
-    with(instance, |fmu| match slice_mut(states, n) {
-        [z] => {
-            *z = fmu.z;
-            Ok(())
-        }
-        other => Err(format!("one continuous state (z), got {}", other.len())),
+    with(instance, |fmu| {
+        deliver(fmu, "continuous states", fmu.unit.states(), states, n)
     })
 }
 
@@ -588,15 +549,7 @@ pub extern "C" fn fmi3GetContinuousStateDerivatives(
     n: usize,
 ) -> Status {
     with(instance, |fmu| {
-        let dz = fmu.rates().0;
-        match slice_mut(derivatives, n) {
-            [d] if dz.is_finite() => {
-                *d = dz;
-                Ok(())
-            }
-            [_] => Err(format!("der(z) is not finite at t = {}", fmu.time)),
-            other => Err(format!("one continuous state (z), got {}", other.len())),
-        }
+        deliver(fmu, "derivatives", fmu.unit.derivatives(), derivatives, n)
     })
 }
 
@@ -606,44 +559,40 @@ pub extern "C" fn fmi3GetNominalsOfContinuousStates(
     nominals: *mut f64,
     n: usize,
 ) -> Status {
-    with(instance, |fmu| match slice_mut(nominals, n) {
-        // z is of the order of g(0) / sigma0.
-        [z] => {
-            *z = (fmu.params.fs.max(fmu.params.fc) / fmu.params.sigma0)
-                .abs()
-                .max(1e-300);
-            Ok(())
-        }
-        other => Err(format!("one continuous state (z), got {}", other.len())),
+    with(instance, |fmu| {
+        deliver(fmu, "nominals", fmu.unit.nominals(), nominals, n)
     })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3GetEventIndicators(
     instance: Instance,
-    _indicators: *mut f64,
+    indicators: *mut f64,
     n: usize,
 ) -> Status {
-    with(instance, |_| {
-        if n != 0 {
-            return Err(format!("no event indicators, asked for {n}"));
-        }
-        Ok(())
+    with(instance, |fmu| {
+        deliver(
+            fmu,
+            "event indicators",
+            fmu.unit.indicators(),
+            indicators,
+            n,
+        )
     })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3GetNumberOfEventIndicators(instance: Instance, n: *mut usize) -> Status {
-    with(instance, |_| {
-        write(n, 0);
+    with(instance, |fmu| {
+        write(n, fmu.unit.indicators().len());
         Ok(())
     })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3GetNumberOfContinuousStates(instance: Instance, n: *mut usize) -> Status {
-    with(instance, |_| {
-        write(n, 1);
+    with(instance, |fmu| {
+        write(n, fmu.unit.states().len());
         Ok(())
     })
 }
@@ -664,20 +613,26 @@ pub extern "C" fn fmi3DoStep(
         write(event_handling_needed, false);
         write(terminate, false);
         write(early_return, false);
-        let result = fmu.do_step(current, step);
-        write(last_successful_time, fmu.time);
+        if !fmu.initialized {
+            return Err("fmi3DoStep before the end of initialization".into());
+        }
+        let result = fmu.unit.do_step(current, step);
+        write(
+            last_successful_time,
+            fmu.unit.get(vr::TIME).unwrap_or(current),
+        );
         result
     })
 }
 
-/// Functions the friction element does not use: `fmi3Error`, logged.
+/// Functions these models do not use: `fmi3Error`, logged.
 macro_rules! unsupported {
     ($name:ident($instance:ident: Instance $(, $arg:ident: $ty:ty)*)) => {
         #[no_mangle]
         #[allow(non_snake_case, clippy::too_many_arguments)]
         pub extern "C" fn $name($instance: Instance $(, $arg: $ty)*) -> Status {
             with($instance, |_| {
-                Err(concat!(stringify!($name), " is not supported by lugre-friction").to_string())
+                Err(concat!(stringify!($name), " is not supported by lugre's FMUs").to_string())
             })
         }
     };

@@ -452,9 +452,18 @@ fn a_run_continued_from_a_state_is_the_same_run() {
         z: first.z[0],
         q: 0.0,
     };
-    let rest = system.solve_from(start, 30.0, &[10.0, 20.0, 30.0], tol).unwrap();
+    let rest = system
+        .solve_from(start, 30.0, &[10.0, 20.0, 30.0], tol)
+        .unwrap();
     assert_eq!(rest.x[0], first.x[0]);
-    assert!(worst(&rest, &want, 1.0) <= AT_DEFAULT, "{:e}", worst(&rest, &want, 1.0));
-    let e = system.solve_from(start, 5.0, &[], tol).unwrap_err().to_string();
+    assert!(
+        worst(&rest, &want, 1.0) <= AT_DEFAULT,
+        "{:e}",
+        worst(&rest, &want, 1.0)
+    );
+    let e = system
+        .solve_from(start, 5.0, &[], tol)
+        .unwrap_err()
+        .to_string();
     assert_eq!(e, "t_end - t0 must be a finite number > 0, got -5");
 }
