@@ -21,7 +21,9 @@ fn main() {
     let path = std::env::temp_dir().join("lugre-speed-walk.f64");
     let bytes: Vec<u8> = u.iter().flat_map(|v| v.to_le_bytes()).collect();
     std::fs::write(&path, bytes).unwrap();
-    let params = lugre::LuGreParams::canudas_de_wit_1995();
+    // The parameters as a caller has them: known at run time only (black_box keeps the compiler
+    // from folding Table I into the Rust calls, e.g. beta = 2 into a square).
+    let params = black_box(lugre::LuGreParams::canudas_de_wit_1995());
     let model = lugre::LuGre::from_params(params).unwrap();
 
     let core_simulate = best_of(7, || {

@@ -14,7 +14,10 @@ const H: f64 = 1e-3;
 
 fn main() {
     let xs = random_walk(N + 1, 1e-6);
-    let model = lugre::LuGre::from_params(lugre::LuGreParams::canudas_de_wit_1995()).unwrap();
+    // The parameters as a host has them: known at run time only (black_box keeps the compiler
+    // from folding Table I into the Rust loop, e.g. beta = 2 into a square).
+    let model =
+        lugre::LuGre::from_params(black_box(lugre::LuGreParams::canudas_de_wit_1995())).unwrap();
     let rust = best_of(7, || {
         let mut e = lugre::simulate::FrictionElement::new(model.clone(), 0.0).unwrap();
         let mut sum = 0.0;
