@@ -105,6 +105,9 @@ fn count(
         .with_closures(keep_closures)
         .with_energy(model.is_some());
     c.reserve_for_samples(n);
+    if n < 2 {
+        return Ok((c, no_cycles(n, gate, model, x0)?));
+    }
     let summary = match model {
         Some(m) => {
             let mut counter = lugre::EnergyCycleCounter::new(gate, m, x0)?;
@@ -119,6 +122,38 @@ fn count(
     };
     c.shrink_to_fit();
     Ok((c, summary))
+}
+
+/// The summary of a history of 0 or 1 samples: no reversal, no cycle (as the `rainflow`
+/// package returns nothing), the arguments checked as for a longer one.
+fn no_cycles(
+    n: usize,
+    gate: f64,
+    model: Option<lugre::RateIndependent>,
+    x0: f64,
+) -> Result<lugre::CycleSummary, lugre::HistoryError> {
+    lugre::CycleCounter::new(gate)?;
+    let energy = match model {
+        Some(m) => {
+            lugre::EnergyCycleCounter::new(gate, m, x0)?;
+            let y = m.sigma0() * x0;
+            Some(lugre::HistoryEnergy {
+                y_start: y,
+                y_end: y,
+                work: 0.0,
+                stored_energy_change: 0.0,
+                dissipation: 0.0,
+            })
+        }
+        None => None,
+    };
+    Ok(lugre::CycleSummary {
+        samples: n as u64,
+        reversals: 0,
+        full_cycles: 0,
+        half_cycles: 0,
+        energy,
+    })
 }
 
 /// The result dict of [`cycles`]; the columns become numpy arrays without a copy.
