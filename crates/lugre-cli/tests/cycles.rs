@@ -460,3 +460,20 @@ fn bad_input_is_one_line_and_status_2() {
         "cannot be used with",
     );
 }
+
+/// A lab's tab-separated file with units in its header: the delimiter is found, `Time [s]` is
+/// the time column and `--column position` names `Position [mm]`.
+#[test]
+fn a_tab_separated_lab_file() {
+    let dir = common::TempDir::new("cycles-tab");
+    let text = "Time [s]\tNormal [uN]\tPosition [mm]\n0\t5\t-2\n1\t5\t1\n2\t5\t-3\n3\t5\t5\n4\t5\t-1\n5\t5\t3\n6\t5\t-4\n7\t5\t4\n8\t5\t-2\n";
+    let path = dir.file("lab.tsv", text);
+    let j = json(&["cycles", "--input", &path, "--column", "Position", "--json"]);
+    let want = json(&["cycles", "--values=-2,1,-3,5,-1,3,-4,4,-2", "--json"]);
+    assert_eq!(j["cycles"], want["cycles"]);
+    let e = rejects(
+        &["cycles", "--input", &path, "--column", "Friction"],
+        "no column 'Friction'",
+    );
+    assert!(e.contains("fields separated by tabs"), "{e}");
+}

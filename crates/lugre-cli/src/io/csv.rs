@@ -1,6 +1,9 @@
 //! Reading sampled data from CSV: the value columns a command wants (`u`, or `u,F` for
-//! `lugre fit`), each row optionally led by a time `t`. A header is optional; it names the
-//! columns in any order (case-insensitive). A UTF-8 byte-order mark, `#` comments, blank lines,
+//! `lugre fit`), each row optionally led by a time `t`. Fields are separated by tabs,
+//! semicolons, commas or runs of spaces, whichever the first line that is not a comment uses
+//! ([`Delimiter`]). A header is optional; it names the columns in any order (case-insensitive,
+//! a unit suffix in brackets or parentheses ignored: `Time [s]`), by their letters or their
+//! usual names (`time`; `x`, `position`, `displacement`; `force`, `friction`). A UTF-8 byte-order mark, `#` comments, blank lines,
 //! CRLF (or CR) line ends and spaces around values are accepted; a line longer than a megabyte
 //! is refused. Every problem is reported with the file's line number.
 //!
@@ -121,7 +124,8 @@ struct Layout {
 
 /// Streams the rows of a CSV file.
 pub struct SampleReader<'c, R: Read> {
-    reader: csv::Reader<LineLimit<SkipBom<R>>>,
+    reader: csv::Reader<Sniffed<LineLimit<SkipBom<R>>>>,
+    delimiter: Delimiter,
     record: csv::ByteRecord,
     columns: Columns<'c>,
     layout: Option<Layout>,
@@ -142,15 +146,18 @@ impl<'c> SampleReader<'c, std::fs::File> {
 impl<'c, R: Read> SampleReader<'c, R> {
     /// A reader of the `columns` of `inner`.
     pub fn new(inner: R, columns: Columns<'c>) -> Self {
+        let (sniffed, delimiter) = Sniffed::new(LineLimit::new(SkipBom::new(inner)));
         let reader = csv::ReaderBuilder::new()
             .has_headers(false)
             .flexible(true)
             .comment(Some(b'#'))
             .trim(csv::Trim::All)
+            .delimiter(delimiter.byte())
             .buffer_capacity(1 << 16)
-            .from_reader(LineLimit::new(SkipBom::new(inner)));
+            .from_reader(sniffed);
         Self {
             reader,
+            delimiter,
             record: csv::ByteRecord::new(),
             columns,
             layout: None,
@@ -195,7 +202,9 @@ impl<'c, R: Read> SampleReader<'c, R> {
             }
             if self.layout.is_none() {
                 let fields = utf8_fields(&self.record, line)?;
-                let (first, is_header) = layout(&fields, self.columns, line)?;
+                let (first, is_header) = layout(&fields, self.columns, line).map_err(|e| {
+                    anyhow::anyhow!("{e} (fields separated by {})", self.delimiter.describe())
+                })?;
                 self.layout = Some(first);
                 if is_header {
                     continue;
@@ -208,9 +217,10 @@ impl<'c, R: Read> SampleReader<'c, R> {
                 let w = layout.width;
                 let values = if w == 1 { "value" } else { "values" };
                 bail!(
-                    "line {line}: expected {w} {values} ({}), found {}",
+                    "line {line}: expected {w} {values} ({}), found {} (fields separated by {})",
                     layout.header,
-                    self.record.len()
+                    self.record.len(),
+                    self.delimiter.describe()
                 );
             }
             let t = match layout.t {
@@ -297,29 +307,54 @@ fn layout_without_header(n: usize, columns: Columns, line: u64) -> Result<Layout
     })
 }
 
+/// A header field as a name: lower case, without a unit suffix in brackets or parentheses
+/// (`Time [s]` and `time(s)` are `time`).
+fn bare_name(field: &str) -> String {
+    let mut name = field.trim();
+    if let Some(stripped) = name.strip_suffix(']').or_else(|| name.strip_suffix(')')) {
+        let open = if name.ends_with(']') { '[' } else { '(' };
+        if let Some(k) = stripped.rfind(open) {
+            name = stripped[..k].trim_end();
+        }
+    }
+    name.to_lowercase()
+}
+
+/// The role a header name plays: the canonical column (`t`, `u`, `f`) for its usual names, or
+/// the name itself.
+fn role(field: &str) -> String {
+    let name = bare_name(field);
+    let canonical = match name.as_str() {
+        "t" | "time" => "t",
+        "u" | "x" | "position" | "displacement" => "u",
+        "f" | "force" | "friction" => "f",
+        other => other,
+    };
+    canonical.to_string()
+}
+
 /// The layout of the column `name` in the header `fields` (and of `t`, if there is one).
 fn named_column(fields: &[&str], name: &str, line: u64) -> Result<Layout> {
-    let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
+    let names: Vec<String> = fields.iter().map(|f| bare_name(f)).collect();
     let header = fields.join(",");
-    let find = |n: &str| names.iter().position(|x| x.eq_ignore_ascii_case(n));
-    let Some(u) = find(name) else {
+    let wanted = bare_name(name);
+    let find = |n: &str| names.iter().position(|x| *x == n);
+    let Some(u) = find(&wanted) else {
         bail!(
             "line {line}: no column '{name}' in the header {}",
             quoted(&header)
         );
     };
-    if names
-        .iter()
-        .filter(|x| x.eq_ignore_ascii_case(name))
-        .count()
-        > 1
-    {
+    if names.iter().filter(|x| **x == wanted).count() > 1 {
         bail!(
             "line {line}: the header {} names '{name}' more than once",
             quoted(&header)
         );
     }
-    let t = find("t").filter(|&k| k != u);
+    let t = fields
+        .iter()
+        .position(|f| role(f) == "t")
+        .filter(|&k| k != u);
     Ok(Layout {
         width: fields.len(),
         t,
@@ -333,7 +368,7 @@ fn named_column(fields: &[&str], name: &str, line: u64) -> Result<Layout> {
 fn header_layout(fields: &[&str], columns: Columns, line: u64) -> Result<Layout> {
     let wanted = columns.names();
     let listed = wanted.join(",");
-    let names: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
+    let names: Vec<String> = fields.iter().map(|f| role(f)).collect();
     let find = |n: &str| names.iter().position(|x| x.eq_ignore_ascii_case(n));
     let t = find("t");
     let values: Option<Vec<(usize, String)>> = wanted
@@ -423,6 +458,155 @@ impl<R: Read> Read for LineLimit<R> {
     }
 }
 
+/// How the fields of a line are separated, from the first data line (or header) of a file:
+/// tabs if it has a tab, else semicolons if it has one, else commas if it has one, else runs
+/// of spaces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Delimiter {
+    Comma,
+    Semicolon,
+    Tab,
+    Spaces,
+}
+
+impl Delimiter {
+    /// The byte the CSV reader splits on (runs of spaces are rewritten to commas first).
+    fn byte(self) -> u8 {
+        match self {
+            Delimiter::Comma | Delimiter::Spaces => b',',
+            Delimiter::Semicolon => b';',
+            Delimiter::Tab => b'\t',
+        }
+    }
+
+    fn describe(self) -> &'static str {
+        match self {
+            Delimiter::Comma => "commas",
+            Delimiter::Semicolon => "semicolons",
+            Delimiter::Tab => "tabs",
+            Delimiter::Spaces => "spaces",
+        }
+    }
+
+    /// From the first line that is neither blank nor a comment.
+    fn of(head: &[u8]) -> Self {
+        let line = head
+            .split(|&b| b == b'\n' || b == b'\r')
+            .map(|l| l.trim_ascii())
+            .find(|l| !l.is_empty() && !l.starts_with(b"#"))
+            .unwrap_or_default();
+        if line.contains(&b'\t') {
+            Delimiter::Tab
+        } else if line.contains(&b';') {
+            Delimiter::Semicolon
+        } else if line.contains(&b',') || !line.contains(&b' ') {
+            Delimiter::Comma
+        } else {
+            Delimiter::Spaces
+        }
+    }
+}
+
+/// How much of a file is read ahead to find its delimiter.
+const SNIFF: usize = 1 << 16;
+
+/// A stream whose head has been read to find the delimiter; with [`Delimiter::Spaces`], each
+/// run of blanks inside a line becomes one comma and blanks at the ends of lines are dropped.
+struct Sniffed<R> {
+    inner: R,
+    head: Vec<u8>,
+    pos: usize,
+    /// An error met while reading the head, handed out on the first read.
+    error: Option<std::io::Error>,
+    spaces: bool,
+    /// In spaces mode: at the start of a line, and whether a run of blanks awaits its comma.
+    line_start: bool,
+    pending: bool,
+}
+
+impl<R: Read> Sniffed<R> {
+    fn new(mut inner: R) -> (Self, Delimiter) {
+        let mut head = vec![0; SNIFF];
+        let mut len = 0;
+        let mut error = None;
+        while len < SNIFF {
+            match inner.read(&mut head[len..]) {
+                Ok(0) => break,
+                Ok(n) => len += n,
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(e) => {
+                    error = Some(e);
+                    break;
+                }
+            }
+        }
+        head.truncate(len);
+        let delimiter = Delimiter::of(&head);
+        let sniffed = Self {
+            inner,
+            head,
+            pos: 0,
+            error,
+            spaces: delimiter == Delimiter::Spaces,
+            line_start: true,
+            pending: false,
+        };
+        (sniffed, delimiter)
+    }
+
+    /// Rewrites `buf[..n]` in place (never longer: one comma stands for a run of blanks).
+    fn collapse(&mut self, buf: &mut [u8], n: usize) -> usize {
+        let mut out = 0;
+        for k in 0..n {
+            let b = buf[k];
+            match b {
+                b'\n' | b'\r' => {
+                    (self.line_start, self.pending) = (true, false);
+                    buf[out] = b;
+                    out += 1;
+                }
+                b' ' | b'\t' => self.pending |= !self.line_start,
+                _ => {
+                    if self.pending {
+                        buf[out] = b',';
+                        out += 1;
+                        self.pending = false;
+                    }
+                    self.line_start = false;
+                    buf[out] = b;
+                    out += 1;
+                }
+            }
+        }
+        out
+    }
+}
+
+impl<R: Read> Read for Sniffed<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        loop {
+            let n = if self.pos < self.head.len() {
+                let n = (self.head.len() - self.pos).min(buf.len());
+                buf[..n].copy_from_slice(&self.head[self.pos..self.pos + n]);
+                self.pos += n;
+                n
+            } else if let Some(e) = self.error.take() {
+                return Err(e);
+            } else {
+                self.inner.read(buf)?
+            };
+            if !self.spaces || n == 0 {
+                return Ok(n);
+            }
+            let kept = self.collapse(buf, n);
+            // A chunk of blanks only yields nothing: read on rather than signal the end.
+            if kept > 0 {
+                return Ok(kept);
+            }
+        }
+    }
+}
+
 /// Drops a UTF-8 byte-order mark at the start of a stream.
 struct SkipBom<R> {
     inner: R,
@@ -500,6 +684,47 @@ mod tests {
 
     fn parse_series(bytes: &[u8]) -> Result<Series> {
         collect(SampleReader::new(bytes, Columns::Series)).map(Series::from)
+    }
+
+    /// Lab files: tabs, semicolons or runs of spaces between fields, headers with units and
+    /// the usual names.
+    #[test]
+    fn finds_the_delimiter_and_reads_headers_with_units() {
+        let tab = b"Time [s]\tPosition [mm]\tFriction [uN]\n0\t1.5\t-2\n0.5\t2.5\t-3\n";
+        let t = parse_record(tab).unwrap();
+        assert_eq!(t.t.unwrap(), vec![0.0, 0.5]);
+        assert_eq!(t.columns, vec![vec![1.5, 2.5], vec![-2.0, -3.0]]);
+        let semi = b"# a comment; with a semicolon\ntime(s);x;force\n0;1;2\n1;3;4\n";
+        assert_eq!(parse_record(semi).unwrap().columns[1], vec![2.0, 4.0]);
+        let spaces = b"  t   u    F\n 0  1   2  \n\n1 3 4\n";
+        let t = parse_record(spaces).unwrap();
+        assert_eq!(
+            (t.t.unwrap(), t.columns),
+            (vec![0.0, 1.0], vec![vec![1.0, 3.0], vec![2.0, 4.0]])
+        );
+        // Numbers only, space-separated: t,u.
+        let s = parse_series(b"0 1\n1 2\n").unwrap();
+        assert_eq!((s.t.unwrap(), s.u), (vec![0.0, 1.0], vec![1.0, 2.0]));
+        // A named column matches its unit-suffixed header.
+        let mut r = SampleReader::new(
+            &b"Time [s]\tPosition [mm]\n0\t5\n"[..],
+            Columns::Named("position"),
+        );
+        assert_eq!(
+            r.next_sample().unwrap().unwrap(),
+            Sample {
+                t: Some(0.0),
+                u: 5.0
+            }
+        );
+        // Messages say how the fields were split.
+        let e = parse_record(b"t\tu\tF\n0\t1\n").unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "line 2: expected 3 values (t,u,F), found 2 (fields separated by tabs)"
+        );
+        let e = parse_record(b"Time;Value\n0;1\n").unwrap_err().to_string();
+        assert!(e.ends_with("(fields separated by semicolons)"), "{e}");
     }
 
     #[test]
