@@ -18,6 +18,78 @@ pub(crate) enum ModelKind {
 }
 
 /// Model flags shared by every command. Defaults: the paper's Examples 2-3.
+/// `--columns` and `--scale`: which column of a data file holds what, and the factors that
+/// bring its values to SI units and lugre's sign convention.
+#[derive(Args, Debug, Clone, Default)]
+pub(crate) struct DataArgs {
+    /// Which column holds what, by header name (units in brackets ignored, any case) or
+    /// 1-based number: t=Time,u=Position,F=Friction or t=1,u=3,F=4 (other columns ignored).
+    #[arg(long, value_name = "ROLE=COLUMN,...", help_heading = "Data file")]
+    pub(crate) columns: Option<String>,
+    /// Factors applied to the columns as read (any factor, sign included), e.g. u=1e-3,F=-1e-6:
+    /// a file in mm and uN with the opposite sign convention, read in m and N.
+    #[arg(
+        long,
+        value_name = "ROLE=FACTOR,...",
+        allow_hyphen_values = true,
+        help_heading = "Data file"
+    )]
+    pub(crate) scale: Option<String>,
+}
+
+impl DataArgs {
+    /// The reader's options; `roles` are the columns the command reads (`t` always allowed).
+    pub(crate) fn options(&self, roles: &[&str]) -> anyhow::Result<crate::io::csv::ReadOptions> {
+        use crate::io::csv::{ReadOptions, Selector};
+        let known = |flag: &str, role: &str| -> anyhow::Result<String> {
+            if role == "t" || roles.iter().any(|r| r.eq_ignore_ascii_case(role)) {
+                Ok(role.to_ascii_lowercase())
+            } else {
+                anyhow::bail!(
+                    "{flag}: unknown column role '{role}' (this command reads t, {})",
+                    roles.join(", ")
+                )
+            }
+        };
+        let pairs =
+            |flag: &'static str, text: &Option<String>| -> anyhow::Result<Vec<(String, String)>> {
+                let Some(text) = text else {
+                    return Ok(Vec::new());
+                };
+                text.split(',')
+                    .map(|item| {
+                        let Some((role, value)) = item.split_once('=') else {
+                            anyhow::bail!("{flag}: '{item}' is not ROLE=VALUE");
+                        };
+                        Ok((known(flag, role.trim())?, value.trim().to_string()))
+                    })
+                    .collect()
+            };
+        let select = pairs("--columns", &self.columns)?
+            .into_iter()
+            .map(|(role, v)| match v.parse::<usize>() {
+                Ok(i) => (role, Selector::Index(i)),
+                Err(_) => (role, Selector::Name(v)),
+            })
+            .collect();
+        let scale = pairs("--scale", &self.scale)?
+            .into_iter()
+            .map(|(role, v)| {
+                let factor: f64 = v
+                    .parse()
+                    .map_err(|_| anyhow::anyhow!("--scale {role}={v}: not a number"))?;
+                if !factor.is_finite() || factor == 0.0 {
+                    anyhow::bail!(
+                        "--scale {role}={v}: a factor must be a finite number other than 0"
+                    );
+                }
+                Ok((role, factor))
+            })
+            .collect::<anyhow::Result<_>>()?;
+        Ok(ReadOptions { select, scale })
+    }
+}
+
 #[derive(Args, Debug, Clone)]
 pub(crate) struct ModelArgs {
     /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).

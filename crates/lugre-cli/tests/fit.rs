@@ -404,3 +404,84 @@ fn bad_input_is_one_line_and_status_2() {
         "--sigma0 is a LuGre parameter",
     );
 }
+
+/// A lab's file as it comes: tab-separated, units in the header (mm, uN), an extra column and
+/// the opposite sign convention. One command fits it: `--columns` names the columns, `--scale`
+/// brings them to m and N with the sign flipped; the result is the fit of the SI file.
+#[test]
+fn a_lab_file_in_mm_and_micronewtons_with_the_opposite_sign() {
+    let dir = scratch("lab");
+    let model = LuGre::from_params(LuGreParams::canudas_de_wit_1995()).unwrap();
+    let si = slow_file(&dir, &model, &[-2e-5, 2e-5]);
+    let text = std::fs::read_to_string(&si).unwrap();
+    let mut lab = String::from("Time [s]\tNormal [uN]\tPosition [mm]\tFriction [uN]\n");
+    for (i, line) in text.lines().skip(1).enumerate() {
+        let (u, f) = line.split_once(',').unwrap();
+        let (u, f): (f64, f64) = (u.parse().unwrap(), f.parse().unwrap());
+        lab.push_str(&format!(
+            "{}\t5e6\t{:?}\t{:?}\n",
+            i as f64 * 1e-3,
+            u * 1e3,
+            -f * 1e6
+        ));
+    }
+    let path = dir.join("lab.tsv");
+    std::fs::write(&path, lab).unwrap();
+    let path = path.to_str().unwrap();
+    let si = si.to_str().unwrap();
+    let got = json(&[
+        "fit",
+        "--input",
+        path,
+        "--columns",
+        "t=Time,u=Position,F=Friction",
+        "--scale",
+        "u=1e-3,F=-1e-6",
+        "--json",
+    ]);
+    let want = json(&["fit", "--input", si, "--json"]);
+    for p in ["sigma0", "fs"] {
+        let (a, b) = (
+            got["parameters"][p]["value"].as_f64().unwrap(),
+            want["parameters"][p]["value"].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() <= 1e-9 * b.abs(), "{p}: {a} vs {b}");
+    }
+    // Columns by number, and the mistakes a user makes, each one line.
+    let by_number = json(&[
+        "fit",
+        "--input",
+        path,
+        "--columns",
+        "t=1,u=3,F=4",
+        "--scale",
+        "u=1e-3,F=-1e-6",
+        "--json",
+    ]);
+    assert_eq!(by_number["parameters"], got["parameters"]);
+    rejects(
+        &["fit", "--input", path, "--columns", "u=Positon,F=Friction"],
+        "--columns u=Positon: no such column in the header",
+    );
+    let e = rejects(
+        &["fit", "--input", path, "--columns", "u=Positon,F=Friction"],
+        "did you mean 'Position [mm]'?",
+    );
+    assert!(e.contains("Time [s]"), "{e}");
+    for (flag, value, message) in [
+        (
+            "--scale",
+            "u=0",
+            "--scale u=0: a factor must be a finite number other than 0",
+        ),
+        ("--scale", "w=2", "--scale: unknown column role 'w'"),
+        (
+            "--columns",
+            "u=9,F=4",
+            "--columns u=9: the file has 4 columns",
+        ),
+    ] {
+        rejects(&["fit", "--input", path, flag, value], message);
+    }
+    rejects(&["fit", "--input", path], "unexpected header");
+}

@@ -47,6 +47,37 @@ pub enum Columns<'a> {
     Named(&'a str),
 }
 
+/// Where a role's column is: by its header name (units ignored) or its 1-based position.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Selector {
+    Name(String),
+    Index(usize),
+}
+
+/// What `--columns` and `--scale` say: the column of each role (`t`, `u`, `f`, ...), and a
+/// factor for the values of each role as read (unit and sign conversions).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct ReadOptions {
+    pub(crate) select: Vec<(String, Selector)>,
+    pub(crate) scale: Vec<(String, f64)>,
+}
+
+impl ReadOptions {
+    fn selector(&self, role: &str) -> Option<&Selector> {
+        self.select
+            .iter()
+            .find(|(r, _)| r.eq_ignore_ascii_case(role))
+            .map(|(_, s)| s)
+    }
+
+    fn factor(&self, role: &str) -> f64 {
+        self.scale
+            .iter()
+            .find(|(r, _)| r.eq_ignore_ascii_case(role))
+            .map_or(1.0, |(_, f)| *f)
+    }
+}
+
 impl Columns<'_> {
     /// The value columns' names (without a header, or in the order they are returned).
     fn names(self) -> &'static [&'static str] {
@@ -73,7 +104,17 @@ pub(crate) fn read_series(path: &Path) -> Result<Series> {
 
 /// Reads every row of `path` (at least one).
 pub(crate) fn read_table(path: &Path, columns: Columns) -> Result<Table> {
-    collect(SampleReader::open(path, columns)?).with_context(|| path.display().to_string())
+    read_table_with(path, columns, ReadOptions::default())
+}
+
+/// [`read_table`] with `--columns` and `--scale`.
+pub(crate) fn read_table_with(
+    path: &Path,
+    columns: Columns,
+    options: ReadOptions,
+) -> Result<Table> {
+    collect(SampleReader::open(path, columns)?.with_options(options))
+        .with_context(|| path.display().to_string())
 }
 
 fn collect<R: Read>(mut reader: SampleReader<'_, R>) -> Result<Table> {
@@ -126,6 +167,9 @@ struct Layout {
 pub struct SampleReader<'c, R: Read> {
     reader: csv::Reader<Sniffed<LineLimit<SkipBom<R>>>>,
     delimiter: Delimiter,
+    options: ReadOptions,
+    /// The factor of `t` and of each value column (from `--scale`).
+    factors: (f64, Vec<f64>),
     record: csv::ByteRecord,
     columns: Columns<'c>,
     layout: Option<Layout>,
@@ -158,6 +202,8 @@ impl<'c, R: Read> SampleReader<'c, R> {
         Self {
             reader,
             delimiter,
+            options: ReadOptions::default(),
+            factors: (1.0, Vec::new()),
             record: csv::ByteRecord::new(),
             columns,
             layout: None,
@@ -165,6 +211,12 @@ impl<'c, R: Read> SampleReader<'c, R> {
             prev_t: None,
             line: 0,
         }
+    }
+
+    /// The columns chosen by `--columns` and the factors of `--scale`.
+    pub(crate) fn with_options(mut self, options: ReadOptions) -> Self {
+        self.options = options;
+        self
     }
 
     /// Whether the rows have times (known once the first row is read).
@@ -202,9 +254,15 @@ impl<'c, R: Read> SampleReader<'c, R> {
             }
             if self.layout.is_none() {
                 let fields = utf8_fields(&self.record, line)?;
-                let (first, is_header) = layout(&fields, self.columns, line).map_err(|e| {
-                    anyhow::anyhow!("{e} (fields separated by {})", self.delimiter.describe())
-                })?;
+                let (first, is_header) = layout(&fields, self.columns, &self.options, line)
+                    .map_err(|e| {
+                        anyhow::anyhow!("{e} (fields separated by {})", self.delimiter.describe())
+                    })?;
+                let factor_of = |name: &str| self.options.factor(&role(name));
+                self.factors = (
+                    self.options.factor("t"),
+                    first.values.iter().map(|(_, n)| factor_of(n)).collect(),
+                );
                 self.layout = Some(first);
                 if is_header {
                     continue;
@@ -225,7 +283,7 @@ impl<'c, R: Read> SampleReader<'c, R> {
             }
             let t = match layout.t {
                 Some(k) => {
-                    let t = number(&self.record[k], "t", line)?;
+                    let t = number(&self.record[k], "t", line)? * self.factors.0;
                     if let Some(prev) = self.prev_t {
                         if t <= prev {
                             bail!(
@@ -241,8 +299,9 @@ impl<'c, R: Read> SampleReader<'c, R> {
                 None => None,
             };
             self.values.clear();
-            for (k, name) in &layout.values {
-                self.values.push(number(&self.record[*k], name, line)?);
+            for ((k, name), factor) in layout.values.iter().zip(&self.factors.1) {
+                self.values
+                    .push(number(&self.record[*k], name, line)? * factor);
             }
             return Ok(Some(Row {
                 t,
@@ -261,8 +320,20 @@ fn utf8_fields(record: &csv::ByteRecord, line: u64) -> Result<Vec<&str>> {
 }
 
 /// The layout from the first row (a header, or numbers), and whether that row is a header.
-fn layout(fields: &[&str], columns: Columns, line: u64) -> Result<(Layout, bool)> {
-    if fields.iter().all(|f| f.parse::<f64>().is_ok()) {
+fn layout(
+    fields: &[&str],
+    columns: Columns,
+    options: &ReadOptions,
+    line: u64,
+) -> Result<(Layout, bool)> {
+    let is_header = !fields.iter().all(|f| f.parse::<f64>().is_ok());
+    if !options.select.is_empty() {
+        return Ok((
+            selected_layout(fields, columns, options, is_header, line)?,
+            is_header,
+        ));
+    }
+    if !is_header {
         return Ok((layout_without_header(fields.len(), columns, line)?, false));
     }
     let layout = match columns {
@@ -270,6 +341,114 @@ fn layout(fields: &[&str], columns: Columns, line: u64) -> Result<(Layout, bool)
         _ => header_layout(fields, columns, line)?,
     };
     Ok((layout, true))
+}
+
+/// The layout `--columns` gives: each role at its named or numbered column (the roles it does
+/// not name where the header, or the order without one, puts them); other columns ignored.
+fn selected_layout(
+    fields: &[&str],
+    columns: Columns,
+    options: &ReadOptions,
+    is_header: bool,
+    line: u64,
+) -> Result<Layout> {
+    let header = fields.join(",");
+    let bare: Vec<String> = fields.iter().map(|f| bare_name(f)).collect();
+    let locate = |role_name: &str, required: bool| -> Result<Option<usize>> {
+        match options.selector(role_name) {
+            Some(Selector::Index(i)) => {
+                if *i == 0 || *i > fields.len() {
+                    bail!(
+                        "line {line}: --columns {role_name}={i}: the file has {} columns (numbered from 1)",
+                        fields.len()
+                    );
+                }
+                Ok(Some(i - 1))
+            }
+            Some(Selector::Name(name)) => {
+                if !is_header {
+                    bail!("line {line}: --columns {role_name}={name}: the file has no header line (number the columns instead, from 1)");
+                }
+                let wanted = bare_name(name);
+                match bare.iter().position(|b| *b == wanted) {
+                    Some(k) => Ok(Some(k)),
+                    None => bail!(
+                        "line {line}: --columns {role_name}={name}: no such column in the header {}{}",
+                        quoted(&header),
+                        closest(name, fields)
+                            .map(|c| format!(" (did you mean '{c}'?)"))
+                            .unwrap_or_default()
+                    ),
+                }
+            }
+            None if is_header => {
+                let k = fields.iter().position(|f| {
+                    role(f).eq_ignore_ascii_case(role_name) || bare_name(f) == bare_name(role_name)
+                });
+                match (k, required) {
+                    (None, true) => bail!(
+                        "line {line}: no column for {role_name} in the header {}: name it with --columns {role_name}=NAME",
+                        quoted(&header)
+                    ),
+                    (k, _) => Ok(k),
+                }
+            }
+            None if required => bail!(
+                "line {line}: the file has no header line: give every column's number with --columns"
+            ),
+            None => Ok(None),
+        }
+    };
+    let t = locate("t", false)?;
+    let roles: Vec<&str> = match columns {
+        Columns::Named(name) => vec![name],
+        _ => columns.names().to_vec(),
+    };
+    let mut values = Vec::new();
+    for name in &roles {
+        let k = locate(name, true)?.unwrap_or_default();
+        values.push((k, name.to_string()));
+    }
+    let mut listed: Vec<&str> = t.map(|_| "t").into_iter().collect();
+    listed.extend(&roles);
+    Ok(Layout {
+        width: fields.len(),
+        t,
+        values,
+        header: if is_header {
+            excerpt(&header)
+        } else {
+            listed.join(",")
+        },
+    })
+}
+
+/// The header field closest to `name` (by edit distance on the bare names), if any is close.
+fn closest<'a>(name: &str, fields: &[&'a str]) -> Option<&'a str> {
+    let wanted = bare_name(name);
+    fields
+        .iter()
+        .map(|f| (edit_distance(&wanted, &bare_name(f)), *f))
+        .filter(|(d, f)| *d <= (bare_name(f).len().max(wanted.len()) / 2).max(1))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, f)| f)
+}
+
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (prev + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            prev = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
 }
 
 /// The layout of a file whose first row is numbers (`n` of them): the values in order, after

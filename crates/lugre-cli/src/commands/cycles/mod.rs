@@ -63,6 +63,8 @@ pub(crate) struct CyclesArgs {
     /// columns are ignored.
     #[arg(long, value_name = "NAME", requires = "input", help_heading = "Input")]
     pub(crate) column: Option<String>,
+    #[command(flatten)]
+    pub(crate) data: crate::args::DataArgs,
     /// The history on the command line, e.g. -2,1,-3,5,-1,3,-4,4,-2.
     #[arg(
         long,
@@ -276,7 +278,11 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
     }
     let column = args.column.as_deref().unwrap_or("u");
     let source = match (&args.input, &args.values) {
-        (Some(path), None) => Source::File { path, column },
+        (Some(path), None) => Source::File {
+            path,
+            column,
+            options: args.data.options(&["u", column])?,
+        },
         (None, Some(text)) => {
             let u = parse_list("--values", text)?;
             // Finite already (parse_list checks).

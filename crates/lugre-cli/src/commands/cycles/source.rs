@@ -14,7 +14,12 @@ const BLOCK: usize = 4096;
 
 /// Where the samples come from.
 pub(super) enum Source<'a> {
-    File { path: &'a Path, column: &'a str },
+    File {
+        path: &'a Path,
+        column: &'a str,
+        /// `--columns` and `--scale`.
+        options: crate::io::csv::ReadOptions,
+    },
     Values(Vec<f64>),
 }
 
@@ -30,7 +35,7 @@ impl Source<'_> {
     /// How the table names the input.
     pub(super) fn describe(&self) -> String {
         match self {
-            Source::File { path, column } => format!("{} (column {column})", path.display()),
+            Source::File { path, column, .. } => format!("{} (column {column})", path.display()),
             Source::Values(_) => "--values".into(),
         }
     }
@@ -39,9 +44,14 @@ impl Source<'_> {
     pub(super) fn each_block(&self, mut f: impl FnMut(&[f64]) -> Result<()>) -> Result<()> {
         match self {
             Source::Values(v) => v.chunks(BLOCK).try_for_each(f),
-            Source::File { path, column } => {
+            Source::File {
+                path,
+                column,
+                options,
+            } => {
                 let name = || path.display().to_string();
-                let mut reader = SampleReader::open(path, Columns::Named(column))?;
+                let mut reader =
+                    SampleReader::open(path, Columns::Named(column))?.with_options(options.clone());
                 let mut block = Vec::with_capacity(BLOCK);
                 while let Some(s) = reader.next_sample().with_context(name)? {
                     // Finite already (the reader checks).

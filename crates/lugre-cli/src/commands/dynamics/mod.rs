@@ -14,7 +14,7 @@ use std::io::Write;
 use crate::args::{ModelArgs, OutputArgs, PlotArgs, Preset};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::{read_table, Columns, NumberRows};
+use crate::io::csv::{Columns, NumberRows};
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
@@ -96,6 +96,8 @@ pub(crate) struct DynamicsArgs {
     /// ends at its last time unless --t-end is given.
     #[arg(long, value_name = "FILE.csv", help_heading = "Drive")]
     pub(crate) input: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub(crate) data: crate::args::DataArgs,
     /// PID gains KP,KI,KV on position: u = -KV v - KP (x - xd) - KI integral(x - xd).
     #[arg(
         long,
@@ -228,7 +230,8 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
         if args.force_profile.is_some() {
             bail!("give --force-profile or --input, not both");
         }
-        let table = read_table(path, Columns::Named("F"))?;
+        let options = args.data.options(&["F"])?;
+        let table = crate::io::csv::read_table_with(path, Columns::Named("F"), options)?;
         let Some(t) = table.t else {
             bail!(
                 "{}: needs a column t (the times of the force F)",

@@ -26,7 +26,7 @@ use std::time::{Duration, Instant};
 use crate::args::{ModelArgs, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::{read_table, Columns};
+use crate::io::csv::Columns;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
@@ -66,6 +66,8 @@ pub(crate) struct FitArgs {
     /// one; '#' comments allowed). Times, when given, must be strictly increasing.
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
     pub(crate) input: Option<PathBuf>,
+    #[command(flatten)]
+    pub(crate) data: crate::args::DataArgs,
     /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
@@ -163,7 +165,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
-    let record = read_record(path)?;
+    let record = read_record(path, args.data.options(&["u", "F"])?)?;
     let full = match kind {
         FitKind::Slow => None,
         FitKind::Full => {
@@ -261,8 +263,8 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
 }
 
 /// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order).
-fn read_record(path: &Path) -> Result<Record> {
-    let table = read_table(path, Columns::Record)?;
+fn read_record(path: &Path, options: crate::io::csv::ReadOptions) -> Result<Record> {
+    let table = crate::io::csv::read_table_with(path, Columns::Record, options)?;
     let mut columns = table.columns.into_iter();
     Ok(Record {
         t: table.t,

@@ -43,7 +43,9 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
         return Ok((Drive::Sine(sine), text));
     }
     if let Some(path) = &args.input.input {
-        let series = crate::io::csv::read_series(path)?;
+        let options = args.data.options(&["u"])?;
+        let series: crate::io::csv::Series =
+            crate::io::csv::read_table_with(path, crate::io::csv::Columns::Series, options)?.into();
         let Some(t) = series.t else {
             bail!(
                 "{}: simulate needs the samples' times: a header 't,u' and two columns (a single column 'u' has no time)",

@@ -51,6 +51,8 @@ pub(crate) struct SimulateArgs {
     pub(crate) model: ModelArgs,
     #[command(flatten)]
     pub(crate) input: PeriodicInputArgs,
+    #[command(flatten)]
+    pub(crate) data: crate::args::DataArgs,
     /// A sine u(t) = A sin(2 pi t / T + PHASE) + OFFSET, A > 0, T > 0, PHASE in radians
     /// (PHASE and OFFSET default to 0).
     #[arg(
