@@ -175,6 +175,8 @@ pub enum FitError {
     BadX0 { value: f64 },
     #[error("{} cannot be identified from this data: {}", names_of(.parameters), reasons(.parameters))]
     Unidentifiable { parameters: Vec<Unidentified> },
+    #[error("the model could not be evaluated at any of the {starts} starts (every start value gave a non-finite response): give start values for the parameters")]
+    NoStart { starts: usize },
     #[error("the fit did not converge ({reason}); best point found: {} (residual RMS {rms})", list(.best), rms = num(*.rms))]
     NotConverged {
         reason: String,
@@ -337,10 +339,21 @@ fn names_of(p: &[Unidentified]) -> String {
 
 fn reasons(p: &[Unidentified]) -> String {
     p.iter()
-        .map(|u| format!("{} = {:.4e} {}", u.name, u.value, why(&u.why)))
+        .map(|u| {
+            // A positive parameter the fit drove to its bound 0 (to a few hundred binades
+            // below any scale of the problem): say so, rather than print a denormal.
+            if matches!(u.why, Why::NoEffect { .. }) && u.value.abs() < AT_ZERO {
+                format!("{} is at its bound 0 (fix it at 0)", u.name)
+            } else {
+                format!("{} = {:.4e} {}", u.name, u.value, why(&u.why))
+            }
+        })
         .collect::<Vec<_>>()
         .join("; ")
 }
+
+/// Below this a fitted parameter is at its bound 0.
+const AT_ZERO: f64 = 1e-100;
 
 /// Why a parameter is not identified, in words: every number in it is finite (an exactly
 /// singular problem has an infinite condition number, which is said rather than printed).
@@ -476,5 +489,27 @@ mod tests {
             ),
             "{e}"
         );
+    }
+
+    /// A parameter driven to its bound is said to be there, not printed as a denormal; a fit
+    /// with no start to stand on says so without an infinite residual.
+    #[test]
+    fn a_bound_and_a_fit_without_a_start_in_words() {
+        let e = FitError::Unidentifiable {
+            parameters: vec![Unidentified {
+                name: "sigma2",
+                value: 3.0e-314,
+                why: Why::NoEffect {
+                    sensitivity: 1.7e-315,
+                },
+            }],
+        }
+        .to_string();
+        assert_eq!(
+            e,
+            "sigma2 cannot be identified from this data: sigma2 is at its bound 0 (fix it at 0)"
+        );
+        let e = FitError::NoStart { starts: 4 }.to_string();
+        assert!(finite_words(&e) && e.contains("any of the 4 starts"), "{e}");
     }
 }

@@ -441,11 +441,7 @@ pub fn fit_full(
         }
     }
     let Some(mut outcome) = best else {
-        return Err(FitError::NotConverged {
-            reason: "the model could not be evaluated at any start".into(),
-            best: Vec::new(),
-            rms: f64::INFINITY,
-        });
+        return Err(FitError::NoStart { starts });
     };
     outcome.evaluations = evaluations;
     let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;

@@ -89,13 +89,16 @@ pub(super) fn explain(e: FitError) -> anyhow::Error {
         FitError::Unidentifiable { parameters } => {
             let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
             anyhow!(
-                "{e}; fix {} (--fix {} with the values from the model flags) or fit data that excite {}",
+                "{e}; fix {} at values you know (--fix {} with --NAME VALUE for each; the flags' defaults are the paper's dimensionless values, not yours) or fit data that excite {}",
                 if names.len() == 1 { "it" } else { "them" },
                 names.join(","),
                 if names.len() == 1 { "it" } else { "them" }
             )
         }
         FitError::NotInSlowLoop { .. } => anyhow!("{e}"),
+        FitError::NoStart { .. } => anyhow!(
+            "{e} (--NAME VALUE for each, e.g. --vs at the order of the record's velocities), or fewer free parameters (--fix)"
+        ),
         FitError::StartOutsideBounds { name, .. } => {
             anyhow!("{e}: change --{name} or --bounds")
         }
