@@ -86,7 +86,11 @@ impl DataArgs {
                 Ok((role, factor))
             })
             .collect::<anyhow::Result<_>>()?;
-        Ok(ReadOptions { select, scale })
+        Ok(ReadOptions {
+            select,
+            scale,
+            optional: None,
+        })
     }
 }
 

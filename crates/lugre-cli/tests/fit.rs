@@ -485,3 +485,59 @@ fn a_lab_file_in_mm_and_micronewtons_with_the_opposite_sign() {
     }
     rejects(&["fit", "--input", path], "unexpected header");
 }
+
+/// A dense displacement with a sparse force: rows with an empty F (or NaN) drive the model but
+/// carry no residual. Two of every three forces blanked, the full fit still finds the model;
+/// its CSV has empty fields there, never NaN; the slow fit and an F-less file say why not.
+#[test]
+fn input_only_rows_in_a_full_fit() {
+    let dir = scratch("sparse");
+    let model = LuGre::paper();
+    let dense = rate_file(&dir, "dense.csv", &model, 6.0, &[0.3, 1.0, 3.0]);
+    let text = std::fs::read_to_string(&dense).unwrap();
+    let mut sparse = String::from("t,u,F\n");
+    for (i, line) in text.lines().skip(1).enumerate() {
+        let (tu, f) = line.rsplit_once(',').unwrap();
+        let f = match i % 3 {
+            0 => f,
+            1 => "",
+            _ => "NaN",
+        };
+        sparse.push_str(&format!("{tu},{f}\n"));
+    }
+    let path = dir.join("sparse.csv");
+    std::fs::write(&path, &sparse).unwrap();
+    let (path, csv) = (path.to_str().unwrap(), dir.join("out.csv"));
+    let j = json(&[
+        "fit",
+        "--input",
+        path,
+        "--fit",
+        "full",
+        "--fix",
+        "sigma2",
+        "--json",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    let rows = text.lines().count() - 1;
+    assert_eq!(j["samples"].as_u64().unwrap() as usize, rows.div_ceil(3));
+    for (name, want) in [("sigma0", 1.0), ("fc", 1.0), ("fs", 2.0)] {
+        let v = j["parameters"][name]["value"].as_f64().unwrap();
+        assert!((v - want).abs() < 0.05 * want, "{name} = {v}");
+    }
+    let out = std::fs::read_to_string(&csv).unwrap();
+    assert!(!out.to_ascii_lowercase().contains("nan"), "{out}");
+    let second = out.lines().nth(2).unwrap();
+    assert!(second.contains(",,") && second.ends_with(','), "{second}");
+    rejects(
+        &["fit", "--input", path],
+        "row 2 has no force: the slow fit needs one at every row",
+    );
+    let empty = dir.join("empty.csv");
+    std::fs::write(&empty, "t,u,F\n0,0,\n1,1,\n2,0,\n").unwrap();
+    rejects(
+        &["fit", "--input", empty.to_str().unwrap(), "--fit", "full"],
+        "no row has a force",
+    );
+}

@@ -214,6 +214,15 @@ fn slow_fit_with_one_parameter_fixed() {
     assert_eq!(r.fixed, vec![("fs", 2.0)]);
 }
 
+/// The paper's parameters a full fit recovers (sigma2 = 0 and beta = 1 held).
+const PAPER_FULL: [(&str, f64); 5] = [
+    ("sigma0", 1.0),
+    ("sigma1", 1.0),
+    ("fc", 1.0),
+    ("fs", 2.0),
+    ("vs", 1.0),
+];
+
 #[test]
 fn full_fit_recovers_the_papers_parameters() {
     // sigma0 = sigma1 = 1, Fc = 1, Fs = 2, vs = 1; sigma2 = 0 and beta = 1 are fixed (a
@@ -223,17 +232,7 @@ fn full_fit_recovers_the_papers_parameters() {
     let f = noisy(&f, 0.01, 6);
     let spec = FitSpec::new(Family::LuGre).fix("sigma2").unwrap();
     let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
-    check_recovery(
-        &r,
-        &[
-            ("sigma0", 1.0),
-            ("sigma1", 1.0),
-            ("fc", 1.0),
-            ("fs", 2.0),
-            ("vs", 1.0),
-        ],
-        FULL_FIT_RECOVERY,
-    );
+    check_recovery(&r, &PAPER_FULL, FULL_FIT_RECOVERY);
 }
 
 #[test]
@@ -259,6 +258,31 @@ fn full_fit_recovers_canudas_de_wit_1995() {
         ],
         FULL_FIT_RECOVERY,
     );
+}
+
+/// A dense displacement with a sparse force (NaN where none was measured): the input-only rows
+/// drive the simulation, the residual is taken at the measured rows only. Four of every five
+/// forces dropped, the paper's parameters still come back, and the fit is the fit of the
+/// measured rows (samples, fitted curve at every row).
+#[test]
+fn full_fit_with_input_only_rows() {
+    let model = LuGre::paper();
+    let (t, u, f) = rate_record(&model, 6.0, &[0.1, 0.3, 1.0, 3.0, 10.0], 300);
+    let mut f = noisy(&f, 0.01, 6);
+    for (i, v) in f.iter_mut().enumerate() {
+        if i % 5 != 0 {
+            *v = f64::NAN;
+        }
+    }
+    let measured = f.iter().filter(|v| !v.is_nan()).count();
+    let spec = FitSpec::new(Family::LuGre).fix("sigma2").unwrap();
+    let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
+    assert_eq!((r.samples, r.fitted.len()), (measured, u.len()));
+    assert!(r.fitted.iter().all(|y| y.is_finite()));
+    check_recovery(&r, &PAPER_FULL, FULL_FIT_RECOVERY);
+    // An infinite force is still an error (only NaN marks a missing one).
+    f[0] = f64::INFINITY;
+    assert!(fit_full(&spec, &t, &u, &f, FullOptions::default()).is_err());
 }
 
 #[test]

@@ -60,6 +60,9 @@ pub(crate) enum Selector {
 pub(crate) struct ReadOptions {
     pub(crate) select: Vec<(String, Selector)>,
     pub(crate) scale: Vec<(String, f64)>,
+    /// A role whose value may be missing (an empty field or `NaN`): read as NaN (`lugre fit`'s
+    /// input-only rows, where no force was measured).
+    pub(crate) optional: Option<String>,
 }
 
 impl ReadOptions {
@@ -300,8 +303,14 @@ impl<'c, R: Read> SampleReader<'c, R> {
             };
             self.values.clear();
             for ((k, name), factor) in layout.values.iter().zip(&self.factors.1) {
-                self.values
-                    .push(number(&self.record[*k], name, line)? * factor);
+                let field = &self.record[*k];
+                let missing = field.is_empty() || field.eq_ignore_ascii_case(b"nan");
+                let optional = self.options.optional.as_deref() == Some(role(name).as_str());
+                if missing && optional {
+                    self.values.push(f64::NAN);
+                    continue;
+                }
+                self.values.push(number(field, name, line)? * factor);
             }
             return Ok(Some(Row {
                 t,

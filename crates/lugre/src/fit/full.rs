@@ -110,6 +110,58 @@ impl Exact {
     }
 }
 
+/// An evaluator whose outputs are those of `inner` at the measured `rows` only (the rows where
+/// a force was measured; the others still drive the simulation).
+pub(crate) struct Rows<E> {
+    pub(crate) inner: E,
+    rows: Vec<usize>,
+    y: Vec<f64>,
+    jac: DMatrix<f64>,
+    /// All rows measured: `inner` is used as it is.
+    all: bool,
+}
+
+impl<E> Rows<E> {
+    pub(crate) fn new(inner: E, rows: Vec<usize>, n: usize) -> Self {
+        let all = rows.len() == n;
+        Self {
+            inner,
+            rows,
+            y: vec![0.0; n],
+            jac: DMatrix::zeros(0, 0),
+            all,
+        }
+    }
+}
+
+impl Rows<Exact> {
+    /// The same rows with another set of free parameters.
+    pub(crate) fn with_free(&self, free: Vec<usize>) -> Self {
+        Self::new(self.inner.with_free(free), self.rows.clone(), self.y.len())
+    }
+}
+
+impl<E: Evaluator> Evaluator for Rows<E> {
+    fn evaluate(&mut self, values: &[f64], y: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
+        if self.all {
+            return self.inner.evaluate(values, y, jac);
+        }
+        if self.jac.shape() != (self.y.len(), jac.ncols()) {
+            self.jac = DMatrix::zeros(self.y.len(), jac.ncols());
+        }
+        if !self.inner.evaluate(values, &mut self.y, &mut self.jac) {
+            return false;
+        }
+        for (k, &i) in self.rows.iter().enumerate() {
+            y[k] = self.y[i];
+            for c in 0..jac.ncols() {
+                jac[(k, c)] = self.jac[(i, c)];
+            }
+        }
+        true
+    }
+}
+
 impl Evaluator for Exact {
     fn evaluate(&mut self, values: &[f64], y: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
         let p = lugre_params(self.family, values);
@@ -354,7 +406,7 @@ fn positive(x: f64) -> bool {
 /// `sigma1` and `sigma2` (where free and without a given start) by linear least squares given
 /// the other values, on which they enter (X1) linearly; a value that comes out `<= 0` is set
 /// to an effect of 1 % of the force.
-pub(crate) fn solve_linear(ex: &Exact, resolved: &Resolved, values: &mut [f64], f: &[f64]) {
+pub(crate) fn solve_linear(ex: &Rows<Exact>, resolved: &Resolved, values: &mut [f64], f: &[f64]) {
     let solve: Vec<usize> = [1usize, 2]
         .into_iter()
         .filter(|i| {

@@ -148,7 +148,7 @@ impl FitReport {
         self.estimates.iter().find(|e| e.name == name)
     }
 
-    /// `F_i - fitted_i`.
+    /// `F_i - fitted_i` (NaN where no force was measured).
     pub fn residuals(&self, f: &[f64]) -> Vec<f64> {
         f.iter().zip(&self.fitted).map(|(f, y)| f - y).collect()
     }
@@ -374,7 +374,17 @@ pub fn fit_full(
             f(p)
         }
     };
-    check_columns(&[("u", u), ("t", t), ("F", f)])?;
+    check_columns(&[("u", u), ("t", t)])?;
+    // NaN marks a row without a measured force: the input there still drives the model.
+    check_columns(&[
+        ("u", u),
+        (
+            "F",
+            &f.iter()
+                .map(|v| if v.is_nan() { 0.0 } else { *v })
+                .collect::<Vec<_>>(),
+        ),
+    ])?;
     check_increasing(t)?;
     if !x0.is_finite() {
         return Err(FitError::BadX0 { value: x0 });
@@ -382,16 +392,26 @@ pub fn fit_full(
     if starts == 0 {
         return Err(FitError::BadStarts { starts: 0 });
     }
+    let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
+    let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };
+    let (t_m, u_m, f_m) = (pick(t), pick(u), pick(f));
     let mut resolved = spec.resolve(FitKind::Full)?;
-    check_count(u.len(), resolved.free.len())?;
+    check_count(rows.len(), resolved.free.len())?;
     if !full::has_reversal(u) {
         return Err(FitError::NoReversal { fit: "full" });
     }
-    if f.iter().all(|&v| v == 0.0) {
+    if f_m.iter().all(|&v| v == 0.0) {
         return Err(FitError::ZeroForce);
     }
-    let mut ex = full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0);
-    let start = full::data_start(resolved.family, &ex, u, f, &resolved.values);
+    // The starting values from the measured rows alone (their speeds between measured rows).
+    let measured = full::Exact::new(resolved.family, resolved.free.clone(), &t_m, &u_m, x0);
+    let start = full::data_start(resolved.family, &measured, &u_m, &f_m, &resolved.values);
+    let mut ex = full::Rows::new(
+        full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0),
+        rows.clone(),
+        f.len(),
+    );
+    let f = &f_m[..];
     resolved.fill_starts(&start);
     let base = resolved.values.clone();
     // (sigma0 factor, vs factor) per start.
@@ -448,7 +468,10 @@ pub fn fit_full(
     let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
     let mut out = Trajectory::with_capacity(u.len());
     Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
-    report(FitKind::Full, &resolved, outcome, out.y, f, starts)
+    let mut r = report(FitKind::Full, &resolved, outcome, pick(&out.y), f, starts)?;
+    // The fitted curve at every row, measured or not.
+    r.fitted = out.y;
+    Ok(r)
 }
 
 fn not_converged(resolved: &Resolved, outcome: &Outcome, m: usize) -> FitError {

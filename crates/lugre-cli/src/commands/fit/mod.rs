@@ -165,7 +165,25 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
-    let record = read_record(path, args.data.options(&["u", "F"])?)?;
+    let mut options = args.data.options(&["u", "F"])?;
+    // A row without a force (empty or NaN) is an input-only sample of the full fit.
+    options.optional = Some("f".into());
+    let record = read_record(path, options)?;
+    if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
+        if kind == FitKind::Slow {
+            bail!(
+                "{}: row {} has no force: the slow fit needs one at every row (input-only rows are for the full fit, --fit full with times)",
+                path.display(),
+                i + 1
+            );
+        }
+        if record.f.iter().all(|f| f.is_nan()) {
+            bail!(
+                "{}: no row has a force (F is empty everywhere)",
+                path.display()
+            );
+        }
+    }
     let full = match kind {
         FitKind::Slow => None,
         FitKind::Full => {

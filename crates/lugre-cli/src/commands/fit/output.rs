@@ -28,9 +28,27 @@ pub(super) fn write_csv(
     }
     for i in 0..record.u.len() {
         let (u, f, fit, r) = (record.u[i], record.f[i], report.fitted[i], res[i]);
-        match &record.t {
-            Some(t) => rows.write(w, &[t[i], u, f, fit, r])?,
-            None => rows.write(w, &[u, f, fit, r])?,
+        let lead: &[f64] = match &record.t {
+            Some(t) => &[t[i], u],
+            None => &[u],
+        };
+        if f.is_nan() {
+            // An input-only row: no force, so no residual (empty fields, never NaN).
+            let mut text = Vec::new();
+            rows.write(&mut text, &[lead, &[fit]].concat())?;
+            let text = String::from_utf8_lossy(&text);
+            let (head, fit) = text
+                .trim_end()
+                .rsplit_once(',')
+                .unwrap_or(("", text.trim_end()));
+            let head = if head.is_empty() {
+                String::new()
+            } else {
+                format!("{head},")
+            };
+            writeln!(w, "{head},{fit},")?;
+        } else {
+            rows.write(w, &[lead, &[f, fit, r]].concat())?;
         }
     }
     Ok(())
@@ -48,6 +66,7 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels
         .iter()
         .copied()
         .zip(record.f.iter().copied())
+        .filter(|(_, f)| !f.is_nan())
         .collect();
     let fit: Vec<(f64, f64)> = record
         .u
@@ -97,9 +116,12 @@ fn residual_figure(record: &Record, res: &[f64]) -> Figure {
         } else {
             (0.0, 0.0)
         };
-        for &r in &res[lo..hi] {
+        for &r in res[lo..hi].iter().filter(|r| !r.is_nan()) {
             r0 = r0.min(r);
             r1 = r1.max(r);
+        }
+        if r0 > r1 {
+            continue; // only input-only rows in this group
         }
         res_fig =
             res_fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
