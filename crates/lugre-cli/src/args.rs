@@ -35,6 +35,19 @@ pub(crate) struct DataArgs {
         help_heading = "Data file"
     )]
     pub(crate) scale: Option<String>,
+    /// How the fields are separated (default: found from the first line that is not a comment).
+    #[arg(long, value_enum, help_heading = "Data file")]
+    pub(crate) delimiter: Option<DelimiterArg>,
+}
+
+/// `--delimiter`'s values.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum DelimiterArg {
+    Comma,
+    Semicolon,
+    Tab,
+    /// Runs of spaces (or tabs).
+    Space,
 }
 
 impl DataArgs {
@@ -86,10 +99,18 @@ impl DataArgs {
                 Ok((role, factor))
             })
             .collect::<anyhow::Result<_>>()?;
+        use crate::io::csv::Delimiter;
+        let delimiter = self.delimiter.map(|d| match d {
+            DelimiterArg::Comma => Delimiter::Comma,
+            DelimiterArg::Semicolon => Delimiter::Semicolon,
+            DelimiterArg::Tab => Delimiter::Tab,
+            DelimiterArg::Space => Delimiter::Spaces,
+        });
         Ok(ReadOptions {
             select,
             scale,
             optional: None,
+            delimiter,
         })
     }
 }

@@ -63,6 +63,8 @@ pub(crate) struct ReadOptions {
     /// A role whose value may be missing (an empty field or `NaN`): read as NaN (`lugre fit`'s
     /// input-only rows, where no force was measured).
     pub(crate) optional: Option<String>,
+    /// `--delimiter`: instead of the one found from the first line.
+    pub(crate) delimiter: Option<Delimiter>,
 }
 
 impl ReadOptions {
@@ -194,14 +196,7 @@ impl<'c, R: Read> SampleReader<'c, R> {
     /// A reader of the `columns` of `inner`.
     pub fn new(inner: R, columns: Columns<'c>) -> Self {
         let (sniffed, delimiter) = Sniffed::new(LineLimit::new(SkipBom::new(inner)));
-        let reader = csv::ReaderBuilder::new()
-            .has_headers(false)
-            .flexible(true)
-            .comment(Some(b'#'))
-            .trim(csv::Trim::All)
-            .delimiter(delimiter.byte())
-            .buffer_capacity(1 << 16)
-            .from_reader(sniffed);
+        let reader = csv_reader(sniffed, delimiter);
         Self {
             reader,
             delimiter,
@@ -216,8 +211,15 @@ impl<'c, R: Read> SampleReader<'c, R> {
         }
     }
 
-    /// The columns chosen by `--columns` and the factors of `--scale`.
+    /// The columns chosen by `--columns`, the factors of `--scale` and the delimiter of
+    /// `--delimiter` (before any row is read).
     pub(crate) fn with_options(mut self, options: ReadOptions) -> Self {
+        if let Some(delimiter) = options.delimiter {
+            let mut sniffed = self.reader.into_inner();
+            sniffed.spaces = delimiter == Delimiter::Spaces;
+            self.reader = csv_reader(sniffed, delimiter);
+            self.delimiter = delimiter;
+        }
         self.options = options;
         self
     }
@@ -318,6 +320,17 @@ impl<'c, R: Read> SampleReader<'c, R> {
             }));
         }
     }
+}
+
+fn csv_reader<R: Read>(inner: R, delimiter: Delimiter) -> csv::Reader<R> {
+    csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .comment(Some(b'#'))
+        .trim(csv::Trim::All)
+        .delimiter(delimiter.byte())
+        .buffer_capacity(1 << 16)
+        .from_reader(inner)
 }
 
 fn utf8_fields(record: &csv::ByteRecord, line: u64) -> Result<Vec<&str>> {
@@ -650,7 +663,7 @@ impl<R: Read> Read for LineLimit<R> {
 /// tabs if it has a tab, else semicolons if it has one, else commas if it has one, else runs
 /// of spaces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Delimiter {
+pub(crate) enum Delimiter {
     Comma,
     Semicolon,
     Tab,
@@ -913,6 +926,20 @@ mod tests {
         );
         let e = parse_record(b"Time;Value\n0;1\n").unwrap_err().to_string();
         assert!(e.ends_with("(fields separated by semicolons)"), "{e}");
+        // --delimiter overrides what the first line suggests.
+        let forced = |bytes: &'static [u8], d: Delimiter| {
+            let options = ReadOptions {
+                delimiter: Some(d),
+                ..ReadOptions::default()
+            };
+            collect(SampleReader::new(bytes, Columns::Record).with_options(options))
+        };
+        let t = forced(b"t u F\n0 1 2\n", Delimiter::Spaces).unwrap();
+        assert_eq!(t.columns, vec![vec![1.0], vec![2.0]]);
+        let e = forced(b"t\tu\tF\n0\t1\t2\n", Delimiter::Comma)
+            .unwrap_err()
+            .to_string();
+        assert!(e.ends_with("(fields separated by commas)"), "{e}");
     }
 
     #[test]
