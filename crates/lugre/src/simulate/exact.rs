@@ -161,6 +161,25 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         self.sample(&seg, t_end, u_end, z)
     }
 
+    /// The response to a smooth motion at its samples (the cubic reading,
+    /// [`super::smooth`]): the exact solution on the subdivided interpolant, output with the
+    /// interpolant's velocity at each sample. Appended to `out`.
+    pub fn at_samples(
+        &self,
+        motion: &super::SmoothSamples,
+        out: &mut Trajectory,
+    ) -> Result<(), SimulateError> {
+        let mut knots = Trajectory::default();
+        self.at_knots(motion.refined(), 1, &mut knots)?;
+        let (t, x, v) = motion.samples();
+        out.reserve(t.len());
+        for (i, &k) in motion.sample_knots().iter().enumerate() {
+            let s = self.sample_at_slope(t[i], x[i], v[i], knots.z[k]);
+            out.push(s);
+        }
+        out.check_finite(0)
+    }
+
     /// The output where the input's slope is `v` (smooth inputs: no kink).
     #[inline]
     pub(super) fn sample_at_slope(&self, t: f64, u: f64, v: f64, z: f64) -> Sample {

@@ -61,12 +61,14 @@ pub mod exact;
 pub mod example1;
 mod inputs;
 mod request;
+pub mod smooth;
 
 pub use element::FrictionElement;
 pub use exact::{Observed, Simulator};
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
 pub use request::{Drive, Output, Request};
+pub use smooth::SmoothSamples;
 
 pub use crate::error::SimulateError;
 
