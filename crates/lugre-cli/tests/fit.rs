@@ -354,10 +354,13 @@ fn bad_input_is_one_line_and_status_2() {
     rejects(&["fit", "--input", &ramp], "has no reversal");
     let few = write("few.csv", "u,F\n0,0\n1,1\n0,0\n");
     rejects(&["fit", "--input", &few], "too few samples: 3");
+    // NaN marks an input-only row (for the full fit); an infinite force is an error.
     let nan = write("nan.csv", "u,F\n0,0\n1,nan\n");
+    rejects(&["fit", "--input", &nan], "row 2 has no force");
+    let inf = write("inf.csv", "u,F\n0,0\n1,inf\n");
     rejects(
-        &["fit", "--input", &nan],
-        "line 3: F = 'nan' is not a finite number",
+        &["fit", "--input", &inf],
+        "line 3: F = 'inf' is not a finite number",
     );
     let header = write("header.csv", "x,y\n0,0\n");
     rejects(&["fit", "--input", &header], "unexpected header 'x,y'");

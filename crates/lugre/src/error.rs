@@ -249,6 +249,8 @@ pub enum SimulateError {
         t = num(*.t)
     )]
     StepUnderflow { t: f64, tol: f64 },
+    #[error("a record read as a smooth motion runs once: the periods must be 1, got {periods}")]
+    SmoothPeriods { periods: u32 },
     #[error("the cubic reading would need more than {limit} knots: loosen its tolerance")]
     TooManyKnots { limit: usize },
     #[error("the step must be a finite number >= 0, got {value}", value = num(*.value))]

@@ -107,6 +107,34 @@ pub(crate) fn read_series(path: &Path) -> Result<Series> {
     read_table(path, Columns::Series).map(Series::from)
 }
 
+/// Whether the header of `path` names a velocity column (`v`, `velocity`, units ignored) and
+/// no displacement: a velocity record. False for a file that cannot be read (the reader then
+/// says why).
+pub(crate) fn is_velocity_record(path: &Path) -> bool {
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut head = Vec::new();
+    if file.take(SNIFF as u64).read_to_end(&mut head).is_err() {
+        return false;
+    }
+    let delimiter = Delimiter::of(&head);
+    let text = String::from_utf8_lossy(&head);
+    let Some(line) = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('#'))
+    else {
+        return false;
+    };
+    let split: Vec<&str> = match delimiter {
+        Delimiter::Spaces => line.split_whitespace().collect(),
+        d => line.split(char::from(d.byte())).collect(),
+    };
+    let roles: Vec<String> = split.iter().map(|f| role(f)).collect();
+    roles.iter().any(|r| r == "v") && !roles.iter().any(|r| r == "u")
+}
+
 /// Reads every row of `path` (at least one).
 pub(crate) fn read_table(path: &Path, columns: Columns) -> Result<Table> {
     read_table_with(path, columns, ReadOptions::default())
@@ -529,6 +557,7 @@ fn role(field: &str) -> String {
         "t" | "time" => "t",
         "u" | "x" | "position" | "displacement" => "u",
         "f" | "force" | "friction" => "f",
+        "v" | "velocity" => "v",
         other => other,
     };
     canonical.to_string()
@@ -540,7 +569,13 @@ fn named_column(fields: &[&str], name: &str, line: u64) -> Result<Layout> {
     let header = fields.join(",");
     let wanted = bare_name(name);
     let find = |n: &str| names.iter().position(|x| *x == n);
-    let Some(u) = find(&wanted) else {
+    // By its name; a velocity also by its usual name (`velocity` for `v`).
+    let by_role = || {
+        (wanted == "v")
+            .then(|| fields.iter().position(|f| role(f) == "v"))
+            .flatten()
+    };
+    let Some(u) = find(&wanted).or_else(by_role) else {
         bail!(
             "line {line}: no column '{name}' in the header {}",
             quoted(&header)

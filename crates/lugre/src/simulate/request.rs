@@ -2,6 +2,7 @@
 //! command line (`lugre simulate`) and the Python package (`model.simulate`) both fill in.
 
 use super::inputs::{PiecewiseLinear, Sine};
+use super::smooth::SmoothSamples;
 use super::{merge_times, uniform_times, Gamma, SimulateError, Simulator, Tolerance, Trajectory};
 use crate::model::{LuGre, VelocityFn};
 
@@ -14,6 +15,9 @@ pub enum Drive {
     Samples(PiecewiseLinear),
     /// A sine (the adaptive integrator).
     Sine(Sine),
+    /// Samples of a smooth motion, read as their C1 cubic interpolant (run once, exactly on
+    /// its subdivision; [`super::smooth`]).
+    Smooth(SmoothSamples),
 }
 
 impl Drive {
@@ -22,6 +26,7 @@ impl Drive {
         match self {
             Drive::TurningPoints(pl) | Drive::Samples(pl) => (pl.times()[0], pl.period()),
             Drive::Sine(s) => (0.0, s.period()),
+            Drive::Smooth(s) => (s.refined().times()[0], s.refined().period()),
         }
     }
 }
@@ -158,6 +163,7 @@ impl Request {
             (Output::Default, Drive::Sine(_)) => k
                 .checked_mul(Self::DEFAULT_SAMPLES_PER_PERIOD)?
                 .checked_add(1),
+            (Output::Knots | Output::Default, Drive::Smooth(s)) => Some(s.samples().0.len()),
             (Output::Knots, Drive::Sine(_)) => None,
         }
     }
@@ -168,7 +174,7 @@ impl Request {
         match (&self.output, &self.drive) {
             (Output::Times(t), _) => Some(t.clone()),
             (Output::PerPeriod(n), _) => Some(uniform_times(start, period, self.periods, *n)),
-            (Output::Knots, _) | (Output::Default, Drive::Samples(_)) => None,
+            (Output::Knots, _) | (Output::Default, Drive::Samples(_) | Drive::Smooth(_)) => None,
             (Output::Default, _) => self.default_times(),
         }
     }
@@ -180,7 +186,7 @@ impl Request {
         match &self.drive {
             Drive::TurningPoints(pl) => Some(merge_times(&uniform, &pl.knot_times(self.periods))),
             Drive::Sine(_) => Some(uniform),
-            Drive::Samples(_) => None,
+            Drive::Samples(_) | Drive::Smooth(_) => None,
         }
     }
 
@@ -209,10 +215,27 @@ impl Request {
     ) -> Result<Trajectory, SimulateError> {
         let mut none = |_: f64| {};
         let progress = progress.unwrap_or(&mut none);
-        let mut sim = sim.with_progress(progress);
         let mut out = Trajectory::default();
         let times = self.times();
+        if let Drive::Smooth(s) = &self.drive {
+            if self.periods != 1 {
+                return Err(SimulateError::SmoothPeriods {
+                    periods: self.periods,
+                });
+            }
+            if times.is_none() {
+                sim.at_samples(s, &mut out)?;
+                return Ok(out);
+            }
+        }
+        let mut sim = sim.with_progress(progress);
         match (&self.drive, &times) {
+            (Drive::Smooth(s), t) => sim.at_times(
+                s.refined(),
+                self.periods,
+                t.as_deref().unwrap_or_default(),
+                &mut out,
+            )?,
             (Drive::TurningPoints(pl) | Drive::Samples(pl), None) => {
                 sim.at_knots(pl, self.periods, &mut out)?
             }

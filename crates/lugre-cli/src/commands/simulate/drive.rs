@@ -2,10 +2,10 @@
 //! input flags.
 
 use anyhow::{anyhow, bail, Result};
-use lugre::simulate::Drive;
+use lugre::simulate::{Drive, SmoothSamples};
 use lugre::{PiecewiseLinear, Sine};
 
-use super::SimulateArgs;
+use super::{Interpolate, SimulateArgs};
 use crate::fmt::sig;
 use crate::numbers::parse_list;
 
@@ -43,26 +43,7 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
         return Ok((Drive::Sine(sine), text));
     }
     if let Some(path) = &args.input.input {
-        let options = args.data.options(&["u"])?;
-        let series: crate::io::csv::Series =
-            crate::io::csv::read_table_with(path, crate::io::csv::Columns::Series, options)?.into();
-        let Some(t) = series.t else {
-            bail!(
-                "{}: simulate needs the samples' times: a header 't,u' and two columns (a single column 'u' has no time)",
-                path.display()
-            );
-        };
-        let n = t.len();
-        let pl =
-            PiecewiseLinear::new(t, series.u).map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        let text = format!(
-            "{} samples from {}, linear between samples, t in [{}, {}]",
-            n,
-            path.display(),
-            sig(pl.times()[0], 10),
-            sig(pl.times()[n - 1], 10)
-        );
-        return Ok((Drive::Samples(pl), text));
+        return sampled(args, path);
     }
     if given.is_empty() {
         bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2, --input FILE.csv (t,u) or --sine A,T[,PHASE[,OFFSET]]");
@@ -79,4 +60,53 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
         }
     );
     Ok((Drive::TurningPoints(pl), text))
+}
+
+/// A record from a file: displacement `t,u` (linear or cubic reading) or velocity `t,v`
+/// (integrated, cubic reading).
+fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String)> {
+    use crate::io::csv::{read_table_with, Columns};
+    let velocity = args.data.columns.as_deref().is_some_and(|c| {
+        c.split(',')
+            .any(|item| item.trim().to_ascii_lowercase().starts_with("v="))
+    }) || crate::io::csv::is_velocity_record(path);
+    let (columns, role) = if velocity {
+        (Columns::Named("v"), "v")
+    } else {
+        (Columns::Series, "u")
+    };
+    let table = read_table_with(path, columns, args.data.options(&[role])?)?;
+    let Some(t) = table.t else {
+        bail!(
+            "{}: simulate needs the samples' times: a column 't' (or --columns t=NAME)",
+            path.display()
+        );
+    };
+    let values = table.columns.into_iter().next().unwrap_or_default();
+    let n = t.len();
+    let (t0, t1) = (t[0], t[n - 1]);
+    let span = format!("t in [{}, {}]", sig(t0, 10), sig(t1, 10));
+    let with_file = |e: lugre::SimulateError| anyhow!("{}: {e}", path.display());
+    if velocity || args.interpolate == Interpolate::Cubic {
+        let tol = super::parse_scalar("--tol", &args.tol)?;
+        let (motion, what) = if velocity {
+            let m = SmoothSamples::from_velocity(t, values, 0.0, tol).map_err(with_file)?;
+            (m, "velocity samples integrated from u = 0")
+        } else {
+            let m = SmoothSamples::pchip(t, values, tol).map_err(with_file)?;
+            (m, "displacement samples")
+        };
+        let text = format!(
+            "{n} {what} from {}, read as a smooth motion (C1 cubic, subdivided to {} knots), {span}",
+            path.display(),
+            motion.refined().len()
+        );
+        return Ok((Drive::Smooth(motion), text));
+    }
+    let pl = PiecewiseLinear::new(t, values).map_err(with_file)?;
+    let text = format!(
+        "{n} samples from {}, linear between samples, {span}",
+        path.display()
+    );
+    Ok((Drive::Samples(pl), text))
 }

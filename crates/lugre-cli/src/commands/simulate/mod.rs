@@ -40,6 +40,13 @@ const PLOT_HELP: &str =
     "Draw the response to an SVG or PNG file: y against t (left panel) and y against \
     u (right panel), side by side";
 
+/// `--interpolate`'s values.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Interpolate {
+    Linear,
+    Cubic,
+}
+
 #[derive(Args, Debug)]
 #[command(
     mut_arg("json", |a| a.help(JSON_HELP)),
@@ -92,7 +99,15 @@ pub(crate) struct SimulateArgs {
         help_heading = "Simulation"
     )]
     pub(crate) x0: String,
-    /// Relative tolerance of the adaptive integrator for --sine, in [1e-14, 1).
+    /// How a sampled --input is read between its samples: 'linear' (a piecewise-linear motion,
+    /// exact as given) or 'cubic' (samples of a smooth motion: the C1 shape-preserving cubic
+    /// through them, output with its velocity at the samples). A velocity column (header 'v'
+    /// or 'velocity', or --columns v=NAME) is integrated to the displacement and always read
+    /// as cubic.
+    #[arg(long, value_enum, default_value = "linear", help_heading = "Data file")]
+    pub(crate) interpolate: Interpolate,
+    /// Relative tolerance of the adaptive integrator for --sine (and of the cubic reading's
+    /// subdivision, relative to the record's range), in [1e-14, 1).
     #[arg(
         long,
         value_name = "TOL",
