@@ -40,6 +40,15 @@ pub(crate) struct DataArgs {
     pub(crate) delimiter: Option<DelimiterArg>,
 }
 
+/// `--interpolate`'s values: how samples are read between them.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Interpolate {
+    /// A piecewise-linear motion (exact as given).
+    Linear,
+    /// Samples of a smooth motion: the C1 shape-preserving cubic through them.
+    Cubic,
+}
+
 /// `--delimiter`'s values.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum DelimiterArg {

@@ -544,3 +544,64 @@ fn input_only_rows_in_a_full_fit() {
         "no row has a force",
     );
 }
+
+/// Sparse samples of a smooth motion (433 of a sine's 17 281) fitted with the cubic reading:
+/// the residual RMS within 2 % of the fit on the dense input (the same forces, the dense
+/// displacement driving the model through input-only rows), where the linear reading of the
+/// sparse samples is several times worse.
+#[test]
+fn a_sparse_sine_record_fits_with_the_cubic_reading() {
+    let dir = scratch("cubic");
+    let model = LuGre::paper();
+    let (n, every) = (17_281usize, 40usize); // 433 samples kept
+    let t: Vec<f64> = (0..n).map(|i| 8.0 * i as f64 / (n - 1) as f64).collect();
+    let u: Vec<f64> = t
+        .iter()
+        .map(|&t| 6.0 * (std::f64::consts::TAU * t / 4.0).sin())
+        .collect();
+    let mut out = Trajectory::default();
+    Simulator::new(&model, Gamma::ONE, 0.0)
+        .unwrap()
+        .at_knots(
+            &PiecewiseLinear::new(t.clone(), u.clone()).unwrap(),
+            1,
+            &mut out,
+        )
+        .unwrap();
+    let f = noisy(&out.y, 21);
+    let kept: Vec<usize> = (0..n).step_by(every).collect();
+    assert_eq!(kept.len(), 433);
+    let pick = |xs: &[f64]| -> Vec<f64> { kept.iter().map(|&i| xs[i]).collect() };
+    let sparse = dir.join("sparse.csv");
+    write_csv(&sparse, "t,u,F", &[&pick(&t), &pick(&u), &pick(&f)]);
+    let dense_f: Vec<f64> = (0..n)
+        .map(|i| if i % every == 0 { f[i] } else { f64::NAN })
+        .collect();
+    let dense = dir.join("dense.csv");
+    write_csv(&dense, "t,u,F", &[&t, &u, &dense_f]);
+    let rms = |path: &Path, extra: &[&str]| -> f64 {
+        let mut args = vec![
+            "fit",
+            "--input",
+            path.to_str().unwrap(),
+            "--fit",
+            "full",
+            "--fix",
+            "sigma2",
+            "--json",
+        ];
+        args.extend(extra);
+        json(&args)["rms"].as_f64().unwrap()
+    };
+    let (dense, cubic, linear) = (
+        rms(&dense, &[]),
+        rms(&sparse, &["--interpolate", "cubic"]),
+        rms(&sparse, &[]),
+    );
+    eprintln!("rms: dense {dense:e}, cubic {cubic:e}, linear {linear:e}");
+    assert!(
+        (cubic - dense).abs() <= 0.02 * dense,
+        "cubic {cubic:e} vs dense {dense:e}"
+    );
+    assert!(linear > 1.5 * dense, "linear {linear:e} vs dense {dense:e}");
+}

@@ -68,6 +68,11 @@ pub(crate) struct FitArgs {
     pub(crate) input: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) data: crate::args::DataArgs,
+    /// Full fit: how the record's displacement is read between samples: 'linear' (exact as
+    /// given) or 'cubic' (samples of a smooth motion: the C1 shape-preserving cubic, solved on
+    /// a subdivision to 1e-9 of its range; the residual stays at the samples).
+    #[arg(long, value_enum, default_value = "linear", help_heading = "Data file")]
+    pub(crate) interpolate: crate::args::Interpolate,
     /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
@@ -137,6 +142,8 @@ struct Request<'a> {
     record: Record,
     /// The full fit's `x0` and number of starts; `None` for the slow fit.
     full: Option<(f64, usize)>,
+    /// The full fit's reading of the displacement between samples.
+    cubic: bool,
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
@@ -196,11 +203,16 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
             Some((x0, args.starts.unwrap_or(FullOptions::DEFAULT_STARTS)))
         }
     };
+    let cubic = args.interpolate == crate::args::Interpolate::Cubic;
+    if cubic && full.is_none() {
+        bail!("--interpolate cubic applies to the full fit (--fit full): the slow loop depends on the turning points alone");
+    }
     Ok(Request {
         path,
         spec,
         record,
         full,
+        cubic,
     })
 }
 
@@ -229,11 +241,41 @@ fn compute(r: &Request) -> Result<FitReport> {
                 .with_x0(*x0)
                 .with_starts(*starts)
                 .with_progress(&mut report);
-            let result = fit_full(&r.spec, t, &record.u, &record.f, options);
+            let result = if r.cubic {
+                cubic_fit(&r.spec, t, record, options).map_err(with_file)
+            } else {
+                fit_full(&r.spec, t, &record.u, &record.f, options).map_err(with_file)
+            };
             progress.finish();
-            result.map_err(with_file)?
+            result?
         }
     })
+}
+
+/// The chord tolerance of the cubic reading in a fit (relative to the record's range).
+const CUBIC_TOL: f64 = 1e-9;
+
+/// The full fit on the cubic reading: the subdivided motion drives the simulation, its added
+/// knots are input-only rows, the residual is taken at the record's samples.
+fn cubic_fit(
+    spec: &FitSpec,
+    t: &[f64],
+    record: &Record,
+    options: FullOptions<'_>,
+) -> Result<FitReport, FitError> {
+    let motion = lugre::simulate::SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_TOL)?;
+    let (rt, ru) = (motion.refined().times(), motion.refined().values());
+    let mut rf = vec![f64::NAN; rt.len()];
+    for (&k, &f) in motion.sample_knots().iter().zip(&record.f) {
+        rf[k] = f;
+    }
+    let mut report = fit_full(spec, rt, ru, &rf, options)?;
+    report.fitted = motion
+        .sample_knots()
+        .iter()
+        .map(|&k| report.fitted[k])
+        .collect();
+    Ok(report)
 }
 
 /// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints

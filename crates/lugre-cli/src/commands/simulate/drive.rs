@@ -5,7 +5,8 @@ use anyhow::{anyhow, bail, Result};
 use lugre::simulate::{Drive, SmoothSamples};
 use lugre::{PiecewiseLinear, Sine};
 
-use super::{Interpolate, SimulateArgs};
+use super::SimulateArgs;
+use crate::args::Interpolate;
 use crate::fmt::sig;
 use crate::numbers::parse_list;
 

@@ -40,13 +40,6 @@ const PLOT_HELP: &str =
     "Draw the response to an SVG or PNG file: y against t (left panel) and y against \
     u (right panel), side by side";
 
-/// `--interpolate`'s values.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Interpolate {
-    Linear,
-    Cubic,
-}
-
 #[derive(Args, Debug)]
 #[command(
     mut_arg("json", |a| a.help(JSON_HELP)),
@@ -105,7 +98,7 @@ pub(crate) struct SimulateArgs {
     /// or 'velocity', or --columns v=NAME) is integrated to the displacement and always read
     /// as cubic.
     #[arg(long, value_enum, default_value = "linear", help_heading = "Data file")]
-    pub(crate) interpolate: Interpolate,
+    pub(crate) interpolate: crate::args::Interpolate,
     /// Relative tolerance of the adaptive integrator for --sine (and of the cubic reading's
     /// subdivision, relative to the record's range), in [1e-14, 1).
     #[arg(
