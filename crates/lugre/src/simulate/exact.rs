@@ -169,15 +169,26 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         motion: &super::SmoothSamples,
         out: &mut Trajectory,
     ) -> Result<(), SimulateError> {
-        let mut knots = Trajectory::default();
-        self.at_knots(motion.refined(), 1, &mut knots)?;
+        // Only z is needed at the knots (the output is taken with the samples' velocities):
+        // the recursion alone, without writing the rows of every refined knot.
+        let (rt, ru) = (motion.refined().times(), motion.refined().values());
         let (t, x, v) = motion.samples();
         out.reserve(t.len());
-        for (i, &k) in motion.sample_knots().iter().enumerate() {
-            let s = self.sample_at_slope(t[i], x[i], v[i], knots.z[k]);
-            out.push(s);
+        let base = out.len();
+        let knots = motion.sample_knots();
+        let mut z = self.x0;
+        let mut next = 0;
+        for k in 0..rt.len() {
+            if knots.get(next) == Some(&k) {
+                out.push(self.sample_at_slope(t[next], x[next], v[next], z));
+                next += 1;
+            }
+            if k + 1 < rt.len() {
+                let seg = self.segment(ru[k + 1] - ru[k], rt[k + 1] - rt[k]);
+                z = relax_toward(z, seg.c, seg.z_inf);
+            }
         }
-        out.check_finite(0)
+        out.check_finite(base)
     }
 
     /// The output where the input's slope is `v` (smooth inputs: no kink).
