@@ -172,8 +172,8 @@ impl PyLuGre {
     /// y (the friction force y_gamma). Invalid arguments raise ValueError (with the message
     /// of `lugre simulate`) or TypeError.
     #[pyo3(
-        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None),
-        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10)"
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None),
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
     )]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
@@ -189,6 +189,7 @@ impl PyLuGre {
         times: Option<&Bound<'py, PyAny>>,
         samples_per_period: Option<&Bound<'py, PyAny>>,
         tol: Option<&Bound<'py, PyAny>>,
+        interpolate: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let args = SimulateArgs {
             turning_points,
@@ -201,6 +202,7 @@ impl PyLuGre {
             times,
             samples_per_period,
             tol,
+            interpolate,
         };
         simulate(py, &self.inner, args)
     }
@@ -323,8 +325,8 @@ impl PyDahl {
     /// The response to a slow input (paper eq. 5) of the equivalent LuGre model (see
     /// LuGre.simulate): a dict of float64 arrays t, u, z, dz, y.
     #[pyo3(
-        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None),
-        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10)"
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None),
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
     )]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
@@ -340,6 +342,7 @@ impl PyDahl {
         times: Option<&Bound<'py, PyAny>>,
         samples_per_period: Option<&Bound<'py, PyAny>>,
         tol: Option<&Bound<'py, PyAny>>,
+        interpolate: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let args = SimulateArgs {
             turning_points,
@@ -352,6 +355,7 @@ impl PyDahl {
             times,
             samples_per_period,
             tol,
+            interpolate,
         };
         simulate(py, &self.inner.to_lugre(), args)
     }

@@ -20,6 +20,8 @@ pub struct SimulateArgs<'a, 'py> {
     pub times: Option<&'a Bound<'py, PyAny>>,
     pub samples_per_period: Option<&'a Bound<'py, PyAny>>,
     pub tol: Option<&'a Bound<'py, PyAny>>,
+    /// "linear" (default) or "cubic": how samples `t, u` are read between them.
+    pub interpolate: Option<&'a Bound<'py, PyAny>>,
 }
 
 fn given<'a, 'py>(o: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
@@ -111,8 +113,35 @@ pub fn simulate<'py>(
         };
         let t = one_dimensional(t, "t")?;
         let u = one_dimensional(u, "u")?;
-        Drive::Samples(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
+        let cubic = match given(args.interpolate) {
+            None => false,
+            Some(i) => match i.extract::<String>().as_deref() {
+                Ok("linear") => false,
+                Ok("cubic") => true,
+                _ => {
+                    return Err(PyValueError::new_err(format!(
+                        "interpolate must be 'linear' or 'cubic', got {}",
+                        i.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+                    )))
+                }
+            },
+        };
+        if cubic {
+            // The chord tolerance of the subdivision: `tol`, as `lugre simulate --tol`.
+            let tol = match given(args.tol) {
+                Some(x) => real(x, "tol")?,
+                None => lugre::Tolerance::DEFAULT.value(),
+            };
+            Drive::Smooth(lugre::simulate::SmoothSamples::pchip(t, u, tol).map_err(value_error)?)
+        } else {
+            Drive::Samples(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
+        }
     };
+    if given(args.interpolate).is_some() && !matches!(input, Drive::Samples(_) | Drive::Smooth(_)) {
+        return Err(PyValueError::new_err(
+            "interpolate applies to sampled inputs (t, u)",
+        ));
+    }
 
     let gamma = match given(args.gamma) {
         Some(g) => real(g, "gamma")?,

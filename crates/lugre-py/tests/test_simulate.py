@@ -229,3 +229,20 @@ def test_cycles_errors():
         lugre.cycles([0, 1, 0], model="lugre")
     with pytest.raises(TypeError, match="series"):
         lugre.cycles("0,1,0")
+
+
+def test_samples_of_a_smooth_motion_read_as_cubic():
+    # A sine sampled 200 times a period, against the adaptive solution of the sine itself: the
+    # cubic reading is far closer than the linear one on average (simulate::smooth's orders).
+    m = lugre.LuGre(sigma0=1e5, sigma1=1e5 ** 0.5, sigma2=0.4, fc=1.0, fs=1.5, vs=1e-3, beta=2.0)
+    a, period, n = 1e-5, 0.05, 200
+    t = np.linspace(0.0, period, n + 1)
+    u = a * np.sin(2 * np.pi * t / period + 0.3)
+    ref = m.simulate(sine=(a, period, 0.3), times=t[:-1])["y"]
+    lin = m.simulate(t=t, u=u)["y"][:-1]
+    cub = m.simulate(t=t, u=u, interpolate="cubic")["y"][:-1]
+    assert np.mean(np.abs(cub - ref)) < 0.1 * np.mean(np.abs(lin - ref))
+    with pytest.raises(ValueError, match="interpolate must be 'linear' or 'cubic'"):
+        m.simulate(t=t, u=u, interpolate="spline")
+    with pytest.raises(ValueError, match="applies to sampled inputs"):
+        m.simulate(turning_points=[0, 1], interpolate="cubic")
