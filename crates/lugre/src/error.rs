@@ -117,6 +117,16 @@ pub enum HistoryError {
     NoBins { bins: usize },
     #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]", min = num(*.min), max = num(*.max))]
     BadBounds { min: f64, max: f64 },
+    #[error("the chunk starting at u[{start}] is empty: every chunk needs at least 1 sample")]
+    EmptyChunk { start: u64 },
+    #[error("chunks are not adjacent: the left one ends at u[{left_end}], the right one starts at u[{right_start}]")]
+    NotAdjacent { left_end: u64, right_start: u64 },
+    #[error("the chunks merged cover u[{start}..={end}], not the whole history from u[0]")]
+    NotWhole { start: u64, end: u64 },
+    #[error("the closure of the cycle turning at u[{end}] was not found in the chunks given (the summaries and the samples do not belong to one history)")]
+    ClosureNotFound { end: u64 },
+    #[error("a chunk summary cannot be read from these bytes ({why})")]
+    BadSummary { why: &'static str },
 }
 
 /// A parameter-identification request that cannot be carried out, or whose answer the data do

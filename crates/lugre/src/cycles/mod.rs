@@ -69,6 +69,7 @@
 //! assert_eq!((closure.index, closure.position), (6, 5.0 + 4.0 / 7.0));
 //! ```
 
+pub mod chunk;
 mod columns;
 mod energy;
 mod engine;
@@ -219,6 +220,14 @@ impl CycleCounter {
         Ok(Self {
             engine: Engine::new(gate, NoTrack)?,
         })
+    }
+
+    /// A counter for a chunk whose first sample is sample `origin` of a longer history: its
+    /// indices, closures and errors are the history's.
+    pub(crate) fn with_origin(self, origin: u64) -> Self {
+        Self {
+            engine: self.engine.with_origin(origin),
+        }
     }
 
     /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).

@@ -149,7 +149,9 @@ impl Track for NoTrack {
 pub(crate) struct Engine<T: Track> {
     gate: f64,
     pub(crate) track: T,
-    /// Samples taken.
+    /// The index of the first sample (0 but for a chunk of a longer history).
+    origin: u64,
+    /// The index of the next sample (`origin` + samples taken).
     taken: u64,
     /// The previous sample.
     prev: f64,
@@ -193,6 +195,7 @@ impl<T: Track> Engine<T> {
         Ok(Self {
             gate,
             track,
+            origin: 0,
             taken: 0,
             prev: 0.0,
             first: 0.0,
@@ -211,6 +214,14 @@ impl<T: Track> Engine<T> {
             full_count: 0,
             half_count: 0,
         })
+    }
+
+    /// The same engine for a history whose first sample has index `origin` (a chunk of a
+    /// longer one): reversals, cycles and closures carry indices from `origin`.
+    pub fn with_origin(mut self, origin: u64) -> Self {
+        debug_assert_eq!(self.taken, self.origin, "set before the first sample");
+        (self.origin, self.taken) = (origin, origin);
+        self
     }
 
     /// Takes the next samples.
@@ -363,7 +374,7 @@ impl<T: Track> Engine<T> {
     /// Ends the history: the last extreme (or, if the history never left the gate band, the
     /// last sample) is the last reversal, and the stack's residue is counted as half cycles.
     pub fn finish(mut self, sink: &mut impl CycleSink) -> Result<Counts<T>, HistoryError> {
-        match self.taken {
+        match self.taken - self.origin {
             0 => return Err(HistoryError::Empty),
             1 => return Err(HistoryError::TooShort { samples: 1 }),
             _ => {}
@@ -383,7 +394,7 @@ impl<T: Track> Engine<T> {
             sink.cycle(cycle(&self.stack[k - 1], &self.stack[k], 0.5, None, None));
         }
         Ok(Counts {
-            samples: self.taken,
+            samples: self.taken - self.origin,
             reversals: self.reversals,
             full: self.full_count,
             half: self.half_count,
@@ -395,7 +406,7 @@ impl<T: Track> Engine<T> {
 /// The closure at sample `i` (value `u`, after `prev`) of a cycle starting at `ua`, and the
 /// fraction of the step where the history is at `ua`.
 #[inline]
-fn closure_at(i: u64, u: f64, prev: f64, ua: f64) -> (Closure, f64) {
+pub(crate) fn closure_at(i: u64, u: f64, prev: f64, ua: f64) -> (Closure, f64) {
     let step = u - prev;
     let frac = if step != 0.0 {
         ((ua - prev) / step).clamp(0.0, 1.0)
@@ -411,12 +422,12 @@ fn closure_at(i: u64, u: f64, prev: f64, ua: f64) -> (Closure, f64) {
 
 /// Finite with `|u| <= MAX_ABS` (one comparison, false for NaN).
 #[inline(always)]
-fn admissible(u: f64) -> bool {
+pub(crate) fn admissible(u: f64) -> bool {
     u.abs() <= MAX_ABS
 }
 
 #[cold]
-fn bad_sample(index: u64, u: f64) -> HistoryError {
+pub(crate) fn bad_sample(index: u64, u: f64) -> HistoryError {
     if u.is_finite() {
         HistoryError::TooLarge { index, value: u }
     } else {

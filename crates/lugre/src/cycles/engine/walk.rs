@@ -23,7 +23,7 @@ impl<T: Track> Engine<T> {
                 result = Err(bad_sample(i, u));
                 break;
             }
-            self.track.sample(i, u);
+            self.track.sample(i - self.origin, u);
             let v = o * u;
             if v >= c {
                 // At or beyond the candidate: the run goes on.
@@ -83,11 +83,11 @@ impl<T: Track> Engine<T> {
     /// band starts the first run, in the direction returned.
     #[cold]
     fn start(&mut self, i: u64, u: f64, sink: &mut impl CycleSink) -> Option<f64> {
-        if i == 0 {
+        if i == self.origin {
             self.first = u;
             self.reversals += 1;
-            sink.reversal(Reversal { index: 0, u });
-            self.stack.push(Open::new(0, u, self.track.state()));
+            sink.reversal(Reversal { index: i, u });
+            self.stack.push(Open::new(i, u, self.track.state()));
             None
         } else if u != self.first && (u - self.first).abs() >= self.gate {
             Some(if u > self.first { 1.0 } else { -1.0 })
