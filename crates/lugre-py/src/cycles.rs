@@ -159,39 +159,34 @@ fn no_cycles(
 /// The result dict of [`cycles`]; the columns become numpy arrays without a copy.
 fn to_dict<'py>(
     py: Python<'py>,
-    c: CycleColumns,
+    mut c: CycleColumns,
     s: &lugre::CycleSummary,
     with_energy: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let keep_closures = c.keeps_closures();
     let out = PyDict::new(py);
     if c.keeps_reversals() {
         let reversals = PyDict::new(py);
-        reversals.set_item("index", c.reversal_index.into_pyarray(py))?;
-        reversals.set_item("u", vec_out(py, c.reversal_u))?;
+        let index = std::mem::take(&mut c.reversal_index);
+        reversals.set_item("index", index.into_pyarray(py))?;
+        reversals.set_item("u", vec_out(py, std::mem::take(&mut c.reversal_u)))?;
         out.set_item("reversals", reversals)?;
     } else {
         out.set_item("reversals", py.None())?;
     }
 
-    let cycles = PyDict::new(py);
-    cycles.set_item("range", vec_out(py, c.range))?;
-    cycles.set_item("mean", vec_out(py, c.mean))?;
-    cycles.set_item("count", vec_out(py, c.count))?;
-    cycles.set_item("start", c.start.into_pyarray(py))?;
-    cycles.set_item("end", c.end.into_pyarray(py))?;
-    if keep_closures {
-        cycles.set_item("closure", c.closure.into_pyarray(py))?;
-        cycles.set_item("closure_position", vec_out(py, c.closure_position))?;
-    }
-    if with_energy {
-        cycles.set_item("work", vec_out(py, c.work))?;
-        cycles.set_item("stored_energy_change", vec_out(py, c.stored_energy_change))?;
-        cycles.set_item("dissipation", vec_out(py, c.dissipation))?;
-        cycles.set_item("closure_gap", vec_out(py, c.closure_gap))?;
-    }
+    let cycles = cycle_table(py, c, with_energy)?;
     out.set_item("cycles", cycles)?;
 
+    let summary = summary_dict(py, s)?;
+    out.set_item("summary", summary)?;
+    Ok(out)
+}
+
+/// The summary dict of [`cycles`] (also the chunked count's).
+pub(crate) fn summary_dict<'py>(
+    py: Python<'py>,
+    s: &lugre::CycleSummary,
+) -> PyResult<Bound<'py, PyDict>> {
     let summary = PyDict::new(py);
     summary.set_item("samples", s.samples)?;
     summary.set_item("reversals", s.reversals)?;
@@ -209,6 +204,31 @@ fn to_dict<'py>(
             summary.set_item("energy", d)?;
         }
     }
-    out.set_item("summary", summary)?;
-    Ok(out)
+    Ok(summary)
+}
+
+/// The cycle table of [`cycles`]: one numpy array per column kept.
+pub(crate) fn cycle_table<'py>(
+    py: Python<'py>,
+    c: CycleColumns,
+    with_energy: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let keep_closures = c.keeps_closures();
+    let cycles = PyDict::new(py);
+    cycles.set_item("range", vec_out(py, c.range))?;
+    cycles.set_item("mean", vec_out(py, c.mean))?;
+    cycles.set_item("count", vec_out(py, c.count))?;
+    cycles.set_item("start", c.start.into_pyarray(py))?;
+    cycles.set_item("end", c.end.into_pyarray(py))?;
+    if keep_closures {
+        cycles.set_item("closure", c.closure.into_pyarray(py))?;
+        cycles.set_item("closure_position", vec_out(py, c.closure_position))?;
+    }
+    if with_energy {
+        cycles.set_item("work", vec_out(py, c.work))?;
+        cycles.set_item("stored_energy_change", vec_out(py, c.stored_energy_change))?;
+        cycles.set_item("dissipation", vec_out(py, c.dissipation))?;
+        cycles.set_item("closure_gap", vec_out(py, c.closure_gap))?;
+    }
+    Ok(cycles)
 }

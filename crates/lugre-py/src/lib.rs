@@ -3,6 +3,7 @@
 //! and results and maps the core's errors to Python exceptions (`ValueError` with the message
 //! the `lugre` command prints, `TypeError` for arguments of the wrong type).
 
+mod chunk;
 mod convert;
 mod cycles;
 mod dynamics;
@@ -25,6 +26,16 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<loops::PyTheoremA>()?;
     m.add_class::<loops::PyCurve>()?;
     m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
+    m.add_class::<chunk::PyChunkSummary>()?;
+    m.add_class::<chunk::PyChunkPlan>()?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_count, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_merge, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_close, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_assemble, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_bounds, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_guess_entries, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_count_energy, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_history_energy, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(dynamics::dynamics, m)?)?;
     Ok(())

@@ -1,7 +1,8 @@
 //! Reversals and cycles as columns (one `Vec` per field), the layout numpy and data frames
 //! take without a copy.
 
-use super::{Cycle, CycleSink, Reversal};
+use super::{Closure, Cycle, CycleEnergy, CycleSink, Reversal};
+use crate::kernel::ArcEnergy;
 
 /// A [`CycleSink`] that keeps reversals and cycles as columns: one `Vec` per field, indices as
 /// `i64` (numpy's default integer). Which columns are filled is chosen up front; the others
@@ -181,6 +182,34 @@ impl CycleColumns {
         let (indices, reals) = self.all_columns();
         indices.into_iter().for_each(Vec::clear);
         reals.into_iter().for_each(Vec::clear);
+    }
+
+    /// Cycle `k` back from the columns (its energy, where kept, without the states `y_start`
+    /// and `y_closure`, which are not columns: NaN).
+    pub fn cycle_at(&self, k: usize) -> Cycle {
+        let closure = (self.keep_closures && self.closure[k] >= 0).then(|| Closure {
+            index: self.closure[k] as u64,
+            position: self.closure_position[k],
+        });
+        let energy = (self.keep_energy && !self.work[k].is_nan()).then(|| CycleEnergy {
+            arc: ArcEnergy {
+                work: self.work[k],
+                stored_energy_change: self.stored_energy_change[k],
+                dissipation: self.dissipation[k],
+                closure_gap: self.closure_gap[k],
+            },
+            y_start: f64::NAN,
+            y_closure: f64::NAN,
+        });
+        Cycle {
+            range: self.range[k],
+            mean: self.mean[k],
+            count: self.count[k],
+            start: self.start[k] as u64,
+            end: self.end[k] as u64,
+            closure,
+            energy,
+        }
     }
 
     /// The number of cycles held.

@@ -59,14 +59,20 @@ impl EnergyTrack {
                 g0: model.g0(),
             });
         }
-        Ok(Self {
+        Ok(Self::starting_at(model, y0))
+    }
+
+    /// A track whose first sample has `y* = y0` (a chunk of a longer history, `y0` the single
+    /// pass's value there).
+    pub fn starting_at(model: RateIndependent, y0: f64) -> Self {
+        Self {
             model,
             y0,
             prev: Point::default(),
             cur: Point::default(),
             total_work: DoubleDouble::ZERO,
             total_dissipation: DoubleDouble::ZERO,
-        })
+        }
     }
 
     /// Totals over the whole history.

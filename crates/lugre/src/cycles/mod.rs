@@ -270,6 +270,18 @@ impl EnergyCycleCounter {
         })
     }
 
+    /// A counter (no gate) for a chunk whose first sample is sample `origin` of a longer
+    /// history, where `y* = y0` (the single pass's value).
+    pub(crate) fn for_chunk(
+        model: RateIndependent,
+        y0: f64,
+        origin: u64,
+    ) -> Result<Self, HistoryError> {
+        Ok(Self {
+            engine: Engine::new(0.0, EnergyTrack::starting_at(model, y0))?.with_origin(origin),
+        })
+    }
+
     /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).
     #[inline]
     pub fn push(&mut self, u: f64, sink: &mut impl CycleSink) -> Result<(), HistoryError> {

@@ -34,7 +34,7 @@ pub(crate) struct Sums {
     lo: [f64; LANES],
 }
 
-const LANES: usize = 8;
+pub(crate) const LANES: usize = 8;
 /// `sum s y_k c`
 const S1: usize = 0;
 /// `sum s c`
@@ -112,6 +112,33 @@ impl Sums {
         } else {
             hi
         }
+    }
+
+    /// The work `integral y dpsi` over the pieces added, in double-double (`sum s y_k c +
+    /// sum e`, the terms [`add_piece`](Self::add_piece) returns).
+    pub fn work(&self) -> DoubleDouble {
+        self.lane_dd(S1) + self.lane_dd(S3)
+    }
+
+    /// The dissipation over the pieces added, in double-double.
+    pub fn dissipation_dd(&self) -> DoubleDouble {
+        self.lane_dd(D)
+    }
+
+    /// The lanes as one array (leading parts, then trailing parts), to send between processes.
+    pub fn to_array(self) -> [f64; 2 * LANES] {
+        let mut a = [0.0; 2 * LANES];
+        a[..LANES].copy_from_slice(&self.hi);
+        a[LANES..].copy_from_slice(&self.lo);
+        a
+    }
+
+    /// [`to_array`](Self::to_array)'s output back.
+    pub fn from_array(a: &[f64; 2 * LANES]) -> Self {
+        let mut s = Self::default();
+        s.hi.copy_from_slice(&a[..LANES]);
+        s.lo.copy_from_slice(&a[LANES..]);
+        s
     }
 
     /// The dissipation over the pieces added (never < 0; an overflow stays visible as inf).

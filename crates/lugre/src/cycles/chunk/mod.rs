@@ -50,9 +50,17 @@
 //! `fl(u - c)` is monotone in `u`), and no later one has. The final residue goes last, by
 //! start ([`RowKey`]).
 
+mod energy;
+
+pub use energy::{
+    arc_energy_of, count_chunk_energy, guess_entries, history_energy, state_bounds, ArcSpan,
+    ArcSums, ChunkEnergy, SpanPart, StateBounds,
+};
+
 use super::engine::{admissible, bad_sample, closure_at};
 use super::{Closure, Cycle, CycleColumns, CycleCounter, CycleSink, CycleSummary, Reversal};
 use crate::error::HistoryError;
+use crate::model::RateIndependent;
 
 /// A row's place in the single pass's order (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -89,6 +97,35 @@ impl RowKey {
             group: 2,
             tie: start,
         }
+    }
+
+    /// Bytes of [`to_bytes`](Self::to_bytes).
+    pub const BYTES: usize = 17;
+
+    /// The key as bytes (little-endian), to send between processes.
+    pub fn to_bytes(&self) -> [u8; Self::BYTES] {
+        let mut b = [0; Self::BYTES];
+        b[..8].copy_from_slice(&self.at.to_le_bytes());
+        b[8] = self.group;
+        b[9..].copy_from_slice(&self.tie.to_le_bytes());
+        b
+    }
+
+    /// Reads [`to_bytes`](Self::to_bytes)' output back.
+    pub fn from_bytes(b: &[u8]) -> Result<Self, HistoryError> {
+        let mut r = Reader(b);
+        let at = r.u64()?;
+        let (&group, rest) = r.0.split_first().ok_or(HistoryError::BadSummary {
+            why: "row key too short",
+        })?;
+        r.0 = rest;
+        let tie = r.u64()?;
+        if group > 2 || !r.0.is_empty() {
+            return Err(HistoryError::BadSummary {
+                why: "not a row key",
+            });
+        }
+        Ok(Self { at, group, tie })
     }
 
     /// The sample that places the row (`None`: at the end of the history).
@@ -592,12 +629,95 @@ impl ChunkPlan {
         }
     }
 
+    /// The chunk holding sample `i`.
+    fn chunk_of(&self, i: u64) -> usize {
+        self.leaves.partition_point(|l| l.end < i)
+    }
+
+    /// The parts of the merge-time full cycles' arcs, by chunk (after
+    /// [`resolve`](Self::resolve)): each chunk's energy pass ([`count_chunk_energy`]) sums its
+    /// own. A chunk an arc only passes through contributes its total.
+    pub fn energy_spans(&self) -> Result<Vec<Vec<ArcSpan>>, HistoryError> {
+        let mut out = vec![Vec::new(); self.leaves.len()];
+        for (id, (o, c)) in self.open.iter().zip(&self.closures).enumerate() {
+            if !o.cycle.is_full() {
+                continue;
+            }
+            let c = c.ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
+            let (a, z) = (self.chunk_of(o.cycle.start), self.chunk_of(c.index));
+            let to = Some((c.index, o.u_start));
+            if a == z {
+                out[a].push(ArcSpan {
+                    id,
+                    from: Some(o.cycle.start),
+                    to,
+                });
+            } else {
+                out[a].push(ArcSpan {
+                    id,
+                    from: Some(o.cycle.start),
+                    to: None,
+                });
+                out[z].push(ArcSpan { id, from: None, to });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Attaches the energies of the merge-time full cycles from every chunk's energy pass (in
+    /// order; see [`energy_spans`](Self::energy_spans)).
+    pub fn attach_energy(
+        &mut self,
+        model: RateIndependent,
+        chunks: &[ChunkEnergy],
+    ) -> Result<(), HistoryError> {
+        if chunks.len() != self.leaves.len() {
+            return Err(HistoryError::BadSummary {
+                why: "one energy pass per chunk is needed",
+            });
+        }
+        let missing = HistoryError::BadSummary {
+            why: "an energy pass lacks a part of an arc",
+        };
+        let mut found: Vec<[Option<SpanPart>; 2]> = vec![[None, None]; self.open.len()];
+        for p in chunks.iter().flat_map(|c| &c.parts) {
+            let slot = found.get_mut(p.id).ok_or(missing.clone())?;
+            // The part from A first, the part from a chunk's entry to C second.
+            slot[usize::from(p.y_from.is_none())] = Some(*p);
+        }
+        for (id, [from, to]) in found.into_iter().enumerate() {
+            let o = self.open[id];
+            if !o.cycle.is_full() {
+                continue;
+            }
+            let c = self.closures[id].ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
+            let (a, z) = (self.chunk_of(o.cycle.start), self.chunk_of(c.index));
+            let from = from.ok_or(missing.clone())?;
+            let (sums, y_to) = if a == z {
+                (from.sums, from.y_to)
+            } else {
+                let to = to.ok_or(missing.clone())?;
+                let between = chunks[a + 1..z]
+                    .iter()
+                    .fold(from.sums, |acc, ch| acc + ch.total);
+                (between + to.sums, to.y_to)
+            };
+            let (y_a, y_c) = (
+                from.y_from.ok_or(missing.clone())?,
+                y_to.ok_or(missing.clone())?,
+            );
+            let e = arc_energy_of(model, &sums, y_a, y_c, c.index)?;
+            self.open[id].cycle.energy = Some(e);
+        }
+        Ok(())
+    }
+
     /// The rows each chunk's own rows are merged with (closed open cycles by their closure's
     /// chunk, half cycles by the chunk where the single pass emits them, the final residue in
     /// the last chunk), each list in order.
     pub fn extras(&self) -> Result<Vec<Vec<(RowKey, Cycle)>>, HistoryError> {
         let mut out = vec![Vec::new(); self.leaves.len()];
-        let chunk_of = |i: u64| self.leaves.partition_point(|l| l.end < i);
+        let chunk_of = |i: u64| self.chunk_of(i);
         for (o, c) in self.open.iter().zip(&self.closures) {
             let c = c.ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
             let row = if o.cycle.is_full() {
@@ -690,26 +810,16 @@ fn first_reaching(
 /// A chunk's rows: its own full cycles (from [`count_chunk`]; its half cycles are skipped) merged with the plan's `extras`
 /// for it, in the single pass's order.
 pub fn assemble(own: &CycleColumns, extras: &[(RowKey, Cycle)]) -> CycleColumns {
-    let mut out = CycleColumns::new().with_reversals(false);
-    let row = |k: usize| Cycle {
-        range: own.range[k],
-        mean: own.mean[k],
-        count: own.count[k],
-        start: own.start[k] as u64,
-        end: own.end[k] as u64,
-        closure: Some(Closure {
-            index: own.closure[k] as u64,
-            position: own.closure_position[k],
-        }),
-        energy: None,
-    };
+    let mut out = CycleColumns::new()
+        .with_reversals(false)
+        .with_energy(own.keeps_energy());
     let mut extra = extras.iter().peekable();
     for k in (0..own.len()).filter(|&k| own.count[k] == 1.0) {
         let key = RowKey::full(own.closure[k] as u64, own.start[k] as u64);
         while let Some((_, c)) = extra.next_if(|(x, _)| *x < key) {
             out.cycle(*c);
         }
-        out.cycle(row(k));
+        out.cycle(own.cycle_at(k));
     }
     for (_, c) in extra {
         out.cycle(*c);
