@@ -72,7 +72,8 @@ export VIRTUAL_ENV="$venv"
 export PATH="$VIRTUAL_ENV/bin:$PATH"
 py="$VIRTUAL_ENV/bin/python"
 pip=("$py" -m pip install --quiet --disable-pip-version-check)
-"${pip[@]}" 'maturin==1.16.*' numpy pytest
+# dask[distributed,dataframe]: lugre.dask's tests (one on a 2-worker LocalCluster).
+"${pip[@]}" 'maturin==1.16.*' numpy pytest 'dask[distributed,dataframe]>=2024.1'
 # The venv's maturin builds the wheel (no isolated build environment to download each time);
 # cargo rebuilds only what changed.
 "${pip[@]}" --no-build-isolation --force-reinstall --no-deps ./crates/lugre-py

@@ -48,6 +48,11 @@ impl PyChunkSummary {
     fn max(&self) -> f64 {
         self.0.max()
     }
+    /// Full cycles closed inside (a leaf's own rows).
+    #[getter]
+    fn full_cycles(&self) -> u64 {
+        self.0.full_cycles()
+    }
     /// Length of the irreducible residue kept.
     #[getter]
     fn residue_len(&self) -> usize {
@@ -76,6 +81,41 @@ impl PyChunkSummary {
             self.0.end(),
             self.0.residue().len()
         )
+    }
+}
+
+/// A chunk's own rows, kept in Rust between the count and the assembly (no copy through
+/// numpy). Picklable (as its columns).
+#[pyclass(name = "ChunkRows", module = "lugre._lugre", frozen)]
+pub struct PyChunkRows(CycleColumns);
+
+#[pymethods]
+impl PyChunkRows {
+    fn __len__(&self) -> usize {
+        self.0.len()
+    }
+    /// The rows as a dict of numpy columns (a copy).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        table(py, self.0.clone())
+    }
+    #[staticmethod]
+    fn from_dict(columns: &Bound<'_, PyDict>) -> PyResult<Self> {
+        columns_of(columns).map(Self)
+    }
+    fn __reduce__<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyDict>,))> {
+        let from = py.get_type::<Self>().getattr("from_dict")?;
+        Ok((from, (self.to_dict(py)?,)))
+    }
+    /// The bytes held (Dask's memory accounting reads it).
+    fn __sizeof__(&self) -> usize {
+        let columns = if self.0.keeps_energy() { 11 } else { 7 };
+        64 + 8 * columns * self.0.len()
+    }
+    fn __repr__(&self) -> String {
+        format!("ChunkRows({} rows)", self.0.len())
     }
 }
 
@@ -119,20 +159,20 @@ fn columns_of(d: &Bound<'_, PyDict>) -> PyResult<CycleColumns> {
     Ok(c)
 }
 
-/// `chunk_count(samples, offset)`: the chunk's summary and its own rows (a dict of columns;
-/// the few half cycles among them are dropped by `chunk_assemble`).
+/// `chunk_count(samples, offset)`: the chunk's summary and its own rows (`ChunkRows`; the few
+/// half cycles among them are dropped by `chunk_assemble`).
 #[pyfunction]
 pub fn chunk_count<'py>(
     py: Python<'py>,
     samples: &Bound<'py, PyAny>,
     offset: u64,
-) -> PyResult<(PyChunkSummary, Bound<'py, PyDict>)> {
+) -> PyResult<(PyChunkSummary, PyChunkRows)> {
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
     let (s, rows) = py
         .detach(|| chunk::count_chunk(u, offset))
         .map_err(value_error)?;
-    Ok((PyChunkSummary(s), table(py, rows)?))
+    Ok((PyChunkSummary(s), PyChunkRows(rows)))
 }
 
 /// `chunk_merge(left, right)`: the summary of two adjacent runs and the full cycles only the
@@ -354,15 +394,14 @@ pub fn chunk_close<'py>(
     Ok(d)
 }
 
-/// `chunk_assemble(own, extras)`: a chunk's rows in the single pass's order (a dict of the
-/// cycle table's columns).
+/// `chunk_assemble(own, extras)`: a chunk's rows (`ChunkRows`) merged with the plan's extras
+/// for it, in the single pass's order (a dict of the cycle table's columns).
 #[pyfunction]
 pub fn chunk_assemble<'py>(
     py: Python<'py>,
-    own: &Bound<'py, PyDict>,
+    own: &PyChunkRows,
     extras: &Bound<'py, PyDict>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let own = columns_of(own)?;
     let more = columns_of(extras)?;
     let keys: Vec<u8> = item(extras, "key")?.extract()?;
     let rows: Vec<(RowKey, Cycle)> = keys
@@ -375,7 +414,8 @@ pub fn chunk_assemble<'py>(
             ))
         })
         .collect::<PyResult<_>>()?;
-    let out = py.detach(|| chunk::assemble(&own, &rows));
+    let own = &own.0;
+    let out = py.detach(|| chunk::assemble(own, &rows));
     table(py, out)
 }
 
@@ -422,7 +462,7 @@ pub fn chunk_guess_entries(
 }
 
 /// `chunk_count_energy(samples, offset, prev, y_entry, model, spans)`: the chunk's own rows
-/// with energies (a dict of columns), its energy pass for the driver (bytes) and `y*` at its
+/// with energies (`ChunkRows`), its energy pass for the driver (bytes) and `y*` at its
 /// last sample.
 #[pyfunction]
 #[pyo3(signature = (samples, offset, prev, y_entry, model, spans))]
@@ -434,7 +474,7 @@ pub fn chunk_count_energy<'py>(
     y_entry: f64,
     model: &Bound<'py, PyAny>,
     spans: Option<&Bound<'py, PyDict>>,
-) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyBytes>, f64)> {
+) -> PyResult<(PyChunkRows, Bound<'py, PyBytes>, f64)> {
     let m = lugre_of(model)?.rate_independent();
     let spans: Vec<ArcSpan> = match spans {
         None => Vec::new(),
@@ -456,7 +496,11 @@ pub fn chunk_count_energy<'py>(
         .detach(|| chunk::count_chunk_energy(u, offset, prev, y_entry, m, &spans))
         .map_err(value_error)?;
     let y_last = pass.y_last;
-    Ok((table(py, rows)?, PyBytes::new(py, &pass.to_bytes()), y_last))
+    Ok((
+        PyChunkRows(rows),
+        PyBytes::new(py, &pass.to_bytes()),
+        y_last,
+    ))
 }
 
 /// `chunk_history_energy(model, y_start, passes)`: the totals along the whole history (the

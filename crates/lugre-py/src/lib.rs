@@ -28,6 +28,7 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
     m.add_class::<chunk::PyChunkSummary>()?;
     m.add_class::<chunk::PyChunkPlan>()?;
+    m.add_class::<chunk::PyChunkRows>()?;
     m.add_function(wrap_pyfunction!(chunk::chunk_count, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_merge, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_close, m)?)?;

@@ -123,9 +123,10 @@ fn cycles(c: &mut Criterion) {
 /// The chunked count (issue: a chunk counted at >= 90 % of the single pass's samples/s; a merge
 /// in O(size of the residues)): one chunk of 10^7 samples by `count_chunk` against the single
 /// pass into the same columns (closures, no reversals, fresh columns each time, as both
-/// return them), and the 63 merges of 64 chunks' summaries.
+/// return them), the 63 merges of 64 chunks' summaries, and the energy pass of a chunk
+/// against the single pass with energies.
 fn chunked(c: &mut Criterion) {
-    use lugre::cycles::chunk::{count_chunk, merge};
+    use lugre::cycles::chunk::{count_chunk, count_chunk_energy, merge, ArcSpan};
     let n = SIZES[SIZES.len() - 1];
     let walk = random_walk(n);
     let mut group = c.benchmark_group("cycles_chunked");
@@ -165,6 +166,37 @@ fn chunked(c: &mut Criterion) {
                 open += o.len();
             }
             black_box((acc.residue().len(), open))
+        })
+    });
+    // With energies: the chunk's count from its entry state with the parts of 16 arcs that
+    // span chunks (a 10^7-sample chunk of a random walk has about 10), against the single
+    // pass with energies into the same columns.
+    let model = LuGre::paper().rate_independent();
+    let spans: Vec<ArcSpan> = (0..16)
+        .map(|k| ArcSpan {
+            id: k,
+            from: (k % 2 == 0).then_some((1 << 40) + (k * n / 16) as u64),
+            to: None,
+        })
+        .collect();
+    group.throughput(Throughput::Elements(n as u64));
+    group.bench_function(BenchmarkId::new("single_pass_energy_table", n), |b| {
+        b.iter(|| {
+            let mut columns = CycleColumns::new().with_reversals(false).with_energy(true);
+            let mut counter = EnergyCycleCounter::new(0.0, model, 0.0).expect("valid");
+            counter
+                .push_all(black_box(&walk), &mut columns)
+                .expect("finite");
+            let s = counter.finish(&mut columns).expect("long enough");
+            black_box((s, columns.range.len()))
+        })
+    });
+    group.bench_function(BenchmarkId::new("count_chunk_energy", n), |b| {
+        b.iter(|| {
+            let (rows, pass) =
+                count_chunk_energy(black_box(&walk), 1 << 40, Some(0.0), 0.0, model, &spans)
+                    .expect("finite");
+            black_box((rows.range.len(), pass.y_last))
         })
     });
     group.finish();

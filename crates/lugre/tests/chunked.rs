@@ -271,6 +271,42 @@ fn constant_chunks_and_plateaus_across_cuts() {
     }
 }
 
+/// Near `2^53` ranges round to equal doubles without being equal. Rounded comparisons are not
+/// confluent there (removing `(2, 3)` inside a chunk would change what `(0, 1)` does); the
+/// exact test is (`engine::reaches`). A proptest found the first case.
+#[test]
+fn rounding_ties_near_two_to_the_53() {
+    let cases: [&[f64]; 3] = [
+        &[1.0, -9007199254740994.0, 1.0, -9007199254740992.0, -0.5],
+        &[
+            0.0,
+            -9007199254740994.0,
+            1.0,
+            -9007199254740992.0,
+            -0.5,
+            -2.0,
+        ],
+        &[
+            -1.5,
+            9007199254740994.0,
+            -1.0,
+            9007199254740992.0,
+            0.5,
+            3.0,
+            0.0,
+        ],
+    ];
+    for u in cases {
+        let n = u.len();
+        for mask in 0u32..(1 << (n - 1)) {
+            let cuts: Vec<usize> = (1..n).filter(|k| mask & (1 << (k - 1)) != 0).collect();
+            for order in [[0usize], [1], [5]] {
+                check(u, &cuts, &order);
+            }
+        }
+    }
+}
+
 #[test]
 fn bad_chunks_are_errors() {
     assert_eq!(

@@ -22,6 +22,10 @@ Models: LuGre(sigma0=1, sigma1=1, sigma2=0, fc=1, fs=2, vs=1, beta=1) and Dahl(r
 (keyword arguments; the defaults are the paper's). Invalid values raise ValueError with the
 message the ``lugre`` command prints; arguments of the wrong type raise TypeError.
 
+Histories too large for one machine: ``lugre.dask`` (``pip install lugre[dask]``) counts a
+``dask.array`` or a list of ``.npy`` files chunk by chunk, equal to ``lugre.cycles`` row for row;
+the chunk functions it schedules (``chunk_count``, ``chunk_merge``, ``ChunkPlan``, ...) are here.
+
 Parameter identification (``lugre fit``): ``lugre.fit(u, f, *, t=None, model="lugre",
 kind="slow", fix=(), free=(), start=None, bounds=None, x0=None, starts=None)`` returns a dict of
 the estimates with standard errors, 95 % intervals and correlations, and the fitted curve (see
@@ -29,6 +33,9 @@ the estimates with standard errors, 95 % intervals and correlations, and the fit
 """
 
 from ._lugre import (
+    ChunkPlan,
+    ChunkRows,
+    ChunkSummary,
     Curve,
     Dahl,
     HysteresisLoop,
@@ -37,12 +44,23 @@ from ._lugre import (
     LuGre,
     TheoremA,
     __version__,
+    chunk_assemble,
+    chunk_bounds,
+    chunk_close,
+    chunk_count,
+    chunk_count_energy,
+    chunk_guess_entries,
+    chunk_history_energy,
+    chunk_merge,
     cycles,
     dynamics,
     fit,
 )
 
 __all__ = [
+    "ChunkPlan",
+    "ChunkRows",
+    "ChunkSummary",
     "Curve",
     "Dahl",
     "HysteresisLoop",
@@ -51,6 +69,14 @@ __all__ = [
     "LuGre",
     "TheoremA",
     "__version__",
+    "chunk_assemble",
+    "chunk_bounds",
+    "chunk_close",
+    "chunk_count",
+    "chunk_count_energy",
+    "chunk_guess_entries",
+    "chunk_history_energy",
+    "chunk_merge",
     "cycles",
     "dynamics",
     "fit",

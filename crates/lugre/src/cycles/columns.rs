@@ -53,7 +53,7 @@ pub struct CycleColumns {
     /// [`with_closures`](Self::with_closures)).
     pub closure_position: Vec<f64>,
     /// Energies over the arc, NaN for half cycles and without a model (with
-    /// [`with_energy`](Self::with_energy)): [`CycleEnergy`](super::CycleEnergy)'s fields.
+    /// [`with_energy`](Self::with_energy)): [`CycleEnergy`]'s fields.
     pub work: Vec<f64>,
     pub stored_energy_change: Vec<f64>,
     pub dissipation: Vec<f64>,

@@ -45,6 +45,43 @@ pub(crate) struct EnergyTrack {
     /// Work and dissipation from the first sample (for the summary).
     total_work: DoubleDouble,
     total_dissipation: DoubleDouble,
+    /// For a chunk of a longer history: the sample before it and `y*` there (the first
+    /// piece runs from it to the chunk's first sample).
+    entry: Option<(f64, f64)>,
+    /// Observer (opt-in): the sums between given samples.
+    cuts: Option<Box<CutSums>>,
+}
+
+/// The sums of the pieces between given samples ("cuts"), recorded along the walk: what a
+/// chunk contributes to the arcs of cycles that span chunks (`cycles::chunk`).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct CutSums {
+    /// Local sample indices, increasing: a stretch ends after the piece into each.
+    cuts: Vec<u64>,
+    next: usize,
+    seg: Sums,
+    /// The sums of each stretch and `y*` at its cut.
+    pub stretches: Vec<(Sums, f64)>,
+}
+
+impl CutSums {
+    pub fn new(cuts: Vec<u64>) -> Self {
+        Self {
+            stretches: Vec::with_capacity(cuts.len()),
+            cuts,
+            ..Self::default()
+        }
+    }
+
+    #[inline]
+    fn record(&mut self, index: u64, terms: Sums, y: f64) {
+        self.seg = self.seg + terms;
+        if self.cuts.get(self.next) == Some(&index) {
+            self.stretches.push((self.seg, y));
+            self.seg = Sums::default();
+            self.next += 1;
+        }
+    }
 }
 
 impl EnergyTrack {
@@ -59,20 +96,50 @@ impl EnergyTrack {
                 g0: model.g0(),
             });
         }
-        Ok(Self::starting_at(model, y0))
-    }
-
-    /// A track whose first sample has `y* = y0` (a chunk of a longer history, `y0` the single
-    /// pass's value there).
-    pub fn starting_at(model: RateIndependent, y0: f64) -> Self {
-        Self {
+        Ok(Self {
             model,
             y0,
             prev: Point::default(),
             cur: Point::default(),
             total_work: DoubleDouble::ZERO,
             total_dissipation: DoubleDouble::ZERO,
+            entry: None,
+            cuts: None,
+        })
+    }
+
+    /// A track for a chunk of a longer history: the sample before it is `prev`, where
+    /// `y* = y_entry` (the single pass's value), or, without `prev`, `y* = y_entry` at the
+    /// first sample. The totals count the piece from `prev` in; `cuts` records the sums
+    /// between the local sample indices given.
+    pub fn for_chunk(
+        model: RateIndependent,
+        y_entry: f64,
+        prev: Option<f64>,
+        cuts: CutSums,
+    ) -> Self {
+        Self {
+            model,
+            y0: y_entry,
+            prev: Point::default(),
+            cur: Point::default(),
+            total_work: DoubleDouble::ZERO,
+            total_dissipation: DoubleDouble::ZERO,
+            entry: prev.map(|p| (p, y_entry)),
+            cuts: Some(Box::new(cuts)),
         }
+    }
+
+    /// Work and dissipation along the pieces taken, `y*` at the last sample, and the
+    /// recorded stretches.
+    pub fn chunk_totals(self) -> (DoubleDouble, DoubleDouble, f64, Vec<(Sums, f64)>) {
+        let stretches = self.cuts.map(|c| c.stretches).unwrap_or_default();
+        (
+            self.total_work,
+            self.total_dissipation,
+            self.cur.state.y,
+            stretches,
+        )
     }
 
     /// Totals over the whole history.
@@ -96,11 +163,25 @@ impl Track for EnergyTrack {
 
     #[inline]
     fn sample(&mut self, index: u64, u: f64) {
+        let model = self.model.relaxation();
         if index == 0 {
+            let (mut y, mut terms) = (self.y0, Sums::default());
+            if let Some((p, y_p)) = self.entry {
+                // A chunk's first piece, from the sample before it: in the totals, and in
+                // the first stretch, not in the rainflow stack's sums (its arcs start here).
+                let (s, l) = step(p, u);
+                let (t, w, d, y_end) = Sums::piece_terms(model, y_p, s, l);
+                (y, terms) = (y_end, t);
+                self.total_work = w;
+                self.total_dissipation = DoubleDouble::ZERO.add_f64(d);
+            }
+            if let Some(c) = &mut self.cuts {
+                c.record(0, terms, y);
+            }
             self.cur = Point {
                 u,
                 state: State {
-                    y: self.y0,
+                    y,
                     sums: Sums::default(),
                 },
             };
@@ -108,15 +189,20 @@ impl Track for EnergyTrack {
             return;
         }
         self.prev = self.cur;
-        let (model, y) = (self.model.relaxation(), self.prev.state.y);
+        let y = self.prev.state.y;
         let (s, l) = step(self.prev.u, u);
-        let mut sums = self.prev.state.sums;
-        let (w, d, y_end) = sums.add_piece(model, y, s, l);
+        let (terms, w, d, y_end) = Sums::piece_terms(model, y, s, l);
         self.total_work = self.total_work + w;
         self.total_dissipation = self.total_dissipation.add_f64(d);
+        if let Some(c) = &mut self.cuts {
+            c.record(index, terms, y_end);
+        }
         self.cur = Point {
             u,
-            state: State { y: y_end, sums },
+            state: State {
+                y: y_end,
+                sums: self.prev.state.sums + terms,
+            },
         };
     }
 

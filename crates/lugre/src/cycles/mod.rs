@@ -38,8 +38,12 @@
 //! same cycles in the same order. Where it differs, it has no meaningful answer: a 2-sample
 //! history has two reversals and one half cycle (`rainflow` yields nothing); reversals are found
 //! by comparing values, not by the sign of a product of differences (which underflows for steps
-//! below about `1e-154`); and a reversal's value is the sample at its index (`rainflow` gives
-//! the plateau's first value, which differs only in the sign of a zero).
+//! below about `1e-154`); a reversal's value is the sample at its index (`rainflow` gives
+//! the plateau's first value, which differs only in the sign of a zero); and the three-point
+//! test `X >= Y` is decided in exact arithmetic on the samples (`rainflow` compares the
+//! rounded differences): the two differ only where two ranges round to the same double
+//! without being equal (samples near `2^53`, say), and exactness is what lets a history be
+//! counted in chunks ([`chunk`]).
 //!
 //! # Energy
 //!
@@ -86,7 +90,7 @@ pub const MAX_SAMPLE: f64 = engine::MAX_ABS;
 use crate::error::HistoryError;
 use crate::kernel::ArcEnergy;
 use crate::model::RateIndependent;
-use energy::EnergyTrack;
+pub(crate) use energy::{CutSums, EnergyTrack};
 use engine::{Engine, NoTrack};
 
 /// A reversal: its sample index and value.
@@ -271,15 +275,19 @@ impl EnergyCycleCounter {
     }
 
     /// A counter (no gate) for a chunk whose first sample is sample `origin` of a longer
-    /// history, where `y* = y0` (the single pass's value).
-    pub(crate) fn for_chunk(
-        model: RateIndependent,
-        y0: f64,
-        origin: u64,
-    ) -> Result<Self, HistoryError> {
+    /// history, with the chunk's track ([`EnergyTrack::for_chunk`]).
+    pub(crate) fn for_chunk(track: EnergyTrack, origin: u64) -> Result<Self, HistoryError> {
         Ok(Self {
-            engine: Engine::new(0.0, EnergyTrack::starting_at(model, y0))?.with_origin(origin),
+            engine: Engine::new(0.0, track)?.with_origin(origin),
         })
+    }
+
+    /// Ends a chunk's count: its rows go to `sink`; returns its track.
+    pub(crate) fn finish_chunk(
+        self,
+        sink: &mut impl CycleSink,
+    ) -> Result<EnergyTrack, HistoryError> {
+        Ok(self.engine.finish(sink)?.track)
     }
 
     /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).

@@ -88,10 +88,28 @@ impl Sums {
         s: f64,
         l: f64,
     ) -> (DoubleDouble, f64, f64) {
+        let (terms, w, d, y_end) = Self::piece_terms(model, y, s, l);
+        *self = *self + terms;
+        (w, d, y_end)
+    }
+
+    /// The sums of the piece of direction `s` and length `l` starting at `y`, its work
+    /// `integral y dpsi`, its dissipation and `y` at its end.
+    #[inline]
+    pub fn piece_terms(
+        model: Relaxation,
+        y: f64,
+        s: f64,
+        l: f64,
+    ) -> (Self, DoubleDouble, f64, f64) {
         let p = piece(model, y, s, l);
         let terms = Self::piece(y, s, l, &p);
-        *self = *self + terms;
-        (terms.lane_dd(S1).add_f64(p.e), p.dissipation, p.y_end)
+        (
+            terms,
+            terms.lane_dd(S1).add_f64(p.e),
+            p.dissipation,
+            p.y_end,
+        )
     }
 
     #[inline(always)]
@@ -112,17 +130,6 @@ impl Sums {
         } else {
             hi
         }
-    }
-
-    /// The work `integral y dpsi` over the pieces added, in double-double (`sum s y_k c +
-    /// sum e`, the terms [`add_piece`](Self::add_piece) returns).
-    pub fn work(&self) -> DoubleDouble {
-        self.lane_dd(S1) + self.lane_dd(S3)
-    }
-
-    /// The dissipation over the pieces added, in double-double.
-    pub fn dissipation_dd(&self) -> DoubleDouble {
-        self.lane_dd(D)
     }
 
     /// The lanes as one array (leading parts, then trailing parts), to send between processes.

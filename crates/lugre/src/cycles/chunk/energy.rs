@@ -31,8 +31,11 @@
 //! agree with the single pass to the double-double sums' rounding before the final one: in
 //! practice bit for bit, and within a few units in the last place otherwise.
 
+use super::super::engine::Track;
 use super::super::engine::{admissible, bad_sample, closure_at};
-use super::super::{CycleColumns, CycleEnergy, EnergyCycleCounter, HistoryEnergy};
+use super::super::{
+    CutSums, CycleColumns, CycleEnergy, EnergyCycleCounter, EnergyTrack, HistoryEnergy,
+};
 use super::Reader;
 use crate::error::HistoryError;
 use crate::kernel::arc::{arc_energy, Sums, LANES};
@@ -143,19 +146,20 @@ pub struct SpanPart {
     pub y_to: Option<f64>,
 }
 
-/// What a chunk's energy pass tells the driver: the parts of the arcs across it, the sums of
-/// all its pieces, and `y*` at its last sample.
+/// What a chunk's energy pass tells the driver: the parts of the arcs across it, the work and
+/// dissipation along all its pieces (from the sample before it), and `y*` at its last sample.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChunkEnergy {
     pub parts: Vec<SpanPart>,
-    pub total: ArcSums,
+    work: DoubleDouble,
+    dissipation: DoubleDouble,
     pub y_last: f64,
 }
 
 /// Counts the chunk `u` (first sample at `offset`, `prev` the sample before it) with energies,
 /// entering at `y* = y_entry` (the state at `prev`, or at the first sample when `prev` is
 /// `None`): its own rows as [`count_chunk`](super::count_chunk) gives them, with the energies
-/// of the full cycles, and the parts of the arcs `spans`.
+/// of the full cycles, and the parts of the arcs `spans`, in one walk.
 pub fn count_chunk_energy(
     u: &[f64],
     offset: u64,
@@ -174,107 +178,122 @@ pub fn count_chunk_energy(
             g0: model.g0(),
         });
     }
-    let y_first = match prev {
-        Some(p) if admissible(first) => advance(model, y_entry, p, first),
-        _ => y_entry,
-    };
+    let cuts = cuts(offset, u.len() as u64 - 1, spans)?;
+    let track = EnergyTrack::for_chunk(model, y_entry, prev, CutSums::new(cuts.clone()));
     let mut rows = CycleColumns::new().with_reversals(false).with_energy(true);
-    if u.iter().any(|&x| x != first) {
-        let mut counter = EnergyCycleCounter::for_chunk(model, y_first, offset)?;
+    let track = if u.iter().any(|&x| x != first) {
+        rows.reserve_for_samples(u.len());
+        let mut counter = EnergyCycleCounter::for_chunk(track, offset)?;
         counter.push_all(u, &mut rows)?;
-        counter.finish(&mut rows)?;
+        let track = counter.finish_chunk(&mut rows)?;
+        rows.shrink_to_fit();
+        track
     } else if !admissible(first) {
         return Err(bad_sample(offset, first));
-    }
-    let energy = walk_spans(u, offset, prev, y_entry, model, spans)?;
-    Ok((rows, energy))
+    } else {
+        // One value throughout: no reversal inside, only the walk.
+        let mut track = track;
+        for i in 0..u.len() as u64 {
+            track.sample(i, first);
+        }
+        track
+    };
+    let (work, dissipation, y_last, stretches) = track.chunk_totals();
+    let parts = span_parts(u, offset, prev, y_entry, model, spans, &cuts, &stretches)?;
+    Ok((
+        rows,
+        ChunkEnergy {
+            parts,
+            work,
+            dissipation,
+            y_last,
+        },
+    ))
 }
 
-/// Cuts of the walk: after the piece ending at local sample `j` (`-1`: before every piece).
-fn cuts(offset: u64, last: i64, spans: &[ArcSpan]) -> Vec<i64> {
-    let local = |i: u64| i as i64 - offset as i64;
-    let mut cuts: Vec<i64> = spans
-        .iter()
-        .flat_map(|s| [s.from.map(local), s.to.map(|(c, _)| local(c) - 1)])
-        .flatten()
-        .chain([-1, last])
-        .collect();
+/// The walk's cuts: the local sample indices where a span starts (`A`) or before its closing
+/// piece (`C - 1`), and the last sample; a span from the chunk's entry starts before every
+/// piece (no cut needed).
+fn cuts(offset: u64, last: u64, spans: &[ArcSpan]) -> Result<Vec<u64>, HistoryError> {
+    let local = |i: u64| {
+        i.checked_sub(offset)
+            .filter(|&j| j <= last)
+            .ok_or(HistoryError::BadSummary {
+                why: "an arc's span lies outside its chunk",
+            })
+    };
+    let mut cuts = vec![last];
+    for s in spans {
+        if let Some(a) = s.from {
+            cuts.push(local(a)?);
+        }
+        if let Some((c, _)) = s.to {
+            // A closure at the chunk's first sample closes on the piece into it.
+            if let Some(j) = local(c)?.checked_sub(1) {
+                cuts.push(j);
+            }
+        }
+    }
     cuts.sort_unstable();
     cuts.dedup();
-    cuts
+    Ok(cuts)
 }
 
-/// One walk over the chunk's pieces, with the sums kept per stretch between cuts.
-fn walk_spans(
+/// The spans' parts from the walk's stretches (`stretches[m]`: the pieces after cut `m - 1`
+/// up to cut `m`, and `y*` at cut `m`).
+#[allow(clippy::too_many_arguments)]
+fn span_parts(
     u: &[f64],
     offset: u64,
     prev: Option<f64>,
     y_entry: f64,
     model: RateIndependent,
     spans: &[ArcSpan],
-) -> Result<ChunkEnergy, HistoryError> {
-    let k = model.relaxation();
-    let last = u.len() as i64 - 1;
-    let cuts = cuts(offset, last, spans);
-    // segments[m]: the pieces after cut m-1 up to cut m; ys[m]: y* at cut m.
-    let mut segments = vec![ArcSums::default(); cuts.len()];
-    let mut ys = vec![y_entry; cuts.len()];
-    let mut next = 1; // cuts[0] == -1
-    let (mut y, mut seg) = (y_entry, Sums::default());
-    for (j, &x) in u.iter().enumerate() {
-        if j > 0 || prev.is_some() {
-            let from = if j == 0 { prev.unwrap_or(x) } else { u[j - 1] };
-            let (s, l) = step(from, x);
-            y = seg.add_piece(k, y, s, l).2;
-        }
-        if cuts[next] == j as i64 {
-            (segments[next], ys[next]) = (ArcSums(seg), y);
-            seg = Sums::default();
-            next += 1;
-            if next == cuts.len() {
-                break;
-            }
-        }
+    cuts: &[u64],
+    stretches: &[(Sums, f64)],
+) -> Result<Vec<SpanPart>, HistoryError> {
+    if stretches.len() != cuts.len() {
+        return Err(HistoryError::BadSummary {
+            why: "the walk missed a cut",
+        });
     }
-    let at = |j: i64| cuts.binary_search(&j).unwrap_or(0);
+    // Position 0 is the chunk's entry (before every piece); position m + 1 is cut m.
+    let pos = |j: Option<u64>| j.map_or(0, |j| 1 + cuts.partition_point(|&c| c < j));
+    let y_at = |p: usize| if p == 0 { y_entry } else { stretches[p - 1].1 };
     let sum = |a: usize, b: usize| {
-        segments[a + 1..=b]
+        stretches[a..b]
             .iter()
-            .fold(ArcSums::default(), |acc, s| acc + *s)
+            .fold(Sums::default(), |acc, s| acc + s.0)
     };
     let mut parts = Vec::with_capacity(spans.len());
     for s in spans {
-        let a = s.from.map_or(0, |i| at(i as i64 - offset as i64));
+        let a = pos(s.from.map(|i| i - offset));
         let mut part = SpanPart {
             id: s.id,
             sums: ArcSums::default(),
-            y_from: s.from.map(|_| ys[a]),
+            y_from: s.from.map(|_| y_at(a)),
             y_to: None,
         };
         match s.to {
-            None => part.sums = sum(a, cuts.len() - 1),
+            None => part.sums = ArcSums(sum(a, cuts.len())),
             Some((c, u_a)) => {
                 let local = (c - offset) as usize;
-                let b = at(local as i64 - 1);
+                let b = pos(local.checked_sub(1).map(|j| j as u64));
                 let before = match local {
                     0 => prev.ok_or(HistoryError::ClosureNotFound { end: c })?,
                     _ => u[local - 1],
                 };
-                let mut sums = sum(a, b).0;
+                let mut sums = sum(a, b);
                 let (_, frac) = closure_at(c, u[local], before, u_a);
                 let (dir, full) = step(before, u[local]);
                 let l = cut_piece(frac, full, (u_a - before).abs());
-                part.y_to = Some(sums.add_piece(k, ys[b], dir, l).2);
+                part.y_to = Some(sums.add_piece(model.relaxation(), y_at(b), dir, l).2);
                 part.sums = ArcSums(sums);
             }
         }
         parts.push(part);
     }
-    Ok(ChunkEnergy {
-        parts,
-        total: sum(0, cuts.len() - 1),
-        y_last: ys[cuts.len() - 1],
-    })
+    Ok(parts)
 }
 
 /// The length of the closing piece up to the closure, as the single pass cuts it.
@@ -321,8 +340,8 @@ pub fn history_energy(
 ) -> HistoryEnergy {
     let (mut work, mut dissipation) = (DoubleDouble::ZERO, DoubleDouble::ZERO);
     for c in chunks {
-        work = work + c.total.0.work();
-        dissipation = dissipation + c.total.0.dissipation_dd();
+        work = work + c.work;
+        dissipation = dissipation + c.dissipation;
     }
     let y_end = chunks.last().map_or(y_start, |c| c.y_last);
     HistoryEnergy {
@@ -343,7 +362,10 @@ impl ChunkEnergy {
         b.extend_from_slice(MAGIC);
         let f = |b: &mut Vec<u8>, x: f64| b.extend_from_slice(&x.to_le_bytes());
         f(&mut b, self.y_last);
-        self.total.0.to_array().iter().for_each(|&x| f(&mut b, x));
+        for x in [self.work, self.dissipation] {
+            f(&mut b, x.hi);
+            f(&mut b, x.lo);
+        }
         b.extend_from_slice(&(self.parts.len() as u64).to_le_bytes());
         for p in &self.parts {
             b.extend_from_slice(&(p.id as u64).to_le_bytes());
@@ -370,7 +392,14 @@ impl ChunkEnergy {
             Ok(ArcSums(Sums::from_array(&a)))
         };
         let y_last = r.f64()?;
-        let total = sums(&mut r)?;
+        let work = DoubleDouble {
+            hi: r.f64()?,
+            lo: r.f64()?,
+        };
+        let dissipation = DoubleDouble {
+            hi: r.f64()?,
+            lo: r.f64()?,
+        };
         let n = r.u64()?;
         let mut parts = Vec::new();
         for _ in 0..n {
@@ -389,7 +418,8 @@ impl ChunkEnergy {
         }
         Ok(Self {
             parts,
-            total,
+            work,
+            dissipation,
             y_last,
         })
     }

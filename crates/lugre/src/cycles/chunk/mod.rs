@@ -13,6 +13,13 @@
 //! cycles and the irreducible residue do not depend on the order of the removals, and a chunk
 //! can be reduced on its own, its residue merged with its neighbour's later.
 //!
+//! This holds in exact arithmetic, so the engine decides every test `|x - b| >= |b - a|`
+//! exactly on the samples (`engine::reaches`: the rounded differences, and their rounding
+//! errors on a tie). With rounded comparisons it fails near ties: with samples near `2^53`,
+//! `R` can close `(P, Q)` (`fl|R - Q| = fl|Q - P|`) while falling short of `P` for an earlier
+//! pair (`fl|R - B| < fl|P - B|`), so that a chunk which removes `(P, Q)` first loses what `P`
+//! did to `(A, B)` (the proptests over many binades found such a history).
+//!
 //! A chunk's first and last samples need not be reversals of the whole history, but using
 //! them as the outer points `A` and `D` is safe: the history's true neighbour reversal lies
 //! further out on the same monotone run, which only makes `|B - A|` and `|D - C|` larger. They
@@ -33,9 +40,9 @@
 //! # Closures and order
 //!
 //! A cycle `(A, B)` found at a merge closes at the first sample after `B` with
-//! `|u - u_B| >= |u_B - u_A|` (the very floating-point test of the single pass). Every sample
-//! between two consecutive points of a reduced sequence lies within their hull, and
-//! `fl(u - c)` is monotone in `u`, so whether a chunk holds the closure is decided exactly from
+//! `|u - u_B| >= |u_B - u_A|` (the single pass's exact test). Every sample between two
+//! consecutive points of a reduced sequence lies within their hull, and the test is monotone
+//! in `u`, so whether a chunk holds the closure is decided exactly from
 //! its extremes (and, in `B`'s own chunk, from its points after `B`): each query goes to one
 //! chunk ([`ChunkPlan::queries`]), which scans only the blocks its extremes allow
 //! ([`close_in_chunk`]).
@@ -46,8 +53,8 @@
 //! close on the run into `P`, so sorting full cycles by `(closure index, -start)` restores
 //! their order. The bottom half cycle is placed where the run into `P` first comes back past
 //! `A` (its own "closure", found by the same query): every full cycle completed by `P` has
-//! closed by then (each starts strictly inside `(A, B)` by the stack's strict test, and
-//! `fl(u - c)` is monotone in `u`), and no later one has. The final residue goes last, by
+//! closed by then (each starts strictly inside `(A, B)` by the stack's strict test, and the
+//! test is monotone in `u`), and no later one has. The final residue goes last, by
 //! start ([`RowKey`]).
 
 mod energy;
@@ -57,7 +64,7 @@ pub use energy::{
     ArcSums, ChunkEnergy, SpanPart, StateBounds,
 };
 
-use super::engine::{admissible, bad_sample, closure_at};
+use super::engine::{self, admissible, bad_sample, closure_at};
 use super::{Closure, Cycle, CycleColumns, CycleCounter, CycleSink, CycleSummary, Reversal};
 use crate::error::HistoryError;
 use crate::model::RateIndependent;
@@ -221,7 +228,7 @@ impl ChunkSummary {
 
     /// Whether a sample of this chunk after `after` reaches the closure of `q`, decided from
     /// the pseudo-history's points after `after` (every sample lies in the hull of two
-    /// consecutive points, and `fl(u - u_B)` is monotone in `u`).
+    /// consecutive points, and the test is monotone in `u`).
     fn reaches_after(&self, q: &ClosureQuery) -> bool {
         let mut points = Vec::with_capacity(self.residue.len() + 3);
         self.pseudo(&mut points);
@@ -328,7 +335,13 @@ impl Reader<'_> {
 /// The single pass's closing test for `q` at value `u`.
 #[inline]
 fn reaches(u: f64, q: &ClosureQuery) -> bool {
-    (u - q.u_end).abs() >= (q.u_end - q.u_start).abs()
+    engine::reaches(
+        (u - q.u_end).abs(),
+        (q.u_end - q.u_start).abs(),
+        u,
+        q.u_end,
+        q.u_start,
+    )
 }
 
 /// The chunk `u`, whose first sample is sample `offset` of the history: its summary and its
@@ -360,10 +373,13 @@ pub fn count_chunk(u: &[f64], offset: u64) -> Result<(ChunkSummary, CycleColumns
     if lead == u.len() {
         return Ok((summary, rows));
     }
+    // As the single pass: room for every row up front (on huge pages, no reallocation).
+    rows.reserve_for_samples(u.len());
     // The engine checks every sample (errors carry the history's index).
     let mut counter = CycleCounter::new(0.0)?.with_origin(offset);
     counter.push_all(u, &mut rows)?;
     let counts = counter.finish(&mut rows)?;
+    rows.shrink_to_fit();
     let chain = residue_chain(&rows, u, offset);
     // Every sample lies in the hull of two consecutive points of the chain.
     for p in &chain {
@@ -571,7 +587,11 @@ impl ChunkPlan {
             .filter(|(_, seen)| *seen == t.reversals)
             .map(|(c, _)| c)
             .collect();
-        let last_drops = tail.len() >= 2 && tail[0].range <= tail[1].range;
+        let last_drops = tail.len() >= 2 && {
+            let at = |i: u64| points[i as usize].u;
+            let (a, b, p) = (at(tail[0].start), at(tail[0].end), at(tail[1].end));
+            engine::reaches((p - b).abs(), (b - a).abs(), p, b, a)
+        };
         let mut dropped = Vec::new();
         self.halves.clear();
         for (k, (c, seen)) in t.halves.iter().enumerate() {
@@ -636,7 +656,7 @@ impl ChunkPlan {
 
     /// The parts of the merge-time full cycles' arcs, by chunk (after
     /// [`resolve`](Self::resolve)): each chunk's energy pass ([`count_chunk_energy`]) sums its
-    /// own. A chunk an arc only passes through contributes its total.
+    /// own: from `A` in `A`'s chunk, the whole of each chunk in between, to `C` in `C`'s.
     pub fn energy_spans(&self) -> Result<Vec<Vec<ArcSpan>>, HistoryError> {
         let mut out = vec![Vec::new(); self.leaves.len()];
         for (id, (o, c)) in self.open.iter().zip(&self.closures).enumerate() {
@@ -645,20 +665,12 @@ impl ChunkPlan {
             }
             let c = c.ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
             let (a, z) = (self.chunk_of(o.cycle.start), self.chunk_of(c.index));
-            let to = Some((c.index, o.u_start));
-            if a == z {
-                out[a].push(ArcSpan {
+            for (k, chunk) in out.iter_mut().enumerate().take(z + 1).skip(a) {
+                chunk.push(ArcSpan {
                     id,
-                    from: Some(o.cycle.start),
-                    to,
+                    from: (k == a).then_some(o.cycle.start),
+                    to: (k == z).then_some((c.index, o.u_start)),
                 });
-            } else {
-                out[a].push(ArcSpan {
-                    id,
-                    from: Some(o.cycle.start),
-                    to: None,
-                });
-                out[z].push(ArcSpan { id, from: None, to });
             }
         }
         Ok(out)
@@ -671,43 +683,38 @@ impl ChunkPlan {
         model: RateIndependent,
         chunks: &[ChunkEnergy],
     ) -> Result<(), HistoryError> {
-        if chunks.len() != self.leaves.len() {
-            return Err(HistoryError::BadSummary {
-                why: "one energy pass per chunk is needed",
+        let missing = || HistoryError::BadSummary {
+            why: "the energy passes lack a part of an arc",
+        };
+        // Each arc's parts added in chunk order: y at A from the first, y at C from the last.
+        let mut arcs: Vec<Option<SpanPart>> = vec![None; self.open.len()];
+        for p in chunks.iter().flat_map(|c| &c.parts) {
+            let arc = arcs.get_mut(p.id).ok_or_else(missing)?;
+            *arc = Some(match *arc {
+                None => *p,
+                Some(a) => SpanPart {
+                    sums: a.sums + p.sums,
+                    y_to: p.y_to,
+                    ..a
+                },
             });
         }
-        let missing = HistoryError::BadSummary {
-            why: "an energy pass lacks a part of an arc",
-        };
-        let mut found: Vec<[Option<SpanPart>; 2]> = vec![[None, None]; self.open.len()];
-        for p in chunks.iter().flat_map(|c| &c.parts) {
-            let slot = found.get_mut(p.id).ok_or(missing.clone())?;
-            // The part from A first, the part from a chunk's entry to C second.
-            slot[usize::from(p.y_from.is_none())] = Some(*p);
-        }
-        for (id, [from, to]) in found.into_iter().enumerate() {
-            let o = self.open[id];
+        for (id, arc) in arcs.into_iter().enumerate() {
+            let o = &mut self.open[id];
             if !o.cycle.is_full() {
                 continue;
             }
             let c = self.closures[id].ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
-            let (a, z) = (self.chunk_of(o.cycle.start), self.chunk_of(c.index));
-            let from = from.ok_or(missing.clone())?;
-            let (sums, y_to) = if a == z {
-                (from.sums, from.y_to)
-            } else {
-                let to = to.ok_or(missing.clone())?;
-                let between = chunks[a + 1..z]
-                    .iter()
-                    .fold(from.sums, |acc, ch| acc + ch.total);
-                (between + to.sums, to.y_to)
+            let Some(SpanPart {
+                sums,
+                y_from: Some(y_a),
+                y_to: Some(y_c),
+                ..
+            }) = arc
+            else {
+                return Err(missing());
             };
-            let (y_a, y_c) = (
-                from.y_from.ok_or(missing.clone())?,
-                y_to.ok_or(missing.clone())?,
-            );
-            let e = arc_energy_of(model, &sums, y_a, y_c, c.index)?;
-            self.open[id].cycle.energy = Some(e);
+            o.cycle.energy = Some(arc_energy_of(model, &sums, y_a, y_c, c.index)?);
         }
         Ok(())
     }
@@ -813,6 +820,8 @@ pub fn assemble(own: &CycleColumns, extras: &[(RowKey, Cycle)]) -> CycleColumns 
     let mut out = CycleColumns::new()
         .with_reversals(false)
         .with_energy(own.keeps_energy());
+    let full = own.count.iter().filter(|&&c| c == 1.0).count();
+    out.reserve_for_samples(full + extras.len());
     let mut extra = extras.iter().peekable();
     for k in (0..own.len()).filter(|&k| own.count[k] == 1.0) {
         let key = RowKey::full(own.closure[k] as u64, own.start[k] as u64);

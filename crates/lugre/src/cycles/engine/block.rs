@@ -2,7 +2,7 @@
 //! the stack counts them, and closures are found by binary search on the block's samples; see
 //! the module docs of [`super`].
 
-use super::{admissible, bad_sample, closure_at, Engine, Open, Track};
+use super::{admissible, bad_sample, closure_at, reaches, Engine, Open, Track};
 use crate::cycles::{Closure, CycleSink};
 use crate::error::HistoryError;
 
@@ -54,11 +54,12 @@ impl<T: Track> Engine<T> {
         // The run still open: record the pending pairs its samples here already reach.
         let mut from = self.stack.last().map_or(0, |q| q.index + 1).max(base);
         loop {
-            let (w_ref, w_y) = self.pair(o, self.pending_closed);
+            let (w_ref, w_y, w_a) = self.pair(o, self.pending_closed);
             let lo = (from - base) as usize;
-            let k = lo + good[lo..].partition_point(|&w| o * w - w_ref < w_y);
+            let k = lo
+                + good[lo..].partition_point(|&w| !reaches(o * w - w_ref, w_y, w, o * w_ref, w_a));
             if k == good.len() {
-                (self.pending_b, self.pending_range) = (w_ref, w_y);
+                (self.pending_b, self.pending_range, self.pending_a) = (w_ref, w_y, w_a);
                 break;
             }
             let i = base + k as u64;
@@ -92,7 +93,7 @@ impl<T: Track> Engine<T> {
                     return None;
                 }
                 let (a, b) = (stack[start].u, stack[start + 1].u);
-                let i = s.first_reaching(from, index, b, (b - a).abs())?;
+                let i = s.first_reaching(from, index, b, a)?;
                 from = i;
                 Some(s.closure(i, a))
             },
@@ -119,14 +120,15 @@ impl Samples<'_> {
         }
     }
 
-    /// The first sample in `from..=to` (one run: monotone) back at `b`'s distance `y`, by the
-    /// test that counts a cycle: `|u - b| >= y`.
+    /// The first sample in `from..=to` (one run: monotone) back at `b`'s distance from `a`, by
+    /// the test that counts a cycle: `|u - b| >= |b - a|` ([`reaches`]).
     #[inline]
-    pub(super) fn first_reaching(&self, from: u64, to: u64, b: f64, y: f64) -> Option<u64> {
+    pub(super) fn first_reaching(&self, from: u64, to: u64, b: f64, a: f64) -> Option<u64> {
         let lo = from.checked_sub(self.base)? as usize;
         let hi = to.checked_sub(self.base)? as usize + 1;
         let run = self.good.get(lo..hi)?;
-        let k = run.partition_point(|&w| (w - b).abs() < y);
+        let y = (b - a).abs();
+        let k = run.partition_point(|&w| !reaches((w - b).abs(), y, w, b, a));
         (k < run.len()).then(|| self.base + (lo + k) as u64)
     }
 

@@ -2,7 +2,7 @@
 //! ([`Engine::count_fast`]); see the module docs of [`super`].
 
 use super::block::Samples;
-use super::{Engine, Open, Track};
+use super::{reaches, Engine, Open, Track};
 use crate::cycles::columns::FullCycle;
 use crate::cycles::{Closure, CycleColumns};
 
@@ -70,7 +70,7 @@ impl<T: Track> Engine<T> {
         // The test of `settle` (and `rainflow`) on the top three: `(a, b)` is a full cycle.
         // Each step works out the next step's test for both of its outcomes, so that the
         // chain from one test to the next spans two steps.
-        let test = |a: f64, b: f64, p: f64| (p - b).abs() >= (b - a).abs();
+        let test = |a: f64, b: f64, p: f64| reaches((p - b).abs(), (b - a).abs(), p, b, a);
         let mut full = test(f64::from_bits(ua), f64::from_bits(ub), f64::from_bits(up));
         while l >= 2 && l + 3 < lim && j < found && nf < FULL_CAP {
             let (a, b, p) = (f64::from_bits(ua), f64::from_bits(ub), f64::from_bits(up));
@@ -116,8 +116,7 @@ impl<T: Track> Engine<T> {
             // The run into `P` starts after the reversal before it (both in this block: the
             // stretch starts after the block's first reversal).
             let (p, run) = (buf[c.closer].0, buf[c.closer.saturating_sub(1)].0 + 1);
-            let y = (c.b_u - c.a_u).abs();
-            match s.first_reaching(run, p, c.b_u, y) {
+            match s.first_reaching(run, p, c.b_u, c.a_u) {
                 Some(i) => s.closure(i, c.a_u),
                 None => {
                     // `P` itself passes the test: see `settle`.
@@ -134,7 +133,7 @@ impl<T: Track> Engine<T> {
         let mut from = self.block_reversals[j.saturating_sub(2)].0 + 1;
         self.settle(columns, |stack, start| {
             let (a, b) = (stack[start].u, stack[start + 1].u);
-            let i = s.first_reaching(from, top, b, (b - a).abs())?;
+            let i = s.first_reaching(from, top, b, a)?;
             from = i;
             Some(s.closure(i, a))
         });

@@ -50,6 +50,7 @@ mod walk;
 use super::columns::FullCycle;
 use super::{Closure, Cycle, CycleEnergy, CycleSink, Reversal};
 use crate::error::HistoryError;
+use crate::kernel::numerics::DoubleDouble;
 use block::{BLOCK, BLOCK_MIN};
 use fast::MIN_ROOM;
 
@@ -168,10 +169,11 @@ pub(crate) struct Engine<T: Track> {
     candidate_state: T::State,
     /// The rainflow stack of open reversals.
     stack: Vec<Open<T::State, T::Energy>>,
-    /// The pending pair of the closure walk: `direction u_B` and `Y = |u_B - u_A|`
-    /// (`Y = inf` when no full cycle is pending).
+    /// The pending pair of the closure walk: `direction u_B`, `Y = |u_B - u_A|` (`Y = inf`
+    /// when no full cycle is pending) and `u_A` (for [`reaches`]' ties).
     pending_b: f64,
     pending_range: f64,
+    pending_a: f64,
     /// Pairs of the current run already found closed (their closures are on the stack).
     pending_closed: usize,
     /// The block path's reversals of the current block (`BLOCK + 1` slots).
@@ -206,6 +208,7 @@ impl<T: Track> Engine<T> {
             stack: Vec::with_capacity(64),
             pending_b: 0.0,
             pending_range: f64::INFINITY,
+            pending_a: 0.0,
             pending_closed: 0,
             block_reversals: Vec::new(),
             fast_full: Vec::new(),
@@ -248,18 +251,18 @@ impl<T: Track> Engine<T> {
         Ok(())
     }
 
-    /// The walk's pair `depth` below the top of the stack for a run in direction `o`: `o u_B`
-    /// and `Y` (`Y = inf` when that pair would be a half cycle or does not exist).
+    /// The walk's pair `depth` below the top of the stack for a run in direction `o`: `o u_B`,
+    /// `Y` (`Y = inf` when that pair would be a half cycle or does not exist) and `u_A`.
     #[inline]
-    fn pair(&self, o: f64, depth: usize) -> (f64, f64) {
+    fn pair(&self, o: f64, depth: usize) -> (f64, f64, f64) {
         let len = self.stack.len();
         let j2 = 2 * depth;
         if len >= 3 + j2 {
             let b = self.stack[len - 1 - j2].u;
             let a = self.stack[len - 2 - j2].u;
-            (o * b, (b - a).abs())
+            (o * b, (b - a).abs(), a)
         } else {
-            (0.0, f64::INFINITY)
+            NO_PAIR
         }
     }
 
@@ -273,13 +276,13 @@ impl<T: Track> Engine<T> {
         v: f64,
         prev: f64,
         o: f64,
-    ) -> Result<(f64, f64), HistoryError> {
+    ) -> Result<(f64, f64, f64), HistoryError> {
         loop {
             let depth = self.pending_closed;
             let len = self.stack.len();
             if len < 3 + 2 * depth {
                 // Only reachable through an overflowed difference; nothing is pending.
-                return Ok((0.0, f64::INFINITY));
+                return Ok(NO_PAIR);
             }
             let start = len - 2 - 2 * depth;
             let (closure, frac) = closure_at(i, u, prev, self.stack[start].u);
@@ -288,10 +291,10 @@ impl<T: Track> Engine<T> {
             entry.closure = closure;
             entry.energy = energy;
             self.pending_closed = depth + 1;
-            let (w_ref, w_y) = self.pair(o, depth + 1);
+            let (w_ref, w_y, w_a) = self.pair(o, depth + 1);
             // No NaN here: samples are admissible, `w_y` is finite or infinite.
-            if v - w_ref < w_y {
-                return Ok((w_ref, w_y));
+            if !reaches(v - w_ref, w_y, u, o * w_ref, w_a) {
+                return Ok((w_ref, w_y, w_a));
             }
         }
     }
@@ -333,7 +336,7 @@ impl<T: Track> Engine<T> {
                 self.stack[m - 2].u,
                 self.stack[m - 1].u,
             );
-            if (x3 - x2).abs() < (x2 - x1).abs() {
+            if !reaches((x3 - x2).abs(), (x2 - x1).abs(), x3, x2, x1) {
                 break;
             }
             if m == 3 {
@@ -418,6 +421,42 @@ pub(crate) fn closure_at(i: u64, u: f64, prev: f64, ua: f64) -> (Closure, f64) {
         position: i.saturating_sub(1) as f64 + frac,
     };
     (closure, frac)
+}
+
+/// No pending pair: nothing reaches `Y = inf`.
+const NO_PAIR: (f64, f64, f64) = (0.0, f64::INFINITY, 0.0);
+
+/// The three-point test `|x - b| >= |b - a|` **in exact arithmetic** (of the samples as they
+/// are), given its rounded sides `d` (`|x - b|`, or `o (x - b)` for a run in direction `o`)
+/// and `y = |b - a|`: the rounded sides decide unless they are equal (rounding is monotone),
+/// and then their rounding errors do. `y = inf` (no pair) is never reached, and a NaN `d`
+/// (before the first run) never reaches.
+///
+/// Exact, the four-point removal is confluent (see `chunk`): a chunk reduced on its own gives
+/// the single pass's cycles. Rounded, it is not: with samples near `2^53`, `|R - Q|` and
+/// `|Q - P|` can round to equal values while `|R - B| < |P - B|` for an earlier pair
+/// `(A, B)`, so that removing `(P, Q)` first changes what `(A, B)` does. The rounded test
+/// differs from the exact one only where two ranges round to the same double without being
+/// equal (never on data whose differences are exact, such as integers).
+#[inline(always)]
+pub(crate) fn reaches(d: f64, y: f64, x: f64, b: f64, a: f64) -> bool {
+    if d != y {
+        d > y
+    } else {
+        reaches_on_tie(x, b, a)
+    }
+}
+
+/// [`reaches`] when the rounded sides are equal: compare the rounding errors (`|e| <=` half
+/// an ulp of the side, so `|x - b| = |s1| + sign(s1) e1` exactly).
+#[cold]
+#[inline(never)]
+fn reaches_on_tie(x: f64, b: f64, a: f64) -> bool {
+    let (s1, e1) = DoubleDouble::two_sum(x, -b);
+    let (s2, e2) = DoubleDouble::two_sum(b, -a);
+    let e1 = if s1 < 0.0 { -e1 } else { e1 };
+    let e2 = if s2 < 0.0 { -e2 } else { e2 };
+    e1 >= e2
 }
 
 /// Finite with `|u| <= MAX_ABS` (one comparison, false for NaN).

@@ -1,7 +1,7 @@
 //! The per-sample path: the reversal filter, the three-point test and the closure walk one
 //! sample at a time (any gate, any tracker); see the module docs of [`super`].
 
-use super::{admissible, bad_sample, Engine, Open, Track};
+use super::{admissible, bad_sample, reaches, Engine, Open, Track, NO_PAIR};
 use crate::cycles::{CycleSink, Reversal};
 use crate::error::HistoryError;
 
@@ -14,7 +14,7 @@ impl<T: Track> Engine<T> {
     ) -> Result<(), HistoryError> {
         let gate = self.gate;
         let (mut o, mut c, mut c_index) = (self.direction, self.candidate, self.candidate_index);
-        let (mut w_ref, mut w_y) = (self.pending_b, self.pending_range);
+        let (mut w_ref, mut w_y, mut w_a) = (self.pending_b, self.pending_range, self.pending_a);
         let (mut i, mut prev) = (self.taken, self.prev);
         let mut result = Ok(());
         for &u in us {
@@ -27,9 +27,9 @@ impl<T: Track> Engine<T> {
             let v = o * u;
             if v >= c {
                 // At or beyond the candidate: the run goes on.
-                if v - w_ref >= w_y {
+                if reaches(v - w_ref, w_y, u, o * w_ref, w_a) {
                     match self.close_pending(i, u, v, prev, o) {
-                        Ok(w) => (w_ref, w_y) = w,
+                        Ok(w) => (w_ref, w_y, w_a) = w,
                         Err(e) => {
                             result = Err(e);
                             break;
@@ -50,10 +50,10 @@ impl<T: Track> Engine<T> {
                 c_index = i;
                 self.candidate_state = self.track.state();
                 self.pending_closed = 0;
-                (w_ref, w_y) = self.pair(o, 0);
-                if c - w_ref >= w_y {
+                (w_ref, w_y, w_a) = self.pair(o, 0);
+                if reaches(c - w_ref, w_y, u, o * w_ref, w_a) {
                     match self.close_pending(i, u, c, prev, o) {
-                        Ok(w) => (w_ref, w_y) = w,
+                        Ok(w) => (w_ref, w_y, w_a) = w,
                         Err(e) => {
                             result = Err(e);
                             break;
@@ -67,14 +67,14 @@ impl<T: Track> Engine<T> {
                     c_index = i;
                     self.candidate_state = self.track.state();
                     // One reversal on the stack: no pair is pending yet.
-                    (w_ref, w_y) = (0.0, f64::INFINITY);
+                    (w_ref, w_y, w_a) = NO_PAIR;
                 }
             }
             prev = u;
             i += 1;
         }
         (self.direction, self.candidate, self.candidate_index) = (o, c, c_index);
-        (self.pending_b, self.pending_range) = (w_ref, w_y);
+        (self.pending_b, self.pending_range, self.pending_a) = (w_ref, w_y, w_a);
         (self.taken, self.prev) = (i, prev);
         result
     }

@@ -1,0 +1,453 @@
+"""Rainflow counts of histories too large for one machine, on Dask (``pip install lugre[dask]``).
+
+``lugre.dask.cycles(x, model=None, x0=0.0)`` counts a 1-D ``dask.array`` (or a list of ``.npy``
+files read as one history, in order) chunk by chunk and returns a ``dask.dataframe`` with the
+columns of ``lugre.cycles(...)["cycles"]``, **equal to the single pass row for row**: the same
+ranges, means, counts, start/end indices, closure indices and positions, in the same order
+(the frame's index is the row number of the single pass), and with a model the same energies
+and totals, bit for bit.
+
+How (``lugre::cycles::chunk``): each chunk is counted on its own (its own full cycles and an
+irreducible residue, at the single pass's speed); the residues are merged pairwise as a tree
+of small tasks; the cycles only the merges complete get their closures from a second,
+read-only pass over the chunks that can hold them (found from each chunk's extremes); with a
+model, every chunk is counted again with energies from its entry state ``y*``, guessed from
+the chunk before (both extreme states run through it land on the same double on any record
+that moves) and verified in order, a wrong guess costing one chunk counted again; the rows
+are put back in the single pass's order per chunk. ``count`` also returns the summary and the
+time of each stage.
+
+The core package never imports Dask; this module needs ``dask[distributed,dataframe]``. It
+runs on the scheduler Dask would use anyway: a ``distributed.Client`` if one is active
+(``Client("tcp://scheduler:8786")`` for a real cluster), else threads.
+
+The noise gate is not available here (``gate`` must be 0): whether a turn is a reversal
+depends on how far the history later comes back, which a chunk cannot know; count gated
+histories with ``lugre.cycles``. Records that are independent (one test each) are counted or
+fitted one task per file by ``cycles_many`` and ``fit_many``.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import time
+from typing import Any, Callable, Optional, Sequence
+
+import numpy as np
+
+try:
+    import dask
+    import dask.array as da
+    import dask.dataframe as dd
+    import pandas as pd
+except ImportError as e:  # pragma: no cover - the message is the point
+    raise ImportError(
+        "lugre.dask needs Dask: pip install 'lugre[dask]' (dask[distributed,dataframe])"
+    ) from e
+
+from . import _lugre
+from . import cycles as _single_cycles
+from . import fit as _single_fit
+
+__all__ = ["count", "cycles", "cycles_many", "fit_many"]
+
+_COLUMNS = ["range", "mean", "count", "start", "end", "closure", "closure_position"]
+_ENERGY = ["work", "stored_energy_change", "dissipation", "closure_gap"]
+# Samples at a chunk's end over which its end state is first guessed.
+_TAIL = 1 << 14
+
+
+class _Chunks:
+    """The history's chunks: a delayed reader per chunk, and each chunk's first index."""
+
+    def __init__(self, readers: list, lengths: list[int], names: list[str]):
+        self.readers = readers
+        self.offsets = [int(o) for o in np.cumsum([0] + lengths[:-1])]
+        self.lengths = lengths
+        self.names = names
+
+    def __len__(self) -> int:
+        return len(self.readers)
+
+    def where(self, k: int) -> str:
+        a = self.offsets[k]
+        return f"chunk {k} of {len(self)} ({self.names[k]}u[{a}..={a + self.lengths[k] - 1}])"
+
+
+def _as_floats(block: Any) -> np.ndarray:
+    """A chunk as contiguous float64 (the dtype was checked before any task ran)."""
+    return np.ascontiguousarray(np.asarray(block).reshape(-1), dtype=np.float64)
+
+
+def _read_npy(path: str) -> np.ndarray:
+    return _as_floats(np.load(path, mmap_mode="r"))
+
+
+def _natural_key(name: str) -> list:
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
+
+
+def _check_dtype(dtype: np.dtype, what: str) -> None:
+    # The kinds lugre.cycles takes: integers and floats (not bool, complex, text, objects).
+    if np.dtype(dtype).kind not in "iuf":
+        raise TypeError(
+            f"{what} must hold real numbers, got dtype {np.dtype(dtype)}"
+        )
+
+
+def _from_files(paths: Sequence[Any], check_order: bool) -> _Chunks:
+    names = [os.fspath(p) for p in paths]
+    if not names:
+        raise ValueError("lugre.dask: the list of files is empty")
+    lengths = []
+    for k, p in enumerate(names):
+        if not os.path.isfile(p):
+            raise ValueError(f"lugre.dask: file {k} of {len(names)} ({p}) does not exist")
+        if not p.endswith(".npy"):
+            raise ValueError(
+                f"lugre.dask: file {k} ({p}) is not a .npy file (write chunks with numpy.save)"
+            )
+        a = np.load(p, mmap_mode="r")  # reads the header only
+        if a.ndim != 1:
+            raise ValueError(
+                f"lugre.dask: file {k} ({p}) must hold a 1-D array, got shape {list(a.shape)}"
+            )
+        _check_dtype(a.dtype, f"lugre.dask: file {k} ({p})")
+        if a.size == 0:
+            raise ValueError(f"lugre.dask: file {k} ({p}) is empty")
+        lengths.append(int(a.size))
+    if check_order:
+        base = [os.path.basename(p) for p in names]
+        for k in range(1, len(base)):
+            if _natural_key(base[k]) < _natural_key(base[k - 1]):
+                raise ValueError(
+                    f"lugre.dask: files are not in order: {names[k]} comes after {names[k - 1]} "
+                    "(pass them in the history's order, e.g. sorted by name; "
+                    "check_order=False takes them as given)"
+                )
+    readers = [dask.delayed(_read_npy, pure=True)(p) for p in names]
+    return _Chunks(readers, lengths, [f"{p}: " for p in names])
+
+
+def _from_array(x: Any) -> _Chunks:
+    if x.ndim != 1:
+        raise ValueError(f"series must be one-dimensional, got a dask array of shape {list(x.shape)}")
+    _check_dtype(x.dtype, "series")
+    lengths = list(x.chunks[0])
+    if any(np.isnan(n) for n in lengths):
+        raise ValueError(
+            "lugre.dask: the dask array has unknown chunk sizes; call x.compute_chunk_sizes() first"
+        )
+    lengths = [int(n) for n in lengths]
+    for k, n in enumerate(lengths):
+        if n == 0:
+            a = sum(lengths[:k])
+            raise ValueError(
+                f"lugre.dask: chunk {k} of {len(lengths)} (before u[{a}]) is empty; "
+                "rechunk the array (x.rechunk(...))"
+            )
+    readers = [dask.delayed(_as_floats, pure=True)(b) for b in x.to_delayed().ravel()]
+    return _Chunks(readers, lengths, ["" for _ in lengths])
+
+
+def _chunks_of(x: Any, check_order: bool) -> _Chunks:
+    if isinstance(x, da.Array):
+        return _from_array(x)
+    if isinstance(x, (list, tuple)) and all(isinstance(p, (str, os.PathLike)) for p in x):
+        return _from_files(x, check_order)
+    raise TypeError(
+        "lugre.dask: x must be a 1-D dask.array or a list of .npy file paths, "
+        f"got {type(x).__name__}"
+    )
+
+
+def _in_chunk(where: str, f: Callable, *args: Any) -> Any:
+    """Runs one chunk's step; a bad sample's message names the chunk."""
+    try:
+        return f(*args)
+    except ValueError as e:
+        raise ValueError(f"{where}: {e}") from None
+
+
+# --- the tasks (module-level functions: they pickle by reference) -------------------------------
+
+
+def _leaf(u: np.ndarray, offset: int, where: str, model: Any) -> tuple:
+    summary, rows = _in_chunk(where, _lugre.chunk_count, u, offset)
+    bounds = None
+    if model is not None:
+        # The state at the chunk's end from both extremes over its last samples; the whole
+        # chunk where these do not agree (a quiet stretch). A guess either way: verified.
+        tail = max(len(u) - _TAIL, 0)
+        bounds = _in_chunk(where, _lugre.chunk_bounds, u[tail:], offset + tail, None, model)
+        if bounds[0] != bounds[1] and tail > 0:
+            bounds = _in_chunk(where, _lugre.chunk_bounds, u, offset, None, model)
+        rows = None  # counted again with energies
+    return summary, rows, bounds
+
+
+def _pick(t: tuple, i: int) -> Any:
+    return t[i]
+
+
+def _merge(left: Any, right: Any) -> tuple:
+    return _lugre.chunk_merge(left, right)
+
+
+def _close(u: np.ndarray, offset: int, prev: Optional[float], queries: dict, where: str) -> dict:
+    return _in_chunk(where, _lugre.chunk_close, u, offset, prev, queries)
+
+
+def _energy(u: np.ndarray, offset: int, prev: Optional[float], y: float, model: Any,
+            spans: Optional[dict], where: str) -> tuple:
+    return _in_chunk(where, _lugre.chunk_count_energy, u, offset, prev, y, model, spans)
+
+
+def _energy_small(t: tuple) -> tuple:
+    return t[1], t[2]
+
+
+def _assemble(own: dict, extras: dict, first_row: int, energy: bool) -> "pd.DataFrame":
+    rows = _lugre.chunk_assemble(own, extras)
+    columns = _COLUMNS + (_ENERGY if energy else [])
+    n = len(rows["range"])
+    # copy=False: one block per column, as the arrays come (no consolidating copy).
+    return pd.DataFrame({c: rows[c] for c in columns},
+                        index=pd.RangeIndex(first_row, first_row + n), copy=False)
+
+
+def _meta(energy: bool) -> "pd.DataFrame":
+    types = {"range": "f8", "mean": "f8", "count": "f8", "start": "i8", "end": "i8",
+             "closure": "i8", "closure_position": "f8"}
+    if energy:
+        types.update({c: "f8" for c in _ENERGY})
+    return pd.DataFrame({c: np.array([], dtype=t) for c, t in types.items()})
+
+
+# --- the driver -----------------------------------------------------------------------------------
+
+
+def _merge_tree(summaries: list) -> tuple:
+    """Pairwise merges, level by level, as delayed tasks: (root, [open cycles of each merge])."""
+    level, opens = list(summaries), []
+    while len(level) > 1:
+        nxt = []
+        for i in range(0, len(level) - 1, 2):
+            m = dask.delayed(_merge, pure=True)(level[i], level[i + 1])
+            nxt.append(dask.delayed(_pick, pure=True)(m, 0))
+            opens.append(dask.delayed(_pick, pure=True)(m, 1))
+        if len(level) % 2:
+            nxt.append(level[-1])
+        level = nxt
+    return level[0], opens
+
+
+def _check_model(model: Any, x0: float, gate: float) -> None:
+    if gate != 0:
+        raise ValueError(
+            "lugre.dask: gate > 0 is not available in distributed mode (whether a turn is a "
+            "reversal depends on how far the history later comes back, which a chunk cannot "
+            "know); count with gate=0, or count the whole history with lugre.cycles"
+        )
+    # The single pass's own checks (model type, x0 finite and |sigma0 x0| <= g0), before
+    # any task runs.
+    _single_cycles([0.0, 1.0], 0.0, model, x0, reversals=False)
+
+
+def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+          check_order: bool = True) -> dict:
+    """Counts the history ``x`` in chunks on Dask; returns a dict with "cycles" (a persisted
+    ``dask.dataframe``, see ``cycles``), "summary" (that of ``lugre.cycles``), "chunks", "stages"
+    (seconds per stage: count, merge, closures, energies, assemble) and "entries" (with a
+    model: how many chunks' guessed entry states held, of how many; the others were counted
+    again from the exact state).
+
+    ``x``: a 1-D ``dask.array`` of real numbers (no empty chunks, known chunk sizes) or a list
+    of ``.npy`` files holding 1-D arrays, read as one history in the given order (checked to be
+    in natural name order unless ``check_order=False``).
+    """
+    _check_model(model, x0, gate)
+    chunks = _chunks_of(x, check_order)
+    n = len(chunks)
+    total = sum(chunks.lengths)
+    energy = model is not None
+    stages: dict[str, float] = {}
+
+    tic = time.perf_counter()
+    leaves = [dask.delayed(_leaf, pure=True)(r, chunks.offsets[k], chunks.where(k), model)
+              for k, r in enumerate(chunks.readers)]
+    leaves = list(dask.persist(*leaves))
+    summaries = [dask.delayed(_pick, pure=True)(lf, 0) for lf in leaves]
+    bounds = [dask.delayed(_pick, pure=True)(lf, 2) for lf in leaves]
+    summaries_v, bounds_v = dask.compute(summaries, bounds)
+    stages["count"] = time.perf_counter() - tic
+
+    tic = time.perf_counter()
+    if total < 2:
+        # One sample: what lugre.cycles says of it (no rows).
+        r = _single_cycles(np.zeros(total), 0.0, model, x0, reversals=False)
+        df = dd.from_pandas(_meta(energy), npartitions=1)
+        return {"cycles": df, "summary": r["summary"], "chunks": n, "stages": stages,
+                "entries": None}
+    root, opens = _merge_tree(summaries)
+    root_v, opens_v = dask.compute(root, opens)
+    plan = _lugre.ChunkPlan(list(summaries_v))
+    for o in opens_v:
+        plan.add_open(o)
+    summary = plan.finish(root_v)
+    stages["merge"] = time.perf_counter() - tic
+
+    tic = time.perf_counter()
+    prevs = [None] + [s.last for s in summaries_v[:-1]]
+    closes = [dask.delayed(_close, pure=True)(chunks.readers[k], chunks.offsets[k], prevs[k], q,
+                                              chunks.where(k))
+              for k, q in enumerate(plan.queries()) if q is not None]
+    for found in dask.compute(*closes):
+        plan.resolve(found)
+    stages["closures"] = time.perf_counter() - tic
+
+    entries = None
+    if energy:
+        tic = time.perf_counter()
+        spans = plan.energy_spans()
+        y0 = model.sigma0 * x0
+        guesses = _lugre.chunk_guess_entries(model, y0, list(bounds_v))
+
+        def energy_task(k: int, y: float) -> Any:
+            return dask.delayed(_energy, pure=True)(
+                chunks.readers[k], chunks.offsets[k], prevs[k], y, model, spans[k],
+                chunks.where(k))
+
+        passes = list(dask.persist(*[energy_task(k, guesses[k]) for k in range(n)]))
+        small = list(dask.compute(*[dask.delayed(_energy_small, pure=True)(p) for p in passes]))
+        held = 0
+        # Verified in order: chunk 0 enters exactly; chunk k's guess holds when it is the
+        # state chunk k-1's (exact) pass ended at, else chunk k is counted again from it.
+        for k in range(1, n):
+            exact = small[k - 1][1]
+            if exact == guesses[k] and np.signbit(exact) == np.signbit(guesses[k]):
+                held += 1
+                continue
+            (passes[k],) = dask.persist(energy_task(k, exact))
+            small[k] = dask.compute(dask.delayed(_energy_small, pure=True)(passes[k]))[0]
+        plan.attach_energy(model, [s[0] for s in small])
+        summary["energy"] = _lugre.chunk_history_energy(model, y0, [s[0] for s in small])
+        own = [dask.delayed(_pick, pure=True)(p, 0) for p in passes]
+        entries = {"held": held, "chunks": n - 1}
+        stages["energies"] = time.perf_counter() - tic
+    else:
+        own = [dask.delayed(_pick, pure=True)(lf, 1) for lf in leaves]
+
+    tic = time.perf_counter()
+    extras = plan.extras(energy)
+    first, parts = 0, []
+    for k in range(n):
+        parts.append(dask.delayed(_assemble, pure=True)(own[k], extras[k], first, energy))
+        first += summaries_v[k].full_cycles + len(extras[k]["range"])
+    df = dd.from_delayed(parts, meta=_meta(energy), verify_meta=False)
+    df = df.persist()
+    # Waits for every partition (a failed task raises here, never a partial table).
+    lengths = df.map_partitions(len).compute()
+    if int(np.sum(lengths)) != first:
+        raise RuntimeError(f"lugre.dask: assembled {int(np.sum(lengths))} rows, expected {first}")
+    stages["assemble"] = time.perf_counter() - tic
+    return {"cycles": df, "summary": summary, "chunks": n, "stages": stages, "entries": entries}
+
+
+def cycles(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+           check_order: bool = True) -> "dd.DataFrame":
+    """The rainflow cycles of the history ``x`` (see ``count``) as a persisted
+    ``dask.dataframe`` with the columns of ``lugre.cycles(...)["cycles"]`` ("range", "mean",
+    "count", "start", "end", "closure", "closure_position"; with a model "work",
+    "stored_energy_change", "dissipation", "closure_gap"), one partition per chunk, indexed by
+    the single pass's row number: ``cycles(x).compute()`` equals
+    ``pandas.DataFrame(lugre.cycles(x.compute(), reversals=False)["cycles"])``."""
+    return count(x, model, x0, gate, check_order=check_order)["cycles"]
+
+
+# --- independent records, one task per file ------------------------------------------------------
+
+
+def _series_of(path: str, column: Optional[str]) -> np.ndarray:
+    if path.endswith(".npy"):
+        return _read_npy(path)
+    table = _read_table(path)
+    return _as_floats(table[_column(table, column or "u", path)].to_numpy())
+
+
+def _read_table(path: str) -> "pd.DataFrame":
+    # Delimiter sniffed (comma, semicolon, tab, whitespace), as the lugre command reads files.
+    return pd.read_csv(path, sep=None, engine="python")
+
+
+def _column(table: "pd.DataFrame", name: str, path: str) -> str:
+    """The column called ``name``, case-insensitively, ignoring a unit suffix in brackets."""
+    def bare(c: str) -> str:
+        return re.sub(r"\s*[\[(].*[\])]\s*$", "", str(c)).strip().lower()
+
+    for c in table.columns:
+        if bare(c) == name.lower():
+            return c
+    raise ValueError(f"{path}: no column {name!r} (columns: {', '.join(map(str, table.columns))})")
+
+
+def _cycles_file(path: str, column: Optional[str], gate: float, model: Any, x0: float) -> "pd.DataFrame":
+    try:
+        u = _series_of(path, column)
+        r = _single_cycles(u, gate, model, x0, reversals=False)
+    except (ValueError, TypeError) as e:
+        raise type(e)(f"{path}: {e}") from None
+    df = pd.DataFrame(r["cycles"])
+    df.insert(0, "file", path)
+    return df
+
+
+def cycles_many(paths: Sequence[Any], model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+                column: Optional[str] = None) -> "pd.DataFrame":
+    """The cycles of independent records, one task per file (``.npy``, or a delimited text
+    file with a header, the series in the column named ``column``, default "u"), as one pandas
+    table with a "file" column first; the gate is allowed (each file is counted whole)."""
+    names = [os.fspath(p) for p in paths]
+    for p in names:
+        if not os.path.isfile(p):
+            raise ValueError(f"lugre.dask: file {p} does not exist")
+    _single_cycles([0.0, 1.0], gate, model, x0, reversals=False)
+    tasks = [dask.delayed(_cycles_file, pure=True)(p, column, gate, model, x0) for p in names]
+    frames = dask.compute(*tasks)
+    if not frames:
+        return pd.DataFrame(columns=["file"] + _COLUMNS)
+    return pd.concat(frames, ignore_index=True)
+
+
+def _fit_file(path: str, columns: dict, kwargs: dict) -> dict:
+    try:
+        table = _read_table(path)
+        get = {k: _as_floats(table[_column(table, v, path)].to_numpy())
+               for k, v in columns.items() if v is not None}
+        t = get.get("t")
+        if "t" in columns and columns["t"] is not None and t is None:
+            raise ValueError("no time column")
+        r = _single_fit(get["u"], get["f"], t=t, **kwargs)
+    except (ValueError, TypeError, KeyError) as e:
+        raise ValueError(f"{path}: {e}") from None
+    row = {"file": path, "rms": r["rms"], "samples": r["samples"], "converged": r["converged"]}
+    for name, p in r["parameters"].items():
+        row[name] = p["value"]
+        row[f"{name}_stderr"] = p["stderr"]
+    return row
+
+
+def fit_many(paths: Sequence[Any], *, u: str = "u", f: str = "F", t: Optional[str] = None,
+             **kwargs: Any) -> "pd.DataFrame":
+    """``lugre.fit`` on independent records, one task per file (delimited text with a header;
+    columns ``u``, ``f`` and optionally ``t`` matched by name case-insensitively, a unit suffix
+    in brackets ignored), as one pandas table: "file", "rms", "samples", "converged", and each
+    fitted parameter's value and "<name>_stderr". ``kwargs`` go to ``lugre.fit``."""
+    names = [os.fspath(p) for p in paths]
+    for p in names:
+        if not os.path.isfile(p):
+            raise ValueError(f"lugre.dask: file {p} does not exist")
+    columns = {"u": u, "f": f, "t": t}
+    rows = dask.compute(*[dask.delayed(_fit_file, pure=True)(p, columns, kwargs) for p in names])
+    return pd.DataFrame(list(rows))
