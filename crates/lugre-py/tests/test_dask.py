@@ -23,10 +23,10 @@ def single(u, model=None, x0=0.0):
     return pd.DataFrame(r["cycles"]), r["summary"]
 
 
-def check(u, chunks, model=None, x0=0.0):
+def check(u, chunks, model=None, x0=0.0, fan_in=2):
     x = da.from_array(np.asarray(u, dtype=float), chunks=chunks)
     with dask.config.set(scheduler="threads"):
-        r = ld.count(x, model=model, x0=x0)
+        r = ld.count(x, model=model, x0=x0, merge_fan_in=fan_in)
         got = r["cycles"].compute()
     want, summary = single(np.asarray(u, dtype=float), model, x0)
     pd.testing.assert_frame_equal(got, want, check_exact=True)
@@ -63,7 +63,7 @@ def test_small_integers_plateaus_and_one_sample_chunks(seed):
     rng = np.random.default_rng(seed)
     u = rng.integers(-2, 3, size=int(rng.integers(2, 60))).astype(float)
     check(u, 1)  # every chunk one sample
-    check(u, int(rng.integers(1, 8)))
+    check(u, int(rng.integers(1, 8)), fan_in=int(rng.integers(2, 9)))
 
 
 @pytest.mark.parametrize("model,x0", [
@@ -116,6 +116,8 @@ def test_bad_input_is_refused_before_any_task():
         ld.cycles(x, model="lugre")
     with pytest.raises(TypeError, match="dask.array or a list"):
         ld.cycles(u)
+    with pytest.raises(ValueError, match="merge_fan_in must be an integer >= 2, got 1"):
+        ld.count(x, merge_fan_in=1)
 
 
 def test_a_bad_sample_names_its_chunk_and_index():

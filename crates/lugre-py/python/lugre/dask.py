@@ -126,7 +126,7 @@ def _from_files(paths: Sequence[Any], check_order: bool) -> _Chunks:
                     "(pass them in the history's order, e.g. sorted by name; "
                     "check_order=False takes them as given)"
                 )
-    readers = [dask.delayed(_read_npy, pure=True)(p) for p in names]
+    readers = [dask.delayed(_read_npy)(p) for p in names]
     return _Chunks(readers, lengths, [f"{p}: " for p in names])
 
 
@@ -147,7 +147,7 @@ def _from_array(x: Any) -> _Chunks:
                 f"lugre.dask: chunk {k} of {len(lengths)} (before u[{a}]) is empty; "
                 "rechunk the array (x.rechunk(...))"
             )
-    readers = [dask.delayed(_as_floats, pure=True)(b) for b in x.to_delayed().ravel()]
+    readers = [dask.delayed(_as_floats)(b) for b in x.to_delayed().ravel()]
     return _Chunks(readers, lengths, ["" for _ in lengths])
 
 
@@ -191,8 +191,13 @@ def _pick(t: tuple, i: int) -> Any:
     return t[i]
 
 
-def _merge(left: Any, right: Any) -> tuple:
-    return _lugre.chunk_merge(left, right)
+def _merge(*summaries: Any) -> tuple:
+    """Merges adjacent summaries left to right: the summary of all and the open cycles."""
+    acc, opens = summaries[0], []
+    for s in summaries[1:]:
+        acc, o = _lugre.chunk_merge(acc, s)
+        opens.append(o)
+    return acc, opens
 
 
 def _close(u: np.ndarray, offset: int, prev: Optional[float], queries: dict, where: str) -> dict:
@@ -228,17 +233,21 @@ def _meta(energy: bool) -> "pd.DataFrame":
 # --- the driver -----------------------------------------------------------------------------------
 
 
-def _merge_tree(summaries: list) -> tuple:
-    """Pairwise merges, level by level, as delayed tasks: (root, [open cycles of each merge])."""
+def _merge_tree(summaries: list, fan_in: int) -> tuple:
+    """Merges as a tree of delayed tasks, ``fan_in`` summaries per task (a merge costs about a
+    microsecond: tasks of one merge each would cost the scheduler more than the merges):
+    (root, [lists of open cycles])."""
     level, opens = list(summaries), []
     while len(level) > 1:
         nxt = []
-        for i in range(0, len(level) - 1, 2):
-            m = dask.delayed(_merge, pure=True)(level[i], level[i + 1])
-            nxt.append(dask.delayed(_pick, pure=True)(m, 0))
-            opens.append(dask.delayed(_pick, pure=True)(m, 1))
-        if len(level) % 2:
-            nxt.append(level[-1])
+        for i in range(0, len(level), fan_in):
+            group = level[i:i + fan_in]
+            if len(group) == 1:
+                nxt.append(group[0])
+                continue
+            m = dask.delayed(_merge)(*group)
+            nxt.append(dask.delayed(_pick)(m, 0))
+            opens.append(dask.delayed(_pick)(m, 1))
         level = nxt
     return level[0], opens
 
@@ -256,7 +265,7 @@ def _check_model(model: Any, x0: float, gate: float) -> None:
 
 
 def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
-          check_order: bool = True) -> dict:
+          check_order: bool = True, merge_fan_in: int = 8) -> dict:
     """Counts the history ``x`` in chunks on Dask; returns a dict with "cycles" (a persisted
     ``dask.dataframe``, see ``cycles``), "summary" (that of ``lugre.cycles``), "chunks", "stages"
     (seconds per stage: count, merge, closures, energies, assemble) and "entries" (with a
@@ -265,8 +274,11 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
 
     ``x``: a 1-D ``dask.array`` of real numbers (no empty chunks, known chunk sizes) or a list
     of ``.npy`` files holding 1-D arrays, read as one history in the given order (checked to be
-    in natural name order unless ``check_order=False``).
+    in natural name order unless ``check_order=False``). ``merge_fan_in``: summaries merged
+    per task (>= 2; any tree gives the same result).
     """
+    if not isinstance(merge_fan_in, int) or merge_fan_in < 2:
+        raise ValueError(f"lugre.dask: merge_fan_in must be an integer >= 2, got {merge_fan_in!r}")
     _check_model(model, x0, gate)
     chunks = _chunks_of(x, check_order)
     n = len(chunks)
@@ -275,12 +287,12 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
     stages: dict[str, float] = {}
 
     tic = time.perf_counter()
-    leaves = [dask.delayed(_leaf, pure=True)(r, chunks.offsets[k], chunks.where(k), model)
+    leaves = [dask.delayed(_leaf)(r, chunks.offsets[k], chunks.where(k), model)
               for k, r in enumerate(chunks.readers)]
-    leaves = list(dask.persist(*leaves))
-    summaries = [dask.delayed(_pick, pure=True)(lf, 0) for lf in leaves]
-    bounds = [dask.delayed(_pick, pure=True)(lf, 2) for lf in leaves]
-    summaries_v, bounds_v = dask.compute(summaries, bounds)
+    leaves = list(dask.persist(*leaves, optimize_graph=False))
+    summaries = [dask.delayed(_pick)(lf, 0) for lf in leaves]
+    bounds = [dask.delayed(_pick)(lf, 2) for lf in leaves]
+    summaries_v, bounds_v = dask.compute(summaries, bounds, optimize_graph=False)
     stages["count"] = time.perf_counter() - tic
 
     tic = time.perf_counter()
@@ -290,20 +302,21 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
         df = dd.from_pandas(_meta(energy), npartitions=1)
         return {"cycles": df, "summary": r["summary"], "chunks": n, "stages": stages,
                 "entries": None}
-    root, opens = _merge_tree(summaries)
-    root_v, opens_v = dask.compute(root, opens)
+    root, opens = _merge_tree(summaries, merge_fan_in)
+    root_v, opens_v = dask.compute(root, opens, optimize_graph=False)
     plan = _lugre.ChunkPlan(list(summaries_v))
-    for o in opens_v:
-        plan.add_open(o)
+    for group in opens_v:
+        for o in group:
+            plan.add_open(o)
     summary = plan.finish(root_v)
     stages["merge"] = time.perf_counter() - tic
 
     tic = time.perf_counter()
     prevs = [None] + [s.last for s in summaries_v[:-1]]
-    closes = [dask.delayed(_close, pure=True)(chunks.readers[k], chunks.offsets[k], prevs[k], q,
+    closes = [dask.delayed(_close)(chunks.readers[k], chunks.offsets[k], prevs[k], q,
                                               chunks.where(k))
               for k, q in enumerate(plan.queries()) if q is not None]
-    for found in dask.compute(*closes):
+    for found in dask.compute(*closes, optimize_graph=False):
         plan.resolve(found)
     stages["closures"] = time.perf_counter() - tic
 
@@ -315,12 +328,14 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
         guesses = _lugre.chunk_guess_entries(model, y0, list(bounds_v))
 
         def energy_task(k: int, y: float) -> Any:
-            return dask.delayed(_energy, pure=True)(
+            return dask.delayed(_energy)(
                 chunks.readers[k], chunks.offsets[k], prevs[k], y, model, spans[k],
                 chunks.where(k))
 
-        passes = list(dask.persist(*[energy_task(k, guesses[k]) for k in range(n)]))
-        small = list(dask.compute(*[dask.delayed(_energy_small, pure=True)(p) for p in passes]))
+        passes = list(dask.persist(*[energy_task(k, guesses[k]) for k in range(n)],
+                                   optimize_graph=False))
+        small = list(dask.compute(*[dask.delayed(_energy_small)(p) for p in passes],
+                                  optimize_graph=False))
         held = 0
         # Verified in order: chunk 0 enters exactly; chunk k's guess holds when it is the
         # state chunk k-1's (exact) pass ended at, else chunk k is counted again from it.
@@ -329,26 +344,27 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
             if exact == guesses[k] and np.signbit(exact) == np.signbit(guesses[k]):
                 held += 1
                 continue
-            (passes[k],) = dask.persist(energy_task(k, exact))
-            small[k] = dask.compute(dask.delayed(_energy_small, pure=True)(passes[k]))[0]
+            (passes[k],) = dask.persist(energy_task(k, exact), optimize_graph=False)
+            small[k] = dask.compute(dask.delayed(_energy_small)(passes[k]),
+                                    optimize_graph=False)[0]
         plan.attach_energy(model, [s[0] for s in small])
         summary["energy"] = _lugre.chunk_history_energy(model, y0, [s[0] for s in small])
-        own = [dask.delayed(_pick, pure=True)(p, 0) for p in passes]
+        own = [dask.delayed(_pick)(p, 0) for p in passes]
         entries = {"held": held, "chunks": n - 1}
         stages["energies"] = time.perf_counter() - tic
     else:
-        own = [dask.delayed(_pick, pure=True)(lf, 1) for lf in leaves]
+        own = [dask.delayed(_pick)(lf, 1) for lf in leaves]
 
     tic = time.perf_counter()
     extras = plan.extras(energy)
     first, parts = 0, []
     for k in range(n):
-        parts.append(dask.delayed(_assemble, pure=True)(own[k], extras[k], first, energy))
+        parts.append(dask.delayed(_assemble)(own[k], extras[k], first, energy))
         first += summaries_v[k].full_cycles + len(extras[k]["range"])
-    df = dd.from_delayed(parts, meta=_meta(energy), verify_meta=False)
-    df = df.persist()
+    parts = list(dask.persist(*parts, optimize_graph=False))
     # Waits for every partition (a failed task raises here, never a partial table).
-    lengths = df.map_partitions(len).compute()
+    lengths = dask.compute(*[dask.delayed(len)(p) for p in parts], optimize_graph=False)
+    df = dd.from_delayed(parts, meta=_meta(energy), verify_meta=False)
     if int(np.sum(lengths)) != first:
         raise RuntimeError(f"lugre.dask: assembled {int(np.sum(lengths))} rows, expected {first}")
     stages["assemble"] = time.perf_counter() - tic
@@ -413,7 +429,7 @@ def cycles_many(paths: Sequence[Any], model: Any = None, x0: float = 0.0, gate: 
         if not os.path.isfile(p):
             raise ValueError(f"lugre.dask: file {p} does not exist")
     _single_cycles([0.0, 1.0], gate, model, x0, reversals=False)
-    tasks = [dask.delayed(_cycles_file, pure=True)(p, column, gate, model, x0) for p in names]
+    tasks = [dask.delayed(_cycles_file)(p, column, gate, model, x0) for p in names]
     frames = dask.compute(*tasks)
     if not frames:
         return pd.DataFrame(columns=["file"] + _COLUMNS)
@@ -449,5 +465,5 @@ def fit_many(paths: Sequence[Any], *, u: str = "u", f: str = "F", t: Optional[st
         if not os.path.isfile(p):
             raise ValueError(f"lugre.dask: file {p} does not exist")
     columns = {"u": u, "f": f, "t": t}
-    rows = dask.compute(*[dask.delayed(_fit_file, pure=True)(p, columns, kwargs) for p in names])
+    rows = dask.compute(*[dask.delayed(_fit_file)(p, columns, kwargs) for p in names])
     return pd.DataFrame(list(rows))
