@@ -10,14 +10,15 @@
 #   2. the MATLAB/Octave MEX functions (scripts/build-mex.sh, matlab/tests/test_lugre.m against
 #      the CLI's JSON); Octave is installed from Debian when run as root, else skipped loudly;
 #      (the C ABI's example program is built and run by the Rust tests of crates/lugre-ffi;)
-#   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy
-#      and pytest, the package built from crates/lugre-py and installed into it, its pytest
+#   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy,
+#      pytest and dask[distributed,dataframe] (lugre.dask's tests, one on a 2-worker
+#      LocalCluster), the package built from crates/lugre-py and installed into it, its pytest
 #      suite;
 #   4. the FMI 3.0 FMUs (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
 #      into the same environment): tests/fmu.
 #
-# Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy and
-# pytest from PyPI. Re-runs reuse the environment and cargo's build cache.
+# Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy, pytest
+# and dask from PyPI. Re-runs reuse the environment and cargo's build cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
