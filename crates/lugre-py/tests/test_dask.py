@@ -188,3 +188,26 @@ def test_on_a_two_worker_local_cluster(tmp_path):
     pd.testing.assert_frame_equal(got, want, check_exact=True)
     assert r["summary"] == summary
     assert r["entries"] == {"held": 11, "chunks": 11}
+
+
+def _chunk_or_die(part, k):
+    """Chunk `k`'s samples; chunk 3 ends its worker process (a crash, not an exception)."""
+    if k == 3:
+        os._exit(1)
+    return part
+
+
+def test_a_worker_that_dies_fails_the_call(tmp_path):
+    from dask.distributed import Client, LocalCluster, KilledWorker
+
+    u = walk(40_000, 6)
+    parts = np.array_split(u, 8)
+    x = da.concatenate([
+        da.from_delayed(dask.delayed(_chunk_or_die)(p, k), shape=p.shape, dtype=float)
+        for k, p in enumerate(parts)
+    ])
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                          dashboard_address=None) as cluster, Client(cluster):
+            with pytest.raises(KilledWorker):
+                ld.count(x)
