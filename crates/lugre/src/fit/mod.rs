@@ -290,7 +290,7 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
     check_columns(&[("u", u), ("F", f)])?;
     let mut resolved = spec.resolve(FitKind::Slow)?;
     check_count(u.len(), resolved.free.len())?;
-    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u)?;
+    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None)?;
     let mut coarse_iterations = 0;
     let mut coarse_evaluations = 0;
     if u.len() > COARSE_ABOVE {
@@ -298,7 +298,9 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
         // the full record then only has to confirm the optimum, in two or three steps.
         let idx = sl.thinned(COARSE_SAMPLES);
         let (su, sf): (Vec<f64>, Vec<f64>) = idx.iter().map(|&i| (u[i], f[i])).unzip();
-        let sub = slow::SlowLoop::new(resolved.family, resolved.free.clone(), &su)?;
+        // The reversals as estimated on the full record (the thinned one has the same).
+        let turning = sl.turning_points().values().to_vec();
+        let sub = slow::SlowLoop::new(resolved.family, resolved.free.clone(), &su, Some(&turning))?;
         slow_start(&mut resolved, &sub, &sf)?;
         let (_, coarse) = minimize(
             sub,
