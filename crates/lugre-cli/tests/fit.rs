@@ -548,7 +548,7 @@ fn input_only_rows_in_a_full_fit() {
 /// Sparse samples of a smooth motion (433 of a sine's 17 281) fitted with the cubic reading:
 /// the residual RMS within 2 % of the fit on the dense input (the same forces, the dense
 /// displacement driving the model through input-only rows), where the linear reading of the
-/// sparse samples is several times worse.
+/// sparse samples is several times worse; and the same samples as a velocity record.
 #[test]
 fn a_sparse_sine_record_fits_with_the_cubic_reading() {
     let dir = scratch("cubic");
@@ -598,10 +598,33 @@ fn a_sparse_sine_record_fits_with_the_cubic_reading() {
         rms(&sparse, &["--interpolate", "cubic"]),
         rms(&sparse, &[]),
     );
-    eprintln!("rms: dense {dense:e}, cubic {cubic:e}, linear {linear:e}");
+    // The same 433 samples as a velocity record (t, v, F: the tribometer's other usual
+    // layout, here with the headers a lab writes), integrated from u = 0.
+    let v: Vec<f64> = t
+        .iter()
+        .map(|&t| 6.0 * std::f64::consts::TAU / 4.0 * (std::f64::consts::TAU * t / 4.0).cos())
+        .collect();
+    let by_velocity = dir.join("velocity.csv");
+    write_csv(
+        &by_velocity,
+        "Time [s],Velocity [m/s],Friction [N]",
+        &[&pick(&t), &pick(&v), &pick(&f)],
+    );
+    let velocity = rms(&by_velocity, &[]);
+    let no_times = dir.join("no-times.csv");
+    write_csv(&no_times, "v,F", &[&pick(&v), &pick(&f)]);
+    rejects(
+        &["fit", "--input", no_times.to_str().unwrap()],
+        "a velocity record needs the samples' times",
+    );
+    eprintln!("rms: dense {dense:e}, cubic {cubic:e}, linear {linear:e}, velocity {velocity:e}");
     assert!(
         (cubic - dense).abs() <= 0.02 * dense,
         "cubic {cubic:e} vs dense {dense:e}"
+    );
+    assert!(
+        (velocity - dense).abs() <= 0.02 * dense,
+        "velocity record {velocity:e} vs dense {dense:e}"
     );
     assert!(linear > 1.5 * dense, "linear {linear:e} vs dense {dense:e}");
 }

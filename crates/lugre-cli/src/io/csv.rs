@@ -42,6 +42,8 @@ pub enum Columns<'a> {
     Series,
     /// `u,F` or `t,u,F` (`lugre fit`).
     Record,
+    /// `t,v,F`: a velocity record (`lugre fit`).
+    VelocityRecord,
     /// The column of this name in any header (a file without a header has the columns `u` or
     /// `t,u`).
     Named(&'a str),
@@ -89,6 +91,7 @@ impl Columns<'_> {
         match self {
             Columns::Series | Columns::Named(_) => &["u"],
             Columns::Record => &["u", "F"],
+            Columns::VelocityRecord => &["v", "F"],
         }
     }
 }

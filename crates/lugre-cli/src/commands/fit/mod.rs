@@ -30,6 +30,7 @@ use crate::io::csv::Columns;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
+use lugre::simulate::SmoothSamples;
 
 mod output;
 mod spec;
@@ -63,14 +64,17 @@ pub(crate) struct FitArgs {
     #[command(flatten)]
     pub(crate) model: ModelArgs,
     /// The measured record: columns 'u,F' or 't,u,F' (header optional, in this order without
-    /// one; '#' comments allowed). Times, when given, must be strictly increasing.
+    /// one; '#' comments allowed), or a velocity record 't,v,F'. Times, when given, must be
+    /// strictly increasing.
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
     pub(crate) input: Option<PathBuf>,
     #[command(flatten)]
     pub(crate) data: crate::args::DataArgs,
     /// Full fit: how the record's displacement is read between samples: 'linear' (exact as
     /// given) or 'cubic' (samples of a smooth motion: the C1 shape-preserving cubic, solved on
-    /// a subdivision to 1e-9 of its range; the residual stays at the samples).
+    /// a subdivision to 1e-9 of its range; the residual stays at the samples). A velocity
+    /// record (t,v,F: a column 'v' or 'velocity', or --columns v=NAME) is integrated from
+    /// u = 0 and always read this way.
     #[arg(long, value_enum, default_value = "linear", help_heading = "Data file")]
     pub(crate) interpolate: crate::args::Interpolate,
     /// Which fit: 'slow' (one or more periods of a slow periodic test) or 'full'
@@ -120,6 +124,9 @@ struct Record {
     t: Option<Vec<f64>>,
     u: Vec<f64>,
     f: Vec<f64>,
+    /// A velocity record: the motion integrated from its samples (`u` holds it at the
+    /// samples).
+    velocity: Option<SmoothSamples>,
 }
 
 impl Record {
@@ -172,10 +179,18 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
-    let mut options = args.data.options(&["u", "F"])?;
+    let velocity = velocity_record(args, path);
+    let mut options = args
+        .data
+        .options(if velocity { &["v", "F"] } else { &["u", "F"] })?;
     // A row without a force (empty or NaN) is an input-only sample of the full fit.
     options.optional = Some("f".into());
-    let record = read_record(path, options)?;
+    // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
+    let record = if velocity {
+        read_velocity_record(path, options)?
+    } else {
+        read_record(path, options)?
+    };
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
         if kind == FitKind::Slow {
             bail!(
@@ -204,7 +219,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         }
     };
     let cubic = args.interpolate == crate::args::Interpolate::Cubic;
-    if cubic && full.is_none() {
+    if cubic && full.is_none() && record.velocity.is_none() {
         bail!("--interpolate cubic applies to the full fit (--fit full): the slow loop depends on the turning points alone");
     }
     Ok(Request {
@@ -241,8 +256,13 @@ fn compute(r: &Request) -> Result<FitReport> {
                 .with_x0(*x0)
                 .with_starts(*starts)
                 .with_progress(&mut report);
-            let result = if r.cubic {
-                cubic_fit(&r.spec, t, record, options).map_err(with_file)
+            let result = if let Some(motion) = &record.velocity {
+                smooth_fit(&r.spec, motion, record, options).map_err(with_file)
+            } else if r.cubic {
+                SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_TOL)
+                    .map_err(FitError::from)
+                    .and_then(|motion| smooth_fit(&r.spec, &motion, record, options))
+                    .map_err(with_file)
             } else {
                 fit_full(&r.spec, t, &record.u, &record.f, options).map_err(with_file)
             };
@@ -255,15 +275,15 @@ fn compute(r: &Request) -> Result<FitReport> {
 /// The chord tolerance of the cubic reading in a fit (relative to the record's range).
 const CUBIC_TOL: f64 = 1e-9;
 
-/// The full fit on the cubic reading: the subdivided motion drives the simulation, its added
+/// The full fit on a smooth reading of the record (the cubic through displacement samples, or
+/// the integrated velocity samples): the subdivided motion drives the simulation, its added
 /// knots are input-only rows, the residual is taken at the record's samples.
-fn cubic_fit(
+fn smooth_fit(
     spec: &FitSpec,
-    t: &[f64],
+    motion: &SmoothSamples,
     record: &Record,
     options: FullOptions<'_>,
 ) -> Result<FitReport, FitError> {
-    let motion = lugre::simulate::SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_TOL)?;
     let (rt, ru) = (motion.refined().times(), motion.refined().values());
     let mut rf = vec![f64::NAN; rt.len()];
     for (&k, &f) in motion.sample_knots().iter().zip(&record.f) {
@@ -330,6 +350,42 @@ fn read_record(path: &Path, options: crate::io::csv::ReadOptions) -> Result<Reco
         t: table.t,
         u: columns.next().unwrap_or_default(),
         f: columns.next().unwrap_or_default(),
+        velocity: None,
+    })
+}
+
+/// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).
+fn velocity_record(args: &FitArgs, path: &Path) -> bool {
+    args.data.columns.as_deref().is_some_and(|c| {
+        c.split(',')
+            .any(|item| item.trim().to_ascii_lowercase().starts_with("v="))
+    }) || crate::io::csv::is_velocity_record(path)
+}
+
+/// Reads `t,v,F` and integrates the velocity from `u = 0` at the first sample (the C1 cubic
+/// reading of the motion, subdivided to `CUBIC_TOL`): `u` at the samples.
+fn read_velocity_record(path: &Path, options: crate::io::csv::ReadOptions) -> Result<Record> {
+    let table = crate::io::csv::read_table_with(path, Columns::VelocityRecord, options)?;
+    let Some(t) = table.t else {
+        bail!(
+            "{}: a velocity record needs the samples' times: a column 't' (or --columns t=NAME)",
+            path.display()
+        );
+    };
+    let mut columns = table.columns.into_iter();
+    let (v, f) = (
+        columns.next().unwrap_or_default(),
+        columns.next().unwrap_or_default(),
+    );
+    let motion = SmoothSamples::from_velocity(t.clone(), v, 0.0, CUBIC_TOL)
+        .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    let values = motion.refined().values();
+    let u = motion.sample_knots().iter().map(|&k| values[k]).collect();
+    Ok(Record {
+        t: Some(t),
+        u,
+        f,
+        velocity: Some(motion),
     })
 }
 
