@@ -181,6 +181,12 @@ fn slow_fit_table_and_fixed_parameters() {
     assert_eq!(doc["parameters"].as_object().unwrap().len(), 1);
     recovered(&doc, "sigma0", 6.0, 0.02);
     assert_eq!(doc["fixed"]["fs"], 2.0);
+    // The same with the value given with --fix.
+    let same = json(&["fit", "--input", f, "--fix", "fs=2", "--json"]);
+    assert_eq!(same["parameters"], doc["parameters"]);
+    assert_eq!(same["fixed"]["fs"], 2.0);
+    rejects(&["fit", "--input", f, "--fix", "fs=two"], "--fix");
+    rejects(&["fit", "--input", f, "--fix", "fs=-1"], "fs");
     // A start value from the flags is only a start.
     let doc = json(&["fit", "--input", f, "--sigma0", "50", "--json"]);
     recovered(&doc, "sigma0", 6.0, 0.02);

@@ -22,6 +22,15 @@ pub fn num(x: f64) -> String {
     }
 }
 
+/// The residual RMS of a best point, in words where it is not a number.
+fn rms_text(rms: f64) -> String {
+    if rms.is_finite() {
+        format!("residual RMS {}", num(rms))
+    } else {
+        "where the model could not be evaluated".into()
+    }
+}
+
 /// An invalid model parameter.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -187,7 +196,7 @@ pub enum FitError {
     Unidentifiable { parameters: Vec<Unidentified> },
     #[error("the model could not be evaluated at any of the {starts} starts (every start value gave a non-finite response): give start values for the parameters")]
     NoStart { starts: usize },
-    #[error("the fit did not converge ({reason}); best point found: {} (residual RMS {rms})", list(.best), rms = num(*.rms))]
+    #[error("the fit did not converge ({reason}); best point found: {} ({})", list(.best), rms_text(*.rms))]
     NotConverged {
         reason: String,
         best: Vec<(&'static str, f64)>,

@@ -348,6 +348,11 @@ impl FitSpec {
     /// The value of parameter `name`: kept if it is fixed, the start if it is free.
     pub fn set(mut self, name: &str, value: f64) -> Result<Self, FitError> {
         let i = self.family.index(name)?;
+        // The parameter's domain (sigma0 > 0, sigma2 >= 0, ...): a value held at, or started
+        // from, a value no model has is refused here, not found unevaluable in the fit.
+        if let Some(p) = Parameter::from_name(self.family.parameters()[i]) {
+            p.check(value)?;
+        }
         self.values[i] = value;
         self.start_given[i] = true;
         Ok(self)

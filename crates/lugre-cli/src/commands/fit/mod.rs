@@ -81,8 +81,9 @@ pub(crate) struct FitArgs {
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
     pub(crate) fit: FitChoice,
-    /// Parameters held at the model flags' values (e.g. --fix sigma2,fs).
-    #[arg(long, value_name = "NAME,...", help_heading = "Fit")]
+    /// Parameters held, each at a value given with it or by its model flag (e.g.
+    /// --fix sigma2=0.05,fs=1.5, or --fix sigma2 --sigma2 0.05).
+    #[arg(long, value_name = "NAME[=VALUE],...", help_heading = "Fit")]
     pub(crate) fix: Option<String>,
     /// Parameters fitted besides the default ones (e.g. --free beta in a full fit).
     #[arg(long, value_name = "NAME,...", help_heading = "Fit")]

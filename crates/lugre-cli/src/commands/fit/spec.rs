@@ -25,7 +25,23 @@ pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
             spec = spec.set(p.name(), v).map_err(explain)?;
         }
     }
-    for name in names("--fix", args.fix.as_deref())? {
+    for item in names("--fix", args.fix.as_deref())? {
+        // NAME, or NAME=VALUE (the value given with it: --fix sigma2=0.05).
+        let (name, value) = match item.split_once('=') {
+            Some((name, value)) => match value.trim().parse::<f64>() {
+                Ok(v) if v.is_finite() => (name.trim(), Some(v)),
+                _ => bail!(
+                    "--fix: {}: the value is not a finite number",
+                    quoted(&excerpt(item))
+                ),
+            },
+            None => (item, None),
+        };
+        if let Some(v) = value {
+            spec = spec
+                .set(name, v)
+                .map_err(|e| anyhow!("--fix: {}", short_name(e)))?;
+        }
         spec = spec
             .fix(name)
             .map_err(|e| anyhow!("--fix: {}", short_name(e)))?;
@@ -89,7 +105,7 @@ pub(super) fn explain(e: FitError) -> anyhow::Error {
         FitError::Unidentifiable { parameters } => {
             let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
             anyhow!(
-                "{e}; fix {} at values you know (--fix {} with --NAME VALUE for each; the flags' defaults are the paper's dimensionless values, not yours) or fit data that excite {}",
+                "{e}; fix {} at values you know (--fix {}, with NAME=VALUE for each: the flags' defaults are the paper's dimensionless values, not yours) or fit data that excite {}",
                 if names.len() == 1 { "it" } else { "them" },
                 names.join(","),
                 if names.len() == 1 { "it" } else { "them" }
