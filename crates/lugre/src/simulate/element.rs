@@ -60,6 +60,7 @@ impl<G: VelocityFn, F: VelocityFn> FrictionElement<G, F> {
     /// Move the displacement to `x` over the next `dt` (linearly in time: exact, see the
     /// module docs) and return the sample at the step's end. `dt = 0` is allowed for a step
     /// that does not move; a failed step leaves the element as it was.
+    #[inline]
     pub fn step(&mut self, x: f64, dt: f64) -> Result<Sample, SimulateError> {
         if !x.is_finite() {
             return Err(SimulateError::BadDisplacement { value: x });

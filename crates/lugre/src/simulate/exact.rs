@@ -154,7 +154,7 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
 
     /// From state `z`, the input moving by `du` over `dt > 0` at a constant speed: the sample
     /// at the step's end, with the step's slope (the value just before a kink there).
-    #[inline]
+    #[inline(always)]
     pub(super) fn advance(&self, z: f64, t_end: f64, u_end: f64, du: f64, dt: f64) -> Sample {
         let seg = self.segment(du, dt);
         let z = relax_toward(z, seg.c, seg.z_inf);
