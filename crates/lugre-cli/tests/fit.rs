@@ -634,3 +634,60 @@ fn a_sparse_sine_record_fits_with_the_cubic_reading() {
     );
     assert!(linear > 1.5 * dense, "linear {linear:e} vs dense {dense:e}");
 }
+
+/// The lab file (examples/data: Time [s], Normal [uN], Position [mm], Friction [uN], the force
+/// with the opposite sign) fitted to the friction coefficient with `--columns N=Normal`: its
+/// normal force is a constant 5 N, so sigma0 per newton and mu_s are the force fit's sigma0 and
+/// Fs divided by 5. A normal force <= 0 is refused, naming the row.
+#[test]
+fn a_normal_force_column_gives_friction_coefficients() {
+    let lab = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/data/lab-slow-loop.tsv"
+    );
+    let args = |normal: bool| -> Vec<&str> {
+        let columns = if normal {
+            "u=3,F=4,N=Normal"
+        } else {
+            "u=3,F=4"
+        };
+        let scale = if normal {
+            "u=1e-3,F=-1e-6,N=1e-6"
+        } else {
+            "u=1e-3,F=-1e-6"
+        };
+        vec![
+            "fit",
+            "--input",
+            lab,
+            "--columns",
+            columns,
+            "--scale",
+            scale,
+            "--json",
+        ]
+    };
+    let force = json(&args(false));
+    let coefficient = json(&args(true));
+    assert_eq!(force["normal_force"], false);
+    assert_eq!(coefficient["normal_force"], true);
+    let value =
+        |doc: &serde_json::Value, name: &str| doc["parameters"][name]["value"].as_f64().unwrap();
+    for (per_newton, force_name) in [("sigma0", "sigma0"), ("mu_s", "fs")] {
+        let (a, b) = (
+            5.0 * value(&coefficient, per_newton),
+            value(&force, force_name),
+        );
+        assert!(
+            (a - b).abs() <= 1e-6 * b,
+            "{per_newton}: 5 x {a} vs {force_name} {b}"
+        );
+    }
+    let dir = scratch("normal");
+    let bad = dir.join("bad-normal.csv");
+    std::fs::write(&bad, "u,F,N\n0,0,1\n1,1,1\n0,0.5,0\n-1,-1,1\n0,0,1\n").unwrap();
+    rejects(
+        &["fit", "--input", bad.to_str().unwrap(), "--columns", "N=N"],
+        "row 3: the normal force N must be > 0, got 0",
+    );
+}

@@ -44,6 +44,9 @@ pub enum Columns<'a> {
     Record,
     /// `t,v,F`: a velocity record (`lugre fit`).
     VelocityRecord,
+    /// [`Columns::Record`] and [`Columns::VelocityRecord`] with a normal force `N`.
+    RecordN,
+    VelocityRecordN,
     /// The column of this name in any header (a file without a header has the columns `u` or
     /// `t,u`).
     Named(&'a str),
@@ -92,6 +95,8 @@ impl Columns<'_> {
             Columns::Series | Columns::Named(_) => &["u"],
             Columns::Record => &["u", "F"],
             Columns::VelocityRecord => &["v", "F"],
+            Columns::RecordN => &["u", "F", "N"],
+            Columns::VelocityRecordN => &["v", "F", "N"],
         }
     }
 }
@@ -114,12 +119,19 @@ pub(crate) fn read_series(path: &Path) -> Result<Series> {
 /// no displacement: a velocity record. False for a file that cannot be read (the reader then
 /// says why).
 pub(crate) fn is_velocity_record(path: &Path) -> bool {
+    let roles = header_roles(path);
+    roles.iter().any(|r| r == "v") && !roles.iter().any(|r| r == "u")
+}
+
+/// The roles of the header of `path` (none for a file that cannot be read or has no header:
+/// the reader then says why).
+fn header_roles(path: &Path) -> Vec<String> {
     let Ok(file) = std::fs::File::open(path) else {
-        return false;
+        return Vec::new();
     };
     let mut head = Vec::new();
     if file.take(SNIFF as u64).read_to_end(&mut head).is_err() {
-        return false;
+        return Vec::new();
     }
     let delimiter = Delimiter::of(&head);
     let text = String::from_utf8_lossy(&head);
@@ -128,14 +140,13 @@ pub(crate) fn is_velocity_record(path: &Path) -> bool {
         .map(str::trim)
         .find(|l| !l.is_empty() && !l.starts_with('#'))
     else {
-        return false;
+        return Vec::new();
     };
     let split: Vec<&str> = match delimiter {
         Delimiter::Spaces => line.split_whitespace().collect(),
         d => line.split(char::from(d.byte())).collect(),
     };
-    let roles: Vec<String> = split.iter().map(|f| role(f)).collect();
-    roles.iter().any(|r| r == "v") && !roles.iter().any(|r| r == "u")
+    split.iter().map(|f| role(f)).collect()
 }
 
 /// Reads every row of `path` (at least one).
@@ -561,6 +572,7 @@ fn role(field: &str) -> String {
         "u" | "x" | "position" | "displacement" => "u",
         "f" | "force" | "friction" => "f",
         "v" | "velocity" => "v",
+        "n" | "normal" | "normal force" | "load" => "n",
         other => other,
     };
     canonical.to_string()

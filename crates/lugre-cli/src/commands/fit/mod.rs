@@ -128,6 +128,9 @@ struct Record {
     /// A velocity record: the motion integrated from its samples (`u` holds it at the
     /// samples).
     velocity: Option<SmoothSamples>,
+    /// The normal force at each sample, when the record has one: `f` then holds the friction
+    /// coefficient `F / N`.
+    normal: Option<Vec<f64>>,
 }
 
 impl Record {
@@ -181,17 +184,29 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         crate::plot::check_path(plot)?;
     }
     let velocity = velocity_record(args, path);
-    let mut options = args
-        .data
-        .options(if velocity { &["v", "F"] } else { &["u", "F"] })?;
+    let normal = normal_force(args);
+    let mut options = args.data.options(if velocity {
+        &["v", "F", "N"]
+    } else {
+        &["u", "F", "N"]
+    })?;
     // A row without a force (empty or NaN) is an input-only sample of the full fit.
     options.optional = Some("f".into());
-    // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
-    let record = if velocity {
-        read_velocity_record(path, options)?
-    } else {
-        read_record(path, options)?
+    let columns = match (velocity, normal) {
+        (false, false) => Columns::Record,
+        (false, true) => Columns::RecordN,
+        (true, false) => Columns::VelocityRecord,
+        (true, true) => Columns::VelocityRecordN,
     };
+    // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
+    let mut record = if velocity {
+        read_velocity_record(path, columns, options)?
+    } else {
+        read_record(path, columns, options)?
+    };
+    if let Some(n) = &record.normal {
+        to_coefficient(&mut record.f, n, path)?;
+    }
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
         if kind == FitKind::Slow {
             bail!(
@@ -303,6 +318,7 @@ fn smooth_fit(
 /// the JSON document or the table.
 fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     let record = &r.record;
+    let normal = record.normal.is_some();
     let residuals = report.residuals(&record.f);
     if let Some(csv) = &args.output.csv {
         write_atomic(csv, |w| write_csv(w, record, report, &residuals))?;
@@ -319,10 +335,10 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     }
     let stdout = std::io::stdout();
     if args.output.json {
-        write_json(JsonOut::new(stdout.lock()), report, r.path)?;
+        write_json(JsonOut::new(stdout.lock()), report, r.path, normal)?;
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
-        print_table(&mut out, report, r.path)?;
+        print_table(&mut out, report, r.path, normal)?;
         if let Some(csv) = &args.output.csv {
             writeln!(
                 out,
@@ -343,16 +359,48 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     Ok(())
 }
 
-/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order).
-fn read_record(path: &Path, options: crate::io::csv::ReadOptions) -> Result<Record> {
-    let table = crate::io::csv::read_table_with(path, Columns::Record, options)?;
-    let mut columns = table.columns.into_iter();
+/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order), with
+/// `N` where `columns` has it.
+fn read_record(
+    path: &Path,
+    columns: Columns,
+    options: crate::io::csv::ReadOptions,
+) -> Result<Record> {
+    let table = crate::io::csv::read_table_with(path, columns, options)?;
+    let mut values = table.columns.into_iter();
     Ok(Record {
         t: table.t,
-        u: columns.next().unwrap_or_default(),
-        f: columns.next().unwrap_or_default(),
+        u: values.next().unwrap_or_default(),
+        f: values.next().unwrap_or_default(),
         velocity: None,
+        normal: values.next(),
     })
+}
+
+/// Whether the fit is to the friction coefficient `F / N`: asked for with `--columns N=NAME`
+/// (never from the header alone: a file that records the load would otherwise change what
+/// the parameters mean).
+fn normal_force(args: &FitArgs) -> bool {
+    args.data.columns.as_deref().is_some_and(|c| {
+        c.split(',')
+            .any(|item| item.trim().to_ascii_lowercase().starts_with("n="))
+    })
+}
+
+/// `F / N` in place: the friction coefficient the model is fitted to (`N > 0` at every row).
+fn to_coefficient(f: &mut [f64], n: &[f64], path: &Path) -> Result<()> {
+    for (i, (f, &n)) in f.iter_mut().zip(n).enumerate() {
+        if n.is_nan() || n <= 0.0 {
+            bail!(
+                "{}: row {}: the normal force N must be > 0, got {}",
+                path.display(),
+                i + 1,
+                sig(n, 10)
+            );
+        }
+        *f /= n;
+    }
+    Ok(())
 }
 
 /// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).
@@ -365,19 +413,24 @@ fn velocity_record(args: &FitArgs, path: &Path) -> bool {
 
 /// Reads `t,v,F` and integrates the velocity from `u = 0` at the first sample (the C1 cubic
 /// reading of the motion, subdivided to `CUBIC_TOL`): `u` at the samples.
-fn read_velocity_record(path: &Path, options: crate::io::csv::ReadOptions) -> Result<Record> {
-    let table = crate::io::csv::read_table_with(path, Columns::VelocityRecord, options)?;
+fn read_velocity_record(
+    path: &Path,
+    columns: Columns,
+    options: crate::io::csv::ReadOptions,
+) -> Result<Record> {
+    let table = crate::io::csv::read_table_with(path, columns, options)?;
     let Some(t) = table.t else {
         bail!(
             "{}: a velocity record needs the samples' times: a column 't' (or --columns t=NAME)",
             path.display()
         );
     };
-    let mut columns = table.columns.into_iter();
+    let mut values = table.columns.into_iter();
     let (v, f) = (
-        columns.next().unwrap_or_default(),
-        columns.next().unwrap_or_default(),
+        values.next().unwrap_or_default(),
+        values.next().unwrap_or_default(),
     );
+    let normal = values.next();
     let motion = SmoothSamples::from_velocity(t.clone(), v, 0.0, CUBIC_TOL)
         .map_err(|e| anyhow!("{}: {e}", path.display()))?;
     let values = motion.refined().values();
@@ -387,6 +440,7 @@ fn read_velocity_record(path: &Path, options: crate::io::csv::ReadOptions) -> Re
         u,
         f,
         velocity: Some(motion),
+        normal,
     })
 }
 

@@ -22,9 +22,11 @@ pub(super) fn write_csv(
     res: &[f64],
 ) -> Result<()> {
     let mut rows = NumberRows::new();
+    // With a normal force, the fit's quantity is the friction coefficient mu = F / N.
+    let f_name = if record.normal.is_some() { "mu" } else { "F" };
     match &record.t {
-        Some(_) => writeln!(w, "t,u,F,fit,residual")?,
-        None => writeln!(w, "u,F,fit,residual")?,
+        Some(_) => writeln!(w, "t,u,{f_name},fit,residual")?,
+        None => writeln!(w, "u,{f_name},fit,residual")?,
     }
     for i in 0..record.u.len() {
         let (u, f, fit, r) = (record.u[i], record.f[i], report.fitted[i], res[i]);
@@ -74,7 +76,12 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels
         .copied()
         .zip(report.fitted.iter().copied())
         .collect();
-    let fit_fig = Figure::new("input u", "friction force F")
+    let y_label = if record.normal.is_some() {
+        "friction coefficient F / N"
+    } else {
+        "friction force F"
+    };
+    let fit_fig = Figure::new("input u", y_label)
         .title(format!(
             "{} {what}: residual RMS {}",
             report.family.label(),
@@ -133,16 +140,34 @@ fn residual_figure(record: &Record, res: &[f64]) -> Figure {
     ))
 }
 
-/// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit).
-fn label(report: &FitReport, name: &str) -> String {
-    if report.kind == FitKind::Slow && report.family == Family::LuGre && name == "fs" {
-        "fs = g(0)".into()
-    } else {
-        name.into()
+/// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit), and with a normal
+/// force (`normal`) the friction coefficients `mu_c = Fc / N`, `mu_s = Fs / N`.
+fn label(report: &FitReport, name: &str, normal: bool) -> String {
+    let g0 = report.kind == FitKind::Slow && report.family == Family::LuGre && name == "fs";
+    match (normal, name) {
+        (true, "fs") if g0 => "mu_s = g(0)/N".into(),
+        (true, "fs") => "mu_s".into(),
+        (true, "fc") => "mu_c".into(),
+        _ if g0 => "fs = g(0)".into(),
+        _ => name.into(),
     }
 }
 
-pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Result<()> {
+/// The key of a parameter in the JSON document (`mu_c`, `mu_s` with a normal force).
+fn key(name: &str, normal: bool) -> &str {
+    match (normal, name) {
+        (true, "fs") => "mu_s",
+        (true, "fc") => "mu_c",
+        _ => name,
+    }
+}
+
+pub(super) fn print_table(
+    w: &mut impl Write,
+    r: &FitReport,
+    path: &Path,
+    normal: bool,
+) -> Result<()> {
     let what = match r.kind {
         FitKind::Slow => "slow-loop fit (the hysteresis loop y°, eqs. 8-10)".to_string(),
         FitKind::Full => format!(
@@ -162,6 +187,12 @@ pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Res
             None => String::new(),
         }
     )?;
+    if normal {
+        writeln!(
+            w,
+            "fitted to the friction coefficient mu = F / N: mu_c, mu_s dimensionless; sigma0 in 1/m, sigma1 and sigma2 in s/m (per newton of N)"
+        )?;
+    }
     writeln!(w)?;
     writeln!(
         w,
@@ -172,7 +203,7 @@ pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Res
         writeln!(
             w,
             "{:<12} {:>16} {:>14}   [{}, {}]{}",
-            label(r, e.name),
+            label(r, e.name, normal),
             sig(e.value, 10),
             sig(e.stderr, 4),
             sig(e.ci95[0], 8),
@@ -184,7 +215,7 @@ pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Res
         let fixed: Vec<String> = r
             .fixed
             .iter()
-            .map(|(n, v)| format!("{} = {}", label(r, n), sig(*v, 10)))
+            .map(|(n, v)| format!("{} = {}", label(r, n, normal), sig(*v, 10)))
             .collect();
         writeln!(w, "fixed: {}", fixed.join(", "))?;
     }
@@ -202,12 +233,12 @@ pub(super) fn print_table(w: &mut impl Write, r: &FitReport, path: &Path) -> Res
         r.iterations, r.evaluations, r.termination
     )?;
     if r.estimates.len() > 1 {
-        print_correlation(w, r)?;
+        print_correlation(w, r, normal)?;
     }
     Ok(())
 }
 
-fn print_correlation(w: &mut impl Write, r: &FitReport) -> Result<()> {
+fn print_correlation(w: &mut impl Write, r: &FitReport, normal: bool) -> Result<()> {
     writeln!(
         w,
         "correlation of the estimates (condition number of the scaled J^T J: {}):",
@@ -218,7 +249,7 @@ fn print_correlation(w: &mut impl Write, r: &FitReport) -> Result<()> {
         writeln!(
             w,
             "  {:<12} {}",
-            label(r, r.estimates[i].name),
+            label(r, r.estimates[i].name, normal),
             cells.join(" ")
         )?;
     }
@@ -231,13 +262,14 @@ pub(super) fn write_json<W: Write>(
     mut j: JsonOut<W>,
     r: &FitReport,
     path: &Path,
+    normal: bool,
 ) -> std::io::Result<()> {
     j.raw("{\"parameters\":{")?;
     for (k, e) in r.estimates.iter().enumerate() {
         if k > 0 {
             j.raw(",")?;
         }
-        j.raw(&quote(e.name))?;
+        j.raw(&quote(key(e.name, normal)))?;
         j.raw(":{\"value\":")?;
         num_or_null(&mut j, e.value)?;
         j.raw(",\"stderr\":")?;
@@ -274,7 +306,7 @@ pub(super) fn write_json<W: Write>(
         if k > 0 {
             j.raw(",")?;
         }
-        j.raw(&quote(n))?;
+        j.raw(&quote(key(n, normal)))?;
         j.raw(":")?;
         num_or_null(&mut j, *v)?;
     }
@@ -292,6 +324,7 @@ pub(super) fn write_json<W: Write>(
         j.raw(",\"turning_points\":")?;
         j.int(n)?;
     }
+    j.raw(&format!(",\"normal_force\":{normal}"))?;
     j.raw(",\"input\":")?;
     j.raw(&quote(&path.display().to_string()))?;
     j.raw("}\n")?;
