@@ -325,13 +325,26 @@ fn sigma1_from_quasi_static_data_is_an_error() {
             "--input",
             f,
             "--fix",
-            "sigma0,sigma2,fc,fs,vs",
+            "sigma0=1,sigma2=0,fc=1,fs=2,vs=1,beta=1",
         ],
         "sigma1 cannot be identified from this data",
     );
     rejects(
-        &["fit", "--fit", "full", "--input", f, "--fix", "sigma2"],
+        &[
+            "fit", "--fit", "full", "--input", f, "--fix", "sigma2=0", "--beta", "1",
+        ],
         "sigma1",
+    );
+    // No parameter silently takes the paper's dimensionless default.
+    rejects(
+        &["fit", "--fit", "full", "--input", f, "--fix", "sigma2=0"],
+        "beta is held in the full fit but has no value: give it (e.g. 2, the usual Stribeck exponent) or fit it too (--beta V, --fix beta=V or --free beta)",
+    );
+    rejects(
+        &[
+            "fit", "--fit", "full", "--input", f, "--fix", "sigma2", "--beta", "1",
+        ],
+        "sigma2 is held in the full fit but has no value",
     );
     rejects(
         &["fit", "--input", f, "--free", "sigma1"],
@@ -524,7 +537,9 @@ fn input_only_rows_in_a_full_fit() {
         "--fit",
         "full",
         "--fix",
-        "sigma2",
+        "sigma2=0",
+        "--beta",
+        "1",
         "--json",
         "--csv",
         csv.to_str().unwrap(),
@@ -593,7 +608,9 @@ fn a_sparse_sine_record_fits_with_the_cubic_reading() {
             "--fit",
             "full",
             "--fix",
-            "sigma2",
+            "sigma2=0",
+            "--beta",
+            "1",
             "--json",
         ];
         args.extend(extra);

@@ -431,6 +431,9 @@ fn explain(py: Python<'_>, e: FitError) -> PyErr {
                 Err(other) => other,
             }
         }
+        FitError::NotGiven { name, .. } => PyValueError::new_err(format!(
+            "{e} (fix={{'{name}': value}}, a model object that has it, or free=['{name}'])"
+        )),
         FitError::StartOutsideBounds { name, .. } => {
             PyValueError::new_err(format!("{e}: change start['{name}'] or bounds['{name}']"))
         }

@@ -131,7 +131,7 @@ def test_noise_free_loop_is_recovered_to_rounding(example4):
 
 def test_slow_fit_with_one_parameter_fixed(example4):
     u, _, f, _, _ = example4
-    r = lugre.fit(u, f, fix="fs")  # at the model's value, the paper's fs = 2
+    r = lugre.fit(u, f, fix={"fs": 2.0})  # the truth
     check_recovery(r, dict(sigma0=6.0), SLOW_RECOVERY)
     assert r["fixed"] == {"fs": 2.0}
     assert r["correlation"].shape == (1, 1)
@@ -221,12 +221,19 @@ def test_full_fit_recovers_the_papers_model_with_sigma2_fixed_at_0():
     t, u = triangle_record(6.0, [0.1, 0.3, 1.0, 3.0, 10.0], 100)
     y = lugre.LuGre().simulate(t=t, u=u)["y"]
     f = noisy(y, 0.01 * np.sqrt(np.mean(y**2)), 8)
-    r = lugre.fit(u, f, t=t, kind="full", fix={"sigma2": 0})
+    r = lugre.fit(u, f, t=t, kind="full", fix={"sigma2": 0, "beta": 1})
     check_recovery(r, dict(sigma0=1.0, sigma1=1.0, fc=1.0, fs=2.0, vs=1.0), FULL_RECOVERY)
     assert r["fixed"] == {"sigma2": 0.0, "beta": 1.0}
+    # A held parameter needs a value: the family's defaults are the paper's, not the data's.
+    with pytest.raises(ValueError) as e:
+        lugre.fit(u, f, t=t, kind="full", fix={"sigma2": 0})
+    assert str(e.value) == (
+        "beta is held in the full fit but has no value: give it (e.g. 2, the usual Stribeck "
+        "exponent) or fit it too (fix={'beta': value}, a model object that has it, or free=['beta'])"
+    )
     # Without fixing it, sigma2 cannot be identified (the fit drives it to 0).
     with pytest.raises(ValueError) as e:
-        lugre.fit(u, f, t=t, kind="full")
+        lugre.fit(u, f, t=t, kind="full", fix={"beta": 1})
     assert str(e.value).startswith("sigma2 cannot be identified from this data: sigma2 = ")
     assert e.value.parameters == ("sigma2",)
 
@@ -252,7 +259,7 @@ def quasi_static():
 def test_sigma1_from_quasi_static_data_is_unidentifiable(quasi_static):
     t, u, f = quasi_static
     with pytest.raises(ValueError) as e:
-        lugre.fit(u, f, t=t, kind="full", fix=["sigma0", "sigma2", "fc", "fs", "vs"])
+        lugre.fit(u, f, t=t, kind="full", model=lugre.LuGre(), fix=["sigma0", "sigma2", "fc", "fs", "vs"])
     message = str(e.value)
     assert message.startswith("sigma1 cannot be identified from this data: sigma1 = "), message
     assert "its 95 % interval reaches 0" in message
@@ -260,7 +267,7 @@ def test_sigma1_from_quasi_static_data_is_unidentifiable(quasi_static):
     assert e.value.parameters == ("sigma1",)
     # All at once: sigma1 is among those named.
     with pytest.raises(ValueError) as e:
-        lugre.fit(u, f, t=t, kind="full", fix={"sigma2": 0})
+        lugre.fit(u, f, t=t, kind="full", fix={"sigma2": 0, "beta": 1})
     assert "sigma1" in e.value.parameters
     assert str(e.value).split(" cannot be identified")[0] == ", ".join(e.value.parameters)
     # A slow fit refuses it outright: the loop does not depend on it.
@@ -323,7 +330,7 @@ def test_bad_data():
         ((u, f), dict(t=np.arange(20.0), kind="full", x0=math.inf), "x0 must be a finite number, got inf"),
         (
             (u, f),
-            dict(t=np.arange(20.0), kind="full", start={"sigma1": 0}),
+            dict(t=np.arange(20.0), kind="full", start={"sigma1": 0}, fix={"beta": 1}),
             "start['sigma1']: the start value of sigma1 must be a finite number > 0, got 0 (to hold it at that value, give fix={'sigma1': 0.0})",
         ),
     ]

@@ -173,6 +173,14 @@ pub enum FitError {
     FixedAndFree { name: &'static str },
     #[error("nothing to fit: every parameter of the {fit} fit is fixed")]
     NothingToFit { fit: &'static str },
+    #[error(
+        "{name} is held in the {fit} fit but has no value: give it (e.g. {example}) or fit it too"
+    )]
+    NotGiven {
+        name: &'static str,
+        fit: &'static str,
+        example: &'static str,
+    },
     #[error("the bounds of {name} must satisfy 0 <= lo < hi (hi may be inf), got [{lo}, {hi}]", lo = num(*.lo), hi = num(*.hi))]
     BadBounds {
         name: &'static str,

@@ -15,6 +15,15 @@ use lugre::{
 };
 use lugre_test_support::prec::{FULL_FIT_RECOVERY, SLOW_FIT_RECOVERY};
 
+/// The LuGre family with `held` parameters held at the values given (the others fitted or,
+/// in a slow fit, unused).
+fn held(held: &[(&str, f64)]) -> FitSpec {
+    held.iter()
+        .fold(FitSpec::new(Family::LuGre), |s, &(name, v)| {
+            s.set(name, v).unwrap().fix(name).unwrap()
+        })
+}
+
 /// Standard normal deviates by Box-Muller.
 struct Gauss(Lcg);
 
@@ -208,7 +217,11 @@ fn slow_fit_with_one_parameter_fixed() {
     let model = LuGre::paper().with_sigma0(6.0).unwrap();
     let (u, f) = slow_record(&model, &[0.0, 1.0, 0.5, 1.5], 6, 3, 500);
     let f = noisy(&f, 0.01, 5);
-    let spec = FitSpec::new(Family::LuGre).fix("fs").unwrap(); // Fs = 2, the truth
+    let spec = FitSpec::new(Family::LuGre)
+        .set("fs", 2.0) // the truth
+        .unwrap()
+        .fix("fs")
+        .unwrap();
     let r = fit_slow(&spec, &u, &f).unwrap();
     check_recovery(&r, &[("sigma0", 6.0)], SLOW_FIT_RECOVERY);
     assert_eq!(r.fixed, vec![("fs", 2.0)]);
@@ -230,7 +243,7 @@ fn full_fit_recovers_the_papers_parameters() {
     let model = LuGre::paper();
     let (t, u, f) = rate_record(&model, 6.0, &[0.1, 0.3, 1.0, 3.0, 10.0], 300);
     let f = noisy(&f, 0.01, 6);
-    let spec = FitSpec::new(Family::LuGre).fix("sigma2").unwrap();
+    let spec = held(&[("sigma2", 0.0), ("beta", 1.0)]);
     let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
     check_recovery(&r, &PAPER_FULL, FULL_FIT_RECOVERY);
 }
@@ -275,7 +288,7 @@ fn full_fit_with_input_only_rows() {
         }
     }
     let measured = f.iter().filter(|v| !v.is_nan()).count();
-    let spec = FitSpec::new(Family::LuGre).fix("sigma2").unwrap();
+    let spec = held(&[("sigma2", 0.0), ("beta", 1.0)]);
     let r = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
     assert_eq!((r.samples, r.fitted.len()), (measured, u.len()));
     assert!(r.fitted.iter().all(|y| y.is_finite()));
@@ -308,11 +321,15 @@ fn sigma1_from_quasi_static_data_is_reported_unidentifiable() {
     let model = LuGre::paper();
     let (t, u, f) = rate_record(&model, 6.0, &[1e-3], 500);
     let f = noisy(&f, 0.01, 9);
-    // Everything but sigma1 at the truth.
-    let spec = FitSpec::new(Family::LuGre);
-    let spec = ["sigma0", "sigma2", "fc", "fs", "vs"]
-        .iter()
-        .fold(spec, |s, n| s.fix(n).unwrap());
+    // Everything but sigma1 at the truth (the paper's values).
+    let spec = held(&[
+        ("sigma0", 1.0),
+        ("sigma2", 0.0),
+        ("fc", 1.0),
+        ("fs", 2.0),
+        ("vs", 1.0),
+        ("beta", 1.0),
+    ]);
     let e = fit_full(&spec, &t, &u, &f, FullOptions::default()).unwrap_err();
     match &e {
         FitError::Unidentifiable { parameters } => {
@@ -331,7 +348,7 @@ fn sigma1_from_quasi_static_data_is_reported_unidentifiable() {
     );
     // All six at once: sigma1 is among those named.
     let e = fit_full(
-        &FitSpec::new(Family::LuGre).fix("sigma2").unwrap(),
+        &held(&[("sigma2", 0.0), ("beta", 1.0)]),
         &t,
         &u,
         &f,

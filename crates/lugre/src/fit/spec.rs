@@ -226,6 +226,9 @@ pub struct FitSpec {
     family: Family,
     values: Vec<f64>,
     start_given: Vec<bool>,
+    /// The value was given (a model's values, `set`), not a family default: a parameter the
+    /// fit holds must have one.
+    value_given: Vec<bool>,
     fixed: Vec<bool>,
     freed: Vec<bool>,
     bounds: Vec<Bounds>,
@@ -312,29 +315,36 @@ impl FitSpec {
     /// data).
     pub fn lugre(p: LuGreParams) -> Self {
         let values = vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta];
-        Self::with_values(Family::LuGre, values)
+        Self::with_values(Family::LuGre, values, true)
     }
 
     /// The Dahl model with these values (for the fixed parameter; free ones start from the data).
     pub fn dahl(rho: f64, fc: f64) -> Self {
-        Self::with_values(Family::Dahl, vec![rho, fc])
+        Self::with_values(Family::Dahl, vec![rho, fc], true)
     }
 
     /// The family with its defaults: the paper's LuGre parameters ([`LuGreParams::default`]),
-    /// Dahl `rho = 1`, `Fc = 1`.
+    /// Dahl `rho = 1`, `Fc = 1`. They are the paper's dimensionless values, not a
+    /// measurement's: a parameter the fit holds must then be given ([`set`](Self::set)).
     pub fn new(family: Family) -> Self {
+        let p = LuGreParams::default();
         match family {
-            Family::LuGre => Self::lugre(LuGreParams::default()),
-            Family::Dahl => Self::dahl(1.0, 1.0),
+            Family::LuGre => Self::with_values(
+                Family::LuGre,
+                vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta],
+                false,
+            ),
+            Family::Dahl => Self::with_values(Family::Dahl, vec![1.0, 1.0], false),
         }
     }
 
-    fn with_values(family: Family, values: Vec<f64>) -> Self {
+    fn with_values(family: Family, values: Vec<f64>, given: bool) -> Self {
         let n = values.len();
         Self {
             family,
             values,
             start_given: vec![false; n],
+            value_given: vec![given; n],
             fixed: vec![false; n],
             freed: vec![false; n],
             bounds: vec![Bounds::POSITIVE; n],
@@ -355,6 +365,7 @@ impl FitSpec {
         }
         self.values[i] = value;
         self.start_given[i] = true;
+        self.value_given[i] = true;
         Ok(self)
     }
 
@@ -410,6 +421,21 @@ impl FitSpec {
         if free.is_empty() {
             return Err(FitError::NothingToFit { fit: kind.label() });
         }
+        // A parameter the model of this fit uses, held, must have a value from the user: the
+        // family's defaults are the paper's dimensionless values.
+        for (i, &name) in names.iter().enumerate() {
+            let used = match kind {
+                FitKind::Slow => self.family.slow_parameters().contains(&i),
+                FitKind::Full => true,
+            };
+            if used && !free.contains(&i) && !self.value_given[i] {
+                return Err(FitError::NotGiven {
+                    name,
+                    fit: kind.label(),
+                    example: example_value(name),
+                });
+            }
+        }
         let mut given = Vec::with_capacity(free.len());
         let mut bounds = Vec::with_capacity(free.len());
         for &i in &free {
@@ -441,6 +467,15 @@ impl FitSpec {
             given,
             bounds,
         })
+    }
+}
+
+/// A value to suggest for a held parameter nobody gave (the message's example).
+fn example_value(name: &str) -> &'static str {
+    match name {
+        "beta" => "2, the usual Stribeck exponent",
+        "sigma2" => "0 for no viscous friction",
+        _ => "a value from your setup",
     }
 }
 
@@ -487,7 +522,18 @@ mod tests {
 
     #[test]
     fn free_sets_by_kind() {
-        let s = FitSpec::new(Family::LuGre);
+        // The family's defaults are no values for held parameters: beta is held in a full fit.
+        assert_eq!(
+            FitSpec::new(Family::LuGre)
+                .resolve(FitKind::Full)
+                .unwrap_err(),
+            FitError::NotGiven {
+                name: "beta",
+                fit: "full",
+                example: "2, the usual Stribeck exponent"
+            }
+        );
+        let s = FitSpec::lugre(LuGreParams::default());
         assert_eq!(s.resolve(FitKind::Slow).unwrap().free, vec![0, 4]);
         assert_eq!(
             s.resolve(FitKind::Full).unwrap().free,

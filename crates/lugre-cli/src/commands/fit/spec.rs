@@ -112,6 +112,10 @@ pub(super) fn explain(e: FitError) -> anyhow::Error {
             )
         }
         FitError::NotInSlowLoop { .. } => anyhow!("{e}"),
+        FitError::NotGiven { name, .. } => {
+            let flag = name.replace('_', "-");
+            anyhow!("{e} (--{flag} V, --fix {name}=V or --free {name})")
+        }
         FitError::NoStart { .. } => anyhow!(
             "{e} (--NAME VALUE for each, e.g. --vs at the order of the record's velocities), or fewer free parameters (--fix)"
         ),
