@@ -419,10 +419,8 @@ fn explain(py: Python<'_>, e: FitError) -> PyErr {
             } else {
                 ("them", format!("fix={{'{}': value, ...}}", names[0]))
             };
-            let quoted: Vec<String> = names.iter().map(|n| format!("'{n}'")).collect();
             let err = PyValueError::new_err(format!(
-                "{e}; fix {it} ({example}, or fix=[{}] for the model's values) or fit data that excite {it}",
-                quoted.join(", ")
+                "{e}; fix {it} at values you know ({example}) or fit data that excite {it}"
             ));
             let attached =
                 PyTuple::new(py, &names).and_then(|n| err.value(py).setattr("parameters", n));

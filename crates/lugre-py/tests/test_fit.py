@@ -263,7 +263,7 @@ def test_sigma1_from_quasi_static_data_is_unidentifiable(quasi_static):
     message = str(e.value)
     assert message.startswith("sigma1 cannot be identified from this data: sigma1 = "), message
     assert "its 95 % interval reaches 0" in message
-    assert message.endswith("; fix it (fix={'sigma1': value}, or fix=['sigma1'] for the model's values) or fit data that excite it")
+    assert message.endswith("; fix it at values you know (fix={'sigma1': value}) or fit data that excite it")
     assert e.value.parameters == ("sigma1",)
     # All at once: sigma1 is among those named.
     with pytest.raises(ValueError) as e:

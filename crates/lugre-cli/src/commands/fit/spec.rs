@@ -104,10 +104,11 @@ pub(super) fn explain(e: FitError) -> anyhow::Error {
     match &e {
         FitError::Unidentifiable { parameters } => {
             let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
+            let example: Vec<String> = names.iter().map(|n| format!("{n}=VALUE")).collect();
             anyhow!(
-                "{e}; fix {} at values you know (--fix {}, with NAME=VALUE for each: the flags' defaults are the paper's dimensionless values, not yours) or fit data that excite {}",
+                "{e}; fix {} at values you know (--fix {}: the flags' defaults are the paper's dimensionless values, not yours) or fit data that excite {}",
                 if names.len() == 1 { "it" } else { "them" },
-                names.join(","),
+                example.join(","),
                 if names.len() == 1 { "it" } else { "them" }
             )
         }
