@@ -60,6 +60,17 @@ pub(crate) enum DelimiterArg {
 }
 
 impl DataArgs {
+    /// Whether `--columns` names the column of `role` (`v`, `N`: roles that change what a
+    /// command reads).
+    pub(crate) fn selects(&self, role: &str) -> bool {
+        self.columns.as_deref().is_some_and(|c| {
+            c.split(',').any(|item| {
+                item.split_once('=')
+                    .is_some_and(|(r, _)| r.trim().eq_ignore_ascii_case(role))
+            })
+        })
+    }
+
     /// The reader's options; `roles` are the columns the command reads (`t` always allowed).
     pub(crate) fn options(&self, roles: &[&str]) -> anyhow::Result<crate::io::csv::ReadOptions> {
         use crate::io::csv::{ReadOptions, Selector};

@@ -451,3 +451,104 @@ fn samples_of_a_smooth_motion_read_as_cubic() {
         "runs once",
     );
 }
+
+/// `--columns N=NAME`: the model is the friction coefficient's (parameters per newton) and
+/// `y = N(t)` times it. On the lab file (a constant 5 N) it is the force model with sigma0,
+/// sigma1, Fc and Fs five times larger, to rounding; a varying `N` scales `y` sample by
+/// sample; `N <= 0` is refused, naming the row.
+#[test]
+fn a_normal_force_column_scales_the_friction_coefficient() {
+    let lab = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/data/lab-slow-loop.tsv"
+    );
+    let common = [
+        "simulate", "--input", lab, "--vs", "1e-3", "--beta", "2", "--json",
+    ];
+    let run = |extra: &[&str]| -> Vec<f64> {
+        let args: Vec<&str> = common.iter().chain(extra).copied().collect();
+        column(&json(&args), "y")
+    };
+    let force = run(&[
+        "--columns",
+        "u=Position",
+        "--scale",
+        "u=1e-3",
+        "--sigma0",
+        "1e5",
+        "--sigma1",
+        "316",
+        "--fc",
+        "1",
+        "--fs",
+        "1.5",
+    ]);
+    let per_newton = run(&[
+        "--columns",
+        "u=Position,N=Normal",
+        "--scale",
+        "u=1e-3,N=1e-6",
+        "--sigma0",
+        "2e4",
+        "--sigma1",
+        "63.2",
+        "--fc",
+        "0.2",
+        "--fs",
+        "0.3",
+    ]);
+    assert_eq!(force.len(), per_newton.len());
+    for (a, b) in force.iter().zip(&per_newton) {
+        assert!((a - b).abs() <= 1e-12 * (1.0 + a.abs()), "{a} vs {b}");
+    }
+    let dir = scratch("normal");
+    let file = dir.join("load.csv");
+    std::fs::write(&file, "t,u,N\n0,0,1\n1,1,2\n2,0,4\n").unwrap();
+    let f = file.to_str().unwrap();
+    let unit = column(
+        &json(&["simulate", "--input", f, "--columns", "u=u", "--json"]),
+        "y",
+    );
+    let scaled = column(
+        &json(&[
+            "simulate",
+            "--input",
+            f,
+            "--columns",
+            "N=N",
+            "--times",
+            "0,1,1.5,2",
+            "--json",
+        ]),
+        "y",
+    );
+    let at = column(
+        &json(&[
+            "simulate",
+            "--input",
+            f,
+            "--columns",
+            "u=u",
+            "--times",
+            "0,1,1.5,2",
+            "--json",
+        ]),
+        "y",
+    );
+    for ((s, a), n) in scaled.iter().zip(&at).zip([1.0, 2.0, 3.0, 4.0]) {
+        assert!(
+            (s - n * a).abs() <= 1e-14 * (1.0 + a.abs()),
+            "{s} vs {n} x {a}"
+        );
+    }
+    assert_eq!(unit.len(), 3);
+    std::fs::write(&file, "t,u,N\n0,0,1\n1,1,0\n2,0,4\n").unwrap();
+    rejects(
+        &["simulate", "--input", f, "--columns", "N=N"],
+        "row 2: the normal force N must be > 0, got 0",
+    );
+    rejects(
+        &["simulate", "--sine", "1,1", "--columns", "N=2"],
+        "a normal force is read from the record",
+    );
+}

@@ -381,10 +381,7 @@ fn read_record(
 /// (never from the header alone: a file that records the load would otherwise change what
 /// the parameters mean).
 fn normal_force(args: &FitArgs) -> bool {
-    args.data.columns.as_deref().is_some_and(|c| {
-        c.split(',')
-            .any(|item| item.trim().to_ascii_lowercase().starts_with("n="))
-    })
+    args.data.selects("N")
 }
 
 /// `F / N` in place: the friction coefficient the model is fitted to (`N > 0` at every row).
@@ -405,10 +402,7 @@ fn to_coefficient(f: &mut [f64], n: &[f64], path: &Path) -> Result<()> {
 
 /// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).
 fn velocity_record(args: &FitArgs, path: &Path) -> bool {
-    args.data.columns.as_deref().is_some_and(|c| {
-        c.split(',')
-            .any(|item| item.trim().to_ascii_lowercase().starts_with("v="))
-    }) || crate::io::csv::is_velocity_record(path)
+    args.data.selects("v") || crate::io::csv::is_velocity_record(path)
 }
 
 /// Reads `t,v,F` and integrates the velocity from `u = 0` at the first sample (the C1 cubic

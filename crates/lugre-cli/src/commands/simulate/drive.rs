@@ -67,16 +67,13 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
 /// (integrated, cubic reading).
 fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String)> {
     use crate::io::csv::{read_table_with, Columns};
-    let velocity = args.data.columns.as_deref().is_some_and(|c| {
-        c.split(',')
-            .any(|item| item.trim().to_ascii_lowercase().starts_with("v="))
-    }) || crate::io::csv::is_velocity_record(path);
+    let velocity = args.data.selects("v") || crate::io::csv::is_velocity_record(path);
     let (columns, role) = if velocity {
         (Columns::Named("v"), "v")
     } else {
         (Columns::Series, "u")
     };
-    let table = read_table_with(path, columns, args.data.options(&[role])?)?;
+    let table = read_table_with(path, columns, args.data.options(&[role, "N"])?)?;
     let Some(t) = table.t else {
         bail!(
             "{}: simulate needs the samples' times: a column 't' (or --columns t=NAME)",

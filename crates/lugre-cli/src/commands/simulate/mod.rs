@@ -142,12 +142,63 @@ struct Request {
     simulation: simulate::Request,
     /// The input, described for the table.
     input: String,
+    /// The normal force of the record (`--columns N=NAME`) at its times: the model is then the
+    /// friction coefficient's and `y` is `N(t)` times it.
+    normal: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
     let request = parse(args)?;
-    let out = compute(&request)?;
+    let mut out = compute(&request)?;
+    if let Some((t, n)) = &request.normal {
+        times_normal_force(&mut out, t, n);
+    }
     report(args, &request, &out)
+}
+
+/// The record's normal force (`--columns N=NAME`, > 0 at every row) at its times.
+fn read_normal(args: &SimulateArgs) -> Result<Option<(Vec<f64>, Vec<f64>)>> {
+    if !args.data.selects("N") {
+        return Ok(None);
+    }
+    let Some(path) = &args.input.input else {
+        bail!("--columns N=...: a normal force is read from the record (--input FILE)");
+    };
+    let options = args.data.options(&["u", "v", "N"])?;
+    let table =
+        crate::io::csv::read_table_with(path, crate::io::csv::Columns::Named("N"), options)?;
+    let n = table.columns.into_iter().next().unwrap_or_default();
+    let Some(t) = table.t else {
+        bail!(
+            "{}: the normal force needs the samples' times (a column t)",
+            path.display()
+        );
+    };
+    if let Some(i) = n.iter().position(|&v| v.is_nan() || v <= 0.0) {
+        bail!(
+            "{}: row {}: the normal force N must be > 0, got {}",
+            path.display(),
+            i + 1,
+            sig(n[i], 10)
+        );
+    }
+    Ok(Some((t, n)))
+}
+
+/// `y` times the normal force, linear between the record's samples (held beyond them).
+fn times_normal_force(out: &mut Trajectory, t: &[f64], n: &[f64]) {
+    for (y, &ti) in out.y.iter_mut().zip(&out.t) {
+        let k = t.partition_point(|&x| x <= ti);
+        let nk = match k {
+            0 => n[0],
+            k if k == t.len() => n[k - 1],
+            k => {
+                let w = (ti - t[k - 1]) / (t[k] - t[k - 1]);
+                n[k - 1] + w * (n[k] - n[k - 1])
+            }
+        };
+        *y *= nk;
+    }
 }
 
 fn parse(args: &SimulateArgs) -> Result<Request> {
@@ -158,7 +209,11 @@ fn parse(args: &SimulateArgs) -> Result<Request> {
     let x0 = parse_scalar("--x0", &args.x0)?;
     let tol =
         Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
-    let (drive, input) = build_drive(args)?;
+    let (drive, mut input) = build_drive(args)?;
+    let normal = read_normal(args)?;
+    if normal.is_some() {
+        input.push_str("; y = N(t) times the friction coefficient of the model (N from the record, linear between samples; the model's parameters per newton)");
+    }
     if let Some(path) = &args.plot.path {
         // Before a possibly long run, not after it.
         crate::plot::check_path(path)?;
@@ -187,6 +242,7 @@ fn parse(args: &SimulateArgs) -> Result<Request> {
         model,
         simulation,
         input,
+        normal,
     })
 }
 
