@@ -4,10 +4,14 @@
 //! Data: the project's simulator plus 1 % Gaussian noise (fixed seed). Slow: the paper's
 //! Example 4 loop (sigma0 = 6, Fs = 2, minor loop included), two periods of 5 * 10^4 samples.
 //! Full: the Canudas de Wit (1995) parameters, sweeps of +-1 mm at seven speeds from 0.1 mm/s to
-//! 0.1 m/s, 10^5 samples, all six parameters free (beta = 2 fixed), three starts.
+//! 0.1 m/s, 10^5 samples, all six parameters free (beta = 2 fixed), three starts. Full on the
+//! cubic reading (issue: 10^5 samples under 1 s): the paper's model, two periods of a sine of
+//! amplitude 6 sampled 10^5 times, sigma2 = 0 and beta = 1 held, the interpolant and its
+//! subdivision (tolerance 1e-9 of the range, as `lugre fit --interpolate cubic`) built inside.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lugre::fit::{fit_full, fit_slow, Family, FitSpec, FullOptions};
+use lugre::fit::{fit_full, fit_full_smooth, fit_slow, Family, FitSpec, FullOptions};
+use lugre::simulate::SmoothSamples;
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator, Trajectory, TurningPoints};
 use std::hint::black_box;
@@ -75,6 +79,24 @@ fn full_data(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     (t, u, f)
 }
 
+/// Two periods of `6 sin(2 pi t / 4)` sampled `n` times, the paper's model's force (from the
+/// dense samples) plus 1 % noise.
+fn sine_data(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let t: Vec<f64> = (0..n).map(|i| 8.0 * i as f64 / (n - 1) as f64).collect();
+    let u: Vec<f64> = t
+        .iter()
+        .map(|&t| 6.0 * (std::f64::consts::TAU * t / 4.0).sin())
+        .collect();
+    let input = PiecewiseLinear::new(t.clone(), u.clone()).expect("valid");
+    let mut out = Trajectory::default();
+    Simulator::new(&LuGre::paper(), Gamma::ONE, 0.0)
+        .expect("valid")
+        .at_knots(&input, 1, &mut out)
+        .expect("finite");
+    let f = noisy(&out.y, 0.01, 3);
+    (t, u, f)
+}
+
 fn fit(c: &mut Criterion) {
     let mut group = c.benchmark_group("fit");
     let (u, f) = slow_data(100_000);
@@ -90,6 +112,18 @@ fn fit(c: &mut Criterion) {
     group.measurement_time(Duration::from_secs(20));
     group.bench_function(format!("full/{}", u.len()), |b| {
         b.iter(|| fit_full(black_box(&spec), &t, &u, &f, FullOptions::default()).expect("fits"))
+    });
+    let (t, u, f) = sine_data(100_000);
+    let spec = FitSpec::new(Family::LuGre)
+        .set("sigma2", 0.0)
+        .and_then(|s| s.fix("sigma2"))
+        .and_then(|s| s.set("beta", 1.0))
+        .expect("known");
+    group.bench_function(format!("full_cubic/{}", u.len()), |b| {
+        b.iter(|| {
+            let motion = SmoothSamples::pchip(t.clone(), u.clone(), 1e-9).expect("valid");
+            fit_full_smooth(black_box(&spec), &motion, &f, FullOptions::default()).expect("fits")
+        })
     });
     group.finish();
 }

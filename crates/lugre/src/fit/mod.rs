@@ -91,7 +91,7 @@ pub use stats::{t_quantile_975, CONDITION_LIMIT, NO_EFFECT};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
-use crate::simulate::{Gamma, PiecewiseLinear, Simulator, Trajectory};
+use crate::simulate::{Gamma, PiecewiseLinear, Simulator, SmoothSamples, Trajectory};
 use lm::{minimize, Config, Outcome};
 use spec::Resolved;
 
@@ -354,6 +354,35 @@ fn slow_start(resolved: &mut Resolved, sl: &slow::SlowLoop, f: &[f64]) -> Result
     }
     resolved.fill_starts(&start);
     Ok(())
+}
+
+/// [`fit_full`] on a smooth reading of sampled data (`motion`: the C1 cubic through
+/// displacement samples, or integrated velocity samples, [`SmoothSamples`]): the subdivided
+/// motion drives the simulation, its added knots are input-only rows, and the residual is taken
+/// at the samples (`f`: one force per sample of `motion`, `NaN` for an input-only sample).
+/// `fitted` holds the fit at the samples.
+pub fn fit_full_smooth(
+    spec: &FitSpec,
+    motion: &SmoothSamples,
+    f: &[f64],
+    options: FullOptions<'_>,
+) -> Result<FitReport, FitError> {
+    let knots = motion.sample_knots();
+    if f.len() != knots.len() {
+        return Err(FitError::LengthMismatch {
+            what: "F",
+            got: f.len(),
+            u: knots.len(),
+        });
+    }
+    let (rt, ru) = (motion.refined().times(), motion.refined().values());
+    let mut rf = vec![f64::NAN; rt.len()];
+    for (&k, &fk) in knots.iter().zip(f) {
+        rf[k] = fk;
+    }
+    let mut report = fit_full(spec, rt, ru, &rf, options)?;
+    report.fitted = knots.iter().map(|&k| report.fitted[k]).collect();
+    Ok(report)
 }
 
 /// The full fit to rate-dependent samples `(t_i, u_i, F_i)` on the exact simulation from

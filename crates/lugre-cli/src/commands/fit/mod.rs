@@ -17,7 +17,8 @@ use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use lugre::fit::{
-    fit_full, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec, FullOptions,
+    fit_full, fit_full_smooth, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec,
+    FullOptions,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -273,11 +274,11 @@ fn compute(r: &Request) -> Result<FitReport> {
                 .with_starts(*starts)
                 .with_progress(&mut report);
             let result = if let Some(motion) = &record.velocity {
-                smooth_fit(&r.spec, motion, record, options).map_err(with_file)
+                fit_full_smooth(&r.spec, motion, &record.f, options).map_err(with_file)
             } else if r.cubic {
                 SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_TOL)
                     .map_err(FitError::from)
-                    .and_then(|motion| smooth_fit(&r.spec, &motion, record, options))
+                    .and_then(|motion| fit_full_smooth(&r.spec, &motion, &record.f, options))
                     .map_err(with_file)
             } else {
                 fit_full(&r.spec, t, &record.u, &record.f, options).map_err(with_file)
@@ -290,29 +291,6 @@ fn compute(r: &Request) -> Result<FitReport> {
 
 /// The chord tolerance of the cubic reading in a fit (relative to the record's range).
 const CUBIC_TOL: f64 = 1e-9;
-
-/// The full fit on a smooth reading of the record (the cubic through displacement samples, or
-/// the integrated velocity samples): the subdivided motion drives the simulation, its added
-/// knots are input-only rows, the residual is taken at the record's samples.
-fn smooth_fit(
-    spec: &FitSpec,
-    motion: &SmoothSamples,
-    record: &Record,
-    options: FullOptions<'_>,
-) -> Result<FitReport, FitError> {
-    let (rt, ru) = (motion.refined().times(), motion.refined().values());
-    let mut rf = vec![f64::NAN; rt.len()];
-    for (&k, &f) in motion.sample_knots().iter().zip(&record.f) {
-        rf[k] = f;
-    }
-    let mut report = fit_full(spec, rt, ru, &rf, options)?;
-    report.fitted = motion
-        .sample_knots()
-        .iter()
-        .map(|&k| report.fitted[k])
-        .collect();
-    Ok(report)
-}
 
 /// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
 /// the JSON document or the table.
