@@ -7,8 +7,12 @@
 
 use std::ffi::CString;
 
-use lugre::fit::{fit_full, fit_slow, Family, FitError, FitKind, FitReport, FitSpec, FullOptions};
+use lugre::fit::{
+    fit_full, fit_full_smooth, fit_slow, Family, FitError, FitKind, FitReport, FitSpec,
+    FullOptions, CUBIC_READING_TOL,
+};
 use lugre::model::Parameter;
+use lugre::simulate::SmoothSamples;
 use pyo3::exceptions::{PyRuntimeWarning, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyMapping, PyString, PyTuple};
@@ -76,6 +80,10 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// * "fitted": the model's output at every sample and "residuals" = f - fitted (float64
 ///   arrays).
 ///
+/// `interpolate="cubic"` (full fit): the samples of a smooth motion read as the C1 cubic through
+/// them, subdivided to 1e-9 of their range (as `lugre fit --interpolate cubic`); the residual
+/// stays at the samples.
+///
 /// A fit that ran out of evaluations at a usable point is returned with converged = False and
 /// a RuntimeWarning. Every other failure raises ValueError with the message of `lugre fit`,
 /// among them a parameter the data cannot determine (e.g. sigma1 from quasi-static data): the
@@ -91,8 +99,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear')"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -108,6 +116,7 @@ pub fn fit<'py>(
     bounds: Option<&Bound<'py, PyAny>>,
     x0: Option<&Bound<'py, PyAny>>,
     starts: Option<&Bound<'py, PyAny>>,
+    interpolate: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
     let u = floats(u, "u")?.one_dimensional("u", u)?;
@@ -129,6 +138,12 @@ pub fn fit<'py>(
     )?;
 
     let x0 = given(x0).map(|x| real(&x, "x0")).transpose()?;
+    let cubic = crate::simulate::cubic_arg(given(interpolate).as_ref())?;
+    if cubic && kind == FitKind::Slow {
+        return Err(PyValueError::new_err(
+            "interpolate='cubic' applies to the full fit (kind='full'): the slow loop depends on the turning points alone",
+        ));
+    }
     let starts = given(starts).map(|s| count(&s, "starts")).transpose()?;
     let options = match kind {
         FitKind::Slow => {
@@ -166,7 +181,13 @@ pub fn fit<'py>(
         .detach(|| match (&options, &t) {
             (Some((x0, starts)), Some(t)) => {
                 let options = FullOptions::default().with_x0(*x0).with_starts(*starts);
-                fit_full(&spec, t, &u, &f, options)
+                if cubic {
+                    SmoothSamples::pchip(t.to_vec(), u.to_vec(), CUBIC_READING_TOL)
+                        .map_err(FitError::from)
+                        .and_then(|m| fit_full_smooth(&spec, &m, &f, options))
+                } else {
+                    fit_full(&spec, t, &u, &f, options)
+                }
             }
             _ => fit_slow(&spec, &u, &f),
         })

@@ -113,19 +113,7 @@ pub fn simulate<'py>(
         };
         let t = one_dimensional(t, "t")?;
         let u = one_dimensional(u, "u")?;
-        let cubic = match given(args.interpolate) {
-            None => false,
-            Some(i) => match i.extract::<String>().as_deref() {
-                Ok("linear") => false,
-                Ok("cubic") => true,
-                _ => {
-                    return Err(PyValueError::new_err(format!(
-                        "interpolate must be 'linear' or 'cubic', got {}",
-                        i.repr().map_or_else(|_| "?".into(), |r| r.to_string())
-                    )))
-                }
-            },
-        };
+        let cubic = cubic_arg(given(args.interpolate))?;
         if cubic {
             // The chord tolerance of the subdivision: `tol`, as `lugre simulate --tol`.
             let tol = match given(args.tol) {
@@ -223,4 +211,19 @@ pub fn simulate<'py>(
     d.set_item("dz", vec_out(py, dz))?;
     d.set_item("y", vec_out(py, y))?;
     Ok(d)
+}
+
+/// `interpolate`: "linear" (default, `false`) or "cubic" (`true`).
+pub(crate) fn cubic_arg(obj: Option<&Bound<'_, PyAny>>) -> PyResult<bool> {
+    match obj {
+        None => Ok(false),
+        Some(i) => match i.extract::<String>().as_deref() {
+            Ok("linear") => Ok(false),
+            Ok("cubic") => Ok(true),
+            _ => Err(PyValueError::new_err(format!(
+                "interpolate must be 'linear' or 'cubic', got {}",
+                i.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+            ))),
+        },
+    }
 }

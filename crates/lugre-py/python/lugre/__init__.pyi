@@ -334,6 +334,7 @@ def fit(
     bounds: Optional[Mapping[str, Tuple[Optional[_Real], Optional[_Real]]]] = None,
     x0: Optional[_Real] = None,
     starts: Optional[SupportsIndex] = None,
+    interpolate: Literal["linear", "cubic"] = "linear",
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""

@@ -356,6 +356,10 @@ fn slow_start(resolved: &mut Resolved, sl: &slow::SlowLoop, f: &[f64]) -> Result
     Ok(())
 }
 
+/// The chord tolerance of the cubic reading's subdivision in a fit, relative to the record's
+/// range (`lugre fit --interpolate cubic`, `lugre.fit(..., interpolate="cubic")`).
+pub const CUBIC_READING_TOL: f64 = 1e-9;
+
 /// [`fit_full`] on a smooth reading of sampled data (`motion`: the C1 cubic through
 /// displacement samples, or integrated velocity samples, [`SmoothSamples`]): the subdivided
 /// motion drives the simulation, its added knots are input-only rows, and the residual is taken

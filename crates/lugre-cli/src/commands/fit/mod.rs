@@ -18,7 +18,7 @@ use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec,
-    FullOptions,
+    FullOptions, CUBIC_READING_TOL,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -276,7 +276,7 @@ fn compute(r: &Request) -> Result<FitReport> {
             let result = if let Some(motion) = &record.velocity {
                 fit_full_smooth(&r.spec, motion, &record.f, options).map_err(with_file)
             } else if r.cubic {
-                SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_TOL)
+                SmoothSamples::pchip(t.to_vec(), record.u.clone(), CUBIC_READING_TOL)
                     .map_err(FitError::from)
                     .and_then(|motion| fit_full_smooth(&r.spec, &motion, &record.f, options))
                     .map_err(with_file)
@@ -288,9 +288,6 @@ fn compute(r: &Request) -> Result<FitReport> {
         }
     })
 }
-
-/// The chord tolerance of the cubic reading in a fit (relative to the record's range).
-const CUBIC_TOL: f64 = 1e-9;
 
 /// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
 /// the JSON document or the table.
@@ -384,7 +381,7 @@ fn velocity_record(args: &FitArgs, path: &Path) -> bool {
 }
 
 /// Reads `t,v,F` and integrates the velocity from `u = 0` at the first sample (the C1 cubic
-/// reading of the motion, subdivided to `CUBIC_TOL`): `u` at the samples.
+/// reading of the motion, subdivided to `CUBIC_READING_TOL`): `u` at the samples.
 fn read_velocity_record(
     path: &Path,
     columns: Columns,
@@ -403,7 +400,7 @@ fn read_velocity_record(
         values.next().unwrap_or_default(),
     );
     let normal = values.next();
-    let motion = SmoothSamples::from_velocity(t.clone(), v, 0.0, CUBIC_TOL)
+    let motion = SmoothSamples::from_velocity(t.clone(), v, 0.0, CUBIC_READING_TOL)
         .map_err(|e| anyhow!("{}: {e}", path.display()))?;
     let values = motion.refined().values();
     let u = motion.sample_knots().iter().map(|&k| values[k]).collect();
