@@ -80,6 +80,12 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// * "fitted": the model's output at every sample and "residuals" = f - fitted (float64
 ///   arrays).
 ///
+/// `normal` (one value per sample, > 0): fit the friction coefficient f / normal instead of the
+/// force (as `lugre fit --columns N=NAME`): "parameters" and "fixed" then name Fc and Fs
+/// "mu_c" and "mu_s", sigma0 is in 1/m and sigma1, sigma2 in s/m (per newton), "fitted" and
+/// "residuals" are coefficients, "normal_force" is True; "values" keeps the model's names
+/// (lugre.LuGre(**r["values"]) is the model per newton).
+///
 /// `interpolate="cubic"` (full fit): the samples of a smooth motion read as the C1 cubic through
 /// them, subdivided to 1e-9 of their range (as `lugre fit --interpolate cubic`); the residual
 /// stays at the samples.
@@ -99,8 +105,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear')"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -117,10 +123,33 @@ pub fn fit<'py>(
     x0: Option<&Bound<'py, PyAny>>,
     starts: Option<&Bound<'py, PyAny>>,
     interpolate: Option<&Bound<'py, PyAny>>,
+    normal: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
     let u = floats(u, "u")?.one_dimensional("u", u)?;
-    let f = floats(f, "f")?.one_dimensional("f", f)?;
+    let mut f = floats(f, "f")?.one_dimensional("f", f)?;
+    // With the normal force, the fit is to the friction coefficient F / N (as `lugre fit
+    // --columns N=NAME`).
+    let normal = match given(normal) {
+        Some(n) => Some(floats(&n, "normal")?.one_dimensional("normal", &n)?),
+        None => None,
+    };
+    if let Some(n) = &normal {
+        if n.len() != f.len() {
+            return Err(PyValueError::new_err(format!(
+                "normal has {} values, f has {}: one normal force per sample",
+                n.len(),
+                f.len()
+            )));
+        }
+        if let Some(i) = n.iter().position(|&v| v.is_nan() || v <= 0.0) {
+            return Err(PyValueError::new_err(format!(
+                "normal[{i}] must be > 0, got {}",
+                float_repr(py, n[i])
+            )));
+        }
+        f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
+    }
     let t = match given(t) {
         Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
         None => None,
@@ -202,7 +231,7 @@ pub fn fit<'py>(
         .unwrap_or_default();
         PyErr::warn(py, &py.get_type::<PyRuntimeWarning>(), &message, 1)?;
     }
-    report_dict(py, &report, &spec, &f)
+    report_dict(py, &report, &spec, &f, normal.is_some())
 }
 
 /// `kind`: "slow" or "full" (case-insensitive).
@@ -471,7 +500,14 @@ fn report_dict<'py>(
     r: &FitReport,
     spec: &FitSpec,
     f: &[f64],
+    normal: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
+    // With a normal force, Fc and Fs are the coefficients mu_c and mu_s.
+    let key = |name: &'static str| match (normal, name) {
+        (true, "fc") => "mu_c",
+        (true, "fs") => "mu_s",
+        _ => name,
+    };
     let parameters = PyDict::new(py);
     for e in &r.estimates {
         let d = PyDict::new(py);
@@ -479,11 +515,11 @@ fn report_dict<'py>(
         d.set_item("stderr", e.stderr)?;
         d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
         d.set_item("at_bound", e.at_bound)?;
-        parameters.set_item(e.name, d)?;
+        parameters.set_item(key(e.name), d)?;
     }
     let fixed = PyDict::new(py);
     for (name, v) in &r.fixed {
-        fixed.set_item(*name, *v)?;
+        fixed.set_item(key(name), *v)?;
     }
     let values = PyDict::new(py);
     match r.family {
@@ -520,6 +556,7 @@ fn report_dict<'py>(
     d.set_item("turning_points", r.turning_points)?;
     d.set_item("model", r.family.label().to_ascii_lowercase())?;
     d.set_item("kind", r.kind.label())?;
+    d.set_item("normal_force", normal)?;
     d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
     d.set_item("residuals", vec_out(py, r.residuals(f)))?;
     Ok(d)

@@ -418,7 +418,7 @@ def test_no_warning_when_converged(example4):
 
 def test_signature_docstring_and_example():
     assert str(inspect.signature(lugre.fit)) == (
-        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear')"
+        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None)"
     )
     doc = lugre.fit.__doc__
     for words in ("lugre fit", "kind=\"slow\"", "ci95", "correlation", "ValueError", "TypeError"):
@@ -474,3 +474,20 @@ def test_full_fit_on_the_cubic_reading_of_sparse_samples():
         lugre.fit(us, fs, interpolate="cubic")
     with pytest.raises(ValueError, match="interpolate must be 'linear' or 'cubic'"):
         lugre.fit(us, fs, t=ts, kind="full", fix=held, interpolate="spline")
+
+
+def test_a_normal_force_gives_friction_coefficients(example4):
+    """normal=N: the fit of f / N (as `lugre fit --columns N=NAME`): with a constant N = 5,
+    sigma0 and mu_s are the force fit's sigma0 and fs over 5."""
+    u, _, f, _, _ = example4
+    force = lugre.fit(u, f)
+    coefficient = lugre.fit(u, 5 * f, normal=np.full(len(f), 25.0))
+    assert coefficient["normal_force"] and not force["normal_force"]
+    p, q = coefficient["parameters"], force["parameters"]
+    assert set(p) == {"sigma0", "mu_s"}
+    for a, b in ((p["sigma0"]["value"] * 5, q["sigma0"]["value"]), (p["mu_s"]["value"] * 5, q["fs"]["value"])):
+        assert abs(a - b) <= 1e-6 * b, (a, b)
+    with pytest.raises(ValueError, match=r"normal\[2\] must be > 0, got 0.0"):
+        lugre.fit(u, f, normal=np.where(np.arange(len(f)) == 2, 0.0, 1.0))
+    with pytest.raises(ValueError, match="one normal force per sample"):
+        lugre.fit(u, f, normal=np.ones(3))

@@ -335,6 +335,7 @@ def fit(
     x0: Optional[_Real] = None,
     starts: Optional[SupportsIndex] = None,
     interpolate: Literal["linear", "cubic"] = "linear",
+    normal: Optional[_Reals] = None,
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
