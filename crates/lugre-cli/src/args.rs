@@ -23,7 +23,9 @@ pub(crate) enum ModelKind {
 #[derive(Args, Debug, Clone, Default)]
 pub(crate) struct DataArgs {
     /// Which column holds what, by header name (units in brackets ignored, any case) or
-    /// 1-based number: t=Time,u=Position,F=Friction or t=1,u=3,F=4 (other columns ignored).
+    /// 1-based number: t=Time,u=Position,F=Friction or t=1,u=3,F=4 (other columns ignored);
+    /// v=NAME a velocity record; N=NAME a normal force (fit and simulate: the model is then the
+    /// friction coefficient's, its parameters per newton).
     #[arg(long, value_name = "ROLE=COLUMN,...", help_heading = "Data file")]
     pub(crate) columns: Option<String>,
     /// Factors applied to the columns as read (any factor, sign included), e.g. u=1e-3,F=-1e-6:
