@@ -80,6 +80,10 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// * "fitted": the model's output at every sample and "residuals" = f - fitted (float64
 ///   arrays).
 ///
+/// `v` (with `u=None` and `t`): a velocity record, integrated from u = 0 and read as the C1
+/// cubic through the samples (as `lugre fit` reads `t,v,F`); the result's "u" holds the
+/// displacement at the samples.
+///
 /// `normal` (one value per sample, > 0): fit the friction coefficient f / normal instead of the
 /// force (as `lugre fit --columns N=NAME`): "parameters" and "fixed" then name Fc and Fs
 /// "mu_c" and "mu_s", sigma0 is in 1/m and sigma1, sigma2 in s/m (per newton), "fitted" and
@@ -105,8 +109,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -124,9 +128,42 @@ pub fn fit<'py>(
     starts: Option<&Bound<'py, PyAny>>,
     interpolate: Option<&Bound<'py, PyAny>>,
     normal: Option<&Bound<'py, PyAny>>,
+    v: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
-    let u = floats(u, "u")?.one_dimensional("u", u)?;
+    let t_given = match given(t) {
+        Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
+        None => None,
+    };
+    // A velocity record (as `lugre fit` reads t,v,F): integrated from u = 0 and read as the
+    // C1 cubic; `u` is then None.
+    let (u, motion) = match (given(Some(u)), given(v)) {
+        (Some(_), Some(_)) => {
+            return Err(PyValueError::new_err(
+                "give the displacement u or the velocity v, not both (u=None with v)",
+            ))
+        }
+        (None, None) => {
+            return Err(PyTypeError::new_err(
+                "u must be the displacement samples (None only with the velocity v), got None",
+            ))
+        }
+        (Some(u), None) => (floats(&u, "u")?.one_dimensional("u", &u)?, None),
+        (None, Some(v)) => {
+            let v = floats(&v, "v")?.one_dimensional("v", &v)?;
+            let Some(t) = &t_given else {
+                return Err(PyValueError::new_err(
+                    "a velocity record needs the samples' times: give t",
+                ));
+            };
+            let motion =
+                SmoothSamples::from_velocity(t.to_vec(), v.to_vec(), 0.0, CUBIC_READING_TOL)
+                    .map_err(|e| explain(py, FitError::from(e)))?;
+            let values = motion.refined().values();
+            let u: Vec<f64> = motion.sample_knots().iter().map(|&k| values[k]).collect();
+            (u, Some(motion))
+        }
+    };
     let mut f = floats(f, "f")?.one_dimensional("f", f)?;
     // With the normal force, the fit is to the friction coefficient F / N (as `lugre fit
     // --columns N=NAME`).
@@ -150,10 +187,7 @@ pub fn fit<'py>(
         }
         f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
     }
-    let t = match given(t) {
-        Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
-        None => None,
-    };
+    let t = t_given;
     let kind = match given(kind) {
         Some(k) => kind_arg(&k)?,
         None => FitKind::Slow,
@@ -210,7 +244,9 @@ pub fn fit<'py>(
         .detach(|| match (&options, &t) {
             (Some((x0, starts)), Some(t)) => {
                 let options = FullOptions::default().with_x0(*x0).with_starts(*starts);
-                if cubic {
+                if let Some(m) = &motion {
+                    fit_full_smooth(&spec, m, &f, options)
+                } else if cubic {
                     SmoothSamples::pchip(t.to_vec(), u.to_vec(), CUBIC_READING_TOL)
                         .map_err(FitError::from)
                         .and_then(|m| fit_full_smooth(&spec, &m, &f, options))
@@ -231,7 +267,12 @@ pub fn fit<'py>(
         .unwrap_or_default();
         PyErr::warn(py, &py.get_type::<PyRuntimeWarning>(), &message, 1)?;
     }
-    report_dict(py, &report, &spec, &f, normal.is_some())
+    let d = report_dict(py, &report, &spec, &f, normal.is_some())?;
+    if motion.is_some() {
+        // The displacement the velocity record integrates to, at the samples.
+        d.set_item("u", vec_out(py, u.to_vec()))?;
+    }
+    Ok(d)
 }
 
 /// `kind`: "slow" or "full" (case-insensitive).

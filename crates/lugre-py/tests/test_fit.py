@@ -418,7 +418,7 @@ def test_no_warning_when_converged(example4):
 
 def test_signature_docstring_and_example():
     assert str(inspect.signature(lugre.fit)) == (
-        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None)"
+        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None)"
     )
     doc = lugre.fit.__doc__
     for words in ("lugre fit", "kind=\"slow\"", "ci95", "correlation", "ValueError", "TypeError"):
@@ -470,6 +470,16 @@ def test_full_fit_on_the_cubic_reading_of_sparse_samples():
     assert abs(cubic["rms"] / sd - 1) < 0.1, (cubic["rms"], sd)
     assert linear["rms"] > 1.5 * cubic["rms"], (linear["rms"], cubic["rms"])
     assert cubic["fitted"].shape == fs.shape
+    # The same samples as a velocity record (u=None, v with t): integrated from u = 0, read
+    # as the C1 cubic, within 2 % of the displacement record's residual.
+    vs = 6.0 * np.pi / 2.0 * np.cos(2 * np.pi * ts / 4.0)
+    by_velocity = lugre.fit(None, fs, t=ts, v=vs, kind="full", fix=held)
+    assert abs(by_velocity["rms"] / cubic["rms"] - 1) < 0.02, (by_velocity["rms"], cubic["rms"])
+    assert np.max(np.abs(by_velocity["u"] - us)) < 1e-3 * 6.0
+    with pytest.raises(ValueError, match="not both"):
+        lugre.fit(us, fs, t=ts, v=vs)
+    with pytest.raises(ValueError, match="needs the samples' times"):
+        lugre.fit(None, fs, v=vs)
     with pytest.raises(ValueError, match="interpolate='cubic' applies to the full fit"):
         lugre.fit(us, fs, interpolate="cubic")
     with pytest.raises(ValueError, match="interpolate must be 'linear' or 'cubic'"):

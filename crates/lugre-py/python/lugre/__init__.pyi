@@ -322,7 +322,7 @@ class FitResult(TypedDict):
     residuals: _Floats
 
 def fit(
-    u: _Reals,
+    u: Optional[_Reals],
     f: _Reals,
     *,
     t: Optional[_Reals] = None,
@@ -336,6 +336,7 @@ def fit(
     starts: Optional[SupportsIndex] = None,
     interpolate: Literal["linear", "cubic"] = "linear",
     normal: Optional[_Reals] = None,
+    v: Optional[_Reals] = None,
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
