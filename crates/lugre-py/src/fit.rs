@@ -131,7 +131,7 @@ pub fn fit<'py>(
     v: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
-    let t_given = match given(t) {
+    let t = match given(t) {
         Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
         None => None,
     };
@@ -151,7 +151,7 @@ pub fn fit<'py>(
         (Some(u), None) => (floats(&u, "u")?.one_dimensional("u", &u)?, None),
         (None, Some(v)) => {
             let v = floats(&v, "v")?.one_dimensional("v", &v)?;
-            let Some(t) = &t_given else {
+            let Some(t) = &t else {
                 return Err(PyValueError::new_err(
                     "a velocity record needs the samples' times: give t",
                 ));
@@ -159,9 +159,7 @@ pub fn fit<'py>(
             let motion =
                 SmoothSamples::from_velocity(t.to_vec(), v.to_vec(), 0.0, CUBIC_READING_TOL)
                     .map_err(|e| explain(py, FitError::from(e)))?;
-            let values = motion.refined().values();
-            let u: Vec<f64> = motion.sample_knots().iter().map(|&k| values[k]).collect();
-            (u, Some(motion))
+            (motion.samples().1.to_vec(), Some(motion))
         }
     };
     let mut f = floats(f, "f")?.one_dimensional("f", f)?;
@@ -187,7 +185,6 @@ pub fn fit<'py>(
         }
         f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
     }
-    let t = t_given;
     let kind = match given(kind) {
         Some(k) => kind_arg(&k)?,
         None => FitKind::Slow,

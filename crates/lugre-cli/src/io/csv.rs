@@ -47,6 +47,10 @@ pub enum Columns<'a> {
     /// [`Columns::Record`] and [`Columns::VelocityRecord`] with a normal force `N`.
     RecordN,
     VelocityRecordN,
+    /// `t,u,N` and `t,v,N`: a sampled input with a normal force (`lugre simulate`; the columns
+    /// are always named with `--columns`).
+    SeriesN,
+    VelocityN,
     /// The column of this name in any header (a file without a header has the columns `u` or
     /// `t,u`).
     Named(&'a str),
@@ -97,6 +101,8 @@ impl Columns<'_> {
             Columns::VelocityRecord => &["v", "F"],
             Columns::RecordN => &["u", "F", "N"],
             Columns::VelocityRecordN => &["v", "F", "N"],
+            Columns::SeriesN => &["u", "N"],
+            Columns::VelocityN => &["v", "N"],
         }
     }
 }
@@ -147,6 +153,19 @@ fn header_roles(path: &Path) -> Vec<String> {
         d => line.split(char::from(d.byte())).collect(),
     };
     split.iter().map(|f| role(f)).collect()
+}
+
+/// Checks the normal force of every row of `path` (`> 0`), naming the first that is not.
+pub(crate) fn check_normal_force(path: &Path, n: &[f64]) -> Result<()> {
+    match n.iter().position(|&v| v.is_nan() || v <= 0.0) {
+        Some(i) => anyhow::bail!(
+            "{}: row {}: the normal force N must be > 0, got {}",
+            path.display(),
+            i + 1,
+            crate::fmt::sig(n[i], 10)
+        ),
+        None => Ok(()),
+    }
 }
 
 /// Reads every row of `path` (at least one).

@@ -96,16 +96,25 @@ impl EnergyTrack {
                 g0: model.g0(),
             });
         }
-        Ok(Self {
+        Ok(Self::starting(model, y0, None, None))
+    }
+
+    fn starting(
+        model: RateIndependent,
+        y0: f64,
+        entry: Option<(f64, f64)>,
+        cuts: Option<Box<CutSums>>,
+    ) -> Self {
+        Self {
             model,
             y0,
             prev: Point::default(),
             cur: Point::default(),
             total_work: DoubleDouble::ZERO,
             total_dissipation: DoubleDouble::ZERO,
-            entry: None,
-            cuts: None,
-        })
+            entry,
+            cuts,
+        }
     }
 
     /// A track for a chunk of a longer history: the sample before it is `prev`, where
@@ -118,16 +127,8 @@ impl EnergyTrack {
         prev: Option<f64>,
         cuts: CutSums,
     ) -> Self {
-        Self {
-            model,
-            y0: y_entry,
-            prev: Point::default(),
-            cur: Point::default(),
-            total_work: DoubleDouble::ZERO,
-            total_dissipation: DoubleDouble::ZERO,
-            entry: prev.map(|p| (p, y_entry)),
-            cuts: Some(Box::new(cuts)),
-        }
+        let entry = prev.map(|p| (p, y_entry));
+        Self::starting(model, y_entry, entry, Some(Box::new(cuts)))
     }
 
     /// Work and dissipation along the pieces taken, `y*` at the last sample, and the

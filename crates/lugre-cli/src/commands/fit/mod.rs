@@ -200,11 +200,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         (true, true) => Columns::VelocityRecordN,
     };
     // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
-    let mut record = if velocity {
-        read_velocity_record(path, columns, options)?
-    } else {
-        read_record(path, columns, options)?
-    };
+    let mut record = read_record(path, columns, options, velocity)?;
     if let Some(n) = &record.normal {
         to_coefficient(&mut record.f, n, path)?;
     }
@@ -334,21 +330,46 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     Ok(())
 }
 
-/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order), with
-/// `N` where `columns` has it.
+/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order), or
+/// a velocity record `t,v,F` (`velocity`: integrated from `u = 0` at the first sample, the C1
+/// cubic reading of the motion subdivided to `CUBIC_READING_TOL`), with `N` where `columns`
+/// has it.
 fn read_record(
     path: &Path,
     columns: Columns,
     options: crate::io::csv::ReadOptions,
+    velocity: bool,
 ) -> Result<Record> {
     let table = crate::io::csv::read_table_with(path, columns, options)?;
     let mut values = table.columns.into_iter();
+    let (u, f, normal) = (
+        values.next().unwrap_or_default(),
+        values.next().unwrap_or_default(),
+        values.next(),
+    );
+    if !velocity {
+        return Ok(Record {
+            t: table.t,
+            u,
+            f,
+            velocity: None,
+            normal,
+        });
+    }
+    let Some(t) = table.t else {
+        bail!(
+            "{}: a velocity record needs the samples' times: a column 't' (or --columns t=NAME)",
+            path.display()
+        );
+    };
+    let motion = SmoothSamples::from_velocity(t.clone(), u, 0.0, CUBIC_READING_TOL)
+        .map_err(|e| anyhow!("{}: {e}", path.display()))?;
     Ok(Record {
-        t: table.t,
-        u: values.next().unwrap_or_default(),
-        f: values.next().unwrap_or_default(),
-        velocity: None,
-        normal: values.next(),
+        t: Some(t),
+        u: motion.samples().1.to_vec(),
+        f,
+        velocity: Some(motion),
+        normal,
     })
 }
 
@@ -361,56 +382,14 @@ fn normal_force(args: &FitArgs) -> bool {
 
 /// `F / N` in place: the friction coefficient the model is fitted to (`N > 0` at every row).
 fn to_coefficient(f: &mut [f64], n: &[f64], path: &Path) -> Result<()> {
-    for (i, (f, &n)) in f.iter_mut().zip(n).enumerate() {
-        if n.is_nan() || n <= 0.0 {
-            bail!(
-                "{}: row {}: the normal force N must be > 0, got {}",
-                path.display(),
-                i + 1,
-                sig(n, 10)
-            );
-        }
-        *f /= n;
-    }
+    crate::io::csv::check_normal_force(path, n)?;
+    f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
     Ok(())
 }
 
 /// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).
 fn velocity_record(args: &FitArgs, path: &Path) -> bool {
     args.data.selects("v") || crate::io::csv::is_velocity_record(path)
-}
-
-/// Reads `t,v,F` and integrates the velocity from `u = 0` at the first sample (the C1 cubic
-/// reading of the motion, subdivided to `CUBIC_READING_TOL`): `u` at the samples.
-fn read_velocity_record(
-    path: &Path,
-    columns: Columns,
-    options: crate::io::csv::ReadOptions,
-) -> Result<Record> {
-    let table = crate::io::csv::read_table_with(path, columns, options)?;
-    let Some(t) = table.t else {
-        bail!(
-            "{}: a velocity record needs the samples' times: a column 't' (or --columns t=NAME)",
-            path.display()
-        );
-    };
-    let mut values = table.columns.into_iter();
-    let (v, f) = (
-        values.next().unwrap_or_default(),
-        values.next().unwrap_or_default(),
-    );
-    let normal = values.next();
-    let motion = SmoothSamples::from_velocity(t.clone(), v, 0.0, CUBIC_READING_TOL)
-        .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-    let values = motion.refined().values();
-    let u = motion.sample_knots().iter().map(|&k| values[k]).collect();
-    Ok(Record {
-        t: Some(t),
-        u,
-        f,
-        velocity: Some(motion),
-        normal,
-    })
 }
 
 /// A spinner on stderr for the full fit (see [`Progress`]), redrawn at most 20 times a second.

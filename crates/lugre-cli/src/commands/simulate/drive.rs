@@ -10,8 +10,12 @@ use crate::args::Interpolate;
 use crate::fmt::sig;
 use crate::numbers::parse_list;
 
-/// The input flag given (exactly one), with a description for the summary.
-pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
+/// A record's normal force (`--columns N=NAME`) at its times.
+pub(super) type Normal = Option<(Vec<f64>, Vec<f64>)>;
+
+/// The input flag given (exactly one), with a description for the summary, and the record's
+/// normal force where `--columns` names one.
+pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)> {
     let mut given = args.input.given();
     if args.sine.is_some() {
         given.push("--sine");
@@ -41,10 +45,16 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
             sig(sine.phase(), 10),
             sig(sine.offset(), 10)
         );
-        return Ok((Drive::Sine(sine), text));
+        if args.data.selects("N") {
+            bail!("--columns N=...: a normal force is read from the record (--input FILE)");
+        }
+        return Ok((Drive::Sine(sine), text, None));
     }
     if let Some(path) = &args.input.input {
         return sampled(args, path);
+    }
+    if args.data.selects("N") {
+        bail!("--columns N=...: a normal force is read from the record (--input FILE)");
     }
     if given.is_empty() {
         bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2, --input FILE.csv (t,u) or --sine A,T[,PHASE[,OFFSET]]");
@@ -60,18 +70,19 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String)> {
             values.join(",")
         }
     );
-    Ok((Drive::TurningPoints(pl), text))
+    Ok((Drive::TurningPoints(pl), text, None))
 }
 
 /// A record from a file: displacement `t,u` (linear or cubic reading) or velocity `t,v`
 /// (integrated, cubic reading).
-fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String)> {
-    use crate::io::csv::{read_table_with, Columns};
+fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String, Normal)> {
+    use crate::io::csv::{check_normal_force, read_table_with, Columns};
     let velocity = args.data.selects("v") || crate::io::csv::is_velocity_record(path);
-    let (columns, role) = if velocity {
-        (Columns::Named("v"), "v")
-    } else {
-        (Columns::Series, "u")
+    let (columns, role) = match (velocity, args.data.selects("N")) {
+        (true, false) => (Columns::Named("v"), "v"),
+        (true, true) => (Columns::VelocityN, "v"),
+        (false, false) => (Columns::Series, "u"),
+        (false, true) => (Columns::SeriesN, "u"),
     };
     let table = read_table_with(path, columns, args.data.options(&[role, "N"])?)?;
     let Some(t) = table.t else {
@@ -80,7 +91,15 @@ fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String
             path.display()
         );
     };
-    let values = table.columns.into_iter().next().unwrap_or_default();
+    let mut columns = table.columns.into_iter();
+    let values = columns.next().unwrap_or_default();
+    let normal = match columns.next() {
+        Some(n) => {
+            check_normal_force(path, &n)?;
+            Some((t.clone(), n))
+        }
+        None => None,
+    };
     let n = t.len();
     let (t0, t1) = (t[0], t[n - 1]);
     let span = format!("t in [{}, {}]", sig(t0, 10), sig(t1, 10));
@@ -99,12 +118,12 @@ fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String
             path.display(),
             motion.refined().len()
         );
-        return Ok((Drive::Smooth(motion), text));
+        return Ok((Drive::Smooth(motion), text, normal));
     }
     let pl = PiecewiseLinear::new(t, values).map_err(with_file)?;
     let text = format!(
         "{n} samples from {}, linear between samples, {span}",
         path.display()
     );
-    Ok((Drive::Samples(pl), text))
+    Ok((Drive::Samples(pl), text, normal))
 }

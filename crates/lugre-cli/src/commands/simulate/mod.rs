@@ -144,7 +144,7 @@ struct Request {
     input: String,
     /// The normal force of the record (`--columns N=NAME`) at its times: the model is then the
     /// friction coefficient's and `y` is `N(t)` times it.
-    normal: Option<(Vec<f64>, Vec<f64>)>,
+    normal: drive::Normal,
 }
 
 pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
@@ -154,35 +154,6 @@ pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
         times_normal_force(&mut out, t, n);
     }
     report(args, &request, &out)
-}
-
-/// The record's normal force (`--columns N=NAME`, > 0 at every row) at its times.
-fn read_normal(args: &SimulateArgs) -> Result<Option<(Vec<f64>, Vec<f64>)>> {
-    if !args.data.selects("N") {
-        return Ok(None);
-    }
-    let Some(path) = &args.input.input else {
-        bail!("--columns N=...: a normal force is read from the record (--input FILE)");
-    };
-    let options = args.data.options(&["u", "v", "N"])?;
-    let table =
-        crate::io::csv::read_table_with(path, crate::io::csv::Columns::Named("N"), options)?;
-    let n = table.columns.into_iter().next().unwrap_or_default();
-    let Some(t) = table.t else {
-        bail!(
-            "{}: the normal force needs the samples' times (a column t)",
-            path.display()
-        );
-    };
-    if let Some(i) = n.iter().position(|&v| v.is_nan() || v <= 0.0) {
-        bail!(
-            "{}: row {}: the normal force N must be > 0, got {}",
-            path.display(),
-            i + 1,
-            sig(n[i], 10)
-        );
-    }
-    Ok(Some((t, n)))
 }
 
 /// `y` times the normal force, linear between the record's samples (held beyond them).
@@ -209,8 +180,7 @@ fn parse(args: &SimulateArgs) -> Result<Request> {
     let x0 = parse_scalar("--x0", &args.x0)?;
     let tol =
         Tolerance::new(parse_scalar("--tol", &args.tol)?).map_err(|e| anyhow!("--tol: {e}"))?;
-    let (drive, mut input) = build_drive(args)?;
-    let normal = read_normal(args)?;
+    let (drive, mut input, normal) = build_drive(args)?;
     if normal.is_some() {
         input.push_str("; y = N(t) times the friction coefficient of the model (N from the record, linear between samples; the model's parameters per newton)");
     }

@@ -724,7 +724,6 @@ impl ChunkPlan {
     /// the last chunk), each list in order.
     pub fn extras(&self) -> Result<Vec<Vec<(RowKey, Cycle)>>, HistoryError> {
         let mut out = vec![Vec::new(); self.leaves.len()];
-        let chunk_of = |i: u64| self.chunk_of(i);
         for (o, c) in self.open.iter().zip(&self.closures) {
             let c = c.ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
             let row = if o.cycle.is_full() {
@@ -738,11 +737,14 @@ impl ChunkPlan {
             } else {
                 (RowKey::dropped(c.index, o.cycle.start), o.cycle)
             };
-            out[chunk_of(c.index)].push(row);
+            out[self.chunk_of(c.index)].push(row);
         }
         let last = self.leaves.len() - 1;
         for &(key, c) in &self.halves {
-            let k = key.emitted_at().map_or(last, chunk_of).min(last);
+            let k = key
+                .emitted_at()
+                .map_or(last, |i| self.chunk_of(i))
+                .min(last);
             out[k].push((key, c));
         }
         for rows in &mut out {
