@@ -1,121 +1,208 @@
 //! A dedicated integrator for the small stiff system of [`super::System`]: Radau IIA with three
-//! stages (order 5, L-stable, stiffly accurate), simplified Newton on the full `3n x 3n` stage
-//! system (`n = 4`: a 12 x 12 LU, cheaper than any transformation), error control by step
-//! doubling, and the collocation polynomial of each half step as dense output for the output
-//! times and for locating the sign changes of `v`.
+//! stages (order 5, L-stable, stiffly accurate) in the form of Hairer & Wanner (Solving ODEs II,
+//! IV.8): simplified Newton on the stage equations transformed by the eigenvectors of `A^-1`
+//! (eq. (8.16)-(8.17): one real `n x n` system and one complex one, solved here as a real
+//! `2n x 2n`), the embedded error estimate of eq. (8.19)-(8.20) filtered through
+//! `(I - h gamma0 J)^-1`, and the collocation polynomial of each step as dense output (for the
+//! output times and for locating the sign changes of `v`). The step-size control and the
+//! reuse of Jacobians and factorizations are the solver's (`solver.rs`).
 
-use crate::kernel::radau::{A, C};
+use crate::kernel::radau::{ALPH, BETA, C, DD, T, TI, U1};
+use num_complex::Complex64;
+use std::ops::{Div, Mul, SubAssign};
 
 pub(super) const N: usize = 4;
-const M: usize = 3 * N;
 
-/// One step's result: the end state and the stage values (the collocation polynomial's nodes
-/// at `t + c_i h`), plus the work done.
+/// Newton iterations before a step is given up (radau5's `NIT`).
+pub(super) const NIT: usize = 7;
+
+/// A solved step: the end state and the stage values (the collocation polynomial's nodes at
+/// `t + c_i h`), plus the work done.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Step {
     pub y: [f64; N],
     pub stages: [[f64; N]; 3],
+    /// The stage increments `Z_i = stages_i - y0` (the error estimate's input).
+    z: [[f64; N]; 3],
     pub evaluations: usize,
+    pub iterations: usize,
+    /// Newton's observed contraction rate (0 when one iteration sufficed).
+    pub theta: f64,
 }
 
-/// A Radau IIA step of size `h` from `(t, y)` for `y' = f(t, y)` with Jacobian `jac` (frozen
-/// over the step), to the Newton tolerance `newton_tol` in the weighted norm `w`. `None` if
-/// Newton does not converge (the caller halves the step).
-pub(super) fn radau_step(
-    f: &impl Fn(f64, &[f64; N]) -> [f64; N],
-    jac: &[[f64; N]; N],
-    t: f64,
-    y: &[f64; N],
+/// The factored iteration matrices of steps of size `h` with the Jacobian `J`:
+/// `E1 = (U1 / h) I - J` (real) and `E2 = ((ALPH + i BETA) / h) I - J` (complex). One
+/// factorization serves every step of that size and Jacobian.
+pub(super) struct Factors {
     h: f64,
-    w: &[f64; N],
-) -> Option<Step> {
-    radau_step_with(f, &iteration_matrix(jac, h)?, t, y, h, w, [[0.0; N]; 3])
+    e1: Lu<f64>,
+    e2: Lu<Complex64>,
 }
 
-/// The iteration matrix `I - h (A (x) J)` of steps of size `h` with the Jacobian `jac`, factored
-/// (`None` if singular): one factorization serves every step of that size and Jacobian.
-pub(super) fn iteration_matrix(jac: &[[f64; N]; N], h: f64) -> Option<Lu> {
-    let mut mat = [[0.0; M]; M];
-    for i in 0..3 {
-        for j in 0..3 {
-            for r in 0..N {
-                for c in 0..N {
-                    mat[i * N + r][j * N + c] =
-                        f64::from(u8::from(i == j && r == c)) - h * A[i][j] * jac[r][c];
-                }
-            }
-        }
+impl Factors {
+    /// `None` if either matrix is singular.
+    pub fn new(jac: &[[f64; N]; N], h: f64) -> Option<Self> {
+        let fac1 = U1 / h;
+        let fac2 = Complex64::new(ALPH / h, BETA / h);
+        let e1 = std::array::from_fn(|r| {
+            std::array::from_fn(|c| if r == c { fac1 } else { 0.0 } - jac[r][c])
+        });
+        let e2 = std::array::from_fn(|r| {
+            std::array::from_fn(|c| {
+                let diagonal = if r == c {
+                    fac2
+                } else {
+                    Complex64::new(0.0, 0.0)
+                };
+                diagonal - jac[r][c]
+            })
+        });
+        Some(Self {
+            h,
+            e1: Lu::new(e1)?,
+            e2: Lu::new(e2)?,
+        })
     }
-    Lu::new(mat)
+
+    /// The step size these factors are for.
+    pub fn h(&self) -> f64 {
+        self.h
+    }
 }
 
-/// [`radau_step`] with the iteration matrix already factored ([`iteration_matrix`] at the same
-/// `h`), Newton starting from the stage increments `guess` (`Z_i - y`; zeros, or a previous
-/// collocation polynomial extrapolated to the stages).
-pub(super) fn radau_step_with(
+/// Newton's state carried from step to step: the convergence factor of the last iteration
+/// (radau5's `FACCON`) and the tolerance on the scaled increments.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Newton {
+    pub faccon: f64,
+    pub tol: f64,
+}
+
+/// The stages of a step of size `factors.h()` from `(t, y)` for `y' = f(t, y)`, by simplified
+/// Newton from the stage increments `guess`, to `newton.tol` in the norm scaled by `scal`.
+/// `Err(q)`: Newton diverges or would not converge within [`NIT`] iterations; retry with the
+/// step times `q` (radau5's estimate of the size that would converge).
+pub(super) fn solve_stages(
     f: &impl Fn(f64, &[f64; N]) -> [f64; N],
-    lu: &Lu,
+    factors: &Factors,
     t: f64,
     y: &[f64; N],
-    h: f64,
-    w: &[f64; N],
+    scal: &[f64; N],
     guess: [[f64; N]; 3],
-) -> Option<Step> {
-    let mut z = guess; // stage increments Z_i - y
-    let mut evaluations = 0;
-    let mut previous = f64::INFINITY;
-    for _ in 0..8 {
-        let mut fz = [[0.0; N]; 3];
-        for i in 0..3 {
-            let mut yi = *y;
-            for r in 0..N {
-                yi[r] += z[i][r];
-            }
-            fz[i] = f(t + C[i] * h, &yi);
-            evaluations += 1;
+    newton: &mut Newton,
+) -> Result<Step, f64> {
+    let h = factors.h;
+    let (fac1, alphn, betan) = (U1 / h, ALPH / h, BETA / h);
+    let mut z = guess;
+    let mut w = transform(&TI, &z);
+    newton.faccon = newton.faccon.max(f64::EPSILON).powf(0.8);
+    let (mut theta, mut dyno_old, mut thq_old) = (0.0, 0.0, 0.0);
+    for iteration in 1..=NIT {
+        let fz: [[f64; N]; 3] = std::array::from_fn(|i| {
+            let yi = std::array::from_fn(|r| y[r] + z[i][r]);
+            f(t + C[i] * h, &yi)
+        });
+        let a = transform(&TI, &fz);
+        let rhs1 = std::array::from_fn(|r| a[0][r] - fac1 * w[0][r]);
+        let rhs23 = std::array::from_fn(|r| {
+            Complex64::new(
+                a[1][r] - alphn * w[1][r] + betan * w[2][r],
+                a[2][r] - alphn * w[2][r] - betan * w[1][r],
+            )
+        });
+        let d1 = factors.e1.solve(rhs1);
+        let d23 = factors.e2.solve(rhs23);
+        let mut dyno = 0.0;
+        for r in 0..N {
+            dyno += (d1[r] / scal[r]).powi(2)
+                + (d23[r].re / scal[r]).powi(2)
+                + (d23[r].im / scal[r]).powi(2);
         }
-        // The residual G(Z) = Z - h (A (x) I) F(Z), and the Newton update.
-        let mut g = [0.0; M];
-        for i in 0..3 {
-            for r in 0..N {
-                let mut s = z[i][r];
-                for j in 0..3 {
-                    s -= h * A[i][j] * fz[j][r];
-                }
-                g[i * N + r] = s;
+        let dyno = (dyno / (3 * N) as f64).sqrt();
+        if !dyno.is_finite() {
+            return Err(0.5);
+        }
+        if iteration > 1 {
+            // The contraction rate and, from it, whether the iteration will converge in time.
+            let thq = dyno / dyno_old;
+            theta = if iteration == 2 {
+                thq
+            } else {
+                f64::sqrt(thq * thq_old)
+            };
+            thq_old = thq;
+            if theta >= 0.99 {
+                return Err(0.5);
+            }
+            newton.faccon = theta / (1.0 - theta);
+            let left = (NIT - 1).saturating_sub(iteration) as i32;
+            let predicted = newton.faccon * dyno * theta.powi(left) / newton.tol;
+            if predicted >= 1.0 {
+                let q = predicted.clamp(1e-4, 20.0);
+                return Err(0.8 * q.powf(-1.0 / (4.0 + f64::from(left))));
             }
         }
-        let dz = lu.solve(g);
-        let mut norm = 0.0f64;
-        for i in 0..3 {
-            for r in 0..N {
-                z[i][r] -= dz[i * N + r];
-                norm = norm.max((dz[i * N + r] / w[r]).abs());
-            }
+        dyno_old = dyno.max(f64::EPSILON);
+        for r in 0..N {
+            w[0][r] += d1[r];
+            w[1][r] += d23[r].re;
+            w[2][r] += d23[r].im;
         }
-        if !norm.is_finite() || norm > 2.0 * previous && previous < f64::INFINITY {
-            return None;
-        }
-        previous = norm;
-        if norm <= 1e-3 {
-            let mut stages = [*y; 3];
-            for (i, s) in stages.iter_mut().enumerate() {
-                for r in 0..N {
-                    s[r] += z[i][r];
-                }
-            }
-            return Some(Step {
+        z = transform(&T, &w);
+        if newton.faccon * dyno <= newton.tol {
+            let stages = std::array::from_fn(|i| std::array::from_fn(|r| y[r] + z[i][r]));
+            return Ok(Step {
                 y: stages[2],
                 stages,
-                evaluations,
+                z,
+                evaluations: 3 * iteration,
+                iterations: iteration,
+                theta,
             });
         }
     }
-    None
+    Err(0.5)
 }
 
-/// The collocation polynomial of a step `(t0, y0, h, stages)` at `t0 + theta h`,
-/// `theta` in `[0, 1]`: Lagrange through the nodes `0, c1, c2, 1`.
+/// `out_i = sum_j m[i][j] v_j` over the three stages, component by component.
+fn transform(m: &[[f64; 3]; 3], v: &[[f64; N]; 3]) -> [[f64; N]; 3] {
+    std::array::from_fn(|i| std::array::from_fn(|r| (0..3).map(|j| m[i][j] * v[j][r]).sum()))
+}
+
+/// The scaled error of `step` from `y` with `f0 = f(t, y)` (Hairer & Wanner IV.8,
+/// eq. (8.19)-(8.20)): `err = (I - h gamma0 J)^-1 (gamma0 h f0 + sum e_i Z_i)`, whose
+/// filter keeps the estimate bounded for stiff components. With `refine` (the first step and
+/// after a rejection) an estimate above 1 is filtered once more through `f_start`, the rate at
+/// the step's start time, at `y + err`. Returns the root mean square of `err / scal` (at least
+/// 1e-10) and the evaluations of the rate.
+pub(super) fn error_estimate(
+    f_start: impl Fn(&[f64; N]) -> [f64; N],
+    factors: &Factors,
+    y: &[f64; N],
+    f0: &[f64; N],
+    step: &Step,
+    scal: &[f64; N],
+    refine: bool,
+) -> (f64, usize) {
+    let h = factors.h;
+    let f2: [f64; N] =
+        std::array::from_fn(|r| (0..3).map(|i| DD[i] * step.z[i][r]).sum::<f64>() / h);
+    let norm = |e: &[f64; N]| {
+        let s: f64 = (0..N).map(|r| (e[r] / scal[r]).powi(2)).sum();
+        (s / N as f64).sqrt().max(1e-10)
+    };
+    let e = factors.e1.solve(std::array::from_fn(|r| f0[r] + f2[r]));
+    let err = norm(&e);
+    if !(err >= 1.0 && refine) {
+        return (err, 0);
+    }
+    let f1 = f_start(&std::array::from_fn(|r| y[r] + e[r]));
+    let e = factors.e1.solve(std::array::from_fn(|r| f1[r] + f2[r]));
+    (norm(&e), 1)
+}
+
+/// The collocation polynomial of a step `(y0, stages)` at `theta` of the step (`0` its start,
+/// `1` its end): Lagrange through the nodes `0, c1, c2, 1`.
 pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; N] {
     let values = [y0, &stages[0], &stages[1], &stages[2]];
     let mut out = [0.0; N];
@@ -133,13 +220,15 @@ pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; 
     out
 }
 
-/// The stage increments of the step that follows the one `(y0, stages)` at the same size,
-/// extrapolated from its collocation polynomial (Newton's starting point).
-pub(super) fn next_guess(y0: &[f64; N], stages: &[[f64; N]; 3]) -> [[f64; N]; 3] {
-    let y1 = stages[2];
+/// Newton's starting stage increments for a step that starts at `from` (in `theta` of the
+/// step `(y0, stages)`) and is `ratio` times its size: the collocation polynomial extrapolated
+/// (radau5's starting values; `from = 1` for the next step, `0` for a step of its own to a
+/// point inside this one).
+pub(super) fn guess(y0: &[f64; N], stages: &[[f64; N]; 3], from: f64, ratio: f64) -> [[f64; N]; 3] {
+    let base = dense(y0, stages, from);
     std::array::from_fn(|i| {
-        let p = dense(y0, stages, 1.0 + C[i]);
-        std::array::from_fn(|r| p[r] - y1[r])
+        let p = dense(y0, stages, from + C[i] * ratio);
+        std::array::from_fn(|r| p[r] - base[r])
     })
 }
 
@@ -151,6 +240,7 @@ pub(super) fn quadrature(
     stages: &[[f64; N]; 3],
     f: impl Fn(f64, &[f64; N]) -> [f64; 2],
 ) -> [f64; 2] {
+    use crate::kernel::radau::A;
     let mut out = [0.0; 2];
     for i in 0..3 {
         let v = f(t0 + C[i] * h, &stages[i]);
@@ -163,18 +253,43 @@ pub(super) fn quadrature(
 /// The nodes of the collocation polynomial, in `theta`.
 pub(super) const NODES: [f64; 4] = [0.0, C[0], C[1], C[2]];
 
-/// LU factors with partial pivoting of a 12 x 12 matrix.
-pub(super) struct Lu {
-    a: [[f64; M]; M],
-    pivot: [usize; M],
+/// The numbers [`Lu`] factors over: real and complex.
+pub(super) trait Scalar: Copy + SubAssign + Mul<Output = Self> + Div<Output = Self> {
+    /// The pivot's size (any norm does for partial pivoting; the 1-norm is cheapest).
+    fn size(self) -> f64;
 }
 
-impl Lu {
-    fn new(mut a: [[f64; M]; M]) -> Option<Self> {
-        let mut pivot = [0; M];
-        for k in 0..M {
-            let p = (k..M).max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs()))?;
-            if a[p][k] == 0.0 || !a[p][k].is_finite() {
+impl Scalar for f64 {
+    fn size(self) -> f64 {
+        self.abs()
+    }
+}
+
+impl Scalar for Complex64 {
+    fn size(self) -> f64 {
+        self.l1_norm()
+    }
+}
+
+/// LU factors with partial pivoting of an `N x N` matrix.
+pub(super) struct Lu<S> {
+    a: [[S; N]; N],
+    pivot: [usize; N],
+}
+
+impl<S: Scalar> Lu<S> {
+    /// `None` if singular (or not finite).
+    fn new(mut a: [[S; N]; N]) -> Option<Self> {
+        let mut pivot = [0; N];
+        for k in 0..N {
+            let mut p = k;
+            for i in k + 1..N {
+                if a[i][k].size() > a[p][k].size() {
+                    p = i;
+                }
+            }
+            let size = a[p][k].size();
+            if !(size > 0.0 && size.is_finite()) {
                 return None;
             }
             a.swap(k, p);
@@ -183,30 +298,32 @@ impl Lu {
             for row in a.iter_mut().skip(k + 1) {
                 let factor = row[k] / pivot_row[k];
                 row[k] = factor;
-                for (x, p) in row.iter_mut().zip(pivot_row.iter()).skip(k + 1) {
-                    *x -= factor * p;
+                for c in k + 1..N {
+                    row[c] -= factor * pivot_row[c];
                 }
             }
         }
         Some(Self { a, pivot })
     }
 
-    fn solve(&self, mut b: [f64; M]) -> [f64; M] {
+    fn solve(&self, mut b: [S; N]) -> [S; N] {
         // The factorization swapped whole rows (multipliers included): all the swaps first,
         // then the unit lower triangle.
-        for k in 0..M {
+        for k in 0..N {
             b.swap(k, self.pivot[k]);
         }
-        for k in 0..M {
-            for i in k + 1..M {
-                b[i] -= self.a[i][k] * b[k];
+        for k in 0..N {
+            for i in k + 1..N {
+                let m = self.a[i][k] * b[k];
+                b[i] -= m;
             }
         }
-        for k in (0..M).rev() {
-            for j in k + 1..M {
-                b[k] -= self.a[k][j] * b[j];
+        for k in (0..N).rev() {
+            for j in k + 1..N {
+                let m = self.a[k][j] * b[j];
+                b[k] -= m;
             }
-            b[k] /= self.a[k][k];
+            b[k] = b[k] / self.a[k][k];
         }
         b
     }
@@ -216,27 +333,61 @@ impl Lu {
 mod tests {
     use super::*;
 
+    fn step(
+        f: &impl Fn(f64, &[f64; N]) -> [f64; N],
+        jac: &[[f64; N]; N],
+        y: &[f64; N],
+        h: f64,
+        scal: f64,
+    ) -> Step {
+        let factors = Factors::new(jac, h).unwrap();
+        let mut newton = Newton {
+            faccon: 1.0,
+            tol: 1e-3,
+        };
+        solve_stages(f, &factors, 0.0, y, &[scal; N], [[0.0; N]; 3], &mut newton).unwrap()
+    }
+
+    const OSCILLATOR: [[f64; N]; N] = [
+        [0.0, 1.0, 0.0, 0.0],
+        [-1.0, 0.0, 0.0, 0.0],
+        [0.0; 4],
+        [0.0; 4],
+    ];
+
+    fn oscillator(_t: f64, y: &[f64; N]) -> [f64; N] {
+        [y[1], -y[0], 0.0, 0.0]
+    }
+
     #[test]
     fn exact_for_a_linear_oscillator_to_order_five() {
         // y'' = -y as a system, one step of h: error O(h^6) per step.
-        let f = |_t: f64, y: &[f64; N]| [y[1], -y[0], 0.0, 0.0];
-        let jac = [
-            [0.0, 1.0, 0.0, 0.0],
-            [-1.0, 0.0, 0.0, 0.0],
-            [0.0; 4],
-            [0.0; 4],
-        ];
-        let w = [1e-12; 4];
         let err = |h: f64| {
-            let s = radau_step(&f, &jac, 0.0, &[1.0, 0.0, 0.0, 0.0], h, &w).unwrap();
+            let s = step(&oscillator, &OSCILLATOR, &[1.0, 0.0, 0.0, 0.0], h, 1e-12);
             (s.y[0] - h.cos()).abs()
         };
         let (e1, e2) = (err(0.2), err(0.1));
         assert!(e1 / e2 > 40.0, "order: {e1:e} / {e2:e}");
         // Dense output reproduces the nodes.
-        let s = radau_step(&f, &jac, 0.0, &[1.0, 0.0, 0.0, 0.0], 0.1, &w).unwrap();
+        let s = step(&oscillator, &OSCILLATOR, &[1.0, 0.0, 0.0, 0.0], 0.1, 1e-12);
         let d = dense(&[1.0, 0.0, 0.0, 0.0], &s.stages, C[1]);
         assert!((d[0] - s.stages[1][0]).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_error_estimate_is_of_order_four() {
+        // The embedded estimate of the oscillator's step behaves as h^4: halving h divides
+        // it by about 16.
+        let y0 = [1.0, 0.0, 0.0, 0.0];
+        let est = |h: f64| {
+            let s = step(&oscillator, &OSCILLATOR, &y0, h, 1e-14);
+            let factors = Factors::new(&OSCILLATOR, h).unwrap();
+            let f0 = oscillator(0.0, &y0);
+            let f_start = |y: &[f64; N]| oscillator(0.0, y);
+            error_estimate(f_start, &factors, &y0, &f0, &s, &[1.0; N], false).0
+        };
+        let ratio = est(0.1) / est(0.05);
+        assert!((12.0..20.0).contains(&ratio), "{ratio}");
     }
 
     #[test]
@@ -244,26 +395,42 @@ mod tests {
         let k = 1e12;
         let f = move |_t: f64, y: &[f64; N]| [-k * (y[0] - 1.0), 0.0, 0.0, 0.0];
         let jac = [[-k, 0.0, 0.0, 0.0], [0.0; 4], [0.0; 4], [0.0; 4]];
-        let s = radau_step(&f, &jac, 0.0, &[0.0; N], 1.0, &[1e-12; 4]).unwrap();
+        let s = step(&f, &jac, &[0.0; N], 1.0, 1e-12);
         // The stability function at z = -k h is about -3 / z: the step lands within 3 / k.
         assert!((s.y[0] - 1.0).abs() <= 3.5 / k, "{}", s.y[0]);
     }
 
     #[test]
     fn lu_solves_with_pivoting() {
-        // A matrix that needs row swaps at several columns.
-        let mut a = [[0.0; M]; M];
-        for (i, row) in a.iter_mut().enumerate() {
-            for (j, x) in row.iter_mut().enumerate() {
-                *x =
-                    ((i * 7 + j * 3) % 11) as f64 - 5.0 + if i == (j + 5) % M { 20.0 } else { 0.0 };
-            }
-        }
-        let x: [f64; M] = std::array::from_fn(|i| i as f64 - 3.5);
-        let b: [f64; M] = std::array::from_fn(|i| (0..M).map(|j| a[i][j] * x[j]).sum());
+        // Matrices that need row swaps at several columns, real and complex.
+        let a: [[f64; N]; N] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                ((i * 7 + j * 3) % 5) as f64 - 2.0 + if i == (j + 2) % N { 9.0 } else { 0.0 }
+            })
+        });
+        let x: [f64; N] = std::array::from_fn(|i| i as f64 - 1.5);
+        let b: [f64; N] = std::array::from_fn(|i| (0..N).map(|j| a[i][j] * x[j]).sum());
         let got = Lu::new(a).unwrap().solve(b);
-        for i in 0..M {
-            assert!((got[i] - x[i]).abs() < 1e-12, "{i}: {} vs {}", got[i], x[i]);
+        for i in 0..N {
+            assert!((got[i] - x[i]).abs() < 1e-13, "{i}: {} vs {}", got[i], x[i]);
         }
+        let c: [[Complex64; N]; N] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| Complex64::new(a[i][j], (i + 2 * j) as f64 - 3.0))
+        });
+        let xc: [Complex64; N] = std::array::from_fn(|i| Complex64::new(x[i], 1.0 - x[i]));
+        let bc: [Complex64; N] = std::array::from_fn(|i| (0..N).map(|j| c[i][j] * xc[j]).sum());
+        let got = Lu::new(c).unwrap().solve(bc);
+        for i in 0..N {
+            assert!(
+                (got[i] - xc[i]).norm() < 1e-13,
+                "{i}: {} vs {}",
+                got[i],
+                xc[i]
+            );
+        }
+        // Singular: refused.
+        let mut singular = a;
+        singular[3] = singular[1];
+        assert!(Lu::new(singular).is_none());
     }
 }

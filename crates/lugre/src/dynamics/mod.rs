@@ -27,10 +27,12 @@
 //! velocity tolerance, the sign is no longer frozen until the next kink (the kinks of the
 //! ringing are then below the tolerance).
 //!
-//! **The integrator** (`integrator.rs`) is Radau IIA of order 5 written for this small system:
-//! L-stable (stable at any `sigma0 / M`), error-controlled by step doubling, with the
-//! collocation polynomial as dense output for the output times and for locating sign changes,
-//! and a step of its own to each located event. The `differential-equations` crate's Radau5,
+//! **The integrator** (`integrator.rs`) is Radau IIA of order 5 written for this small system
+//! in Hairer & Wanner's form (radau5): L-stable (stable at any `sigma0 / M`), simplified Newton
+//! on the transformed stage equations, the embedded error estimate held to the tolerances,
+//! Gustafsson's step-size controller, the collocation polynomial as dense output for locating
+//! sign changes, and a step of its own to each output time and located event
+//! (`docs/mathematics.md`, "The integrator"). The `differential-equations` crate's Radau5,
 //! tried first, failed here ("step size became too small" on the PID experiment at `rtol`
 //! 1e-7 and 1e-8, in a sliding phase, with or without the sign splitting); its figures are in
 //! BENCHMARKS.md. Accuracy against an independent scipy reference: `tests/dynamics.rs`.

@@ -1,4 +1,5 @@
-//! The solver: the dedicated Radau IIA integrator (`integrator.rs`) with error control, landing
+//! The solver: the dedicated Radau IIA integrator (`integrator.rs`) with radau5's error and
+//! step-size control (Hairer & Wanner, Solving ODEs II, IV.8), landing
 //! exactly on every kink of the drive and restarted at every located sign change of the
 //! velocity (module docs of [`super`]).
 //!
@@ -7,7 +8,7 @@
 //! `w0 = sqrt(sigma0 / M)` of the mass on its bristles.
 
 use super::integrator::{
-    dense, iteration_matrix, next_guess, quadrature, radau_step, radau_step_with, Step, N, NODES,
+    dense, error_estimate, guess, quadrature, solve_stages, Factors, Newton, Step, N, NIT, NODES,
 };
 use super::System;
 use crate::error::DynamicsError;
@@ -152,9 +153,14 @@ impl EnergyBalance {
     }
 }
 
-/// The largest factor a step may grow by, and the safety factor of the step-size rule.
-const MAX_GROWTH: f64 = 3.0;
+/// The step-size rule (radau5's defaults): safety factor, the bounds of `h_new / h`, and the
+/// band of `h_new / h` in which the step size and its factorization are kept.
 const SAFETY: f64 = 0.9;
+const MIN_FACTOR: f64 = 0.2;
+const MAX_FACTOR: f64 = 8.0;
+const KEEP: std::ops::RangeInclusive<f64> = 1.0..=1.2;
+/// Newton contraction below which the Jacobian is kept for the next step.
+const REUSE_JACOBIAN: f64 = 1e-3;
 /// The sign of `v` stops being frozen once the ringing amplitude `|v'| / w0` at a sign change
 /// is below this fraction of the velocity tolerance (so that stepping over the remaining kinks
 /// costs less than the tolerance; above it the kinks of a ringing mass cost accuracy).
@@ -219,15 +225,22 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let length = m.g0() / m.sigma0();
         let atol = tol.atol.unwrap_or(tol.rtol * length);
         let atol = [atol, atol * w0, atol, atol];
+        // The embedded error estimate is held to the tolerances as given (radau5 holds it to
+        // 0.1 rtol^(2/3), for a global error of about rtol at moderate tolerances; against the
+        // references that let the error exceed rtol by 10-100x at rtol 1e-11, see
+        // BENCHMARKS.md): the estimate, of order 4 for a method of order 5, is conservative,
+        // and the global error stays below rtol on every experiment.
+        let rtol = tol.rtol;
         let mut run = Run {
             system: self,
-            rtol: tol.rtol,
+            rtol,
             atol,
             w0,
             out: Motion::default(),
             times,
             next_time: 0,
             rising: false,
+            control: Control::new(rtol),
         };
         let kinks: Vec<f64> = self
             .kinks(t_end)
@@ -239,9 +252,9 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let mut h = (0.01 / w0).min(t_end - t);
         run.report_until(t, &y, 0.0, None);
         run.out.energy.stored_start = self.stored(t, &y);
-        let mut rejected = false;
         for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
             let mut s = self.start_sign(t, &y);
+            run.restart(t, &y, s);
             while t < bound {
                 if run.out.stats.steps + run.out.stats.rejected > MAX_STEPS {
                     return Err(DynamicsError::Solver {
@@ -251,11 +264,10 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                 }
                 let last = t + h >= bound;
                 let step = if last { bound - t } else { h };
-                match run.double_step(t, &y, step, s) {
-                    Err(factor) => {
+                match run.attempt(t, &y, step, s) {
+                    Err(h_new) => {
                         run.out.stats.rejected += 1;
-                        rejected = true;
-                        h = step * factor;
+                        h = h_new;
                         if h.is_nan() || h <= f64::EPSILON * t.abs().max(1.0) {
                             return Err(DynamicsError::Solver {
                                 t,
@@ -263,15 +275,15 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                             });
                         }
                     }
-                    Ok((halves, factor)) => {
+                    Ok((piece, h_new)) => {
                         run.out.stats.steps += 1;
                         let end = if last { bound } else { t + step };
-                        let crossing = run.crossing(t, step, &halves, s);
+                        let crossing = run.crossing(&piece, s);
                         let kept = crossing.map_or(end, |c| c.0);
-                        run.watch(t, step, &halves, kept);
+                        run.watch(&piece, kept);
                         if to_peak {
-                            if let Some(tp) = run.friction_peak(t, step, &halves, s, kept) {
-                                return run.peak_at(t, &y, step, &halves, tp, s);
+                            if let Some(tp) = run.friction_peak(&piece, s, kept) {
+                                return run.peak_at(&piece, tp, s);
                             }
                         }
                         match crossing {
@@ -279,33 +291,33 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                                 // v changed sign: the step is kept up to the crossing only,
                                 // and the state there is a step of its own (the dense output
                                 // is of lower order than the step).
-                                let yc = match run.step_to_with(t, &y, tc, s) {
-                                    Some((yc, halves_c)) => {
-                                        run.account(t, tc - t, &halves_c, s);
+                                let yc = match run.step_to(&piece, tc, s) {
+                                    Some((yc, own)) => {
+                                        run.account(piece.t, tc - piece.t, &own, s);
                                         yc
                                     }
                                     None => {
-                                        run.account_dense(t, step, &halves, tc, s);
+                                        run.account_dense(&piece, tc, s);
                                         yc
                                     }
                                 };
-                                run.report_until(tc, &yc, s, Some((t, &y, step, &halves)));
+                                run.report_until(tc, &yc, s, Some(&piece));
                                 let (yc, s_next) = run.reversal(tc, yc);
                                 (t, y, s) = (tc, yc, s_next);
+                                check_finite(t, &y)?;
+                                run.restart(t, &y, s);
                             }
                             None => {
-                                run.account(t, step, &[halves[0].0, halves[1].0], s);
-                                let y_end = halves[1].0.y;
-                                run.report_until(end, &y_end, s, Some((t, &y, step, &halves)));
+                                run.account(piece.t, piece.h, &piece.step, s);
+                                let y_end = piece.step.y;
+                                run.report_until(end, &y_end, s, Some(&piece));
                                 (t, y) = (end, y_end);
+                                check_finite(t, &y)?;
+                                run.accepted(piece, &y, s);
                             }
                         }
-                        check_finite(t, &y)?;
-                        // No growth right after a rejection (the usual guard against
-                        // alternating accept / reject).
-                        let factor = if rejected { factor.min(1.0) } else { factor };
-                        rejected = false;
-                        h = if last { h.max(step) } else { step * factor };
+                        // A step cut short to land on the bound leaves the size as it was.
+                        h = if last { h.max(h_new) } else { h_new };
                     }
                 }
             }
@@ -339,8 +351,62 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     }
 }
 
-/// Two half steps: `(step, start)` of each.
-type Halves = [(Step, [f64; N]); 2];
+/// An accepted step: from `(t, y0)` over `h`, with the Jacobian it was solved with.
+#[derive(Debug, Clone, Copy)]
+struct Piece {
+    t: f64,
+    h: f64,
+    y0: [f64; N],
+    step: Step,
+    jac: [[f64; N]; N],
+}
+
+impl Piece {
+    /// The collocation polynomial at `theta` of the step.
+    fn at(&self, theta: f64) -> [f64; N] {
+        dense(&self.y0, &self.step.stages, theta)
+    }
+
+    fn time(&self, theta: f64) -> f64 {
+        self.t + self.h * theta
+    }
+}
+
+/// The integrator's state between steps (radau5's): the Jacobian and its factorization while
+/// they are reused, Newton's convergence factor, the rate at the step's start, the last
+/// accepted step (Newton's starting point) and the predictive controller's memory.
+struct Control {
+    jac: Option<[[f64; N]; N]>,
+    /// Whether `jac` was computed for the current step (not reused).
+    fresh: bool,
+    factors: Option<Factors>,
+    newton: Newton,
+    f0: [f64; N],
+    first: bool,
+    reject: bool,
+    previous: Option<Piece>,
+    /// Gustafsson's controller: the last accepted step's size and error.
+    accepted: Option<(f64, f64)>,
+}
+
+impl Control {
+    fn new(rtol: f64) -> Self {
+        Self {
+            jac: None,
+            fresh: false,
+            factors: None,
+            newton: Newton {
+                faccon: 1.0,
+                tol: (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())),
+            },
+            f0: [0.0; N],
+            first: true,
+            reject: false,
+            previous: None,
+            accepted: None,
+        }
+    }
+}
 
 /// The point where `past` turns true in `[lo, hi]` (false at `lo`, true at `hi`), by
 /// bisection to the resolution of `f64`: the smallest `theta` found with `past(theta)`.
@@ -361,6 +427,7 @@ fn bisect(past: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
 
 struct Run<'a, G, F> {
     system: &'a System<G, F>,
+    /// The tolerances the error estimate is held to (see `integrate`).
     rtol: f64,
     atol: [f64; N],
     w0: f64,
@@ -369,103 +436,161 @@ struct Run<'a, G, F> {
     next_time: usize,
     /// Whether the friction force has been seen rising (for the first peak).
     rising: bool,
+    control: Control,
 }
 
 impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
-    /// A step of `h` checked against two of `h / 2` (kept); `Ok` with the halves and the
-    /// factor for the next step, or `Err` with the factor to retry with.
-    fn double_step(&mut self, t: f64, y: &[f64; N], h: f64, s: f64) -> Result<(Halves, f64), f64> {
-        let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
-        let jac = self.jacobian(t, y, s);
-        let w = self.weights(y);
-        let full = radau_step(&f, &jac, t, y, h, &w);
-        // Both halves iterate with the Jacobian at the step's start: one factorization.
-        let Some(half) = iteration_matrix(&jac, 0.5 * h) else {
-            return Err(0.25);
+    /// A fresh start at `(t, y)` with the sign `s` (the run's start, a kink, a reversal):
+    /// nothing of the previous steps carries over but the step size.
+    fn restart(&mut self, t: f64, y: &[f64; N], s: f64) {
+        let c = &mut self.control;
+        c.jac = None;
+        c.factors = None;
+        c.first = true;
+        c.reject = false;
+        c.previous = None;
+        c.accepted = None;
+        c.f0 = self.system.rate(t, y, s);
+        self.out.stats.rhs_evaluations += 1;
+    }
+
+    /// After an accepted step that ended at `y` (not cut short): the rate there, and the
+    /// step kept as Newton's starting point.
+    fn accepted(&mut self, piece: Piece, y: &[f64; N], s: f64) {
+        self.control.f0 = self.system.rate(piece.t + piece.h, y, s);
+        self.out.stats.rhs_evaluations += 1;
+        self.control.previous = Some(piece);
+    }
+
+    /// One Radau IIA step of `h` from `(t, y)` with its embedded error estimate: `Ok` with the
+    /// step and the size of the next, or `Err` with the size to retry with (radau5's rules:
+    /// the Jacobian kept while Newton contracts fast, the factorization while the size stays,
+    /// Gustafsson's predictive controller).
+    fn attempt(&mut self, t: f64, y: &[f64; N], h: f64, s: f64) -> Result<(Piece, f64), f64> {
+        let jac = match self.control.jac {
+            Some(jac) => jac,
+            None => {
+                let jac = self.jacobian(t, y, s);
+                self.control.jac = Some(jac);
+                self.control.fresh = true;
+                jac
+            }
         };
-        let first = radau_step_with(&f, &half, t, y, 0.5 * h, &w, [[0.0; N]; 3]);
-        let (Some(full), Some(first)) = (full, first) else {
-            return Err(0.25);
-        };
-        let guess = next_guess(y, &first.stages);
-        let Some(second) = radau_step_with(&f, &half, t + 0.5 * h, &first.y, 0.5 * h, &w, guess)
-        else {
-            return Err(0.25);
-        };
-        self.out.stats.rhs_evaluations += full.evaluations + first.evaluations + second.evaluations;
-        // The two results differ by about (2^5 - 1) times the error of the halves.
-        let w_end = self.weights(&second.y);
-        let err = (0..N)
-            .map(|r| ((second.y[r] - full.y[r]) / (31.0 * w[r].max(w_end[r]))).abs())
-            .fold(0.0f64, f64::max);
-        let factor = if err == 0.0 {
-            MAX_GROWTH
-        } else {
-            (SAFETY * err.powf(-1.0 / 6.0)).clamp(0.2, MAX_GROWTH)
-        };
-        if err.is_nan() || err > 1.0 {
-            return Err(factor.min(0.9));
+        if self.control.factors.as_ref().is_none_or(|f| f.h() != h) {
+            self.control.factors = Factors::new(&jac, h);
         }
-        Ok(([(first, *y), (second, first.y)], factor))
-    }
-
-    /// The state at `t1` by one step from `(t, y)` (two half steps when one does not converge).
-    fn step_to(&mut self, t: f64, y: &[f64; N], t1: f64, s: f64) -> Option<[f64; N]> {
-        self.step_to_with(t, y, t1, s).map(|(y, _)| y)
-    }
-
-    /// [`Self::step_to`], with its two half steps.
-    fn step_to_with(
-        &mut self,
-        t: f64,
-        y: &[f64; N],
-        t1: f64,
-        s: f64,
-    ) -> Option<([f64; N], [Step; 2])> {
-        let h = t1 - t;
+        let Some(factors) = self.control.factors.as_ref() else {
+            return Err(self.retry(0.5 * h));
+        };
         let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
-        let jac = self.jacobian(t, y, s);
-        let w = self.weights(y);
-        let first = radau_step(&f, &jac, t, y, 0.5 * h, &w)?;
-        let second = radau_step(&f, &jac, t + 0.5 * h, &first.y, 0.5 * h, &w)?;
-        self.out.stats.rhs_evaluations += first.evaluations + second.evaluations;
-        Some((second.y, [first, second]))
+        let scal = self.weights(y);
+        let guess = match &self.control.previous {
+            Some(p) if !self.control.first => guess(&p.y0, &p.step.stages, 1.0, h / p.h),
+            _ => [[0.0; N]; 3],
+        };
+        let step = solve_stages(&f, factors, t, y, &scal, guess, &mut self.control.newton);
+        let step = match step {
+            Ok(step) => step,
+            Err(q) => {
+                self.out.stats.rhs_evaluations += 3 * NIT;
+                return Err(self.retry(h * q));
+            }
+        };
+        let refine = self.control.first || self.control.reject;
+        let f_start = |y: &[f64; N]| f(t, y);
+        let (err, extra) =
+            error_estimate(f_start, factors, y, &self.control.f0, &step, &scal, refine);
+        self.out.stats.rhs_evaluations += step.evaluations + extra;
+        let fac = SAFETY.min(SAFETY * (1 + 2 * NIT) as f64 / (step.iterations + 2 * NIT) as f64);
+        let quot = |q: f64| q.clamp(1.0 / MAX_FACTOR, 1.0 / MIN_FACTOR);
+        let mut q = quot(err.sqrt().sqrt() / fac);
+        if err.is_nan() || err >= 1.0 {
+            let h_new = if self.control.first { 0.1 * h } else { h / q };
+            return Err(self.retry(h_new));
+        }
+        if let Some((h_acc, err_acc)) = self.control.accepted {
+            q = q.max(quot(
+                (h_acc / h) * (err * err / err_acc).sqrt().sqrt() / SAFETY,
+            ));
+        }
+        self.control.accepted = Some((h, err.max(1e-2)));
+        let mut h_new = h / q;
+        if self.control.reject {
+            h_new = h_new.min(h);
+        }
+        self.control.first = false;
+        self.control.reject = false;
+        self.control.fresh = false;
+        if step.theta > REUSE_JACOBIAN {
+            self.control.jac = None;
+        } else if KEEP.contains(&(h_new / h)) {
+            h_new = h;
+        }
+        let piece = Piece {
+            t,
+            h,
+            y0: *y,
+            step,
+            jac,
+        };
+        Ok((piece, h_new))
     }
 
-    /// Adds the input and the dissipation over `[t, t_to]` from the collocation polynomials of
-    /// a step of `h` from `t` (Gauss-Legendre with three nodes on each half step's part): the
-    /// fallback where a step of its own to `t_to` does not converge.
-    fn account_dense(&mut self, t: f64, h: f64, halves: &Halves, t_to: f64, s: f64) {
+    /// A rejected step: retry with `h_new`, with a fresh Jacobian unless this one was.
+    fn retry(&mut self, h_new: f64) -> f64 {
+        self.control.reject = true;
+        if !self.control.fresh {
+            self.control.jac = None;
+        }
+        h_new
+    }
+
+    /// The state at `tq` inside `piece` by a step of its own from the piece's start (as
+    /// accurate as the step), Newton starting from the piece's collocation polynomial; `None`
+    /// if Newton does not converge there.
+    fn step_to(&mut self, piece: &Piece, tq: f64, s: f64) -> Option<([f64; N], Step)> {
+        let h = tq - piece.t;
+        if h <= 0.0 {
+            return None;
+        }
+        let factors = Factors::new(&piece.jac, h)?;
+        let f = |t: f64, y: &[f64; N]| self.system.rate(t, y, s);
+        let scal = self.weights(&piece.y0);
+        let start = guess(&piece.y0, &piece.step.stages, 0.0, h / piece.h);
+        let mut newton = self.control.newton;
+        let step =
+            solve_stages(&f, &factors, piece.t, &piece.y0, &scal, start, &mut newton).ok()?;
+        self.out.stats.rhs_evaluations += step.evaluations;
+        Some((step.y, step))
+    }
+
+    /// Adds the input and the dissipation over `[piece.t, t_to]` from the piece's collocation
+    /// polynomial (Gauss-Legendre with three nodes): the fallback where a step of its own to
+    /// `t_to` does not converge.
+    fn account_dense(&mut self, piece: &Piece, t_to: f64, s: f64) {
         const NODES3: [f64; 3] = [0.112_701_665_379_258_3, 0.5, 0.887_298_334_620_741_7];
         const WEIGHTS3: [f64; 3] = [5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0];
-        for (k, (step, start)) in halves.iter().enumerate() {
-            let from = t + 0.5 * h * k as f64;
-            let to = (from + 0.5 * h).min(t_to);
-            if to <= from {
-                continue;
-            }
-            for (node, weight) in NODES3.iter().zip(WEIGHTS3) {
-                let ti = from + node * (to - from);
-                let yi = dense(start, &step.stages, (ti - from) / (0.5 * h));
-                let [input, dissipated] = self.system.power(ti, &yi, s);
-                self.out.energy.input += weight * (to - from) * input;
-                self.out.energy.dissipated += weight * (to - from) * dissipated;
-            }
+        let span = t_to - piece.t;
+        if span <= 0.0 {
+            return;
+        }
+        for (node, weight) in NODES3.iter().zip(WEIGHTS3) {
+            let ti = piece.t + node * span;
+            let yi = piece.at((ti - piece.t) / piece.h);
+            let [input, dissipated] = self.system.power(ti, &yi, s);
+            self.out.energy.input += weight * span * input;
+            self.out.energy.dissipated += weight * span * dissipated;
         }
     }
 
-    /// Adds the input and the dissipation over two half steps of `[t, t + h]`.
-    fn account(&mut self, t: f64, h: f64, halves: &[Step; 2], s: f64) {
+    /// Adds the input and the dissipation over the step of `h` from `t`.
+    fn account(&mut self, t: f64, h: f64, step: &Step, s: f64) {
         if h <= 0.0 {
             return;
         }
-        for (k, half) in halves.iter().enumerate() {
-            let t0 = t + 0.5 * h * k as f64;
-            let [input, dissipated] =
-                quadrature(0.5 * h, t0, &half.stages, |t, y| self.system.power(t, y, s));
-            self.out.energy.input += input;
-            self.out.energy.dissipated += dissipated;
-        }
+        let [input, dissipated] = quadrature(h, t, &step.stages, |t, y| self.system.power(t, y, s));
+        self.out.energy.input += input;
+        self.out.energy.dissipated += dissipated;
     }
 
     /// The error weights `atol + rtol |y|`.
@@ -473,67 +598,86 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         std::array::from_fn(|r| self.atol[r] + self.rtol * y[r].abs())
     }
 
-    /// The Jacobian of the rate by central differences, each step on the component's scale.
+    /// The Jacobian of the rate at `(t, y)` (whose rate is `control.f0`). The rate is affine in
+    /// `x`, `z` and `q` (the drive is linear in `x` and `q`, the bristle equation and the
+    /// friction force linear in `z` at a frozen sign), so those columns are forward
+    /// differences over a whole scale of the component, exact up to rounding; the `v` column
+    /// (through `g(v)` and `f(v)`) is a central difference.
+    ///
+    /// With the sign not frozen (`s = 0`, a mass at rest within the tolerance) it is the
+    /// Jacobian on the side of `v`'s own sign: a creeping mass stays on its side, and the
+    /// average of the two sides (what a difference across `v = 0` gives) slows Newton to a
+    /// crawl there.
     fn jacobian(&mut self, t: f64, y: &[f64; N], s: f64) -> [[f64; N]; N] {
         self.out.stats.jacobians += 1;
+        let s = if s == 0.0 && y[1] != 0.0 {
+            y[1].signum()
+        } else {
+            s
+        };
+        let f0 = self.control.f0;
         let mut j = [[0.0; N]; N];
         for c in 0..N {
-            let h = 1e-6 * (y[c].abs() + self.atol[c] / self.rtol);
-            let (mut up, mut down) = (*y, *y);
-            up[c] += h;
-            down[c] -= h;
-            let (fu, fd) = (self.system.rate(t, &up, s), self.system.rate(t, &down, s));
-            for r in 0..N {
-                j[r][c] = (fu[r] - fd[r]) / (2.0 * h);
+            let scale = y[c].abs() + self.atol[c] / self.rtol;
+            let mut up = *y;
+            if c == 1 {
+                let d = 1e-6 * scale;
+                let mut down = *y;
+                up[c] += d;
+                down[c] -= d;
+                let (fu, fd) = (self.system.rate(t, &up, s), self.system.rate(t, &down, s));
+                for r in 0..N {
+                    j[r][c] = (fu[r] - fd[r]) / (2.0 * d);
+                }
+                self.out.stats.rhs_evaluations += 2;
+            } else {
+                up[c] += scale;
+                let d = up[c] - y[c];
+                let fu = self.system.rate(t, &up, s);
+                for r in 0..N {
+                    j[r][c] = (fu[r] - f0[r]) / d;
+                }
+                self.out.stats.rhs_evaluations += 1;
             }
         }
-        self.out.stats.rhs_evaluations += 2 * N;
         j
     }
 
     /// The first crossing of `v` against the sign `s` in the step (none when `s = 0`):
-    /// bracketed at the collocation nodes of the half steps, then located by bisection on the
-    /// collocation polynomial to the resolution of `t`.
-    fn crossing(&self, t: f64, h: f64, halves: &Halves, s: f64) -> Option<(f64, [f64; N])> {
+    /// bracketed at the collocation nodes, then located by bisection on the collocation
+    /// polynomial to the resolution of `t`.
+    fn crossing(&self, piece: &Piece, s: f64) -> Option<(f64, [f64; N])> {
         if s == 0.0 {
             return None;
         }
-        for (k, (step, start)) in halves.iter().enumerate() {
-            let t0 = t + 0.5 * h * k as f64;
-            let at = |theta: f64| dense(start, &step.stages, theta);
-            let past = |theta: f64| s * at(theta)[1] < 0.0;
-            let mut lo = 0.0;
-            for &node in &NODES[1..] {
-                if past(node) {
-                    let hi = bisect(past, lo, node);
-                    return Some((t0 + 0.5 * h * hi, at(hi)));
-                }
-                lo = node;
+        let past = |theta: f64| s * piece.at(theta)[1] < 0.0;
+        let mut lo = 0.0;
+        for &node in &NODES[1..] {
+            if past(node) {
+                let hi = bisect(past, lo, node);
+                return Some((piece.time(hi), piece.at(hi)));
             }
+            lo = node;
         }
         None
     }
 
     /// The upward crossings of the watched velocity levels in the step, up to `t_kept`, as
     /// events (located by bisection on the collocation polynomial).
-    fn watch(&mut self, t: f64, h: f64, halves: &Halves, t_kept: f64) {
+    fn watch(&mut self, piece: &Piece, t_kept: f64) {
         let mut found = Vec::new();
         for &level in &self.system.watch {
-            for (k, (step, start)) in halves.iter().enumerate() {
-                let t0 = t + 0.5 * h * k as f64;
-                let at = |theta: f64| dense(start, &step.stages, theta);
-                let past = |theta: f64| at(theta)[1] >= level;
-                let mut lo = 0.0;
-                for &node in &NODES[1..] {
-                    if !past(lo) && past(node) {
-                        let hi = bisect(past, lo, node);
-                        let tc = t0 + 0.5 * h * hi;
-                        if tc <= t_kept {
-                            found.push((tc, at(hi)[0]));
-                        }
+            let past = |theta: f64| piece.at(theta)[1] >= level;
+            let mut lo = 0.0;
+            for &node in &NODES[1..] {
+                if !past(lo) && past(node) {
+                    let hi = bisect(past, lo, node);
+                    let tc = piece.time(hi);
+                    if tc <= t_kept {
+                        found.push((tc, piece.at(hi)[0]));
                     }
-                    lo = node;
                 }
+                lo = node;
             }
         }
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -562,87 +706,58 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
 
     /// The first local maximum of the friction force in the step, up to `t_kept`: where
     /// `dF/dt` ([`Self::friction_rate`] on the collocation polynomial) turns from > 0 to <= 0,
-    /// bracketed at the nodes of the half steps and located by bisection.
-    fn friction_peak(
-        &mut self,
-        t: f64,
-        h: f64,
-        halves: &Halves,
-        s: f64,
-        t_kept: f64,
-    ) -> Option<f64> {
+    /// bracketed at the nodes and located by bisection.
+    fn friction_peak(&mut self, piece: &Piece, s: f64, t_kept: f64) -> Option<f64> {
+        let slope = |theta: f64| self.friction_rate(piece.time(theta), &piece.at(theta), s);
+        let past = |theta: f64| slope(theta) <= 0.0;
         let mut rising = self.rising;
-        let found = self.first_peak(t, h, halves, s, &mut rising);
-        self.rising = rising;
-        found.filter(|&tp| tp <= t_kept)
-    }
-
-    fn first_peak(
-        &self,
-        t: f64,
-        h: f64,
-        halves: &Halves,
-        s: f64,
-        rising: &mut bool,
-    ) -> Option<f64> {
-        for (k, (step, start)) in halves.iter().enumerate() {
-            let t0 = t + 0.5 * h * k as f64;
-            let slope = |theta: f64| {
-                let y = dense(start, &step.stages, theta);
-                self.friction_rate(t0 + 0.5 * h * theta, &y, s)
-            };
-            let past = |theta: f64| slope(theta) <= 0.0;
-            let mut lo = 0.0;
-            for &node in &NODES {
-                let falling = past(node);
-                if falling && *rising {
-                    let theta = if node == 0.0 {
-                        0.0
-                    } else {
-                        bisect(past, lo, node)
-                    };
-                    return Some(t0 + 0.5 * h * theta);
-                }
-                *rising |= !falling;
-                lo = node;
+        let mut lo = 0.0;
+        let mut found = None;
+        for &node in &NODES {
+            let falling = past(node);
+            if falling && rising {
+                let theta = if node == 0.0 {
+                    0.0
+                } else {
+                    bisect(past, lo, node)
+                };
+                found = Some(piece.time(theta)).filter(|&tp| tp <= t_kept);
+                break;
             }
+            rising |= !falling;
+            lo = node;
         }
-        None
+        self.rising = rising;
+        found
     }
 
-    /// The run stopped at the friction peak `tp` inside the step `(t, y, h, halves)`: the state
-    /// there by a step of its own (as accurate as the steps), the outputs up to it.
+    /// The run stopped at the friction peak `tp` inside `piece`: the state there by a step of
+    /// its own (as accurate as the steps), the outputs up to it.
     fn peak_at(
         mut self,
-        t: f64,
-        y: &[f64; N],
-        h: f64,
-        halves: &Halves,
+        piece: &Piece,
         tp: f64,
         s: f64,
     ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
-        let k = usize::from(tp >= t + 0.5 * h);
-        let (st, start) = &halves[k];
-        let from = t + 0.5 * h * k as f64;
         let exact = |run: &mut Self, tq: f64| -> [f64; N] {
-            if tq > from {
-                run.step_to(from, start, tq, s)
-                    .unwrap_or_else(|| dense(start, &st.stages, (tq - from) / (0.5 * h)))
+            if tq > piece.t {
+                run.step_to(piece, tq, s)
+                    .map_or_else(|| piece.at((tq - piece.t) / piece.h), |(y, _)| y)
             } else {
-                *start
+                piece.y0
             }
         };
         // The collocation polynomial locates the peak to its own (lower) order; secant steps
         // on dF/dt at states that are steps of their own bring it to the steps' accuracy.
         let mut tp = tp;
         let mut yp = exact(&mut self, tp);
-        let d = 1e-4 * h;
+        let d = 1e-4 * piece.h;
         for _ in 0..3 {
             let g1 = self.friction_rate(tp, &yp, s);
             let y2 = exact(&mut self, tp + d);
             let g2 = self.friction_rate(tp + d, &y2, s);
             let next = tp - g1 * d / (g2 - g1);
-            if !(next.is_finite() && next > from && next < t + h) {
+            if !(next.is_finite() && next > piece.t && next < piece.time(1.0)) {
                 break;
             }
             let moved = (next - tp).abs();
@@ -652,7 +767,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
                 break;
             }
         }
-        self.report_until(tp, &yp, s, Some((t, y, h, halves)));
+        self.report_until(tp, &yp, s, Some(piece));
         check_finite(tp, &yp)?;
         let peak = Breakaway {
             t: tp,
@@ -684,28 +799,16 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         (y, s)
     }
 
-    /// Reports the requested times up to `t_to` (inclusive), from the step's dense output, or
-    /// at `t_to` itself from `y_to` when no step is given.
-    fn report_until(
-        &mut self,
-        t_to: f64,
-        y_to: &[f64; N],
-        s: f64,
-        step: Option<(f64, &[f64; N], f64, &Halves)>,
-    ) {
+    /// Reports the requested times up to `t_to` (inclusive): inside `piece` by a step of its
+    /// own from the piece's start (the collocation polynomial if that step does not
+    /// converge), at `t_to` itself from `y_to`.
+    fn report_until(&mut self, t_to: f64, y_to: &[f64; N], s: f64, piece: Option<&Piece>) {
         while self.next_time < self.times.len() && self.times[self.next_time] <= t_to {
             let ti = self.times[self.next_time];
-            let yi = match step {
-                Some((t0, _, h, halves)) if ti < t_to => {
-                    // A step of its own from the half step's start (as accurate as the
-                    // steps); the collocation polynomial if that step does not converge.
-                    let k = usize::from(ti >= t0 + 0.5 * h);
-                    let (st, start) = &halves[k];
-                    let from = t0 + 0.5 * h * k as f64;
-                    let theta = (ti - from) / (0.5 * h);
-                    self.step_to(from, start, ti, s)
-                        .unwrap_or_else(|| dense(start, &st.stages, theta.clamp(0.0, 1.0)))
-                }
+            let yi = match piece {
+                Some(p) if ti < t_to => self
+                    .step_to(p, ti, s)
+                    .map_or_else(|| p.at(((ti - p.t) / p.h).clamp(0.0, 1.0)), |(y, _)| y),
                 _ => *y_to,
             };
             self.system.record(&mut self.out, ti, &yi, s);
