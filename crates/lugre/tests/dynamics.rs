@@ -467,3 +467,59 @@ fn a_run_continued_from_a_state_is_the_same_run() {
         .to_string();
     assert_eq!(e, "t_end - t0 must be a finite number > 0, got -5");
 }
+
+/// Stable at any stiffness: Table I with `sigma0` from 1e5 to 1e8 N/m (and `sigma1` keeping the
+/// paper's damping ratio, `sqrt(sigma0)` for 1 kg, scaled with the mass) on masses from a gram
+/// to a tonne. A force held at 90 % of `Fc` sticks (below `Fc` there is no steady sliding,
+/// `g(v) + sigma2 v >= Fc`; between `Fc` and `Fs` a light mass can break away under the ramp,
+/// as the integrators agree); the displacement stays within twice the bristles' reach
+/// `Fs / sigma0` (a tonne on 1e5 N/m overshoots its static deflection under the ramp)),
+/// a force ramped to `2 Fs` slides (well past the bristles), and the energy balance closes to
+/// the tolerance.
+#[test]
+fn stable_at_any_stiffness_and_mass() {
+    for sigma0 in [1e5, 1e6, 1e7, 1e8] {
+        for mass in [1e-3, 1.0, 1e3] {
+            let p = LuGreParams {
+                sigma0,
+                sigma1: (sigma0 * mass).sqrt(),
+                ..LuGreParams::canudas_de_wit_1995()
+            };
+            let model = LuGre::from_params(p).unwrap();
+            let (fs, reach) = (p.fs, p.fs / sigma0);
+            let held = Profile::new("the force", vec![0.0, 1.0], vec![0.0, 0.9 * p.fc]).unwrap();
+            let system = System::new(model.clone(), mass).unwrap().with_force(held);
+            let m = system
+                .solve(10.0, &[0.5, 1.0, 10.0], Tolerances::default())
+                .unwrap_or_else(|e| panic!("sigma0 {sigma0:e}, M {mass}: {e}"));
+            let x = m.x.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+            assert!(
+                x < 2.0 * reach,
+                "sigma0 {sigma0:e}, M {mass}: stuck at 0.9 Fc moved {x:e} (reach {reach:e})"
+            );
+            let e = m.energy;
+            assert!(
+                e.residual().abs() <= 1e-6 * e.input.abs().max(e.dissipated),
+                "sigma0 {sigma0:e}, M {mass}: {e:?}"
+            );
+            // Past stiction: a ramp to 2 Fs over 1 s, then 1 s more: it slides.
+            let ramp = Profile::new("the force", vec![0.0, 1.0], vec![0.0, 2.0 * fs]).unwrap();
+            let m = System::new(model, mass)
+                .unwrap()
+                .with_force(ramp)
+                .solve(2.0, &[2.0], Tolerances::default())
+                .unwrap_or_else(|e| panic!("sigma0 {sigma0:e}, M {mass}, sliding: {e}"));
+            // Well past the bristles' reach (a tonne under 3 N: about 1.5 mm in the 2 s).
+            assert!(
+                m.x[0] > 10.0 * reach,
+                "sigma0 {sigma0:e}, M {mass}: under 2 Fs it moved only {:e}",
+                m.x[0]
+            );
+            let e = m.energy;
+            assert!(
+                e.residual().abs() <= 1e-6 * e.input.abs().max(e.dissipated),
+                "sigma0 {sigma0:e}, M {mass}, sliding: {e:?}"
+            );
+        }
+    }
+}
