@@ -9,7 +9,7 @@
 
 use crate::kernel::radau::{ALPH, BETA, C, DD, T, TI, U1};
 use num_complex::Complex64;
-use std::ops::{Div, Mul, SubAssign};
+use std::ops::{Mul, SubAssign};
 
 pub(super) const N: usize = 4;
 
@@ -254,14 +254,18 @@ pub(super) fn quadrature(
 pub(super) const NODES: [f64; 4] = [0.0, C[0], C[1], C[2]];
 
 /// The numbers [`Lu`] factors over: real and complex.
-pub(super) trait Scalar: Copy + SubAssign + Mul<Output = Self> + Div<Output = Self> {
+pub(super) trait Scalar: Copy + SubAssign + Mul<Output = Self> {
     /// The pivot's size (any norm does for partial pivoting; the 1-norm is cheapest).
     fn size(self) -> f64;
+    fn recip(self) -> Self;
 }
 
 impl Scalar for f64 {
     fn size(self) -> f64 {
         self.abs()
+    }
+    fn recip(self) -> Self {
+        1.0 / self
     }
 }
 
@@ -269,12 +273,18 @@ impl Scalar for Complex64 {
     fn size(self) -> f64 {
         self.l1_norm()
     }
+    fn recip(self) -> Self {
+        self.inv()
+    }
 }
 
 /// LU factors with partial pivoting of an `N x N` matrix.
 pub(super) struct Lu<S> {
     a: [[S; N]; N],
     pivot: [usize; N],
+    /// The reciprocals of the pivots: the solves multiply (a complex division costs several
+    /// multiplications and two divisions).
+    inverse_pivots: [S; N],
 }
 
 impl<S: Scalar> Lu<S> {
@@ -295,15 +305,21 @@ impl<S: Scalar> Lu<S> {
             a.swap(k, p);
             pivot[k] = p;
             let pivot_row = a[k];
+            let inverse = pivot_row[k].recip();
             for row in a.iter_mut().skip(k + 1) {
-                let factor = row[k] / pivot_row[k];
+                let factor = row[k] * inverse;
                 row[k] = factor;
                 for c in k + 1..N {
                     row[c] -= factor * pivot_row[c];
                 }
             }
         }
-        Some(Self { a, pivot })
+        let inverse_pivots = std::array::from_fn(|k| a[k][k].recip());
+        Some(Self {
+            a,
+            pivot,
+            inverse_pivots,
+        })
     }
 
     fn solve(&self, mut b: [S; N]) -> [S; N] {
@@ -323,7 +339,7 @@ impl<S: Scalar> Lu<S> {
                 let m = self.a[k][j] * b[j];
                 b[k] -= m;
             }
-            b[k] = b[k] / self.a[k][k];
+            b[k] = b[k] * self.inverse_pivots[k];
         }
         b
     }
