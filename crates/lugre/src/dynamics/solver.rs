@@ -225,11 +225,11 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let length = m.g0() / m.sigma0();
         let atol = tol.atol.unwrap_or(tol.rtol * length);
         let atol = [atol, atol * w0, atol, atol];
-        // The embedded error estimate is held to the tolerances as given (radau5 holds it to
-        // 0.1 rtol^(2/3), for a global error of about rtol at moderate tolerances; against the
-        // references that let the error exceed rtol by 10-100x at rtol 1e-11, see
-        // BENCHMARKS.md): the estimate, of order 4 for a method of order 5, is conservative,
-        // and the global error stays below rtol on every experiment.
+        // The embedded error estimate is held to the tolerances as given. radau5 holds it to
+        // 0.1 rtol^(2/3), aiming at a global error of about rtol at moderate tolerances; against
+        // the references that let the error reach 1000x rtol at rtol 1e-11 (BENCHMARKS.md). As
+        // given, the estimate (of order 4 for a method of order 5) is conservative and the
+        // global error stays within 3x rtol on every experiment.
         let rtol = tol.rtol;
         let mut run = Run {
             system: self,
