@@ -165,6 +165,9 @@ const REUSE_JACOBIAN: f64 = 1e-3;
 /// is below this fraction of the velocity tolerance (so that stepping over the remaining kinks
 /// costs less than the tolerance; above it the kinks of a ringing mass cost accuracy).
 const RINGING: f64 = 1e-3;
+/// A sign change located within this fraction of a step from its start is taken for the
+/// polynomial not resolving the step's start (see `integrate`), and the step is retried shorter.
+const MIN_PROGRESS: f64 = 1e-6;
 /// Steps before the solver gives up.
 const MAX_STEPS: usize = 10_000_000;
 
@@ -275,49 +278,61 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                             });
                         }
                     }
-                    Ok((piece, h_new)) => {
+                    Ok((first, h_new)) => {
+                        let crossing = run.crossing(&first, s);
+                        if crossing.is_some_and(|tc| tc - t <= MIN_PROGRESS * step) {
+                            // v leaves a sign change (or a kink) in the direction of its
+                            // acceleration: a sign change at the very start of a step is the
+                            // collocation polynomial not resolving the start of a step this
+                            // long (far longer than the mass's period): shorter.
+                            run.out.stats.rejected += 1;
+                            h = run.retry(0.1 * step);
+                            continue;
+                        }
+                        let piece = match crossing {
+                            None => first,
+                            // v changed sign inside the step. Past the crossing the frozen
+                            // sign is not the motion, and the step's error estimate covered
+                            // that part too: the step is redone to the crossing under its own
+                            // error control (rejected, the run goes on with shorter steps and
+                            // finds the crossing again).
+                            Some(tc) => match run.attempt(t, &y, tc - t, s) {
+                                Ok((to_crossing, _)) => to_crossing,
+                                Err(h_retry) => {
+                                    run.out.stats.rejected += 1;
+                                    h = h_retry;
+                                    continue;
+                                }
+                            },
+                        };
                         run.out.stats.steps += 1;
-                        let end = if last { bound } else { t + step };
-                        let crossing = run.crossing(&piece, s);
-                        let kept = crossing.map_or(end, |c| c.0);
-                        run.watch(&piece, kept);
+                        let end = match crossing {
+                            Some(tc) => tc,
+                            None if last => bound,
+                            None => t + step,
+                        };
+                        run.watch(&piece, end);
                         if to_peak {
-                            if let Some(tp) = run.friction_peak(&piece, s, kept) {
+                            if let Some(tp) = run.friction_peak(&piece, s, end) {
                                 return run.peak_at(&piece, tp, s);
                             }
                         }
-                        match crossing {
-                            Some((tc, yc)) => {
-                                // v changed sign: the step is kept up to the crossing only,
-                                // and the state there is a step of its own (the dense output
-                                // is of lower order than the step).
-                                let yc = match run.step_to(&piece, tc, s) {
-                                    Some((yc, own)) => {
-                                        run.account(piece.t, tc - piece.t, &own, s);
-                                        yc
-                                    }
-                                    None => {
-                                        run.account_dense(&piece, tc, s);
-                                        yc
-                                    }
-                                };
-                                run.report_until(tc, &yc, s, Some(&piece));
-                                let (yc, s_next) = run.reversal(tc, yc);
-                                (t, y, s) = (tc, yc, s_next);
-                                check_finite(t, &y)?;
-                                run.restart(t, &y, s);
-                            }
-                            None => {
-                                run.account(piece.t, piece.h, &piece.step, s);
-                                let y_end = piece.step.y;
-                                run.report_until(end, &y_end, s, Some(&piece));
-                                (t, y) = (end, y_end);
-                                check_finite(t, &y)?;
-                                run.accepted(piece, &y, s);
-                            }
+                        run.account(piece.t, piece.h, &piece.step, s);
+                        let y_end = piece.step.y;
+                        run.report_until(end, &y_end, s, Some(&piece));
+                        check_finite(end, &y_end)?;
+                        if crossing.is_some() {
+                            // At the crossing: v = 0, an event, and the sign to go on with.
+                            let (yc, s_next) = run.reversal(end, y_end);
+                            (t, y, s) = (end, yc, s_next);
+                            run.restart(t, &y, s);
+                            h = h_new;
+                        } else {
+                            (t, y) = (end, y_end);
+                            run.accepted(piece, &y, s);
+                            // A step cut short to land on the bound leaves the size as it was.
+                            h = if last { h.max(h_new) } else { h_new };
                         }
-                        // A step cut short to land on the bound leaves the size as it was.
-                        h = if last { h.max(h_new) } else { h_new };
                     }
                 }
             }
@@ -398,6 +413,7 @@ impl Control {
             newton: Newton {
                 faccon: 1.0,
                 tol: (10.0 * f64::EPSILON / rtol).max(0.03f64.min(rtol.sqrt())),
+                lenient: false,
             },
             f0: [0.0; N],
             first: true,
@@ -488,6 +504,9 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
             Some(p) if !self.control.first => guess(&p.y0, &p.step.stages, 1.0, h / p.h),
             _ => [[0.0; N]; 3],
         };
+        // |v| not split (s = 0): the right-hand side has a kink at v = 0, where Newton's
+        // contraction is erratic; it iterates on while the increments do not grow.
+        self.control.newton.lenient = s == 0.0;
         let step = solve_stages(&f, factors, t, y, &scal, guess, &mut self.control.newton);
         let step = match step {
             Ok(step) => step,
@@ -564,25 +583,6 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         Some((step.y, step))
     }
 
-    /// Adds the input and the dissipation over `[piece.t, t_to]` from the piece's collocation
-    /// polynomial (Gauss-Legendre with three nodes): the fallback where a step of its own to
-    /// `t_to` does not converge.
-    fn account_dense(&mut self, piece: &Piece, t_to: f64, s: f64) {
-        const NODES3: [f64; 3] = [0.112_701_665_379_258_3, 0.5, 0.887_298_334_620_741_7];
-        const WEIGHTS3: [f64; 3] = [5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0];
-        let span = t_to - piece.t;
-        if span <= 0.0 {
-            return;
-        }
-        for (node, weight) in NODES3.iter().zip(WEIGHTS3) {
-            let ti = piece.t + node * span;
-            let yi = piece.at((ti - piece.t) / piece.h);
-            let [input, dissipated] = self.system.power(ti, &yi, s);
-            self.out.energy.input += weight * span * input;
-            self.out.energy.dissipated += weight * span * dissipated;
-        }
-    }
-
     /// Adds the input and the dissipation over the step of `h` from `t`.
     fn account(&mut self, t: f64, h: f64, step: &Step, s: f64) {
         if h <= 0.0 {
@@ -646,7 +646,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
     /// The first crossing of `v` against the sign `s` in the step (none when `s = 0`):
     /// bracketed at the collocation nodes, then located by bisection on the collocation
     /// polynomial to the resolution of `t`.
-    fn crossing(&self, piece: &Piece, s: f64) -> Option<(f64, [f64; N])> {
+    fn crossing(&self, piece: &Piece, s: f64) -> Option<f64> {
         if s == 0.0 {
             return None;
         }
@@ -654,8 +654,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         let mut lo = 0.0;
         for &node in &NODES[1..] {
             if past(node) {
-                let hi = bisect(past, lo, node);
-                return Some((piece.time(hi), piece.at(hi)));
+                return Some(piece.time(bisect(past, lo, node)));
             }
             lo = node;
         }
