@@ -250,6 +250,18 @@ fn astm_example_every_cut() {
     assert_eq!(h.summary.full_cycles, 1);
 }
 
+/// [`check`] at every set of cuts of `u` (each of its `2^(n-1)` subsets), merged in each of
+/// `orders`.
+fn check_every_cut(u: &[f64], orders: &[[usize; 1]]) {
+    let n = u.len();
+    for mask in 0u32..(1 << (n - 1)) {
+        let cuts: Vec<usize> = (1..n).filter(|k| mask & (1 << (k - 1)) != 0).collect();
+        for order in orders {
+            check(u, &cuts, order);
+        }
+    }
+}
+
 #[test]
 fn constant_chunks_and_plateaus_across_cuts() {
     let cases: [&[f64]; 6] = [
@@ -261,13 +273,7 @@ fn constant_chunks_and_plateaus_across_cuts() {
         &[3.0, 3.0],
     ];
     for u in cases {
-        let n = u.len();
-        for mask in 0u32..(1 << (n - 1)) {
-            let cuts: Vec<usize> = (1..n).filter(|k| mask & (1 << (k - 1)) != 0).collect();
-            for order in [[0usize], [1], [7]] {
-                check(u, &cuts, &order);
-            }
-        }
+        check_every_cut(u, &[[0], [1], [7]]);
     }
 }
 
@@ -297,13 +303,7 @@ fn rounding_ties_near_two_to_the_53() {
         ],
     ];
     for u in cases {
-        let n = u.len();
-        for mask in 0u32..(1 << (n - 1)) {
-            let cuts: Vec<usize> = (1..n).filter(|k| mask & (1 << (k - 1)) != 0).collect();
-            for order in [[0usize], [1], [5]] {
-                check(u, &cuts, &order);
-            }
-        }
+        check_every_cut(u, &[[0], [1], [5]]);
     }
 }
 
