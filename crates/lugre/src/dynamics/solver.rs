@@ -317,7 +317,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                                 return run.peak_at(&piece, tp, s);
                             }
                         }
-                        run.account(piece.t, piece.h, &piece.step, s);
+                        run.account(&piece, s);
                         let y_end = piece.step.y;
                         run.report_until(end, &y_end, s, Some(&piece));
                         check_finite(end, &y_end)?;
@@ -329,7 +329,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
                             h = h_new;
                         } else {
                             (t, y) = (end, y_end);
-                            run.accepted(piece, &y, s);
+                            run.accepted(piece, s);
                             // A step cut short to land on the bound leaves the size as it was.
                             h = if last { h.max(h_new) } else { h_new };
                         }
@@ -466,14 +466,17 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         c.reject = false;
         c.previous = None;
         c.accepted = None;
+        // |v| not split (s = 0): the right-hand side has a kink at v = 0, where Newton's
+        // contraction is erratic; it iterates on while the increments do not grow.
+        c.newton.lenient = s == 0.0;
         c.f0 = self.system.rate(t, y, s);
         self.out.stats.rhs_evaluations += 1;
     }
 
-    /// After an accepted step that ended at `y` (not cut short): the rate there, and the
-    /// step kept as Newton's starting point.
-    fn accepted(&mut self, piece: Piece, y: &[f64; N], s: f64) {
-        self.control.f0 = self.system.rate(piece.t + piece.h, y, s);
+    /// After an accepted step (not cut short): the rate at its end, and the step kept as
+    /// Newton's starting point.
+    fn accepted(&mut self, piece: Piece, s: f64) {
+        self.control.f0 = self.system.rate(piece.t + piece.h, &piece.step.y, s);
         self.out.stats.rhs_evaluations += 1;
         self.control.previous = Some(piece);
     }
@@ -504,9 +507,6 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
             Some(p) if !self.control.first => guess(&p.y0, &p.step.stages, 1.0, h / p.h),
             _ => [[0.0; N]; 3],
         };
-        // |v| not split (s = 0): the right-hand side has a kink at v = 0, where Newton's
-        // contraction is erratic; it iterates on while the increments do not grow.
-        self.control.newton.lenient = s == 0.0;
         let step = solve_stages(&f, factors, t, y, &scal, guess, &mut self.control.newton);
         let step = match step {
             Ok(step) => step,
@@ -564,10 +564,17 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         h_new
     }
 
-    /// The state at `tq` inside `piece` by a step of its own from the piece's start (as
-    /// accurate as the step), Newton starting from the piece's collocation polynomial; `None`
-    /// if Newton does not converge there.
-    fn step_to(&mut self, piece: &Piece, tq: f64, s: f64) -> Option<([f64; N], Step)> {
+    /// The state at `tq` inside `piece`: by a step of its own from the piece's start (as
+    /// accurate as the step; the collocation polynomial is of lower order between its nodes),
+    /// or the polynomial where Newton does not converge for that step.
+    fn state_at(&mut self, piece: &Piece, tq: f64, s: f64) -> [f64; N] {
+        self.step_to(piece, tq, s)
+            .unwrap_or_else(|| piece.at(((tq - piece.t) / piece.h).clamp(0.0, 1.0)))
+    }
+
+    /// [`Self::state_at`]'s step of its own, Newton starting from the piece's collocation
+    /// polynomial; `None` at the piece's start or if Newton does not converge.
+    fn step_to(&mut self, piece: &Piece, tq: f64, s: f64) -> Option<[f64; N]> {
         let h = tq - piece.t;
         if h <= 0.0 {
             return None;
@@ -580,15 +587,14 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         let step =
             solve_stages(&f, &factors, piece.t, &piece.y0, &scal, start, &mut newton).ok()?;
         self.out.stats.rhs_evaluations += step.evaluations;
-        Some((step.y, step))
+        Some(step.y)
     }
 
-    /// Adds the input and the dissipation over the step of `h` from `t`.
-    fn account(&mut self, t: f64, h: f64, step: &Step, s: f64) {
-        if h <= 0.0 {
-            return;
-        }
-        let [input, dissipated] = quadrature(h, t, &step.stages, |t, y| self.system.power(t, y, s));
+    /// Adds the input and the dissipation over an accepted step (its own quadrature).
+    fn account(&mut self, piece: &Piece, s: f64) {
+        let [input, dissipated] = quadrature(piece.h, piece.t, &piece.step.stages, |t, y| {
+            self.system.power(t, y, s)
+        });
         self.out.energy.input += input;
         self.out.energy.dissipated += dissipated;
     }
@@ -738,22 +744,14 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         tp: f64,
         s: f64,
     ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
-        let exact = |run: &mut Self, tq: f64| -> [f64; N] {
-            if tq > piece.t {
-                run.step_to(piece, tq, s)
-                    .map_or_else(|| piece.at((tq - piece.t) / piece.h), |(y, _)| y)
-            } else {
-                piece.y0
-            }
-        };
         // The collocation polynomial locates the peak to its own (lower) order; secant steps
         // on dF/dt at states that are steps of their own bring it to the steps' accuracy.
         let mut tp = tp;
-        let mut yp = exact(&mut self, tp);
+        let mut yp = self.state_at(piece, tp, s);
         let d = 1e-4 * piece.h;
         for _ in 0..3 {
             let g1 = self.friction_rate(tp, &yp, s);
-            let y2 = exact(&mut self, tp + d);
+            let y2 = self.state_at(piece, tp + d, s);
             let g2 = self.friction_rate(tp + d, &y2, s);
             let next = tp - g1 * d / (g2 - g1);
             if !(next.is_finite() && next > piece.t && next < piece.time(1.0)) {
@@ -761,7 +759,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
             }
             let moved = (next - tp).abs();
             tp = next;
-            yp = exact(&mut self, tp);
+            yp = self.state_at(piece, tp, s);
             if moved <= 1e-13 * tp.abs() {
                 break;
             }
@@ -805,9 +803,7 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         while self.next_time < self.times.len() && self.times[self.next_time] <= t_to {
             let ti = self.times[self.next_time];
             let yi = match piece {
-                Some(p) if ti < t_to => self
-                    .step_to(p, ti, s)
-                    .map_or_else(|| p.at(((ti - p.t) / p.h).clamp(0.0, 1.0)), |(y, _)| y),
+                Some(p) if ti < t_to => self.state_at(p, ti, s),
                 _ => *y_to,
             };
             self.system.record(&mut self.out, ti, &yi, s);
