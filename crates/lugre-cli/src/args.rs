@@ -137,6 +137,15 @@ impl DataArgs {
     }
 }
 
+/// Which parameters a command needs named ([`ModelArgs::check_named`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Needed {
+    /// Every parameter (a simulation of a physical system).
+    All,
+    /// Those of the rate-independent loop (energies along `y*`).
+    RateIndependent,
+}
+
 #[derive(Args, Debug, Clone)]
 pub(crate) struct ModelArgs {
     /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).
@@ -200,6 +209,47 @@ impl ModelArgs {
             Parameter::Rho => self.rho,
             _ => None,
         }
+    }
+
+    /// Whether the flags name anything of a model (a preset, `--model` or a parameter).
+    pub(crate) fn names_any(&self) -> bool {
+        self.preset.is_some()
+            || self.model != ModelKind::Lugre
+            || Parameter::LUGRE
+                .iter()
+                .chain(&[Parameter::Rho])
+                .any(|&p| self.given(p).is_some())
+    }
+
+    /// For a physical system: every parameter in `needed` of the chosen model has a value from
+    /// a flag or the preset, except those whose default means absence
+    /// ([`Parameter::default_is_absence`]); else the error names the missing flags.
+    pub(crate) fn check_named(&self, needed: Needed) -> Result<()> {
+        if self.preset.is_some() {
+            return Ok(());
+        }
+        let parameters: &[Parameter] = match (self.model, needed) {
+            (ModelKind::Lugre, Needed::All) => &Parameter::LUGRE,
+            (ModelKind::Lugre, Needed::RateIndependent) => &Parameter::LUGRE_RATE_INDEPENDENT,
+            (ModelKind::Dahl, _) => &Parameter::DAHL,
+        };
+        let missing: Vec<String> = parameters
+            .iter()
+            .filter(|p| self.given(**p).is_none() && !p.default_is_absence())
+            .map(|p| format!("--{}", p.name()))
+            .collect();
+        if !missing.is_empty() {
+            let preset = if self.model == ModelKind::Lugre {
+                ", or --preset canudas1995"
+            } else {
+                ""
+            };
+            bail!(
+                "the model is only partly named: give {} too{preset} (forces and energies of a measured or physical system are not computed from the dimensionless defaults)",
+                missing.join(", ")
+            );
+        }
+        Ok(())
     }
 
     /// The given value, else the preset's, else the parameter's default.

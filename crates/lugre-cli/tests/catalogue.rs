@@ -124,6 +124,10 @@ fn one_turning_point_and_all_equal_values() {
     // A history that never moves: one half cycle of range 0, in every output.
     let j = accepts_json(&[
         "cycles",
+        "--sigma0",
+        "1",
+        "--fs",
+        "2",
         "--values",
         "4,4,4,4",
         "--energy",
@@ -133,7 +137,17 @@ fn one_turning_point_and_all_equal_values() {
     assert_eq!(j["half_cycles"], 1);
     assert_eq!(j["full_cycles"], 0);
     assert_eq!(f(&j["cycles"][0]["range"]), 0.0);
-    accepts(&["cycles", "--values", "4,4", "--histogram", "--energy"]);
+    accepts(&[
+        "cycles",
+        "--sigma0",
+        "1",
+        "--fs",
+        "2",
+        "--values",
+        "4,4",
+        "--histogram",
+        "--energy",
+    ]);
 }
 
 /// Each inequality of Definition 1 (through `simulate`; `loop --bimodal` is checked in
@@ -327,7 +341,9 @@ fn csv_files_good_and_bad() {
     let runs: [&[&str]; 3] = [
         &["loop", "--json", "--input"],
         &["simulate", "--json", "--input"],
-        &["cycles", "--json", "--energy", "--input"],
+        &[
+            "cycles", "--sigma0", "1", "--fs", "2", "--json", "--energy", "--input",
+        ],
     ];
     for run in runs {
         let mut first: Option<serde_json::Value> = None;
@@ -724,7 +740,9 @@ fn numeric_flags_take_values_starting_with_a_minus() {
             "--gate: the gate must be a finite number >= 0, got -inf",
         ),
         (
-            &["cycles", "--values", "0,2,1", "--x0", "-1e300"],
+            &[
+                "cycles", "--sigma0", "1", "--fs", "2", "--values", "0,2,1", "--x0", "-1e300",
+            ],
             "--x0: x0 must satisfy |sigma0 x0| <= g(0)",
         ),
         (
@@ -749,7 +767,9 @@ fn numeric_flags_take_values_starting_with_a_minus() {
     // Valid negative values are accepted after a space.
     accepts(&["simulate", "--sine", "1,2,-1,-0.5", "--x0", "-0.5"]);
     accepts(&["simulate", "--turning-points", "-1,1", "--x0", "-0.5"]);
-    let j = accepts_json(&["cycles", "--values", "-2,1,-3", "--x0", "-0.5", "--json"]);
+    let j = accepts_json(&[
+        "cycles", "--sigma0", "1", "--fs", "2", "--values", "-2,1,-3", "--x0", "-0.5", "--json",
+    ]);
     assert_eq!(j["half_cycles"], 2);
     accepts(&["loop", "--turning-points", "-1,1", "--at", "-0.5"]);
     // An unknown flag is still one, before or after a negative value.
@@ -1133,6 +1153,10 @@ fn values_near_1e308_and_1e_minus_308() {
     ]);
     accepts(&[
         "cycles",
+        "--sigma0",
+        "1",
+        "--fs",
+        "2",
         "--values",
         "1e-308,-1e-308,5e-324,-5e-324,1e-308",
         "--energy",
@@ -1150,6 +1174,8 @@ fn values_near_1e308_and_1e_minus_308() {
     // error: l^2 overflowed inside the closed forms).
     let j = accepts_json(&[
         "cycles",
+        "--fs",
+        "2",
         "--values",
         "0,1e300,1,1e300,0",
         "--sigma0",
@@ -1380,7 +1406,9 @@ fn other_flags_out_of_range() {
             "--gate: the gate must be a finite number >= 0, got inf",
         ),
         (
-            vec!["cycles", "--values", "1,2,1", "--x0", "nan"],
+            vec![
+                "cycles", "--sigma0", "1", "--fs", "2", "--values", "1,2,1", "--x0", "nan",
+            ],
             "--x0: x0 must satisfy |sigma0 x0| <= g(0)",
         ),
         (

@@ -242,6 +242,8 @@ fn several_periods_agree_with_lugre_loop() {
     let path = temp_file("periods.csv", text.as_bytes());
     let j = json(&[
         "cycles",
+        "--fs",
+        "2",
         "--input",
         path.to_str().unwrap(),
         "--sigma0",
@@ -353,6 +355,8 @@ fn energy_along_the_history() {
     // W = dV + D with D >= 0, and the history's own totals add up.
     let j = json(&[
         "cycles",
+        "--fc",
+        "1",
         "--values",
         "0,1,0.2,0.8,0.5,1.5,-0.3,0.6,0.1,1.2",
         "--model",
@@ -384,7 +388,9 @@ fn energy_along_the_history() {
     let h = &j["history"];
     assert!((f(&h["work"]) - f(&h["stored_energy_change"]) - f(&h["dissipation"])).abs() < 1e-12);
     // Any model flag asks for energies; without one there are none.
-    let k = json(&["cycles", "--values", ASTM, "--fs", "3", "--json"]);
+    let k = json(&[
+        "cycles", "--sigma0", "1", "--values", ASTM, "--fs", "3", "--json",
+    ]);
     assert_eq!(f(&k["g0"]), 3.0);
     assert!(k["cycles"][2]["work"].is_number());
 }
@@ -447,10 +453,15 @@ fn bad_input_is_one_line_and_status_2() {
     rejects(&["cycles", "--values", ASTM, "--gate", "-1"], "--gate");
     rejects(&["cycles", "--values", ASTM, "--gate", "nan"], "--gate");
     rejects(
-        &["cycles", "--values", ASTM, "--x0", "5"],
+        &[
+            "cycles", "--sigma0", "1", "--fs", "2", "--values", ASTM, "--x0", "5",
+        ],
         "x0 must satisfy |sigma0 x0| <= g(0)",
     );
-    rejects(&["cycles", "--values", ASTM, "--sigma0", "-1"], "sigma0");
+    rejects(
+        &["cycles", "--fs", "2", "--values", ASTM, "--sigma0", "-1"],
+        "sigma0",
+    );
     rejects(
         &["cycles", "--values", ASTM, "--histogram", "--bins", "0"],
         "--bins must be a whole number >= 1, got 0",

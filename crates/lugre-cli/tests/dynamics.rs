@@ -178,34 +178,88 @@ fn bad_input_is_one_line() {
     rejects(&["dynamics", "--t-end", "1"], "no drive");
     rejects(
         &["dynamics", "--scenario", "pid", "--mass", "0"],
-        "the mass must be a finite number > 0",
+        "--mass must be a finite number > 0",
+    );
+    rejects(&["dynamics", "--scenario", "pid", "--mass", "-2"], "--mass");
+    rejects(
+        &["dynamics", "--force-rate", "1"],
+        "name the friction model (--preset",
     );
     rejects(
-        &["dynamics", "--scenario", "pid", "--mass", "-2"],
-        "the mass",
+        &["dynamics", "--force-rate", "1", "--preset", "canudas1995"],
+        "give --t-end",
     );
-    rejects(&["dynamics", "--force-rate", "1"], "--t-end");
     rejects(
-        &["dynamics", "--force-rate", "1", "--t-end", "-1"],
+        &[
+            "dynamics",
+            "--force-rate",
+            "1",
+            "--fs",
+            "1.5",
+            "--t-end",
+            "1",
+        ],
+        "give --sigma0, --sigma1, --fc, --vs, --beta too, or --preset canudas1995",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--preset",
+            "canudas1995",
+            "--force-rate",
+            "1",
+            "--t-end",
+            "-1",
+        ],
         "--t-end must be",
     );
-    rejects(&["dynamics", "--spring", "2", "--t-end", "1"], "--pull");
+    rejects(
+        &[
+            "dynamics",
+            "--preset",
+            "canudas1995",
+            "--spring",
+            "2",
+            "--t-end",
+            "1",
+        ],
+        "--spring needs --pull or --end-profile",
+    );
     rejects(
         &["dynamics", "--spring", "-2", "--pull", "1", "--t-end", "1"],
-        "the spring stiffness",
+        "--spring must be a finite number >= 0, got -2",
     );
     rejects(
         &["dynamics", "--scenario", "stick-slip", "--damping", "-1"],
-        "the damping",
+        "--damping must be a finite number >= 0, got -1",
     );
     rejects(&["dynamics", "--pid", "3,nan,6", "--t-end", "1"], "--pid");
     rejects(
-        &["dynamics", "--force-profile", "0:0,1:1,1:2", "--t-end", "2"],
-        "strictly increasing",
+        &[
+            "dynamics",
+            "--scenario",
+            "pid",
+            "--force-profile",
+            "0:0,1:1,1:2",
+            "--t-end",
+            "2",
+        ],
+        "--force-profile: times must be strictly increasing",
     );
-    rejects(&["dynamics", "--scenario", "pid", "--rtol", "2"], "rtol");
     rejects(
-        &["dynamics", "--scenario", "pid", "--times", "1,200"],
+        &["dynamics", "--scenario", "pid", "--rtol", "2"],
+        "--rtol must be a number in (0, 1), got 2",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--scenario",
+            "pid",
+            "--times",
+            "1,200",
+            "--t-end",
+            "100",
+        ],
         "outside the run",
     );
     rejects(
@@ -277,4 +331,87 @@ fn presliding_reports_its_friction_displacement_loop() {
     // Asked for on another run: the stick-slip's x only grows, no loop closes.
     let j = accepts_json(&["dynamics", "--scenario", "stick-slip", "--loops", "--json"]);
     assert!(j["loops"].as_array().unwrap().is_empty());
+}
+
+/// The reproductions of the one-request issue: the PID experiment with new gains keeps its set
+/// point; two applied forces, a list for one set point and an unbounded sample count are one
+/// line naming the flags.
+#[test]
+fn flags_on_a_scenario_replace_its_fields() {
+    for gains in ["3,8,6", "3,4,6"] {
+        let j = accepts_json(&[
+            "dynamics",
+            "--scenario",
+            "pid",
+            "--pid",
+            gains,
+            "--t-end",
+            "40",
+            "--samples",
+            "5",
+            "--json",
+        ]);
+        let x = f(j["x"].as_array().unwrap().last().unwrap());
+        assert!((x - 1.0).abs() < 0.15, "--pid {gains}: x(40) = {x}");
+    }
+    let j = accepts_json(&[
+        "dynamics",
+        "--scenario",
+        "pid",
+        "--setpoint",
+        "2",
+        "--t-end",
+        "60",
+        "--samples",
+        "3",
+        "--json",
+    ]);
+    let x = f(j["x"].as_array().unwrap().last().unwrap());
+    assert!((x - 2.0).abs() < 0.15, "--setpoint 2: x(60) = {x}");
+    rejects(
+        &[
+            "dynamics",
+            "--preset",
+            "canudas1995",
+            "--force-rate",
+            "10",
+            "--force-profile",
+            "0:1",
+            "--t-end",
+            "1",
+        ],
+        "give --force-rate or --force-profile, not both",
+    );
+    rejects(
+        &["dynamics", "--scenario", "pid", "--setpoint", "1,2"],
+        "--setpoint takes one number",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--scenario",
+            "pid",
+            "--samples",
+            "1000000000000",
+        ],
+        "--samples must be a whole number from 2 to 10000000, got 1000000000000",
+    );
+    rejects(
+        &["dynamics", "--scenario", "presliding", "--setpoint", "1"],
+        "--setpoint needs --pid",
+    );
+    // The lag experiment ends at 1.885 s; output times to 2 s run it to 2 s.
+    let j = accepts_json(&[
+        "dynamics",
+        "--scenario",
+        "lag",
+        "--times",
+        "0,0.5,1,1.5,2",
+        "--json",
+    ]);
+    assert_eq!(j["t"].as_array().unwrap().len(), 5);
+    // A prescribed velocity's drive is M v' + F, not 0.
+    let j = accepts_json(&["dynamics", "--scenario", "lag", "--samples", "11", "--json"]);
+    let drive: Vec<f64> = j["drive"].as_array().unwrap().iter().map(f).collect();
+    assert!(drive.iter().all(|d| *d > 0.5), "{drive:?}");
 }

@@ -6,166 +6,204 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::{floats, real, value_error, vec_out};
+use crate::convert::{count, floats, real, type_name, value_error, vec_out};
 use crate::models::lugre_of;
-use lugre::dynamics::{Pid, Profile, Scenario, Steps, System, Tolerances, Velocity};
+use lugre::dynamics::{Field, Motion, Outcome, Plan, Request, Scenario};
 
 /// The motion of a mass with friction, from rest.
 ///
-/// dynamics(model=None, *, mass=1.0, scenario=None, force=None, force_rate=None, spring=None,
-///          pull=None, end=None, damping=0.0, pid=None, setpoint=0.0, velocity=None,
-///          t_end=None, times=None, samples=1001, rtol=1e-8, atol=None)
+/// dynamics(model=None, *, scenario=None, mass=None, damping=None, force=None, force_rate=None,
+///          spring=None, pull=None, end=None, pid=None, setpoint=None, velocity=None,
+///          t_end=None, times=None, samples=None, rtol=None, atol=None, loops=None)
 ///
-/// * model: a lugre.LuGre or lugre.Dahl (default: Table I of Canudas de Wit et al. 1995 with a
-///   scenario, else LuGre()); mass in kg;
-/// * scenario: "presliding", "breakaway" (with force_rate, default 10 N/s), "stick-slip",
-///   "lag", "pid": the experiments of Canudas de Wit et al. (1995) (`lugre dynamics --scenario`);
-/// * force: (t, F) arrays, linear in between; force_rate: F = r t; spring: k [N/m] with pull
-///   (speed of the free end, m/s) or end ((t, y) arrays); damping c; pid: (Kp, Ki, Kv) with
-///   setpoint (a number, or (t, xd) arrays stepping at those times); velocity: (t, v) arrays,
-///   prescribed;
-/// * output at times (array) or samples evenly spaced times over [0, t_end].
+/// The keywords are the fields of the core's request (`lugre::dynamics::Request`, whose docs
+/// give every default); `lugre dynamics` takes the same as flags.
 ///
-/// Returns a dict: t, x, v, z, friction, drive (float64 arrays), events (a list of dicts t,
-/// kind, x: "velocity_zero", "velocity_up", "kink"), stats (a dict), and breakaway (t, force,
-/// x) with a force ramp, slip_onsets (array) and period with a pulled spring.
+/// * model: a lugre.LuGre or lugre.Dahl; required unless a scenario gives Table I of Canudas
+///   de Wit et al. (1995); mass in kg (default 1);
+/// * scenario: "presliding", "breakaway", "stick-slip", "lag", "pid": the experiments of
+///   Canudas de Wit et al. (1995) as presets; every keyword given on top replaces that field
+///   (pid=(3, 8, 6) on "pid" keeps its set point 1 m; force_rate on "breakaway" changes the
+///   ramp and its end 2 N / r);
+/// * force: (t, F) arrays, linear in between; force_rate: F = r t (give one of them);
+///   spring: k [N/m] with pull (speed of the free end, m/s) or end ((t, y) arrays); damping c;
+///   pid: (Kp, Ki, Kv) with setpoint (a number, or (t, xd) arrays stepping at those times,
+///   default 0); velocity: (t, v) arrays, prescribed (nothing else may then drive the mass);
+/// * t_end: default the last of times, else the scenario's; output at times (array) or samples
+///   (default 1001) evenly spaced times over [0, t_end]; rtol (default 1e-8), atol;
+/// * loops: the friction-displacement loops (default: on for "presliding").
+///
+/// Returns a DynamicsResult (a dict; `to_frame()` gives the sampled columns as a
+/// pandas.DataFrame): t, x, v, z, friction, drive (float64 arrays; with a prescribed velocity
+/// the drive is the force M v' + F that makes the mass follow it), events (a list of dicts t,
+/// kind, x), stats, energy, breakaway (t, force, x) with a force ramp, slip_onsets and period
+/// with a pulled spring, loops (a list of dicts) when computed, and description.
 #[pyfunction]
-#[pyo3(signature = (model=None, *, mass=1.0, scenario=None, force=None, force_rate=None, spring=None, pull=None, end=None, damping=0.0, pid=None, setpoint=None, velocity=None, t_end=None, times=None, samples=1001, rtol=1e-8, atol=None))]
+#[pyo3(signature = (model=None, *, scenario=None, mass=None, damping=None, force=None, force_rate=None, spring=None, pull=None, end=None, pid=None, setpoint=None, velocity=None, t_end=None, times=None, samples=None, rtol=None, atol=None, loops=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn dynamics<'py>(
     py: Python<'py>,
     model: Option<&Bound<'py, PyAny>>,
-    mass: f64,
-    scenario: Option<&str>,
+    scenario: Option<&Bound<'py, PyAny>>,
+    mass: Option<&Bound<'py, PyAny>>,
+    damping: Option<&Bound<'py, PyAny>>,
     force: Option<&Bound<'py, PyAny>>,
-    force_rate: Option<f64>,
-    spring: Option<f64>,
-    pull: Option<f64>,
+    force_rate: Option<&Bound<'py, PyAny>>,
+    spring: Option<&Bound<'py, PyAny>>,
+    pull: Option<&Bound<'py, PyAny>>,
     end: Option<&Bound<'py, PyAny>>,
-    damping: f64,
-    pid: Option<(f64, f64, f64)>,
+    pid: Option<&Bound<'py, PyAny>>,
     setpoint: Option<&Bound<'py, PyAny>>,
     velocity: Option<&Bound<'py, PyAny>>,
-    t_end: Option<f64>,
+    t_end: Option<&Bound<'py, PyAny>>,
     times: Option<&Bound<'py, PyAny>>,
-    samples: usize,
-    rtol: f64,
-    atol: Option<f64>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let lugre_model = match model.filter(|m| !m.is_none()) {
-        None if scenario.is_some() => {
-            lugre::LuGre::from_params(lugre::LuGreParams::canudas_de_wit_1995())
-                .map_err(value_error)?
-        }
-        None => lugre::LuGre::paper(),
-        Some(m) => lugre_of(m)?,
-    };
-    let mut watch = pull;
-    let (mut system, mut rate, t_end) = match scenario {
-        Some(name) => {
-            let sc = Scenario::from_name(name, force_rate, None).ok_or_else(|| {
-                PyValueError::new_err(format!(
-                    "unknown scenario '{name}' (scenarios: {})",
-                    Scenario::NAMES.join(", ")
-                ))
-            })?;
-            let setup = sc.setup(lugre_model, mass).map_err(value_error)?;
-            if setup.pull.is_some() {
-                // The scenario watches its own pull speed already.
-                watch = None;
+    samples: Option<&Bound<'py, PyAny>>,
+    rtol: Option<&Bound<'py, PyAny>>,
+    atol: Option<&Bound<'py, PyAny>>,
+    loops: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
+    let mut r = Request::new();
+    if let Some(name) = given(scenario) {
+        r = r.with_scenario(scenario_of(&name)?);
+    }
+    if let Some(m) = given(model) {
+        r = r.with_model(lugre_of(&m)?);
+    }
+    let number = |o: &Bound<'py, PyAny>, f: Field| real(o, f.name());
+    if let Some(m) = given(mass) {
+        r = r
+            .with_mass(number(&m, Field::Mass)?)
+            .map_err(request_error)?;
+    }
+    if let Some(c) = given(damping) {
+        r = r
+            .with_damping(number(&c, Field::Damping)?)
+            .map_err(request_error)?;
+    }
+    if let Some(rate) = given(force_rate) {
+        r = r
+            .with_force_rate(number(&rate, Field::ForceRate)?)
+            .map_err(request_error)?;
+    }
+    if let Some(f) = given(force) {
+        let (t, v) = pair(&f, Field::Force.name())?;
+        r = r.with_force(t, v).map_err(request_error)?;
+    }
+    if let Some(k) = given(spring) {
+        r = r
+            .with_spring(number(&k, Field::Spring)?)
+            .map_err(request_error)?;
+    }
+    if let Some(v) = given(pull) {
+        r = r
+            .with_pull(number(&v, Field::Pull)?)
+            .map_err(request_error)?;
+    }
+    if let Some(e) = given(end) {
+        let (t, y) = pair(&e, Field::End.name())?;
+        r = r.with_end(t, y).map_err(request_error)?;
+    }
+    if let Some(g) = given(pid) {
+        let [kp, ki, kv] = gains(&g)?;
+        r = r.with_pid(kp, ki, kv).map_err(request_error)?;
+    }
+    if let Some(s) = given(setpoint) {
+        r = match real(&s, Field::Setpoint.name()) {
+            Ok(x) => r.with_setpoint(x),
+            Err(_) => {
+                let (t, x) = pair(&s, Field::Setpoint.name())?;
+                r.with_setpoint_steps(t, x)
             }
-            (setup.system, setup.rate, t_end.or(Some(setup.t_end)))
         }
-        None => (
-            System::new(lugre_model, mass).map_err(value_error)?,
-            None,
-            t_end,
-        ),
-    };
-    let pulled = pull.is_some() || matches!(scenario, Some("stick-slip"));
-    if scenario.is_none() {
-        if let Some(r) = force_rate {
-            system = system.with_force(Profile::ramp(0.0, r).map_err(value_error)?);
-            rate = Some(r);
-        }
+        .map_err(request_error)?;
     }
-    if let Some(f) = force {
-        let (t, v) = pair(f, "force")?;
-        system = system.with_force(Profile::new("force", t, v).map_err(value_error)?);
+    if let Some(v) = given(velocity) {
+        let (t, v) = pair(&v, Field::Velocity.name())?;
+        r = r.with_velocity(t, v).map_err(request_error)?;
     }
-    if let Some(k) = spring {
-        let end = match (pull, end) {
-            (Some(_), Some(_)) => return Err(PyValueError::new_err("give pull or end, not both")),
-            (Some(v), None) => Profile::ramp(0.0, v).map_err(value_error)?,
-            (None, Some(e)) => {
-                let (t, y) = pair(e, "end")?;
-                Profile::new("end", t, y).map_err(value_error)?
-            }
-            (None, None) => {
-                return Err(PyValueError::new_err(
-                    "a spring needs pull (the free end's speed) or end ((t, y) arrays)",
-                ))
-            }
-        };
-        system = system.with_spring(k, end).map_err(value_error)?;
+    if let Some(t) = given(t_end) {
+        r = r
+            .with_t_end(number(&t, Field::TEnd)?)
+            .map_err(request_error)?;
     }
-    system = system.with_damping(damping).map_err(value_error)?;
-    if let Some((kp, ki, kv)) = pid {
-        let setpoint = match setpoint.filter(|s| !s.is_none()) {
-            None => Steps::constant(0.0),
-            Some(s) => match real(s, "setpoint") {
-                Ok(x) => Steps::constant(x),
-                Err(_) => {
-                    let (t, x) = pair(s, "setpoint")?;
-                    Steps::new(t, x)
-                }
-            },
-        }
-        .map_err(value_error)?;
-        system = system
-            .with_pid(Pid {
-                kp,
-                ki,
-                kv,
-                setpoint,
-            })
-            .map_err(value_error)?;
+    if let Some(t) = given(times) {
+        let t = floats(&t, "times")?.one_dimensional("times", &t)?;
+        r = r.with_times(t).map_err(request_error)?;
     }
-    if let Some(v) = velocity {
-        let (t, v) = pair(v, "velocity")?;
-        let profile = Profile::new("velocity", t, v).map_err(value_error)?;
-        system = system
-            .with_velocity(Velocity::Profile(profile))
-            .map_err(value_error)?;
+    if let Some(n) = given(samples) {
+        r = r
+            .with_samples(count(&n, Field::Samples.name())?)
+            .map_err(request_error)?;
     }
-    if let Some(v) = watch {
-        system = system.with_velocity_watch(v).map_err(value_error)?;
+    if let Some(x) = given(rtol) {
+        r = r
+            .with_rtol(number(&x, Field::Rtol)?)
+            .map_err(request_error)?;
     }
-    let t_end = t_end.ok_or_else(|| PyValueError::new_err("give t_end (the end of the run, s)"))?;
-    let tol = Tolerances::new(rtol, atol).map_err(value_error)?;
-    let times: Vec<f64> = match times.filter(|t| !t.is_none()) {
-        Some(t) => floats(t, "times")?.one_dimensional("times", t)?,
-        None => {
-            if samples < 2 {
-                return Err(PyValueError::new_err(format!(
-                    "samples must be at least 2, got {samples}"
-                )));
-            }
-            lugre::simulate::uniform_times(0.0, t_end, 1, samples - 1)
-        }
-    };
-    let (motion, breakaway) = py
-        .detach(|| {
-            let m = system.solve(t_end, &times, tol)?;
-            let b = match rate {
-                Some(_) => system.breakaway(t_end, tol)?,
-                None => None,
-            };
-            Ok::<_, lugre::DynamicsError>((m, b))
-        })
-        .map_err(value_error)?;
+    if let Some(x) = given(atol) {
+        r = r
+            .with_atol(number(&x, Field::Atol)?)
+            .map_err(request_error)?;
+    }
+    if let Some(l) = given(loops) {
+        let on = l.extract::<bool>().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "loops must be True or False, got {}",
+                type_name(&l)
+            ))
+        })?;
+        r = r.with_loops(on);
+    }
+    let plan = r.build().map_err(request_error)?;
+    let outcome = py.detach(|| plan.run()).map_err(value_error)?;
+    result(py, &plan, outcome)
+}
 
+/// A request's error with its fields spelled as keywords (a measured force is `force` here).
+fn request_error(e: lugre::DynamicsError) -> PyErr {
+    PyValueError::new_err(e.render(|f| match f {
+        Field::Input => Field::Force.name().to_string(),
+        other => other.name().to_string(),
+    }))
+}
+
+/// The scenario called `name`.
+fn scenario_of(name: &Bound<'_, PyAny>) -> PyResult<Scenario> {
+    let name: String = name.extract().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "scenario must be a string, got {}",
+            type_name(name)
+        ))
+    })?;
+    Scenario::from_name(&name, None, None).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown scenario '{name}' (scenarios: {})",
+            Scenario::NAMES.join(", ")
+        ))
+    })
+}
+
+/// `(Kp, Ki, Kv)`.
+fn gains(obj: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
+    let g = floats(obj, "pid")?.one_dimensional("pid", obj)?;
+    g.try_into().map_err(|g: Vec<f64>| {
+        PyValueError::new_err(format!(
+            "pid must be three gains (Kp, Ki, Kv), got {}",
+            g.len()
+        ))
+    })
+}
+
+/// The result as a `lugre.DynamicsResult` (a dict with `to_frame()`).
+fn result<'py>(py: Python<'py>, plan: &Plan, outcome: Outcome) -> PyResult<Bound<'py, PyAny>> {
     let d = PyDict::new(py);
+    let onsets = outcome.slip_onsets();
+    let Outcome {
+        motion,
+        breakaway,
+        loops,
+    } = outcome;
     let events = PyList::empty(py);
     for e in &motion.events {
         let ev = PyDict::new(py);
@@ -174,12 +212,6 @@ pub fn dynamics<'py>(
         ev.set_item("x", e.x)?;
         events.append(ev)?;
     }
-    let onsets: Vec<f64> = motion
-        .events
-        .iter()
-        .filter(|e| e.kind == lugre::dynamics::EventKind::VelocityUp)
-        .map(|e| e.t)
-        .collect();
     let s = motion.stats;
     let stats = PyDict::new(py);
     stats.set_item("steps", s.steps)?;
@@ -193,8 +225,7 @@ pub fn dynamics<'py>(
     energy.set_item("stored_start", e.stored_start)?;
     energy.set_item("stored_end", e.stored_end)?;
     energy.set_item("dissipated", e.dissipated)?;
-    d.set_item("energy", energy)?;
-    let lugre::dynamics::Motion {
+    let Motion {
         t,
         x,
         v,
@@ -203,14 +234,16 @@ pub fn dynamics<'py>(
         drive,
         ..
     } = motion;
-    d.set_item("t", vec_out(py, t))?;
-    d.set_item("x", vec_out(py, x))?;
-    d.set_item("v", vec_out(py, v))?;
-    d.set_item("z", vec_out(py, z))?;
-    d.set_item("friction", vec_out(py, friction))?;
-    d.set_item("drive", vec_out(py, drive))?;
+    for (key, column) in Motion::COLUMNS
+        .into_iter()
+        .zip([t, x, v, z, friction, drive])
+    {
+        d.set_item(key, vec_out(py, column))?;
+    }
     d.set_item("events", events)?;
     d.set_item("stats", stats)?;
+    d.set_item("energy", energy)?;
+    d.set_item("description", &plan.description)?;
     if let Some(b) = breakaway {
         let bd = PyDict::new(py);
         bd.set_item("t", b.t)?;
@@ -218,7 +251,7 @@ pub fn dynamics<'py>(
         bd.set_item("x", b.x)?;
         d.set_item("breakaway", bd)?;
     }
-    if pulled {
+    if plan.pull.is_some() {
         if onsets.len() >= 2 {
             d.set_item(
                 "period",
@@ -227,7 +260,23 @@ pub fn dynamics<'py>(
         }
         d.set_item("slip_onsets", vec_out(py, onsets))?;
     }
-    Ok(d)
+    if plan.loops {
+        let list = PyList::empty(py);
+        for l in &loops {
+            let ld = PyDict::new(py);
+            ld.set_item("t_start", l.t_start)?;
+            ld.set_item("t_turn", l.t_turn)?;
+            ld.set_item("t_close", l.t_close)?;
+            ld.set_item("turning_points", vec_out(py, l.turning_points.clone()))?;
+            ld.set_item("work", l.work)?;
+            ld.set_item("bristle_energy_change", l.bristle_energy_change)?;
+            ld.set_item("dissipation", l.dissipation)?;
+            ld.set_item("rate_independent_work", l.rate_independent_work)?;
+            list.append(ld)?;
+        }
+        d.set_item("loops", list)?;
+    }
+    py.import("lugre")?.getattr("DynamicsResult")?.call1((d,))
 }
 
 /// `(t, values)`: two arrays of equal length.

@@ -39,5 +39,10 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(chunk::chunk_history_energy, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(dynamics::dynamics, m)?)?;
+    m.add("DYNAMICS_COLUMNS", lugre::dynamics::Motion::COLUMNS)?;
+    m.add(
+        "DYNAMICS_FIELDS",
+        lugre::dynamics::Field::ALL.map(|f| f.name()),
+    )?;
     Ok(())
 }

@@ -172,7 +172,7 @@ impl PyLuGre {
     /// y (the friction force y_gamma). Invalid arguments raise ValueError (with the message
     /// of `lugre simulate`) or TypeError.
     #[pyo3(
-        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None),
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None, speed=None),
         text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
     )]
     #[allow(clippy::too_many_arguments)]
@@ -190,6 +190,7 @@ impl PyLuGre {
         samples_per_period: Option<&Bound<'py, PyAny>>,
         tol: Option<&Bound<'py, PyAny>>,
         interpolate: Option<&Bound<'py, PyAny>>,
+        speed: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let args = SimulateArgs {
             turning_points,
@@ -203,6 +204,7 @@ impl PyLuGre {
             samples_per_period,
             tol,
             interpolate,
+            speed,
         };
         simulate(py, &self.inner, args)
     }
@@ -325,7 +327,7 @@ impl PyDahl {
     /// The response to a slow input (paper eq. 5) of the equivalent LuGre model (see
     /// LuGre.simulate): a dict of float64 arrays t, u, z, dz, y.
     #[pyo3(
-        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None),
+        signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None, speed=None),
         text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
     )]
     #[allow(clippy::too_many_arguments)]
@@ -343,6 +345,7 @@ impl PyDahl {
         samples_per_period: Option<&Bound<'py, PyAny>>,
         tol: Option<&Bound<'py, PyAny>>,
         interpolate: Option<&Bound<'py, PyAny>>,
+        speed: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let args = SimulateArgs {
             turning_points,
@@ -356,6 +359,7 @@ impl PyDahl {
             samples_per_period,
             tol,
             interpolate,
+            speed,
         };
         simulate(py, &self.inner.to_lugre(), args)
     }

@@ -22,6 +22,8 @@ pub struct SimulateArgs<'a, 'py> {
     pub tol: Option<&'a Bound<'py, PyAny>>,
     /// "linear" (default) or "cubic": how samples `t, u` are read between them.
     pub interpolate: Option<&'a Bound<'py, PyAny>>,
+    /// The constant speed of the turning points (default [`Request::DEFAULT_SPEED`]).
+    pub speed: Option<&'a Bound<'py, PyAny>>,
 }
 
 fn given<'a, 'py>(o: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
@@ -100,9 +102,18 @@ pub fn simulate<'py>(
         let values = one_dimensional(tp, "turning_points")?;
         let tp = lugre::TurningPoints::new(&values)
             .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
+        let speed = match given(args.speed) {
+            Some(v) => real(v, "speed")?,
+            None => Request::DEFAULT_SPEED,
+        };
         Drive::TurningPoints(
-            lugre::PiecewiseLinear::from_turning_points(&tp, 1.0).map_err(value_error)?,
+            lugre::PiecewiseLinear::from_turning_points(&tp, speed)
+                .map_err(|e| PyValueError::new_err(format!("speed: {e}")))?,
         )
+    } else if given(args.speed).is_some() {
+        return Err(PyValueError::new_err(
+            "speed is the turning points' speed: the other inputs carry their own times",
+        ));
     } else if let Some(sine) = given(args.sine) {
         Drive::Sine(sine_arg(sine)?)
     } else {

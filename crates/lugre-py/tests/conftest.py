@@ -35,3 +35,27 @@ def assert_gil_released():
         assert gaps.max() < 0.6 * duration[0], (gaps.max(), duration[0])
 
     return check
+
+
+@pytest.fixture(scope="session")
+def lugre_cli():
+    """`lugre_cli(args)` runs the `lugre` command built from this checkout (the newest of the
+    debug and release builds: scripts/test.sh runs the Rust tests, which build it, first) and
+    returns its JSON output: for checks that Python and the command line give the same answer."""
+    import json
+    import os
+    import pathlib
+    import subprocess
+
+    root = pathlib.Path(__file__).resolve().parents[3]
+    target = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", root / "target"))
+    builds = [p for p in (target / "debug" / "lugre", target / "release" / "lugre") if p.exists()]
+    if not builds:
+        pytest.fail(f"no lugre binary under {target}: run `cargo build -p lugre-cli` first")
+    exe = max(builds, key=lambda p: p.stat().st_mtime)
+
+    def run(args):
+        out = subprocess.run([str(exe), *args], capture_output=True, text=True, check=True)
+        return json.loads(out.stdout)
+
+    return run

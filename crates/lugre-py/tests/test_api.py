@@ -130,6 +130,8 @@ def test_type_stubs_are_shipped():
     for name in lugre.__all__:
         if name[0].islower() and name != "__version__":  # functions
             assert f"def {name}(" in stub, name
+        elif name.isupper():  # constants
+            assert f"\n{name}: " in stub, name
         elif name != "__version__":
             assert f"class {name}" in stub, name
     assert stub.count("def simulate(") == 2
@@ -155,3 +157,44 @@ def _env():
     import os
 
     return {k: v for k, v in os.environ.items()}
+
+
+def _stub_functions():
+    import ast
+    import importlib.resources
+
+    tree = ast.parse(importlib.resources.files("lugre").joinpath("__init__.pyi").read_text())
+    return {node.name: node for node in tree.body if isinstance(node, ast.FunctionDef)}
+
+
+def _stub_parameters(node):
+    a = node.args
+    return [p.arg for p in a.posonlyargs + a.args], [p.arg for p in a.kwonlyargs]
+
+
+def test_the_stubs_match_the_signatures():
+    """Every module-level function's stub has the compiled function's parameters, positional
+    and keyword-only alike (a keyword added to one and not the other fails here)."""
+    stubs = _stub_functions()
+    checked = 0
+    for name, node in stubs.items():
+        func = getattr(lugre, name, None)
+        if func is None or not callable(func):
+            continue
+        try:
+            sig = inspect.signature(func)
+        except (TypeError, ValueError):
+            continue
+        positional = [p.name for p in sig.parameters.values() if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+        keyword = [p.name for p in sig.parameters.values() if p.kind == p.KEYWORD_ONLY]
+        assert _stub_parameters(node) == (positional, keyword), name
+        checked += 1
+    assert checked >= 3, checked
+
+
+def test_dynamics_takes_the_core_request_fields():
+    """The keywords of lugre.dynamics are the core request's fields (lugre::dynamics::Field):
+    a field added to the core without a keyword fails here. `input` (a measured force file) is
+    the command line's; Python takes the arrays as `force`."""
+    sig = inspect.signature(lugre.dynamics)
+    assert set(sig.parameters) == set(lugre.DYNAMICS_FIELDS) - {"input"}

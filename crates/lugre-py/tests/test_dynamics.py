@@ -53,18 +53,28 @@ def test_frictional_lag_from_a_velocity_profile():
     assert abs(r["friction"][-1] - (g + 0.4 * 1.5e-3)) < 1e-9
 
 
+TABLE1 = dict(sigma0=1e5, sigma1=math.sqrt(1e5), sigma2=0.4, fc=1, fs=1.5, vs=1e-3, beta=2)
+
+
 @pytest.mark.parametrize(
     "kwargs, message",
     [
         (dict(scenario="nope"), "unknown scenario"),
-        (dict(scenario="pid", mass=0), "the mass must be a finite number > 0"),
-        (dict(scenario="pid", rtol=2), "rtol"),
-        (dict(force_rate=1.0), "t_end"),
-        (dict(spring=2.0, t_end=1.0), "pull"),
-        (dict(scenario="pid", damping=-1), "the damping"),
-        (dict(force=([0, 1, 1], [0, 1, 2]), t_end=2.0), "strictly increasing"),
-        (dict(scenario="pid", times=[1.0, 200.0]), "outside the run"),
-        (dict(scenario="pid", samples=1), "samples"),
+        (dict(scenario="pid", mass=0), "mass must be a finite number > 0, got 0"),
+        (dict(scenario="pid", rtol=2), "rtol must be a number in \\(0, 1\\), got 2"),
+        (dict(force_rate=1.0), "name the friction model"),
+        (dict(force_rate=1.0, model=lugre.LuGre(**TABLE1)), "give t_end"),
+        (dict(spring=2.0, t_end=1.0, model=lugre.LuGre(**TABLE1)), "spring needs pull or end"),
+        (dict(scenario="pid", damping=-1), "damping must be a finite number >= 0, got -1"),
+        (dict(force=([0, 1, 1], [0, 1, 2]), t_end=2.0, scenario="pid"), "force: times must be strictly increasing"),
+        (dict(scenario="pid", times=[1.0, 200.0], t_end=100.0), "outside the run"),
+        (dict(scenario="pid", samples=1), "samples must be a whole number from 2 to 10000000, got 1"),
+        (dict(scenario="pid", samples=10**12), "samples must be a whole number from 2 to 10000000"),
+        (dict(scenario="pid", samples=2**64 - 1), "samples must be a whole number from 2 to 10000000"),
+        (dict(scenario="pid", samples=-1), "samples must be >= 0, got -1"),
+        (dict(scenario="presliding", setpoint=2.0), "setpoint needs pid"),
+        (dict(scenario="pid", force_rate=1.0, force=([0], [1])), "give force_rate or force, not both"),
+        (dict(scenario="lag", velocity=([0], [1e-3]), spring=1.0, pull=1.0), "give spring or velocity, not both"),
     ],
 )
 def test_bad_input_raises_value_error(kwargs, message):
@@ -75,3 +85,55 @@ def test_bad_input_raises_value_error(kwargs, message):
 def test_wrong_types_raise_type_error():
     with pytest.raises(TypeError):
         lugre.dynamics("lugre", scenario="pid")
+    with pytest.raises(TypeError, match="t_end must be a real number, got str"):
+        lugre.dynamics(scenario="pid", t_end="1")
+    with pytest.raises(TypeError, match="samples must be an integer, got float"):
+        lugre.dynamics(scenario="pid", samples=10.0)
+    with pytest.raises(TypeError, match="loops must be True or False"):
+        lugre.dynamics(scenario="pid", loops="yes")
+
+
+def test_keywords_on_a_scenario_replace_its_fields():
+    # New gains on the PID experiment keep its set point, 1 m (it was dropped to 0).
+    r = lugre.dynamics(scenario="pid", pid=(3, 8, 6), t_end=40.0, samples=3)
+    assert abs(r["x"][-1] - 1.0) < 0.15
+    # A set point on top replaces the scenario's (it was ignored).
+    r = lugre.dynamics(scenario="pid", setpoint=2.0, t_end=60.0, samples=3)
+    assert abs(r["x"][-1] - 2.0) < 0.15
+    assert "replaced" in r["description"]
+
+
+def test_the_same_answer_as_the_command_line(lugre_cli):
+    r = lugre.dynamics(scenario="pid", pid=(3, 8, 6), t_end=20.0, samples=11)
+    j = lugre_cli(["dynamics", "--scenario", "pid", "--pid", "3,8,6", "--t-end", "20", "--samples", "11", "--json"])
+    for key in lugre.DYNAMICS_COLUMNS:
+        assert list(r[key]) == j[key], key
+    assert r["energy"] == j["energy"]
+
+
+def test_loops_a_frame_and_pickling():
+    import pickle
+
+    r = lugre.dynamics(scenario="presliding", samples=101)
+    assert len(r["loops"]) == 1 and r["loops"][0]["dissipation"] > 0
+    assert "loops" not in lugre.dynamics(scenario="presliding", samples=11, loops=False)
+    assert lugre.dynamics(scenario="stick-slip", samples=11, loops=True)["loops"] == []
+    back = pickle.loads(pickle.dumps(r))
+    assert isinstance(back, lugre.DynamicsResult)
+    np.testing.assert_array_equal(back["x"], r["x"])
+    cols = r.columns()
+    assert list(cols) == list(lugre.DYNAMICS_COLUMNS) == ["t", "x", "v", "z", "friction", "drive"]
+    pd = pytest.importorskip("pandas")
+    frame = r.to_frame()
+    assert isinstance(frame, pd.DataFrame) and frame.shape == (101, 6)
+    np.testing.assert_array_equal(frame["friction"].to_numpy(), r["friction"])
+
+
+def test_a_prescribed_velocity_reports_its_drive():
+    # The drive is the force M v' + F that makes the mass follow the velocity (it was 0).
+    r = lugre.dynamics(scenario="lag", samples=51, mass=2.0)
+    w, t = 10.0, r["t"]
+    dv = -1e-3 * w * np.sin(w * t)
+    np.testing.assert_allclose(r["drive"], 2.0 * dv + r["friction"], rtol=1e-12, atol=1e-15)
+    e = r["energy"]
+    assert abs(e["input"] - (e["stored_end"] - e["stored_start"]) - e["dissipated"]) < 1e-9 * e["input"]

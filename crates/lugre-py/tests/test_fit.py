@@ -326,7 +326,7 @@ def test_bad_data():
         ((u, f), dict(t=np.arange(19.0)), "the data columns have different lengths: t has 19 values, u has 20"),
         ((u, f), dict(t=np.r_[0.0, 2.0, 1.0, np.arange(3.0, 20.0)]), "times must be strictly increasing: t[2] = 1 after t[1] = 2"),
         ((u, f), dict(t=np.r_[np.arange(19.0), math.nan]), "t[19] must be a finite number, got NaN"),
-        ((u, f), dict(t=np.arange(20.0), kind="full", starts=0), "the number of starts must be at least 1, got 0"),
+        ((u, f), dict(t=np.arange(20.0), kind="full", starts=0), "the number of starts must be from 1 to 64, got 0"),
         ((u, f), dict(t=np.arange(20.0), kind="full", x0=math.inf), "x0 must be a finite number, got inf"),
         (
             (u, f),

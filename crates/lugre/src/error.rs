@@ -31,6 +31,93 @@ fn rms_text(rms: f64) -> String {
     }
 }
 
+/// A field of a dynamics request (`lugre::dynamics::Request`), as the user gives it: what
+/// its errors name, each front end spelling it its own way ([`DynamicsError::render`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Field {
+    Scenario,
+    Model,
+    Mass,
+    Damping,
+    Force,
+    ForceRate,
+    Input,
+    Spring,
+    Pull,
+    End,
+    Pid,
+    Setpoint,
+    Velocity,
+    TEnd,
+    Times,
+    Samples,
+    Rtol,
+    Atol,
+    Loops,
+}
+
+impl Field {
+    /// Every field, in the order of the table in the module docs.
+    pub const ALL: [Field; 19] = [
+        Field::Scenario,
+        Field::Model,
+        Field::Mass,
+        Field::Damping,
+        Field::Force,
+        Field::ForceRate,
+        Field::Input,
+        Field::Spring,
+        Field::Pull,
+        Field::End,
+        Field::Pid,
+        Field::Setpoint,
+        Field::Velocity,
+        Field::TEnd,
+        Field::Times,
+        Field::Samples,
+        Field::Rtol,
+        Field::Atol,
+        Field::Loops,
+    ];
+
+    /// The field called `name` ([`Self::name`]).
+    pub fn from_name(name: &str) -> Option<Field> {
+        Self::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The field's name: the Python keyword and the MEX struct field.
+    pub fn name(self) -> &'static str {
+        match self {
+            Field::Scenario => "scenario",
+            Field::Model => "model",
+            Field::Mass => "mass",
+            Field::Damping => "damping",
+            Field::Force => "force",
+            Field::ForceRate => "force_rate",
+            Field::Input => "input",
+            Field::Spring => "spring",
+            Field::Pull => "pull",
+            Field::End => "end",
+            Field::Pid => "pid",
+            Field::Setpoint => "setpoint",
+            Field::Velocity => "velocity",
+            Field::TEnd => "t_end",
+            Field::Times => "times",
+            Field::Samples => "samples",
+            Field::Rtol => "rtol",
+            Field::Atol => "atol",
+            Field::Loops => "loops",
+        }
+    }
+}
+
+impl std::fmt::Display for Field {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// An invalid model parameter.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -196,8 +283,8 @@ pub enum FitError {
     },
     #[error("the start value of {name} must be a finite number > 0, got {value}", value = num(*.value))]
     BadStart { name: &'static str, value: f64 },
-    #[error("the number of starts must be at least 1, got {starts}")]
-    BadStarts { starts: usize },
+    #[error("the number of starts must be from 1 to {most}, got {starts}")]
+    BadStarts { starts: usize, most: usize },
     #[error("x0 must be a finite number, got {value}", value = num(*.value))]
     BadX0 { value: f64 },
     #[error("{} cannot be identified from this data: {}", names_of(.parameters), reasons(.parameters))]
@@ -224,6 +311,14 @@ pub enum SimulateError {
     BadGamma { value: f64 },
     #[error("the number of periods must be at least 1, got {value}")]
     BadPeriods { value: u32 },
+    #[error("periods must be at most {limit} for a sine (the adaptive integrator steps through each), got {periods}")]
+    TooManyPeriods { periods: u32, limit: u64 },
+    #[error("periods must be at most {most} for this input ({per_period} pieces a period, at most {limit} pieces a run), got {periods}", most = .limit / .per_period.max(&1))]
+    TooMuchWork {
+        periods: u32,
+        per_period: u64,
+        limit: u64,
+    },
     #[error("the output samples per period must be at least 1, got 0")]
     BadSamplesPerPeriod,
     #[error("a sine has no knots: ask for output times or samples per period")]
@@ -335,6 +430,115 @@ pub enum DynamicsError {
     Overflow { t: f64 },
     #[error("the integrator failed near t = {t}: {reason}", t = num(*.t))]
     Solver { t: f64, reason: String },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    Conflict {
+        first: Field,
+        second: Field,
+        why: &'static str,
+    },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    Needs {
+        field: Field,
+        /// One of these must be given too.
+        needs: &'static [Field],
+        why: &'static str,
+    },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    BadValue {
+        field: Field,
+        rule: &'static str,
+        value: f64,
+    },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    Count {
+        field: Field,
+        value: u64,
+        least: u64,
+        most: u64,
+    },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    NoModel,
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    NoDrive,
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    NoEnd { why: &'static str },
+    #[error(transparent)]
+    Model(#[from] ModelError),
+}
+
+impl DynamicsError {
+    /// The message with each request field spelled by `spell` (the command line's flags, the
+    /// Python keywords): one wording for every front end. Other errors: their message.
+    pub fn render(&self, spell: impl Fn(Field) -> String) -> String {
+        match self {
+            DynamicsError::Conflict { first, second, why } => format!(
+                "give {} or {}, not both: {why}",
+                spell(*first),
+                spell(*second)
+            ),
+            DynamicsError::Needs { field, needs, why } => format!(
+                "{} needs {} ({why})",
+                spell(*field),
+                needs.iter().map(|f| spell(*f)).collect::<Vec<_>>().join(" or ")
+            ),
+            DynamicsError::BadValue { field, rule, value } => {
+                format!("{} must be {rule}, got {}", spell(*field), num(*value))
+            }
+            DynamicsError::Count {
+                field,
+                value,
+                least,
+                most,
+            } => format!(
+                "{} must be a whole number from {least} to {most}, got {value}",
+                spell(*field)
+            ),
+            DynamicsError::NoModel => format!(
+                "name the friction model ({} or its parameters): forces of a physical system are not computed from the dimensionless defaults",
+                spell(Field::Model)
+            ),
+            DynamicsError::NoDrive => format!(
+                "no drive: give {}",
+                [
+                    Field::Scenario,
+                    Field::Force,
+                    Field::ForceRate,
+                    Field::Input,
+                    Field::Spring,
+                    Field::Pid,
+                    Field::Velocity
+                ]
+                .map(&spell)
+                .iter()
+                .fold(Vec::<&String>::new(), |mut seen, name| {
+                    // A front end may spell two fields alike (Python's `force` takes both a
+                    // profile and a measured history).
+                    if !seen.contains(&name) {
+                        seen.push(name);
+                    }
+                    seen
+                })
+                .iter()
+                .map(|s| s.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+            ),
+            DynamicsError::NoEnd { why } => {
+                format!("give {} (the end of the run, s): {why}", spell(Field::TEnd))
+            }
+            // A profile of a request is named by its field.
+            DynamicsError::BadProfile { what, .. }
+            | DynamicsError::ProfileNotFinite { what, .. }
+            | DynamicsError::ProfileTimes { what, .. } => {
+                let text = self.to_string();
+                match Field::from_name(what) {
+                    Some(field) => text.replacen(what, &spell(field), 1),
+                    None => text,
+                }
+            }
+            other => other.to_string(),
+        }
+    }
 }
 
 /// A parameter the data do not determine, and why ([`crate::fit`] module docs).

@@ -33,6 +33,8 @@ the estimates with standard errors, 95 % intervals and correlations, and the fit
 """
 
 from ._lugre import (
+    DYNAMICS_COLUMNS,
+    DYNAMICS_FIELDS,
     ChunkPlan,
     ChunkRows,
     ChunkSummary,
@@ -58,11 +60,14 @@ from ._lugre import (
 )
 
 __all__ = [
+    "DYNAMICS_COLUMNS",
+    "DYNAMICS_FIELDS",
     "ChunkPlan",
     "ChunkRows",
     "ChunkSummary",
     "Curve",
     "Dahl",
+    "DynamicsResult",
     "HysteresisLoop",
     "Loop",
     "LoopPoint",
@@ -81,3 +86,22 @@ __all__ = [
     "dynamics",
     "fit",
 ]
+
+
+class DynamicsResult(dict):
+    """What ``lugre.dynamics`` returns: a dict (``r["x"]``, ``r["events"]``, ...) whose sampled
+    columns ``t, x, v, z, friction, drive`` (all of one length) ``to_frame()`` gives as a
+    ``pandas.DataFrame``; the other keys are the run's events, statistics, energies and
+    headlines. Picklable like any dict."""
+
+    __slots__ = ()
+
+    def columns(self):
+        """The sampled columns, in the order of ``lugre dynamics --csv``, as a dict of arrays."""
+        return {key: self[key] for key in DYNAMICS_COLUMNS}
+
+    def to_frame(self):
+        """The sampled columns as a ``pandas.DataFrame`` (pandas is imported here, only)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.columns())

@@ -2,6 +2,7 @@
 
 from typing import (
     Any,
+    Dict,
     Iterable,
     Iterator,
     Literal,
@@ -81,6 +82,7 @@ class LuGre:
         samples_per_period: Optional[SupportsIndex] = None,
         tol: _Real = 1e-10,
         interpolate: Literal["linear", "cubic"] = "linear",
+        speed: Optional[_Real] = None,
     ) -> dict[str, _Floats]: ...
     def to_dict(self) -> dict[str, float]: ...
     def __eq__(self, other: object) -> bool: ...
@@ -115,6 +117,7 @@ class Dahl:
         samples_per_period: Optional[SupportsIndex] = None,
         tol: _Real = 1e-10,
         interpolate: Literal["linear", "cubic"] = "linear",
+        speed: Optional[_Real] = None,
     ) -> dict[str, _Floats]: ...
     def to_dict(self) -> dict[str, float]: ...
     def __eq__(self, other: object) -> bool: ...
@@ -370,45 +373,56 @@ class EnergyBalance(TypedDict):
     dissipated: float
 
 
-class DynamicsResult(TypedDict, total=False):
-    t: np.ndarray
-    x: np.ndarray
-    v: np.ndarray
-    z: np.ndarray
-    friction: np.ndarray
-    drive: np.ndarray
-    events: list[DynamicsEvent]
-    stats: DynamicsStats
-    energy: EnergyBalance
-    breakaway: Breakaway
-    slip_onsets: np.ndarray
-    period: float
+class FrictionLoop(TypedDict):
+    t_start: float
+    t_turn: float
+    t_close: float
+    turning_points: np.ndarray
+    work: float
+    bristle_energy_change: float
+    dissipation: float
+    rate_independent_work: float
+
+
+DYNAMICS_COLUMNS: Tuple[str, ...]
+DYNAMICS_FIELDS: Tuple[str, ...]
+
+
+class DynamicsResult(Dict[str, Any]):
+    """What ``dynamics`` returns: a dict with the keys t, x, v, z, friction, drive (arrays of
+    one length), events, stats, energy, description, and where they apply breakaway,
+    slip_onsets, period, loops."""
+
+    def columns(self) -> Dict[str, np.ndarray]: ...
+    def to_frame(self) -> Any: ...
 
 
 def dynamics(
     model: Optional[Union[LuGre, Dahl]] = None,
     *,
-    mass: float = 1.0,
     scenario: Optional[Literal["presliding", "breakaway", "stick-slip", "lag", "pid"]] = None,
+    mass: Optional[float] = None,
+    damping: Optional[float] = None,
     force: Optional[Tuple[_Reals, _Reals]] = None,
     force_rate: Optional[float] = None,
     spring: Optional[float] = None,
     pull: Optional[float] = None,
     end: Optional[Tuple[_Reals, _Reals]] = None,
-    damping: float = 0.0,
     pid: Optional[Tuple[float, float, float]] = None,
     setpoint: Optional[Union[_Real, Tuple[_Reals, _Reals]]] = None,
     velocity: Optional[Tuple[_Reals, _Reals]] = None,
     t_end: Optional[float] = None,
     times: Optional[_Reals] = None,
-    samples: int = 1001,
-    rtol: float = 1e-8,
+    samples: Optional[int] = None,
+    rtol: Optional[float] = None,
     atol: Optional[float] = None,
+    loops: Optional[bool] = None,
 ) -> DynamicsResult:
     """The motion of a mass with LuGre friction from rest, driven by a force, a spring, a PID
     controller or a prescribed velocity (``lugre dynamics``), with the sign changes of the
     velocity located as events; ``scenario`` runs the experiments of Canudas de Wit et al.
-    (1995)."""
+    (1995) as presets whose fields the other keywords replace. Defaults: the core request's
+    (mass 1 kg, 1001 samples, rtol 1e-8)."""
     ...
 
 # The chunked rainflow count (core lugre::cycles::chunk), the pieces lugre.dask schedules.

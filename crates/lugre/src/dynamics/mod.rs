@@ -38,11 +38,16 @@
 //! BENCHMARKS.md. Accuracy against an independent scipy reference: `tests/dynamics.rs`.
 
 mod integrator;
+mod loops;
 mod profile;
+mod request;
 mod scenario;
 mod solver;
 
+pub use crate::error::Field;
+pub use loops::{FrictionLoop, GATE as LOOP_GATE, LOOP_SAMPLES};
 pub use profile::{Profile, Steps};
+pub use request::{Outcome, Plan, Request};
 pub use scenario::{Scenario, Setup};
 
 pub use solver::{Breakaway, EnergyBalance, Event, EventKind, Motion, State, Stats, Tolerances};
@@ -179,7 +184,8 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         Ok(self)
     }
 
-    /// A prescribed velocity: the mass follows it (the forces are then only reported).
+    /// A prescribed velocity: the mass follows it (the forces are then only reported, the
+    /// drive as the force `M v' + F` that makes the mass follow it).
     pub fn with_velocity(mut self, velocity: Velocity) -> Result<Self, DynamicsError> {
         if let Velocity::Harmonic { mean, amplitude, w } = velocity {
             for (name, value) in [
@@ -253,6 +259,16 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         f
     }
 
+    /// The force that drives the mass at `t` in state `(x, v, q)` with the friction
+    /// `friction`: [`Self::drive_force`], or with a prescribed velocity the force that makes
+    /// the mass follow it, `M v' + F`.
+    pub(crate) fn applied(&self, t: f64, x: f64, v: f64, q: f64, friction: f64) -> f64 {
+        match &self.velocity {
+            Some(velocity) => self.mass * velocity.at(t).1 + friction,
+            None => self.drive_force(t, x, v, q),
+        }
+    }
+
     /// `v(0)`: the prescribed velocity's, else at rest.
     pub(crate) fn initial_velocity(&self) -> f64 {
         self.velocity.as_ref().map_or(0.0, |v| v.at(0.0).0)
@@ -278,16 +294,16 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     pub(crate) fn power(&self, t: f64, y: &[f64; 4], s: f64) -> [f64; 2] {
         let m = &self.model;
         let [x, state_v, z, q] = *y;
-        let v = match &self.velocity {
-            Some(velocity) => velocity.at(t).0,
-            None => state_v,
+        let (v, dv) = match &self.velocity {
+            Some(velocity) => velocity.at(t),
+            None => (state_v, 0.0),
         };
         let (friction, dz) = self.friction(v, z, s);
         let speed = if s == 0.0 { v.abs() } else { s * v };
         let dissipated_friction =
             m.sigma0() * m.sigma0() * speed * z * z / m.g(v) + m.sigma1() * dz * v + m.f(v) * v;
         if self.velocity.is_some() {
-            return [friction * v, dissipated_friction];
+            return [(self.mass * dv + friction) * v, dissipated_friction];
         }
         let mut input = 0.0;
         if let Some(p) = &self.force {
@@ -304,12 +320,13 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     }
 
     /// The energy stored: kinetic, in the spring and in the bristles (a prescribed velocity:
-    /// the bristles only).
+    /// kinetic and the bristles).
     pub(crate) fn stored(&self, t: f64, y: &[f64; 4]) -> f64 {
         let [x, v, z, _] = *y;
         let bristles = 0.5 * self.model.sigma0() * z * z;
-        if self.velocity.is_some() {
-            return bristles;
+        if let Some(velocity) = &self.velocity {
+            let v = velocity.at(t).0;
+            return 0.5 * self.mass * v * v + bristles;
         }
         let spring = self
             .spring

@@ -63,6 +63,11 @@ impl Profile {
         (fs[k] + slope * (t - ts[k]), slope)
     }
 
+    /// The last point's time.
+    pub fn last_time(&self) -> f64 {
+        self.t[self.t.len() - 1]
+    }
+
     /// The times where the slope jumps (a ramp's points are not kinks).
     pub fn kinks(&self) -> &[f64] {
         if self.extend {
@@ -83,7 +88,7 @@ pub struct Steps {
 impl Steps {
     /// `x_0` from the start, then `x_i` from `t_i` (strictly increasing) on.
     pub fn new(t: Vec<f64>, x: Vec<f64>) -> Result<Self, DynamicsError> {
-        check_points("the set point", &t, &x)?;
+        check_points("setpoint", &t, &x)?;
         Ok(Self { t, x })
     }
 

@@ -123,12 +123,31 @@ pub struct Motion {
     pub z: Vec<f64>,
     /// The friction force `F` on the mass.
     pub friction: Vec<f64>,
-    /// The driving force `F_d` (just after a jump of the set point).
+    /// The driving force `F_d` (just after a jump of the set point); with a prescribed
+    /// velocity, the force that makes the mass follow it, `M v' + F`.
     pub drive: Vec<f64>,
     pub events: Vec<Event>,
     pub stats: Stats,
     /// The energy balance over the run.
     pub energy: EnergyBalance,
+}
+
+impl Motion {
+    /// The names of the sampled columns, in the order of the CSV files, the JSON and the
+    /// Python result: `t, x, v, z, friction, drive`.
+    pub const COLUMNS: [&'static str; 6] = ["t", "x", "v", "z", "friction", "drive"];
+
+    /// The sampled columns, in the order of [`Self::COLUMNS`].
+    pub fn columns(&self) -> [&[f64]; 6] {
+        [
+            &self.t,
+            &self.x,
+            &self.v,
+            &self.z,
+            &self.friction,
+            &self.drive,
+        ]
+    }
 }
 
 /// The energy balance over a run: what the drive put in equals the change of what is stored
@@ -137,7 +156,7 @@ pub struct Motion {
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct EnergyBalance {
     /// The work of the applied force, the controller and the spring's moving end (a prescribed
-    /// velocity: the work done against the friction).
+    /// velocity: the work of the force `M v' + F` that makes the mass follow it).
     pub input: f64,
     /// Kinetic + spring + bristle energy at the start and at the end.
     pub stored_start: f64,
@@ -819,8 +838,9 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         out.x.push(x);
         out.v.push(v);
         out.z.push(z);
-        out.friction.push(self.friction(v, z, s).0);
-        out.drive.push(self.drive_force(t, x, v, q));
+        let friction = self.friction(v, z, s).0;
+        out.friction.push(friction);
+        out.drive.push(self.applied(t, x, v, q, friction));
     }
 }
 

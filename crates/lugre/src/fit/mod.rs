@@ -205,6 +205,9 @@ impl std::fmt::Debug for FullOptions<'_> {
 impl<'p> FullOptions<'p> {
     /// Starts tried by default.
     pub const DEFAULT_STARTS: usize = 3;
+    /// The most starts a fit tries: past the table of seven scalings each round spreads
+    /// `sigma0` and `vs` by another factor of 4, and 64 starts reach factors of 4^10.
+    pub const MAX_STARTS: usize = 64;
 
     /// The initial bristle deflection `x(0)` (Dahl: `w(0) / rho`), not fitted (default 0).
     pub fn with_x0(mut self, x0: f64) -> Self {
@@ -424,8 +427,11 @@ pub fn fit_full(
     if !x0.is_finite() {
         return Err(FitError::BadX0 { value: x0 });
     }
-    if starts == 0 {
-        return Err(FitError::BadStarts { starts: 0 });
+    if starts == 0 || starts > FullOptions::MAX_STARTS {
+        return Err(FitError::BadStarts {
+            starts,
+            most: FullOptions::MAX_STARTS,
+        });
     }
     let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
     let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };

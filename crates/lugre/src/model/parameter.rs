@@ -51,6 +51,10 @@ impl Parameter {
     /// The Dahl parameters.
     pub const DAHL: [Parameter; 2] = [Parameter::Rho, Parameter::Fc];
 
+    /// The LuGre parameters of the rate-independent loop (eqs. 6-10: only `sigma0` and
+    /// `g(0) = Fs` matter there).
+    pub const LUGRE_RATE_INDEPENDENT: [Parameter; 2] = [Parameter::Sigma0, Parameter::Fs];
+
     /// The name used everywhere: the command line's flag (`--sigma0`), the Python keyword,
     /// the fit's parameter name and every message.
     pub const fn name(self) -> &'static str {
@@ -96,6 +100,14 @@ impl Parameter {
             Parameter::Fs => 2.0,
             _ => 1.0,
         }
+    }
+
+    /// Whether the default means "absent" (`sigma2 = 0`: no viscous friction), so that a model
+    /// of a physical system may leave the parameter unnamed. The other defaults are the
+    /// paper's dimensionless values: a force or an energy of a real system never comes from
+    /// them alone.
+    pub const fn default_is_absence(self) -> bool {
+        matches!(self, Parameter::Sigma2)
     }
 
     pub const fn domain(self) -> Domain {

@@ -73,8 +73,17 @@ pub struct Request {
 }
 
 impl Request {
+    /// The speed of turning points by default: 1, so that time is the normalized variable
+    /// `rho` (the paper's Examples 2-4). A physical model wants its own (`--speed`).
+    pub const DEFAULT_SPEED: f64 = 1.0;
     /// Output samples per period by default (turning points and sines).
     pub const DEFAULT_SAMPLES_PER_PERIOD: usize = 200;
+    /// The most pieces of a piecewise-linear input a run walks (periods times pieces per
+    /// period): about ten seconds of the exact solution on one core.
+    pub const MAX_PIECES: u64 = 1_000_000_000;
+    /// The most periods of a sine a run integrates (the adaptive integrator takes tens of
+    /// steps a period).
+    pub const MAX_SINE_PERIODS: u64 = 1_000_000;
 
     /// The defaults for `drive`.
     pub fn new(drive: Drive) -> Self {
@@ -190,6 +199,38 @@ impl Request {
         }
     }
 
+    /// Checks that the run is work a machine can do: a piecewise-linear input walks at most
+    /// [`Self::MAX_PIECES`] pieces (periods times pieces per period), a sine runs at most
+    /// [`Self::MAX_SINE_PERIODS`] periods. [`Self::run_on`] checks it first.
+    ///
+    /// # Errors
+    /// [`SimulateError::TooMuchWork`] and [`SimulateError::TooManyPeriods`] naming the periods
+    /// and the limit.
+    pub fn check_work(&self) -> Result<(), SimulateError> {
+        let periods = u64::from(self.periods);
+        let (pieces, limit) = match &self.drive {
+            Drive::TurningPoints(pl) | Drive::Samples(pl) => {
+                (pl.len().saturating_sub(1) as u64, Self::MAX_PIECES)
+            }
+            Drive::Smooth(s) => (s.refined().len().saturating_sub(1) as u64, Self::MAX_PIECES),
+            Drive::Sine(_) if periods > Self::MAX_SINE_PERIODS => {
+                return Err(SimulateError::TooManyPeriods {
+                    periods: self.periods,
+                    limit: Self::MAX_SINE_PERIODS,
+                })
+            }
+            Drive::Sine(_) => return Ok(()),
+        };
+        if periods.saturating_mul(pieces) > limit {
+            return Err(SimulateError::TooMuchWork {
+                periods: self.periods,
+                per_period: pieces,
+                limit,
+            });
+        }
+        Ok(())
+    }
+
     /// The simulator it runs on (`x0` checked against the model).
     pub fn simulator<'m, G: VelocityFn, F: VelocityFn>(
         &self,
@@ -213,6 +254,7 @@ impl Request {
         sim: &Simulator<'_, G, F>,
         progress: Option<&mut dyn FnMut(f64)>,
     ) -> Result<Trajectory, SimulateError> {
+        self.check_work()?;
         let mut none = |_: f64| {};
         let progress = progress.unwrap_or(&mut none);
         let mut out = Trajectory::default();

@@ -10,8 +10,10 @@
 //! `SPOOL_IN_MEMORY`), the second counts. Nothing reaches stdout before the input has been read
 //! once without error.
 //!
-//! Energies are computed with `--energy`, and whenever the model is named (`--x0`, `--model
-//! dahl`, or any model parameter): a model flag without energies would be silently ignored.
+//! Energies are computed with `--energy`, and whenever a model flag is given (`--x0`,
+//! `--preset`, `--model`, or any model parameter): a model flag without energies would be
+//! silently ignored. They come from a model the user named (a preset, or the parameters of the
+//! slow loop), never from the paper's dimensionless defaults alone.
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
@@ -20,7 +22,7 @@ use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter, Histogram
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use crate::args::{ModelArgs, ModelChoice, ModelKind, OutputArgs};
+use crate::args::{ModelArgs, ModelChoice, Needed, OutputArgs};
 use crate::fmt::num;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -85,8 +87,9 @@ pub(crate) struct CyclesArgs {
     )]
     pub(crate) gate: Option<f64>,
     /// Follow y* (eq. 6) along the history and report each full cycle's work, stored-energy
-    /// change, dissipation and closure gap (implied by --x0, --model dahl and any model
-    /// parameter; the model defaults to the paper's Examples 2-3).
+    /// change, dissipation and closure gap (implied by --x0, --preset, --model and any model
+    /// parameter). The model must be named: --preset canudas1995, or --sigma0 and --fs
+    /// (LuGre; only they act on the slow loop), or --model dahl --rho --fc.
     #[arg(long, help_heading = "Energy")]
     pub(crate) energy: bool,
     /// Initial bristle deflection x(0), with |sigma0 x0| <= g(0): y*(0) = sigma0 x0 (default
@@ -122,15 +125,7 @@ pub(crate) struct CyclesArgs {
 impl CyclesArgs {
     /// Whether the model is wanted (see the module docs).
     fn wants_energy(&self) -> bool {
-        let m = &self.model;
-        self.energy
-            || self.x0.is_some()
-            || m.model == ModelKind::Dahl
-            || [
-                m.sigma0, m.sigma1, m.sigma2, m.fc, m.fs, m.vs, m.beta, m.rho,
-            ]
-            .iter()
-            .any(Option::is_some)
+        self.energy || self.x0.is_some() || self.model.names_any()
     }
 }
 
@@ -264,7 +259,9 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
     // Validated here so that a bad flag is reported before any input is read.
     CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
     let energy = if args.wants_energy() {
+        // Values given are checked first, then that the model is named.
         let model = args.model.build()?;
+        args.model.check_named(Needed::RateIndependent)?;
         let x0 = args.x0.unwrap_or(0.0);
         EnergyCycleCounter::new(gate, model.rate_independent(), x0)
             .map_err(|e| anyhow!("--x0: {e}"))?;

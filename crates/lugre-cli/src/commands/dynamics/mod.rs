@@ -3,15 +3,12 @@
 //! as named scenarios. Everything is computed and checked before anything is written.
 
 use anyhow::{anyhow, bail, Result};
-use clap::{Args, ValueEnum};
-use lugre::dynamics::{
-    Breakaway, EventKind, Motion, Pid, Profile, Steps, System, Tolerances, Velocity,
-};
-use lugre::simulate::uniform_times;
-use lugre::LuGre;
+use clap::Args;
+use lugre::dynamics::{EventKind, Field, FrictionLoop, Motion, Outcome, Plan, Request, Scenario};
+use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
-use crate::args::{ModelArgs, OutputArgs, PlotArgs, Preset};
+use crate::args::{ModelArgs, Needed, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::csv::{Columns, NumberRows};
@@ -19,41 +16,40 @@ use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 
-mod loops;
-use loops::{friction_loops, FrictionLoop};
-
-/// Output samples over the run when neither `--times` nor `--samples` is given.
-const DEFAULT_SAMPLES: usize = 1001;
 /// Rows of the table printed (all of them are in --json / --csv).
 const TABLE_HEAD: usize = 12;
 
-/// The experiments of Canudas de Wit, Olsson, Åström, Lischinsky (IEEE TAC 40(3), 1995), with
-/// Table I and a 1 kg mass unless the flags say otherwise.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Scenario {
-    /// Fig. 2: pre-sliding displacement under a force ramped to +-95 % of Fs, with holds;
-    /// its friction-displacement loop.
-    #[value(alias = "pre-sliding")]
-    Presliding,
-    /// Fig. 4: break-away under F = r t (r from --force-rate, default 10 N/s).
-    Breakaway,
-    /// Fig. 6: stick-slip, a spring k = 2 N/m pulled at 0.1 m/s.
-    StickSlip,
-    /// Fig. 3: frictional lag under v = 1e-3 (cos w t + 1.5), w = 10 rad/s.
-    Lag,
-    /// Fig. 8: hunting under PID (Kp = 3, Ki = 4, Kv = 6) towards xd = 1.
-    Pid,
+/// `--scenario`'s values: the core's names of the 1995 experiments, each with its description.
+fn scenario_parser() -> impl clap::builder::TypedValueParser<Value = Scenario> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    let values = Scenario::NAMES.into_iter().filter_map(|name| {
+        let sc = Scenario::from_name(name, None, None)?;
+        let aliases = Scenario::ALIASES
+            .iter()
+            .filter(move |(_, to)| *to == name)
+            .map(|(from, _)| *from);
+        Some(
+            PossibleValue::new(name)
+                .help(sc.description())
+                .aliases(aliases),
+        )
+    });
+    PossibleValuesParser::new(values.collect::<Vec<_>>()).try_map(|name: String| {
+        Scenario::from_name(&name, None, None).ok_or_else(|| format!("unknown scenario {name}"))
+    })
 }
 
 #[derive(Args, Debug)]
-#[command(mut_arg("csv", |a| a.help("Write t,x,v,z,friction,drive to this CSV file")))]
+#[command(mut_arg("csv", |a| a.help("Write t,x,v,z,friction,drive to this CSV file (with a \
+prescribed velocity, drive is the force M v' + F that makes the mass follow it)")))]
 #[command(mut_arg("plot", |a| a.help("Draw x, v and the friction against t, and the friction \
 against x (SVG or PNG)")))]
 pub(crate) struct DynamicsArgs {
     #[command(flatten)]
     pub(crate) model: ModelArgs,
-    /// One of the 1995 experiments (Table I and a 1 kg mass unless given).
-    #[arg(long, value_enum, help_heading = "System")]
+    /// One of the 1995 experiments, a preset: Table I, a 1 kg mass, its drive and its end; every
+    /// flag given on top of it replaces that part (--pid 3,8,6 on pid keeps its set point).
+    #[arg(long, value_parser = scenario_parser(), help_heading = "System")]
     pub(crate) scenario: Option<Scenario>,
     /// Mass M > 0 [kg] (a rotational system: the inertia [kg m^2]).
     #[arg(long, allow_hyphen_values = true, help_heading = "System")]
@@ -133,7 +129,7 @@ pub(crate) struct DynamicsArgs {
         help_heading = "Run"
     )]
     pub(crate) times: Option<String>,
-    /// N >= 2 evenly spaced output times over [0, t_end] (default 1001).
+    /// N >= 2 evenly spaced output times over [0, t_end] (default 1001, at most 10^7).
     #[arg(long, value_parser = Whole(2), help_heading = "Run")]
     pub(crate) samples: Option<usize>,
     /// Report the friction-displacement loops of x(t): each closed loop (a rainflow cycle of
@@ -155,220 +151,200 @@ pub(crate) struct DynamicsArgs {
     pub(crate) plot: PlotArgs,
 }
 
-/// The request: the system, the run and what to report.
-struct Request {
-    system: System,
-    description: String,
-    t_end: f64,
-    times: Vec<f64>,
-    tol: Tolerances,
-    /// The force rate, when the drive is a ramp (the break-away is located).
-    rate: Option<f64>,
-    /// The pull speed, when a spring is pulled (slip onsets are its upward crossings).
-    pull: Option<f64>,
-    /// Whether the friction-displacement loops are reported.
-    loops: bool,
+/// A problem with the flags: the request's (its message spelled with the flags) or another.
+enum Bad {
+    Request(DynamicsError),
+    Other(anyhow::Error),
 }
 
-struct Outcome {
-    motion: Motion,
-    breakaway: Option<Breakaway>,
-    loops: Vec<FrictionLoop>,
+impl From<DynamicsError> for Bad {
+    fn from(e: DynamicsError) -> Self {
+        Bad::Request(e)
+    }
+}
+
+impl From<anyhow::Error> for Bad {
+    fn from(e: anyhow::Error) -> Self {
+        Bad::Other(e)
+    }
+}
+
+impl From<Bad> for anyhow::Error {
+    fn from(b: Bad) -> Self {
+        match b {
+            Bad::Request(e) => anyhow!(e.render(flag)),
+            Bad::Other(e) => e,
+        }
+    }
 }
 
 pub(crate) fn run(args: &DynamicsArgs) -> Result<()> {
-    let request = parse(args)?;
-    let outcome = compute(&request)?;
-    report(args, &request, &outcome)
-}
-
-fn parse(args: &DynamicsArgs) -> Result<Request> {
-    let scenario = args.scenario;
-    let mut model_args = args.model.clone();
-    if scenario.is_some() && model_args.preset.is_none() {
-        model_args.preset = Some(Preset::Canudas1995);
-    }
-    let model: LuGre = model_args.build()?.lugre();
-    let mass = args.mass.unwrap_or(1.0);
-    let mut description = Vec::new();
-    let mut t_end = args.t_end;
-    let mut pull = args.pull;
-    // The drive's force ramp, and whether it still has to be added to the system.
-    let (mut system, ramp) = match scenario {
-        Some(sc) => {
-            let core = match sc {
-                Scenario::Presliding => lugre::dynamics::Scenario::Presliding,
-                Scenario::Breakaway => lugre::dynamics::Scenario::Breakaway {
-                    rate: args.force_rate.unwrap_or(10.0),
-                },
-                Scenario::StickSlip => lugre::dynamics::Scenario::StickSlip,
-                Scenario::Lag => lugre::dynamics::Scenario::Lag { w: 10.0 },
-                Scenario::Pid => lugre::dynamics::Scenario::Pid,
-            };
-            let setup = core.setup(model, mass)?;
-            description.push(setup.description.to_string());
-            t_end = t_end.or(Some(setup.t_end));
-            pull = pull.or(setup.pull);
-            (setup.system, setup.rate.map(|r| (r, false)))
-        }
-        None => (
-            System::new(model, mass)?,
-            args.force_rate.map(|r| (r, true)),
-        ),
-    };
-    let rate = ramp.map(|(r, _)| r);
-    if let Some((r, true)) = ramp {
-        system = system.with_force(Profile::ramp(0.0, r)?);
-        description.push(format!("force ramp F = {} t N", sig(r, 6)));
-    }
-    if let Some(text) = &args.force_profile {
-        let (t, f) = pairs("--force-profile", text)?;
-        system = system.with_force(Profile::new("--force-profile", t, f)?);
-        description.push("applied force profile".into());
-    }
-    if let Some(path) = &args.input {
-        if args.force_profile.is_some() {
-            bail!("give --force-profile or --input, not both");
-        }
-        let options = args.data.options(&["F"])?;
-        let table = crate::io::csv::read_table_with(path, Columns::Named("F"), options)?;
-        let Some(t) = table.t else {
-            bail!(
-                "{}: needs a column t (the times of the force F)",
-                path.display()
-            );
-        };
-        let f = table.columns.into_iter().next().unwrap_or_default();
-        // A measured history runs to its last sample unless told otherwise.
-        t_end = t_end.or(t.last().copied());
-        system = system.with_force(Profile::new("--input", t, f)?);
-        description.push(format!("applied force from {}", path.display()));
-    }
-    if let Some(k) = args.spring {
-        let end = match (pull, &args.end_profile) {
-            (Some(_), Some(_)) => bail!("give --pull or --end-profile, not both"),
-            (Some(v), None) => Profile::ramp(0.0, v)?,
-            (None, Some(text)) => {
-                let (t, y) = pairs("--end-profile", text)?;
-                Profile::new("--end-profile", t, y)?
-            }
-            (None, None) => bail!("--spring needs --pull V or --end-profile T:Y,..."),
-        };
-        system = system.with_spring(k, end)?;
-        description.push(format!("spring k = {} N/m", sig(k, 6)));
-    } else if args.end_profile.is_some() || (args.pull.is_some() && scenario.is_none()) {
-        bail!("--pull and --end-profile move the free end of a --spring K");
-    }
-    if let Some(c) = args.damping {
-        system = system.with_damping(c)?;
-    }
-    if let Some(text) = &args.pid {
-        let g = parse_list("--pid", text)?;
-        if g.len() != 3 {
-            bail!("--pid takes 3 numbers KP,KI,KV, got {}", g.len());
-        }
-        let setpoint = match &args.setpoint {
-            None => Steps::constant(0.0)?,
-            Some(text) if !text.contains(':') => {
-                Steps::constant(parse_list("--setpoint", text)?[0])?
-            }
-            Some(text) => {
-                let (t, x) = pairs("--setpoint", text)?;
-                Steps::new(t, x)?
-            }
-        };
-        system = system.with_pid(Pid {
-            kp: g[0],
-            ki: g[1],
-            kv: g[2],
-            setpoint,
-        })?;
-        description.push(format!("PID Kp = {}, Ki = {}, Kv = {}", g[0], g[1], g[2]));
-    } else if args.setpoint.is_some() {
-        bail!("--setpoint is the set point of a --pid controller");
-    }
-    if let Some(text) = &args.velocity_profile {
-        let (t, v) = pairs("--velocity-profile", text)?;
-        system =
-            system.with_velocity(Velocity::Profile(Profile::new("--velocity-profile", t, v)?))?;
-        description.push("prescribed velocity profile".into());
-    }
-    if let (Some(v), None) = (pull, scenario) {
-        system = system.with_velocity_watch(v)?;
-    }
-    if description.is_empty() {
-        bail!("no drive: give --scenario, --force-profile, --input, --force-rate, --spring with --pull, --pid or --velocity-profile");
-    }
-    let t_end = t_end.ok_or_else(|| anyhow!("give --t-end T (the end of the run, s)"))?;
-    if !(t_end.is_finite() && t_end > 0.0) {
-        bail!("--t-end must be a finite number > 0, got {}", sig(t_end, 6));
-    }
-    let tol = Tolerances::new(args.rtol.unwrap_or(Tolerances::DEFAULT_RTOL), args.atol)?;
-    if args.times.is_some() && args.samples.is_some() {
-        bail!("give --times or --samples, not both");
-    }
-    let times = match (&args.times, args.samples) {
-        (Some(text), _) => parse_list("--times", text)?,
-        (None, n) => uniform_times(0.0, t_end, 1, n.unwrap_or(DEFAULT_SAMPLES) - 1),
-    };
+    let plan = parse(args).and_then(|r| Ok(r.build()?))?;
     if let Some(path) = &args.plot.path {
         crate::plot::check_path(path)?;
     }
-    Ok(Request {
-        system,
-        description: description.join("; "),
-        t_end,
-        times,
-        tol,
-        rate,
-        pull,
-        loops: args.loops || scenario == Some(Scenario::Presliding),
-    })
+    let outcome = plan.run().map_err(|e| match e {
+        lugre::Error::Dynamics(d) => anyhow!(d.render(flag)),
+        other => anyhow!(other),
+    })?;
+    report(args, &plan, &outcome)
+}
+
+/// The command line's spelling of a request field.
+pub(crate) fn flag(field: Field) -> String {
+    let name = match field {
+        Field::Model => "preset",
+        Field::Force => "force-profile",
+        Field::End => "end-profile",
+        Field::Velocity => "velocity-profile",
+        other => return format!("--{}", other.name().replace('_', "-")),
+    };
+    format!("--{name}")
+}
+
+/// The flags as a core request: every flag given sets its field, over the scenario's.
+fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
+    let mut r = Request::new();
+    if let Some(sc) = args.scenario {
+        r = r.with_scenario(sc);
+    }
+    if let Some(model) = named_model(&args.model)? {
+        r = r.with_model(model);
+    }
+    if let Some(m) = args.mass {
+        r = r.with_mass(m)?;
+    }
+    if let Some(c) = args.damping {
+        r = r.with_damping(c)?;
+    }
+    if let Some(rate) = args.force_rate {
+        r = r.with_force_rate(rate)?;
+    }
+    if let Some(text) = &args.force_profile {
+        let (t, f) = pairs(Field::Force, text)?;
+        r = r.with_force(t, f)?;
+    }
+    if let Some(path) = &args.input {
+        let (t, f) = read_force(args, path)?;
+        r = r.with_input(&path.display().to_string(), t, f)?;
+    }
+    if let Some(k) = args.spring {
+        r = r.with_spring(k)?;
+    }
+    if let Some(v) = args.pull {
+        r = r.with_pull(v)?;
+    }
+    if let Some(text) = &args.end_profile {
+        let (t, y) = pairs(Field::End, text)?;
+        r = r.with_end(t, y)?;
+    }
+    if let Some(text) = &args.pid {
+        let g = numbers(Field::Pid, text)?;
+        let [kp, ki, kv] = g[..] else {
+            return Err(anyhow!("--pid takes 3 numbers KP,KI,KV, got {}", g.len()).into());
+        };
+        r = r.with_pid(kp, ki, kv)?;
+    }
+    if let Some(text) = &args.setpoint {
+        r = if text.contains(':') {
+            let (t, x) = pairs(Field::Setpoint, text)?;
+            r.with_setpoint_steps(t, x)?
+        } else {
+            r.with_setpoint(one(Field::Setpoint, text)?)?
+        };
+    }
+    if let Some(text) = &args.velocity_profile {
+        let (t, v) = pairs(Field::Velocity, text)?;
+        r = r.with_velocity(t, v)?;
+    }
+    if let Some(t) = args.t_end {
+        r = r.with_t_end(t)?;
+    }
+    if let Some(text) = &args.times {
+        r = r.with_times(numbers(Field::Times, text)?)?;
+    }
+    if let Some(n) = args.samples {
+        r = r.with_samples(n as u64)?;
+    }
+    if let Some(rtol) = args.rtol {
+        r = r.with_rtol(rtol)?;
+    }
+    if let Some(atol) = args.atol {
+        r = r.with_atol(atol)?;
+    }
+    if args.loops {
+        r = r.with_loops(true);
+    }
+    Ok(r)
+}
+
+/// The model the flags name (a preset, or every parameter whose default is not neutral), or
+/// none (a scenario's Table I then, else the request's error); flags that name only part of a
+/// model are an error naming what is missing.
+fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
+    if !m.names_any() {
+        return Ok(None);
+    }
+    // Values given are checked first, then that the model is named.
+    let model = m.build()?.lugre();
+    m.check_named(Needed::All)?;
+    Ok(Some(model))
+}
+
+/// The times and forces of the `--input` file.
+fn read_force(args: &DynamicsArgs, path: &std::path::Path) -> Result<(Vec<f64>, Vec<f64>)> {
+    let options = args.data.options(&["F"])?;
+    let table = crate::io::csv::read_table_with(path, Columns::Named("F"), options)?;
+    let Some(t) = table.t else {
+        bail!(
+            "{}: needs a column t (the times of the force F)",
+            path.display()
+        );
+    };
+    let f = table.columns.into_iter().next().unwrap_or_default();
+    Ok((t, f))
+}
+
+/// The numbers of a list flag.
+fn numbers(field: Field, text: &str) -> Result<Vec<f64>> {
+    parse_list(&flag(field), text)
+}
+
+/// The one number of a flag that takes one.
+fn one(field: Field, text: &str) -> Result<f64> {
+    match numbers(field, text)?[..] {
+        [x] => Ok(x),
+        ref xs => bail!(
+            "{} takes one number (or T:VALUE,... steps), got {}",
+            flag(field),
+            xs.len()
+        ),
+    }
 }
 
 /// `T:V,T:V,...` as two columns.
-fn pairs(flag: &str, text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
+fn pairs(field: Field, text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     let mut t = Vec::new();
     let mut v = Vec::new();
     for (i, item) in text.split(',').enumerate() {
         let Some((a, b)) = item.split_once(':') else {
-            bail!("{flag}: item {} is not T:VALUE", i + 1);
+            bail!("{}: item {} is not T:VALUE", flag(field), i + 1);
         };
-        t.push(parse_list(flag, a.trim())?[0]);
-        v.push(parse_list(flag, b.trim())?[0]);
+        t.push(one(field, a.trim())?);
+        v.push(one(field, b.trim())?);
     }
     Ok((t, v))
 }
 
-fn compute(r: &Request) -> Result<Outcome> {
-    let motion = r.system.solve(r.t_end, &r.times, r.tol)?;
-    let breakaway = match r.rate {
-        Some(_) => r.system.breakaway(r.t_end, r.tol)?,
-        None => None,
-    };
-    let loops = if r.loops {
-        friction_loops(&r.system, r.t_end, r.tol)?
-    } else {
-        Vec::new()
-    };
-    Ok(Outcome {
-        motion,
-        breakaway,
-        loops,
-    })
-}
-
-fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
+fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
     let m = &o.motion;
     if let Some(path) = &args.output.csv {
         write_atomic(path, |w| {
-            writeln!(w, "t,x,v,z,friction,drive")?;
+            writeln!(w, "{}", Motion::COLUMNS.join(","))?;
+            let columns = m.columns();
             let mut rows = NumberRows::new();
             for i in 0..m.t.len() {
-                rows.write(
-                    w,
-                    &[m.t[i], m.x[i], m.v[i], m.z[i], m.friction[i], m.drive[i]],
-                )?;
+                rows.write(w, &columns.map(|c| c[i]))?;
             }
             Ok(())
         })?;
@@ -403,7 +379,7 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
         )?;
     }
     if let Some(v) = r.pull {
-        let onsets: Vec<f64> = ups(m);
+        let onsets: Vec<f64> = o.slip_onsets();
         writeln!(
             w,
             "slip onsets (v rising through {} m/s, the spring force's peaks): {}",
@@ -467,28 +443,9 @@ fn report(args: &DynamicsArgs, r: &Request, o: &Outcome) -> Result<()> {
     Ok(())
 }
 
-/// The times of the upward crossings of the watched velocity.
-fn ups(m: &Motion) -> Vec<f64> {
-    m.events
-        .iter()
-        .filter(|e| e.kind == EventKind::VelocityUp)
-        .map(|e| e.t)
-        .collect()
-}
-
-fn write_json<W: Write>(mut j: JsonOut<W>, r: &Request, o: &Outcome) -> std::io::Result<()> {
+fn write_json<W: Write>(mut j: JsonOut<W>, r: &Plan, o: &Outcome) -> std::io::Result<()> {
     let m = &o.motion;
-    for (i, (key, xs)) in [
-        ("t", &m.t),
-        ("x", &m.x),
-        ("v", &m.v),
-        ("z", &m.z),
-        ("friction", &m.friction),
-        ("drive", &m.drive),
-    ]
-    .iter()
-    .enumerate()
-    {
+    for (i, (key, xs)) in Motion::COLUMNS.iter().zip(m.columns()).enumerate() {
         j.raw(if i == 0 { "{\"" } else { ",\"" })?;
         j.raw(key)?;
         j.raw("\":")?;
@@ -521,7 +478,7 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Request, o: &Outcome) -> std::io:
         j.raw("}")?;
     }
     if r.pull.is_some() {
-        let onsets = ups(m);
+        let onsets = o.slip_onsets();
         j.raw(",\"slip_onsets\":")?;
         j.array(&onsets)?;
         if onsets.len() >= 2 {
@@ -623,5 +580,28 @@ fn figure(m: &Motion) -> Panels {
         ],
         cols: 2,
         size: (1600, 1200),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every field of the core's request has its flag: a field added to the core without a
+    /// flag, or a flag renamed, fails here.
+    #[test]
+    fn every_request_field_has_its_flag() {
+        let cmd = DynamicsArgs::augment_args(clap::Command::new("dynamics"));
+        let longs: Vec<String> = cmd
+            .get_arguments()
+            .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+            .collect();
+        for field in Field::ALL {
+            assert!(
+                longs.contains(&flag(field)),
+                "{field}: no flag {}",
+                flag(field)
+            );
+        }
     }
 }

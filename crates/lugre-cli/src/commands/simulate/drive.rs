@@ -2,7 +2,7 @@
 //! input flags.
 
 use anyhow::{anyhow, bail, Result};
-use lugre::simulate::{Drive, SmoothSamples};
+use lugre::simulate::{Drive, Request, SmoothSamples};
 use lugre::{PiecewiseLinear, Sine};
 
 use super::SimulateArgs;
@@ -22,6 +22,9 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
     }
     if given.len() > 1 {
         bail!("give one input, not {}", given.join(" and "));
+    }
+    if args.speed.is_some() && (args.input.input.is_some() || args.sine.is_some()) {
+        bail!("--speed is the speed of --turning-points or --bimodal: --input and --sine carry their own times");
     }
     if let Some(text) = &args.sine {
         let v = parse_list("--sine", text)?;
@@ -60,10 +63,16 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
         bail!("no input: give --turning-points U0,U1,..., --bimodal UMIN1,UMIN2,UMAX1,UMAX2, --input FILE.csv (t,u) or --sine A,T[,PHASE[,OFFSET]]");
     }
     let tp = args.input.build()?.turning_points();
-    let pl = PiecewiseLinear::from_turning_points(&tp, 1.0)?;
+    let speed = args.speed.unwrap_or(Request::DEFAULT_SPEED);
+    let pl =
+        PiecewiseLinear::from_turning_points(&tp, speed).map_err(|e| anyhow!("--speed: {e}"))?;
     let values: Vec<String> = tp.values().iter().map(|&u| sig(u, 10)).collect();
+    let at = match args.speed {
+        None => "at unit speed (t = rho; --speed V for another)".to_string(),
+        Some(v) => format!("at speed {}", sig(v, 10)),
+    };
     let text = format!(
-        "turning points {} at unit speed (t = rho)",
+        "turning points {} {at}",
         if values.len() > 8 {
             format!("{},... ({} in all)", values[..8].join(","), values.len())
         } else {

@@ -62,6 +62,10 @@ pub(crate) struct SimulateArgs {
         help_heading = "Input"
     )]
     pub(crate) sine: Option<String>,
+    /// The constant speed of --turning-points or --bimodal [input units per s; m/s for a
+    /// physical model] (default 1: time is rho, the paper's normalized time).
+    #[arg(long, value_name = "V", value_parser = crate::numbers::Real, help_heading = "Input")]
+    pub(crate) speed: Option<f64>,
     /// Slowness gamma of eq. 5 (the input runs as u(t / gamma) in physical time): a number > 0
     /// (1 = the model as given, eq. 1) or 'inf' (the rate-independent limit y*_u, eq. 6).
     #[arg(

@@ -1,5 +1,5 @@
-//! The friction-displacement loops of a run (`lugre dynamics --loops`, on by default for the
-//! pre-sliding scenario): the displacement history `x(t)` is a history like any other, so its
+//! The friction-displacement loops of a run (`lugre dynamics --loops`, `loops` of a
+//! [`super::Request`], on by default for the pre-sliding scenario): the displacement history `x(t)` is a history like any other, so its
 //! rainflow cycles (`lugre cycles`) say where loops close, and the friction along them gives each
 //! loop's work.
 //!
@@ -16,20 +16,23 @@
 //! `lugre loop` on the same turning points (its work per period, all of it dissipated): for slow
 //! drives the two agree to `O(rate)` (`crates/lugre/tests/dynamics.rs` shows it).
 
-use anyhow::Result;
-use lugre::cycles::count_cycles;
-use lugre::dynamics::{Motion, System, Tolerances};
-use lugre::simulate::uniform_times;
-use lugre::{HysteresisLoop, TurningPoints};
+use super::{Motion, System, Tolerances};
+use crate::cycles::count_cycles;
+use crate::error::Error;
+use crate::input::TurningPoints;
+use crate::loops::HysteresisLoop;
+use crate::simulate::uniform_times;
+
+type Result<T> = std::result::Result<T, Error>;
 
 /// Outputs over the run from which the loops are taken.
-pub(super) const LOOP_SAMPLES: usize = 20_000;
+pub const LOOP_SAMPLES: usize = 20_000;
 /// Reversals of `x` smaller than this fraction of its span are ringing, not loops.
-pub(super) const GATE: f64 = 1e-3;
+pub const GATE: f64 = 1e-3;
 
 /// One closed friction-displacement loop.
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct FrictionLoop {
+pub struct FrictionLoop {
     /// Where the loop starts (a reversal of x), turns, and closes (x back at its start value).
     pub t_start: f64,
     pub t_turn: f64,
@@ -48,7 +51,7 @@ pub(super) struct FrictionLoop {
 
 /// The closed loops of the run over `[0, t_end]`: every full rainflow cycle of `x`, and the
 /// last open cycle when the run ends back at its start value (to the displacement tolerance).
-pub(super) fn friction_loops(
+pub(crate) fn friction_loops(
     system: &System,
     t_end: f64,
     tol: Tolerances,
