@@ -20,7 +20,7 @@ use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter, Histogram
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use crate::args::{ModelArgs, ModelChoice, ModelKind, OutputArgs};
+use crate::args::{check_files, ModelArgs, ModelChoice, ModelKind, OutputArgs};
 use crate::fmt::num;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -195,6 +195,7 @@ struct FirstPassResult {
 }
 
 pub(crate) fn run(args: &CyclesArgs) -> Result<()> {
+    check_files(args.input.as_deref(), &args.output, None)?;
     let request = parse(args)?;
     let first = if args.output.json || args.histogram {
         Some(first_pass(&request, args.output.json)?)

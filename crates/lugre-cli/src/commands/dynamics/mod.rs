@@ -177,6 +177,7 @@ struct Outcome {
 }
 
 pub(crate) fn run(args: &DynamicsArgs) -> Result<()> {
+    crate::args::check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let outcome = compute(&request)?;
     report(args, &request, &outcome)
