@@ -7,7 +7,9 @@ use anyhow::{bail, Result};
 use clap::{Args, ValueEnum};
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+use crate::io::outputs::Files;
 
 use crate::numbers::{parse_list, Real};
 
@@ -458,6 +460,21 @@ pub(crate) struct OutputArgs {
     pub(crate) json: bool,
     #[arg(long, value_name = "FILE.csv", help_heading = "Output")]
     pub(crate) csv: Option<PathBuf>,
+}
+
+/// Checks a run's files against the output policy (`io::outputs`) before anything is read or
+/// computed: `--input` (when the command reads one), and the outputs `--csv` and `--plot` (when
+/// the command has it).
+pub(crate) fn check_files(
+    input: Option<&Path>,
+    output: &OutputArgs,
+    plot: Option<&PlotArgs>,
+) -> Result<()> {
+    Files::new()
+        .input("--input", input)
+        .output("--csv", output.csv.as_deref())
+        .output("--plot", plot.and_then(|p| p.path.as_deref()))
+        .check()
 }
 
 /// `--plot FILE`, a figure (SVG or PNG, by the file's extension). Each command says what it

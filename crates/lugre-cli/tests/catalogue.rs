@@ -985,17 +985,22 @@ fn every_output_flag_unwritable() {
 #[test]
 fn a_failing_run_leaves_no_partial_or_temporary_file() {
     let dir = TempDir::new("catalogue-atomic");
-    // paper writes fig03.svg, then fig03.png: a directory in the PNG's place.
+    // paper writes fig03.svg, then fig03.png: a directory in the PNG's place (in a folder
+    // lugre did not create, hence --force; it marks the folder first).
     let out = dir.path().join("paper");
     std::fs::create_dir_all(out.join("fig03.png")).unwrap();
     let out_s = out.to_str().unwrap();
-    rejects(&["paper", "--out", out_s], "cannot write");
+    rejects(&["paper", "--out", out_s, "--force"], "cannot write");
     let mut names: Vec<String> = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     names.sort();
-    assert_eq!(names, ["fig03.png", "fig03.svg"], "no temporary file");
+    assert_eq!(
+        names,
+        [".lugre-paper", "fig03.png", "fig03.svg"],
+        "no temporary file"
+    );
     // The file written before the error is complete.
     let svg = std::fs::read_to_string(out.join("fig03.svg")).unwrap();
     assert!(svg.trim_end().ends_with("</svg>"));

@@ -39,6 +39,9 @@ fn paper() -> &'static (PathBuf, String) {
     })
 }
 
+/// The file that marks the folder as written by `lugre paper` (its own files may be replaced).
+const MARK: &str = ".lugre-paper";
+
 fn files(dir: &Path) -> BTreeSet<String> {
     std::fs::read_dir(dir)
         .unwrap()
@@ -62,10 +65,12 @@ fn every_figure_is_written_as_svg_png_and_csv() {
         assert!(!csv.is_empty(), "{stem} has no CSV");
     }
     assert!(names.contains("index.html"));
+    assert!(names.contains(MARK), "the folder is marked as lugre's");
     // Nothing else: no temporary files left behind, no figure outside 03..17.
     for name in &names {
         let ok = name == "index.html"
             || name == "canudas1995"
+            || name == MARK
             || (name.starts_with("fig")
                 && (name.ends_with(".svg") || name.ends_with(".png") || name.ends_with(".csv")));
         assert!(ok, "unexpected file {name}");
@@ -179,7 +184,7 @@ fn the_page_links_only_files_that_exist() {
     // Every figure, image and data file is reachable from the page.
     for name in names
         .iter()
-        .filter(|n| *n != "index.html" && *n != "canudas1995")
+        .filter(|n| *n != "index.html" && *n != "canudas1995" && *n != MARK)
     {
         assert!(
             linked.contains(name),

@@ -6,7 +6,9 @@ use clap::Args;
 use lugre::{HysteresisLoop, Loop, LoopPoint, TheoremA};
 use std::io::Write;
 
-use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs};
+use crate::args::{
+    check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
+};
 use crate::fmt::{exact, sig};
 use crate::hysteresis::{arc_points, kind_name};
 use crate::io::atomic::write_atomic;
@@ -84,6 +86,7 @@ struct Outcome {
 }
 
 pub(crate) fn run(args: &LoopArgs) -> Result<()> {
+    check_files(args.input.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let outcome = compute(&request)?;
     report(args, &request.model, &outcome)

@@ -7,6 +7,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::clip::clip;
 use super::dashes::{dash, thin, MIN_PIXEL_STEP};
 use super::elements::MarkerElement;
 use super::legend::LegendBox;
@@ -86,7 +87,8 @@ impl Figure {
             .map_err(err)?;
         self.draw_mesh(&mut chart, (x0, x1), (y0, y1), s)
             .map_err(err)?;
-        self.draw_curves(&chart, &screen, s).map_err(err)?;
+        let map = plot.mapping((x0, x1), (y0, y1));
+        self.draw_curves(&screen, &plot, &map, s).map_err(err)?;
         self.draw_markers(&mut chart, s).map_err(err)?;
         self.draw_notes(&chart, &screen, s).map_err(err)?;
         if let (Some(lb), Some(at)) = (&legend, legend_at) {
@@ -130,47 +132,37 @@ impl Figure {
             .y_desc(&self.y_label)
             .axis_desc_style(("sans-serif", AXIS_FONT * s))
             .label_style(("sans-serif", TICK_FONT * s))
-            .light_line_style(RGBColor(235, 235, 235))
-            .bold_line_style(RGBColor(210, 210, 210))
+            .light_line_style(RGBColor(235, 235, 235).stroke_width(scaled(1, s)))
+            .bold_line_style(RGBColor(210, 210, 210).stroke_width(scaled(1, s)))
+            .axis_style(BLACK.stroke_width(scaled(1, s)))
+            // plotters' own tick length is in pixels whatever the scale (half as long in a PNG).
+            .set_all_tick_mark_size(scaled(TICK_LENGTH, s))
             .x_labels(9)
             .y_labels(9)
             .draw()
     }
 
-    /// The curves, thinned and dashed in pixel space on `screen`.
+    /// The curves, cut to the plotting area `plot`, thinned and dashed in pixel space on
+    /// `screen` (`map` takes data to its pixels).
     fn draw_curves<DB: DrawingBackend>(
         &self,
-        chart: &Chart<'_, DB>,
         screen: &DrawingArea<DB, Shift>,
+        plot: &PixelBox,
+        map: &Mapping,
         s: f64,
     ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-        // The pixel-space dashes are drawn outside the chart's coordinate system, which would
-        // clip them: points beyond the plotting area are pinned to its edges instead (axis
-        // ranges contain the data unless a figure sets them narrower).
-        let clip = chart.plotting_area().get_pixel_range();
         for curve in &self.curves {
-            let pixels: Vec<(f64, f64)> = curve
-                .points
-                .iter()
-                .filter(|(x, y)| x.is_finite() && y.is_finite())
-                .map(|&p| {
-                    let (px, py) = chart.backend_coord(&p);
-                    (px as f64, py as f64)
-                })
-                .collect();
-            let pixels = thin(&pixels, MIN_PIXEL_STEP * s);
+            let pixels: Vec<(f64, f64)> = curve.points.iter().map(|&p| map.apply(p)).collect();
             let style = ShapeStyle::from(&curve.color).stroke_width(scaled(curve.width, s));
-            for piece in dash(&pixels, &curve.style.pattern(s)) {
-                let piece: Vec<(i32, i32)> = piece
-                    .iter()
-                    .map(|&(x, y)| {
-                        (
-                            (x.round() as i32).clamp(clip.0.start, clip.0.end),
-                            (y.round() as i32).clamp(clip.1.start, clip.1.end),
-                        )
-                    })
-                    .collect();
-                screen.draw(&PathElement::new(piece, style))?;
+            for inside in clip(&pixels, plot) {
+                let inside = thin(&inside, MIN_PIXEL_STEP * s);
+                for piece in dash(&inside, &curve.style.pattern(s)) {
+                    let piece: Vec<(i32, i32)> = piece
+                        .iter()
+                        .map(|&(x, y)| (x.round() as i32, y.round() as i32))
+                        .collect();
+                    screen.draw(&PathElement::new(piece, style))?;
+                }
             }
         }
         Ok(())
@@ -287,6 +279,9 @@ fn tick_label(v: f64, span: f64) -> String {
 pub(super) fn scaled(width: u32, s: f64) -> u32 {
     (f64::from(width) * s).round().max(1.0) as u32
 }
+
+/// The length of the axes' tick marks (pixels at scale 1; plotters' default).
+const TICK_LENGTH: u32 = 5;
 
 /// Font sizes (pixels at scale 1).
 const TITLE_FONT: f64 = 26.0;

@@ -85,7 +85,19 @@ impl<C, DB: DrawingBackend> Drawable<DB> for MarkerElement<C> {
         let r = self.radius;
         match self.shape {
             Shape::Circle => backend.draw_circle((x, y), r as u32, &self.style, false),
-            Shape::Square => backend.draw_rect((x - r, y - r), (x + r, y + r), &self.style, false),
+            // A closed path, not a rectangle: the SVG backend draws rectangles one pixel wide
+            // whatever the style says. The first side is drawn twice so its corner is joined.
+            Shape::Square => backend.draw_path(
+                [
+                    (x - r, y - r),
+                    (x + r, y - r),
+                    (x + r, y + r),
+                    (x - r, y + r),
+                    (x - r, y - r),
+                    (x + r, y - r),
+                ],
+                &self.style,
+            ),
         }
     }
 }

@@ -6,24 +6,28 @@
 //! texts such as `t₁`) can sit next to points; the legend goes in the inside corner where it
 //! hides nothing, or above the data when every corner is taken.
 //!
-//! Dash patterns are drawn in pixel space (plotters has no dash-dot, and dashing in data space
-//! would stretch with the axes' aspect ratio). PNGs are drawn at twice their size and averaged
-//! down, because plotters' bitmap backend does not anti-alias. Files are written atomically.
-
+//! Curves are mapped to pixels, cut to the plotting area and dashed in pixel space, once, for
+//! both formats (plotters has no dash-dot, and dashing in data space would stretch with the
+//! axes' aspect ratio). A PNG shows what the SVG shows: it is drawn by plotters' bitmap backend
+//! with wide lines stroked and text sized as the SVG's (`raster`), at twice its size and
+//! averaged down, because that backend does not anti-alias. Files are written atomically.
 //!
 //! This module holds what a figure is; `draw` lays it out and draws it, `legend` places and
-//! draws the legend, `dashes` cuts lines into dash patterns, `elements` are the markers and
-//! legend samples plotters lacks, and `output` writes SVG and PNG files.
+//! draws the legend, `clip` cuts lines to the plotting area, `dashes` cuts them into dash
+//! patterns, `elements` are the markers and legend samples plotters lacks, `raster` is the
+//! PNG's drawing backend, and `output` writes SVG and PNG files.
 
 use anyhow::Result;
 pub(crate) use plotters::prelude::RGBColor;
 use std::path::Path;
 
+mod clip;
 mod dashes;
 mod draw;
 mod elements;
 mod legend;
 mod output;
+mod raster;
 
 pub(crate) use output::check_path;
 use output::save;

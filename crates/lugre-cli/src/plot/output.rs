@@ -6,6 +6,7 @@ use plotters::prelude::*;
 use std::path::Path;
 
 use super::draw::Render;
+use super::raster::Raster;
 
 /// PNGs are drawn this many times larger and averaged down: plotters' bitmap backend draws
 /// lines without anti-aliasing, and curves drawn at 1x look jagged.
@@ -57,7 +58,7 @@ pub(super) fn save(what: &impl Render, size: (u32, u32), path: &Path) -> Result<
             let (w, h) = (size.0 * k, size.1 * k);
             let mut big = vec![255u8; w as usize * h as usize * 3];
             {
-                let root = BitMapBackend::with_buffer(&mut big, (w, h)).into_drawing_area();
+                let root = Raster::with_buffer(&mut big, (w, h)).into_drawing_area();
                 what.render(&root, f64::from(k))?;
                 root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
             }

@@ -22,7 +22,7 @@ use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter, Histogram
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use crate::args::{ModelArgs, ModelChoice, Needed, OutputArgs};
+use crate::args::{check_files, ModelArgs, ModelChoice, Needed, OutputArgs};
 use crate::fmt::num;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -190,6 +190,7 @@ struct FirstPassResult {
 }
 
 pub(crate) fn run(args: &CyclesArgs) -> Result<()> {
+    check_files(args.input.as_deref(), &args.output, None)?;
     let request = parse(args)?;
     let first = if args.output.json || args.histogram {
         Some(first_pass(&request, args.output.json)?)

@@ -179,6 +179,7 @@ impl From<Bad> for anyhow::Error {
 }
 
 pub(crate) fn run(args: &DynamicsArgs) -> Result<()> {
+    crate::args::check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let plan = parse(args).and_then(|r| Ok(r.build()?))?;
     if let Some(path) = &args.plot.path {
         crate::plot::check_path(path)?;

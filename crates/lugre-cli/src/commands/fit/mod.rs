@@ -24,7 +24,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::args::{ModelArgs, OutputArgs, PlotArgs};
+use crate::args::{check_files, ModelArgs, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::csv::Columns;
@@ -159,6 +159,7 @@ struct Request<'a> {
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let report = compute(&request)?;
     report_fit(args, &request, &report)

@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
 use crate::fmt::{exact, sig};
 use crate::hysteresis::kind_name;
 use crate::io::atomic::write_atomic;
+use crate::io::outputs::OutputFolder;
 
 mod canudas;
 mod convergence;
@@ -30,9 +31,15 @@ use figures::{fig03, fig04, fig05, fig14, loop_figure, PaperFigure};
 
 #[derive(Args, Debug)]
 pub(crate) struct PaperArgs {
-    /// Directory to write the figures, their data and index.html to (created if missing).
+    /// Directory to write the figures, their data and index.html to (created if missing). An
+    /// existing folder must be empty or one lugre paper wrote (it holds the file .lugre-paper):
+    /// files in a folder of yours are not replaced unless --force is given.
     #[arg(long, value_name = "DIR", default_value = "paper-figures")]
     pub(crate) out: PathBuf,
+    /// Write into --out even when it is a folder lugre did not create that holds files (the
+    /// files with the names lugre paper writes are replaced; others are left alone).
+    #[arg(long)]
+    pub(crate) force: bool,
 }
 
 /// Everything `lugre paper` draws and tabulates.
@@ -45,14 +52,9 @@ pub(crate) struct Paper {
 
 pub(crate) fn run(args: &PaperArgs) -> Result<()> {
     let started = std::time::Instant::now();
+    let folder = OutputFolder::check("--out", &args.out, args.force)?;
     let paper = build()?;
-    let dir = &args.out;
-    std::fs::create_dir_all(dir).with_context(|| {
-        format!(
-            "cannot create the output directory '{}' (--out)",
-            dir.display()
-        )
-    })?;
+    let dir = folder.create()?;
     let written = write_all(&paper, dir)?;
     print_summary(&paper, dir, &written, started.elapsed())
 }

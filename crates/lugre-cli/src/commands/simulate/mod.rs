@@ -14,7 +14,7 @@ use lugre::simulate::{self, Output};
 use lugre::{Gamma, LuGre, SimulateError, Tolerance, Trajectory};
 use std::io::Write;
 
-use crate::args::{ModelArgs, ModelChoice, OutputArgs, PeriodicInputArgs, PlotArgs};
+use crate::args::{check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -152,6 +152,7 @@ struct Request {
 }
 
 pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
+    check_files(args.input.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let mut out = compute(&request)?;
     if let Some((t, n)) = &request.normal {
