@@ -101,10 +101,13 @@ typedef struct LugreCycleColumns {
 
 // How to fit (all zero, [`lugre_fit_options_default`]: the defaults).
 typedef struct LugreFitOptions {
-  // The family and the values the parameters that are not fitted keep: a LuGre model
-  // ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: LuGre with no
-  // values given (a parameter the fit holds must then have one: give a model). Free
-  // parameters start from the data either way.
+  // `LUGRE_FAMILY_LUGRE` (0) or `LUGRE_FAMILY_DAHL`: the model fitted when `model` is
+  // NULL (a model's own family must be this one).
+  int32_t family;
+  // The values the parameters that are not fitted keep: a LuGre model
+  // ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: no values given
+  // (a parameter the fit holds must then have one: give a model). Free parameters start
+  // from the data either way.
   const struct LugreModel *model;
   // The names of parameters held at the model's values, separated by commas (NULL or "":
   // none), e.g. "sigma2" (a parameter whose value is 0 must be held: fitted ones are

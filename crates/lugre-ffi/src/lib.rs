@@ -854,10 +854,13 @@ pub extern "C" fn lugre_params_set(
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct LugreFitOptions {
-    /// The family and the values the parameters that are not fitted keep: a LuGre model
-    /// ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: LuGre with no
-    /// values given (a parameter the fit holds must then have one: give a model). Free
-    /// parameters start from the data either way.
+    /// `LUGRE_FAMILY_LUGRE` (0) or `LUGRE_FAMILY_DAHL`: the model fitted when `model` is
+    /// NULL (a model's own family must be this one).
+    pub family: i32,
+    /// The values the parameters that are not fitted keep: a LuGre model
+    /// ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: no values given
+    /// (a parameter the fit holds must then have one: give a model). Free parameters start
+    /// from the data either way.
     pub model: *const LugreModel,
     /// The names of parameters held at the model's values, separated by commas (NULL or "":
     /// none), e.g. "sigma2" (a parameter whose value is 0 must be held: fitted ones are
@@ -923,12 +926,31 @@ pub extern "C" fn lugre_fit_options_default(out: *mut LugreFitOptions) -> LugreS
 
 /// The request as `lugre fit` builds it from its model flags, `--fix` and `--free`.
 fn fit_spec(o: &LugreFitOptions) -> Result<FitSpec, Failure> {
+    let family = match o.family {
+        LUGRE_FAMILY_DAHL => Family::Dahl,
+        _ => {
+            // Names the option in the message of an unknown family.
+            family_parameters(o.family)
+                .map_err(|Failure(status, m)| Failure(status, format!("options.{m}")))?;
+            Family::LuGre
+        }
+    };
     // SAFETY: NULL or a handle made by this library.
     let mut spec = match unsafe { o.model.as_ref() } {
-        None => FitSpec::new(Family::LuGre),
+        None => FitSpec::new(family),
         Some(LugreModel { dahl: Some(d), .. }) => FitSpec::dahl(d.rho(), d.fc()),
         Some(m) => FitSpec::lugre(m.model.params()),
     };
+    if spec.family() != family {
+        return Err(fail(
+            LugreStatus::InvalidArgument,
+            format!(
+                "options.model is a {} model, options.family says {}",
+                spec.family().label(),
+                family.label()
+            ),
+        ));
+    }
     type Mark = fn(FitSpec, &str) -> Result<FitSpec, lugre::fit::FitError>;
     let lists: [(&str, *const c_char, Mark); 2] = [
         ("options.fix", o.fix, FitSpec::fix),
@@ -968,6 +990,7 @@ fn options_or_default(options: *const LugreFitOptions) -> LugreFitOptions {
     unsafe { options.as_ref() }
         .copied()
         .unwrap_or(LugreFitOptions {
+            family: LUGRE_FAMILY_LUGRE,
             model: std::ptr::null(),
             fix: std::ptr::null(),
             free: std::ptr::null(),

@@ -384,6 +384,7 @@ fn the_slow_fit_is_the_cores() {
     let mut dahl = ptr::null_mut();
     assert_eq!(lugre_model_new_dahl(1.0, 2.0, &mut dahl), LugreStatus::Ok);
     let mut o = LugreFitOptions {
+        family: 7,
         model: ptr::null(),
         fix: ptr::null(),
         free: ptr::null(),
@@ -395,9 +396,17 @@ fn the_slow_fit_is_the_cores() {
         (o.model, o.fix, o.x0, o.starts),
         (ptr::null(), ptr::null(), 0.0, 0)
     );
+    assert_eq!(o.family, LUGRE_FAMILY_LUGRE);
     o.model = dahl;
-    o.fix = c"fc".as_ptr();
     let null = ptr::null_mut();
+    let status = lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null);
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert_eq!(
+        last_error(),
+        "options.model is a Dahl model, options.family says LuGre"
+    );
+    o.family = LUGRE_FAMILY_DAHL;
+    o.fix = c"fc".as_ptr();
     assert_eq!(
         lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
         LugreStatus::Ok
@@ -433,6 +442,11 @@ fn the_slow_fit_is_the_cores() {
     );
     assert_eq!(last_error(), "options.fix has an empty name in 'fc,'");
     o.fix = ptr::null();
+    o.family = 9;
+    let status = lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null);
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert!(last_error().starts_with("options.family must be LUGRE_FAMILY_LUGRE (0)"));
+    o.family = LUGRE_FAMILY_DAHL;
     o.x0 = 0.5;
     assert_eq!(
         lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
@@ -487,6 +501,7 @@ fn the_full_fit_is_the_cores() {
     let mut m = ptr::null_mut();
     assert_eq!(lugre_model_new(&p, &mut m), LugreStatus::Ok);
     let o = LugreFitOptions {
+        family: LUGRE_FAMILY_LUGRE,
         model: m,
         fix: c"sigma2,beta".as_ptr(),
         free: ptr::null(),
