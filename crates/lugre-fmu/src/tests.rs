@@ -124,3 +124,121 @@ fn a_drift_is_seen() {
     assert!(found[2].starts_with("reference 17"), "{found:?}");
     assert_eq!(fmi_unit(Parameter::Sigma1), "N.s/m");
 }
+
+/// The messages the FMU logged, collected by the host's callback below.
+static LOGGED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+unsafe extern "C" fn collect(
+    _env: *mut std::ffi::c_void,
+    _status: crate::Status,
+    _category: *const std::ffi::c_char,
+    message: *const std::ffi::c_char,
+) {
+    // SAFETY: the FMU passes a NUL-terminated message.
+    let text = unsafe { std::ffi::CStr::from_ptr(message) };
+    LOGGED
+        .lock()
+        .unwrap()
+        .push(text.to_string_lossy().into_owned());
+}
+
+fn last_logged() -> String {
+    LOGGED.lock().unwrap().last().cloned().unwrap_or_default()
+}
+
+/// FMI 3.0's order, called as a host calls it: out of order is `fmi3Error` with a message,
+/// and the instance keeps its time.
+#[test]
+fn calls_out_of_order_are_errors() {
+    use crate::*;
+    use std::ptr::{null, null_mut};
+    let token = std::ffi::CString::new(MASS_TOKEN).unwrap();
+    let me = fmi3InstantiateModelExchange(
+        c"m".as_ptr(),
+        token.as_ptr(),
+        null(),
+        false,
+        false,
+        null_mut(),
+        Some(collect),
+    );
+    assert_eq!(fmi3SetTime(me, 1.0), Status::Error);
+    assert_eq!(
+        last_logged(),
+        "fmi3SetTime is not allowed in the instantiated state (after instantiation or fmi3Reset): only in continuous-time mode"
+    );
+    let (mut a, mut b, mut c, mut t) = (false, false, false, 0.0);
+    let step = |i, t0, h, t: &mut f64, a: &mut bool, b: &mut bool, c: &mut bool| {
+        fmi3DoStep(i, t0, h, false, a, b, c, t)
+    };
+    assert_eq!(
+        step(me, 0.0, 1e-3, &mut t, &mut a, &mut b, &mut c),
+        Status::Error
+    );
+    assert!(last_logged().starts_with("fmi3DoStep is not allowed in the instantiated state"));
+    fmi3FreeInstance(me);
+
+    let cs = fmi3InstantiateCoSimulation(
+        c"m".as_ptr(),
+        token.as_ptr(),
+        null(),
+        false,
+        false,
+        false,
+        false,
+        null(),
+        0,
+        null_mut(),
+        Some(collect),
+        null(),
+    );
+    assert_eq!(
+        fmi3EnterInitializationMode(cs, false, 0.0, 0.0, false, 0.0),
+        Status::Ok
+    );
+    assert_eq!(fmi3ExitInitializationMode(cs), Status::Ok);
+    assert_eq!(
+        step(cs, 0.0, 1e-3, &mut t, &mut a, &mut b, &mut c),
+        Status::Ok
+    );
+    assert_eq!(t, 1e-3);
+    assert_eq!(
+        fmi3EnterInitializationMode(cs, false, 0.0, 0.0, false, 0.0),
+        Status::Error
+    );
+    assert_eq!(
+        last_logged(),
+        "fmi3EnterInitializationMode is not allowed in step mode: only in the instantiated state (after instantiation or fmi3Reset) (fmi3Reset starts the instance again)"
+    );
+    assert_eq!(fmi3SetTime(cs, 0.0), Status::Error);
+    assert_eq!(
+        last_logged(),
+        "fmi3SetTime is a model-exchange function: this instance is a co-simulation"
+    );
+    assert_eq!(
+        step(cs, 1e-3, f64::NAN, &mut t, &mut a, &mut b, &mut c),
+        Status::Error
+    );
+    assert_eq!(
+        last_logged(),
+        "fmi3DoStep: the communication step size must be a finite number >= 0, got NaN"
+    );
+    let mut now = [0.0];
+    assert_eq!(
+        fmi3GetFloat64(cs, [vr::TIME].as_ptr(), 1, now.as_mut_ptr(), 1),
+        Status::Ok
+    );
+    assert_eq!(now, [1e-3], "the time is kept");
+    assert_eq!(fmi3Terminate(cs), Status::Ok);
+    assert_eq!(
+        step(cs, 1e-3, 1e-3, &mut t, &mut a, &mut b, &mut c),
+        Status::Error
+    );
+    assert!(last_logged().starts_with("fmi3DoStep is not allowed in the terminated state"));
+    assert_eq!(fmi3Reset(cs), Status::Ok);
+    assert_eq!(
+        fmi3EnterInitializationMode(cs, false, 0.0, 0.0, false, 0.0),
+        Status::Ok
+    );
+    fmi3FreeInstance(cs);
+}
