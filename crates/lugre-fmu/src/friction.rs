@@ -75,12 +75,12 @@ impl Unit for Friction {
 
     fn get(&self, r: u32) -> Result<f64, String> {
         Ok(match r {
-            crate::vr::TIME => self.time,
+            crate::vr::TIME => self.time(),
             vr::X => self.x,
             vr::V => self.v,
-            vr::F => match self.co_simulation() {
-                Some(e) => e.force(),
-                None => self.rates()?.1,
+            vr::F => match (&self.element, self.kind) {
+                (Some(e), Kind::CoSimulation) => e.force(),
+                _ => self.rates()?.1,
             },
             vr::Z => self.co_simulation().map_or(self.z, FrictionElement::state),
             vr::DER_Z => self.rates()?.0,
@@ -112,6 +112,10 @@ impl Unit for Friction {
 
     fn set_time(&mut self, t: f64) {
         self.time = t;
+    }
+
+    fn time(&self) -> f64 {
+        self.time
     }
 
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {

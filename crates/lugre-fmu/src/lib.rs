@@ -133,6 +133,8 @@ pub(crate) trait Unit {
     /// The end of initialization: the parameters checked, the state set.
     fn initialize(&mut self, start: f64, tolerance: Option<f64>) -> Result<(), String>;
     fn set_time(&mut self, t: f64);
+    /// The instance's time (what `get(vr::TIME)` returns, without its error path).
+    fn time(&self) -> f64;
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String>;
     fn states(&self) -> Vec<f64>;
     /// `states` has the model's number of states (checked by the caller).
@@ -236,12 +238,21 @@ impl Fmu {
     }
 
     /// Refuses `call` unless the instance is in one of the phases `allowed`.
+    #[inline]
     fn expect(&self, call: &str, allowed: &[Phase]) -> Result<(), String> {
         if allowed.contains(&self.phase) {
-            return Ok(());
+            Ok(())
+        } else {
+            Err(self.out_of_order(call, allowed))
         }
+    }
+
+    /// The message of a call out of order (off the hot path of every call).
+    #[cold]
+    #[inline(never)]
+    fn out_of_order(&self, call: &str, allowed: &[Phase]) -> String {
         let names: Vec<&str> = allowed.iter().map(|p| p.name()).collect();
-        Err(format!(
+        format!(
             "{call} is not allowed in {}: only in {}{}",
             self.phase.name(),
             names.join(" or "),
@@ -249,7 +260,7 @@ impl Fmu {
                 Phase::Instantiated => "",
                 _ => " (fmi3Reset starts the instance again)",
             }
-        ))
+        )
     }
 
     /// [`Self::expect`] for a function of model exchange only.
@@ -330,7 +341,7 @@ fn deliver(fmu: &Fmu, what: &str, values: Vec<f64>, out: *mut f64, n: usize) -> 
     if values.iter().any(|v| !v.is_finite()) {
         return Err(format!(
             "the {what} are not finite at t = {}",
-            fmu.unit.get(vr::TIME).unwrap_or(0.0)
+            fmu.unit.time()
         ));
     }
     slice_mut(out, n).copy_from_slice(&values);
@@ -770,10 +781,7 @@ pub extern "C" fn fmi3DoStep(
         write(early_return, false);
         fmu.expect("fmi3DoStep", &[Phase::Step])?;
         let result = check_step(current, step).and_then(|()| fmu.unit.do_step(current, step));
-        write(
-            last_successful_time,
-            fmu.unit.get(vr::TIME).unwrap_or(current),
-        );
+        write(last_successful_time, fmu.unit.time());
         result
     })
 }
@@ -789,27 +797,36 @@ const AFTER_INSTANTIATION: &[Phase] = &[
 
 /// `fmi3DoStep`'s arguments: a finite communication point, a finite step size `h >= 0`, and a
 /// finite time at the step's end.
+#[inline]
 fn check_step(current: f64, h: f64) -> Result<(), String> {
+    if current.is_finite() && h >= 0.0 && (current + h).is_finite() {
+        Ok(())
+    } else {
+        Err(bad_step(current, h))
+    }
+}
+
+/// Which of `fmi3DoStep`'s arguments is wrong, in words (off the hot path).
+#[cold]
+#[inline(never)]
+fn bad_step(current: f64, h: f64) -> String {
     if !current.is_finite() {
-        return Err(format!(
+        format!(
             "fmi3DoStep: the current communication point must be a finite number, got {}",
             num(current)
-        ));
-    }
-    if !(h >= 0.0 && h.is_finite()) {
-        return Err(format!(
+        )
+    } else if !(h >= 0.0 && h.is_finite()) {
+        format!(
             "fmi3DoStep: the communication step size must be a finite number >= 0, got {}",
             num(h)
-        ));
-    }
-    if !(current + h).is_finite() {
-        return Err(format!(
+        )
+    } else {
+        format!(
             "fmi3DoStep: the step size {} from t = {} takes the time past the largest finite number",
             num(h),
             num(current)
-        ));
+        )
     }
-    Ok(())
 }
 
 /// Functions these models do not use: `fmi3Error`, logged.

@@ -117,7 +117,7 @@ impl Unit for Mass {
     fn get(&self, r: u32) -> Result<f64, String> {
         let cs = self.kind == Kind::CoSimulation;
         Ok(match r {
-            crate::vr::TIME => self.time,
+            crate::vr::TIME => self.time(),
             vr::FORCE => self.force,
             vr::DFORCE => self.dforce,
             vr::X => self.x,
@@ -169,6 +169,10 @@ impl Unit for Mass {
 
     fn set_time(&mut self, t: f64) {
         self.time = t;
+    }
+
+    fn time(&self) -> f64 {
+        self.time
     }
 
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
