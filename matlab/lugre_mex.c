@@ -1,20 +1,29 @@
 /* The one MEX gateway of lugre for MATLAB and Octave, over the C ABI (crates/lugre-ffi).
  * Called through the documented .m functions (lugre_loop, lugre_cycles, lugre_simulate,
- * lugre_dynamics, lugre_friction_step), not directly:
+ * lugre_dynamics, lugre_friction_step, lugre_fit), not directly:
  *
- *   r = lugre_mex('loop', u, params)
+ *   r = lugre_mex('loop', u, params, n)
  *   r = lugre_mex('cycles', u, gate, params_or_empty, x0)
  *   r = lugre_mex('simulate', t, x, params, z0)
  *   r = lugre_mex('dynamics', name, times, rtol)
  *   [F, z] = lugre_mex('friction_step', x, dt, params, z0, x0)
+ *   r = lugre_mex('fit', u, f, options)
+ *
+ * MATLAB's habits: a numeric argument (or struct field) of any real class (double, single,
+ * int8 ... uint64) or logical is taken as double; a matrix (more than one row and more than
+ * one column) is refused, naming the argument; indices are 1-based, in outputs (cycle starts,
+ * ends, closures, a loop's parent; 0 for "none") and in messages ("u(2) = NaN": the C ABI's
+ * 0-based "name[k]" is rewritten to "name(k+1)").
  *
  * Every error (a wrong type or size, a NaN, an invalid parameter) is raised as a MATLAB error
  * with identifier lugre:error and lugre's own message; nothing crashes the host.
  *
- * Build: bash scripts/build-mex.sh (Octave: mkoctfile --mex; MATLAB: see matlab/README.md).
+ * Build: bash scripts/build-mex.sh (Octave: mkoctfile --mex; MATLAB: see the README).
  */
+#include <ctype.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "lugre.h"
@@ -22,20 +31,88 @@
 
 #define ERROR_ID "lugre:error"
 
-static void fail(const char *message) { mexErrMsgIdAndTxt(ERROR_ID, "%s", message); }
+/* `message` with every 0-based index "name[k]" (an identifier, then digits in brackets)
+ * written 1-based as MATLAB counts, "name(k+1)". */
+static void one_based(const char *message, char *out, size_t size) {
+    size_t o = 0;
+    for (const char *p = message; *p != '\0' && o + 24 < size; p++) {
+        const char *q = p + 1;
+        if (*p == '[' && p > message && (isalnum((unsigned char)p[-1]) || p[-1] == '_') &&
+            isdigit((unsigned char)*q)) {
+            unsigned long long k = 0;
+            while (isdigit((unsigned char)*q)) k = k * 10 + (unsigned long long)(*q++ - '0');
+            if (*q == ']') {
+                o += (size_t)snprintf(out + o, size - o, "(%llu)", k + 1);
+                p = q;
+                continue;
+            }
+        }
+        out[o++] = *p;
+    }
+    out[o] = '\0';
+}
+
+static void fail(const char *message) {
+    char text[1024];
+    one_based(message, text, sizeof text);
+    mexErrMsgIdAndTxt(ERROR_ID, "%s", text);
+}
 
 /* Raises lugre's message when a call failed (resources are freed by the caller first when it
- * holds any: see the `guard` pattern below). */
+ * holds any). */
 static void check(LugreStatus status) {
     if (status != LUGRE_STATUS_OK) fail(lugre_last_error());
 }
 
-/* A real double array argument (any shape: taken as a vector), or an error naming it. */
+/* Scratch buffers freed by MATLAB/Octave if an error unwinds through mexErrMsgIdAndTxt. */
+static double *doubles(size_t n) { return (double *)mxCalloc(n > 0 ? n : 1, sizeof(double)); }
+static int64_t *ints(size_t n) { return (int64_t *)mxCalloc(n > 0 ? n : 1, sizeof(int64_t)); }
+
+/* The values of a real numeric or logical array as doubles (a copy unless it is double). */
+static const double *as_doubles(const mxArray *a, size_t n) {
+    if (mxIsDouble(a)) return mxGetPr(a);
+    double *out = doubles(n);
+    const void *p = mxGetData(a);
+#define COPY(T) for (size_t i = 0; i < n; i++) out[i] = (double)((const T *)p)[i]
+    switch (mxGetClassID(a)) {
+        case mxSINGLE_CLASS: COPY(float); break;
+        case mxINT8_CLASS: COPY(int8_t); break;
+        case mxUINT8_CLASS: COPY(uint8_t); break;
+        case mxINT16_CLASS: COPY(int16_t); break;
+        case mxUINT16_CLASS: COPY(uint16_t); break;
+        case mxINT32_CLASS: COPY(int32_t); break;
+        case mxUINT32_CLASS: COPY(uint32_t); break;
+        case mxINT64_CLASS: COPY(int64_t); break;
+        case mxUINT64_CLASS: COPY(uint64_t); break;
+        case mxLOGICAL_CLASS: COPY(mxLogical); break;
+        default: break; /* refused by the caller */
+    }
+#undef COPY
+    return out;
+}
+
+/* A real numeric or logical vector argument (a row, a column, a scalar or empty), as doubles,
+ * or an error naming it. */
 static const double *vector(const mxArray *a, const char *name, size_t *n) {
-    if (!mxIsDouble(a) || mxIsComplex(a) || mxIsSparse(a))
-        mexErrMsgIdAndTxt(ERROR_ID, "%s must be a real double array", name);
+    if (!(mxIsNumeric(a) || mxIsLogical(a)))
+        mexErrMsgIdAndTxt(ERROR_ID, "%s must be numeric or logical, got a %s array", name,
+                          mxGetClassName(a));
+    if (mxIsComplex(a)) mexErrMsgIdAndTxt(ERROR_ID, "%s must be real, got a complex array", name);
+    if (mxIsSparse(a)) mexErrMsgIdAndTxt(ERROR_ID, "%s must be a full array, got a sparse one", name);
+    mwSize dims = mxGetNumberOfDimensions(a);
+    const mwSize *d = mxGetDimensions(a);
+    int long_sides = 0;
+    for (mwSize i = 0; i < dims; i++) long_sides += d[i] > 1;
+    if (long_sides > 1) {
+        char shape[96] = "";
+        for (mwSize i = 0; i < dims && strlen(shape) < 64; i++)
+            snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s%llu",
+                     i > 0 ? "x" : "", (unsigned long long)d[i]);
+        mexErrMsgIdAndTxt(ERROR_ID, "%s must be a vector (one row or one column), got a %s array",
+                          name, shape);
+    }
     *n = mxGetNumberOfElements(a);
-    return mxGetPr(a);
+    return as_doubles(a, *n);
 }
 
 static double scalar(const mxArray *a, const char *name) {
@@ -45,16 +122,22 @@ static double scalar(const mxArray *a, const char *name) {
     return p[0];
 }
 
-static const char *PARAMS[] = {"sigma0", "sigma1", "sigma2", "fc", "fs", "vs", "beta"};
+/* A struct argument: empty (NULL) or a scalar struct, else an error naming it. */
+static const mxArray *options_struct(const mxArray *s, const char *name, const char *example) {
+    if (s == NULL || mxIsEmpty(s)) return NULL;
+    if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
+        mexErrMsgIdAndTxt(ERROR_ID, "%s must be a scalar struct, e.g. %s", name, example);
+    return s;
+}
 
 /* The parameters from a struct: the CLI's defaults (or Table I with preset = 'canudas1995'),
- * overridden by the struct's fields; an unknown field is an error. */
-static LugreParams params_of(const mxArray *s) {
+ * overridden by the struct's fields, set by name through the C ABI (the core's table: an
+ * unknown field is its error). */
+static LugreParams params_of(const mxArray *arg) {
     LugreParams p;
     check(lugre_params_default(&p));
-    if (s == NULL || mxIsEmpty(s)) return p;
-    if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
-        fail("params must be a scalar struct, e.g. struct('sigma0', 1e5, 'fc', 1)");
+    const mxArray *s = options_struct(arg, "params", "struct('sigma0', 1e5, 'fc', 1)");
+    if (s == NULL) return p;
     const mxArray *preset = mxGetField(s, 0, "preset");
     if (preset != NULL) {
         char name[32];
@@ -63,20 +146,13 @@ static LugreParams params_of(const mxArray *s) {
             fail("params.preset must be 'canudas1995'");
         check(lugre_params_canudas1995(&p));
     }
-    double *fields[] = {&p.sigma0, &p.sigma1, &p.sigma2, &p.fc, &p.fs, &p.vs, &p.beta};
     int count = mxGetNumberOfFields(s);
     for (int k = 0; k < count; k++) {
         const char *name = mxGetFieldNameByNumber(s, k);
         if (strcmp(name, "preset") == 0) continue;
-        int known = -1;
-        for (int i = 0; i < 7; i++)
-            if (strcmp(name, PARAMS[i]) == 0) known = i;
-        if (known < 0)
-            mexErrMsgIdAndTxt(ERROR_ID,
-                              "unknown parameter '%s' (parameters: sigma0, sigma1, sigma2, fc, "
-                              "fs, vs, beta, preset)",
-                              name);
-        *fields[known] = scalar(mxGetFieldByNumber(s, 0, k), name);
+        char field[80];
+        snprintf(field, sizeof field, "params.%s", name);
+        check(lugre_params_set(&p, name, scalar(mxGetFieldByNumber(s, 0, k), field)));
     }
     return p;
 }
@@ -84,6 +160,14 @@ static LugreParams params_of(const mxArray *s) {
 static mxArray *column(const double *v, size_t n) {
     mxArray *a = mxCreateDoubleMatrix(n, 1, mxREAL);
     if (n > 0) memcpy(mxGetPr(a), v, n * sizeof(double));
+    return a;
+}
+
+/* 0-based indices (-1: none) as 1-based doubles (0: none). */
+static mxArray *indices(const int64_t *v, size_t n) {
+    mxArray *a = mxCreateDoubleMatrix(n, 1, mxREAL);
+    double *p = mxGetPr(a);
+    for (size_t i = 0; i < n; i++) p[i] = v[i] < 0 ? 0.0 : (double)v[i] + 1.0;
     return a;
 }
 
@@ -108,10 +192,6 @@ static mxArray *struct_of(int count, const char **names, mxArray **values) {
     return r;
 }
 
-/* Scratch buffers freed by MATLAB/Octave if an error unwinds through mexErrMsgIdAndTxt. */
-static double *doubles(size_t n) { return (double *)mxCalloc(n > 0 ? n : 1, sizeof(double)); }
-static int64_t *ints(size_t n) { return (int64_t *)mxCalloc(n > 0 ? n : 1, sizeof(int64_t)); }
-
 static LugreModel *model_of(const mxArray *s) {
     LugreParams p = params_of(s);
     LugreModel *m = NULL;
@@ -119,9 +199,15 @@ static LugreModel *model_of(const mxArray *s) {
     return m;
 }
 
-static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params) {
+static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const mxArray *n_arg) {
     size_t n = 0;
     const double *u = vector(u_arg, "u", &n);
+    double points = 0;
+    if (n_arg != NULL && !mxIsEmpty(n_arg)) {
+        points = scalar(n_arg, "n");
+        if (!(points >= 2 && points <= 1e8 && points == floor(points)))
+            mexErrMsgIdAndTxt(ERROR_ID, "n must be a whole number from 2 to 1e8, got %g", points);
+    }
     LugreModel *m = model_of(params);
     LugreLoop *hl = NULL;
     LugreStatus st = lugre_loop_new(m, u, n, &hl);
@@ -146,18 +232,32 @@ static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params) {
     LugreLoopColumns c = {kind, d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8],
                           d[9], d[10], d[11], d[12], parent, depth};
     st = lugre_loop_table(hl, &c, rows);
+    if (st != LUGRE_STATUS_OK) lugre_loop_free(hl);
+    check(st);
+    /* The curve (lugre_loop(u, params, n)) is sampled while the loop is held; the loop is
+     * freed before an error unwinds through check(). */
+    mxArray *curve = NULL;
+    size_t np = (size_t)points;
+    if (np > 0) {
+        double *rho = doubles(np), *cu = doubles(np), *cy = doubles(np);
+        st = lugre_loop_sample(hl, np, rho, cu, cy);
+        static const char *curve_names[] = {"rho", "u", "y"};
+        mxArray *cv[] = {column(rho, np), column(cu, np), column(cy, np)};
+        if (st == LUGRE_STATUS_OK) curve = struct_of(3, curve_names, cv);
+    }
     lugre_loop_free(hl);
     check(st);
     mxArray *cols[COLS];
     cols[0] = column_i32(kind, rows);
     for (int i = 0; i < 13; i++) cols[i + 1] = column(d[i], rows);
-    cols[14] = column_i64(parent, rows);
+    cols[14] = indices(parent, rows);
     cols[15] = column_i64(depth, rows);
     mxArray *table = struct_of(COLS, names, cols);
-    static const char *top[] = {"u", "rho", "y", "loops", "work_per_period", "period"};
+    static const char *top[] = {"u", "rho", "y", "loops", "work_per_period", "period", "curve"};
     mxArray *v[] = {column(tu, k), column(trho, k), column(ty, k), table,
-                    mxCreateDoubleScalar(work), mxCreateDoubleScalar(period)};
-    return struct_of(6, top, v);
+                    mxCreateDoubleScalar(work), mxCreateDoubleScalar(period),
+                    curve != NULL ? curve : mxCreateDoubleMatrix(0, 0, mxREAL)};
+    return struct_of(7, top, v);
 }
 
 static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
@@ -180,13 +280,16 @@ static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
     st = lugre_cycles_columns(cy, &c, rows);
     lugre_cycles_free(cy);
     check(st);
+    /* The closure position is a sample index with a fraction: 1-based for full cycles too. */
+    for (size_t i = 0; i < rows; i++)
+        if (closure[i] >= 0) pos[i] += 1.0;
     static const char *names[] = {"range",       "mean",         "count", "start",
                                   "end",         "closure",      "closure_position", "work",
                                   "stored_energy_change", "dissipation", "closure_gap"};
-    mxArray *v[] = {column(range, rows),     column(mean, rows),   column(count, rows),
-                    column_i64(start, rows), column_i64(end, rows), column_i64(closure, rows),
-                    column(pos, rows),       column(work, rows),   column(stored, rows),
-                    column(diss, rows),      column(gap, rows)};
+    mxArray *v[] = {column(range, rows),    column(mean, rows),  column(count, rows),
+                    indices(start, rows),   indices(end, rows),  indices(closure, rows),
+                    column(pos, rows),      column(work, rows),  column(stored, rows),
+                    column(diss, rows),     column(gap, rows)};
     return struct_of(11, names, v);
 }
 
@@ -237,14 +340,202 @@ static void friction_step(int nlhs, mxArray *plhs[], int nrhs, const mxArray *pr
     check(st);
     st = lugre_element_reset(e, 0.0, x0, z0);
     double *f = doubles(n), *z = doubles(n);
-    for (size_t k = 0; k < n && st == LUGRE_STATUS_OK; k++) {
+    size_t k = 0;
+    for (; k < n && st == LUGRE_STATUS_OK; k++) {
         st = lugre_element_step(e, x[k], dt[ndt == 1 ? 0 : k], &f[k]);
         if (st == LUGRE_STATUS_OK) st = lugre_element_state(e, NULL, NULL, &z[k], NULL);
     }
     lugre_element_free(e);
+    if (st != LUGRE_STATUS_OK && k > 0) {
+        /* Which step failed, as MATLAB counts. */
+        char text[1024];
+        one_based(lugre_last_error(), text, sizeof text);
+        mexErrMsgIdAndTxt(ERROR_ID, "step %d (x(%d)): %s", (int)k, (int)k, text);
+    }
     check(st);
     plhs[0] = column(f, n);
     if (nlhs > 1) plhs[1] = column(z, n);
+}
+
+/* A string option (a char row) into `out`, or an error naming it. */
+static void option_text(const mxArray *a, const char *name, char *out, size_t size) {
+    if (!mxIsChar(a) || mxGetM(a) > 1 || mxGetString(a, out, size) != 0)
+        mexErrMsgIdAndTxt(ERROR_ID, "%s must be a string (a char row)", name);
+}
+
+/* Parameter names: a char row ('sigma2' or 'sigma2,beta') or a cell array of them, joined with
+ * commas for the C ABI (mxCalloc'd). */
+static char *names_option(const mxArray *a, const char *name) {
+    if (mxIsChar(a)) {
+        char *out = (char *)mxCalloc(mxGetNumberOfElements(a) + 1, 1);
+        option_text(a, name, out, mxGetNumberOfElements(a) + 1);
+        return out;
+    }
+    if (!mxIsCell(a)) mexErrMsgIdAndTxt(ERROR_ID, "%s must be a name or a cell array of names, e.g. {'sigma2', 'beta'}", name);
+    size_t n = mxGetNumberOfElements(a), size = 1;
+    for (size_t i = 0; i < n; i++) {
+        const mxArray *c = mxGetCell(a, i);
+        size += (c != NULL ? mxGetNumberOfElements(c) : 0) + 1;
+    }
+    char *out = (char *)mxCalloc(size, 1);
+    for (size_t i = 0; i < n; i++) {
+        const mxArray *c = mxGetCell(a, i);
+        char item[64];
+        snprintf(item, sizeof item, "%s{%d}", name, (int)i + 1);
+        if (c == NULL || !mxIsChar(c)) mexErrMsgIdAndTxt(ERROR_ID, "%s must be a name (a char row)", item);
+        if (i > 0) strcat(out, ",");
+        option_text(c, item, out + strlen(out), size - strlen(out));
+    }
+    return out;
+}
+
+/* The fit's model: options.params (a parameter struct; Dahl: rho and fc) as a handle, or NULL. */
+static LugreModel *fit_model(const mxArray *params, int dahl) {
+    if (params == NULL || mxIsEmpty(params)) return NULL;
+    if (!dahl) return model_of(params);
+    const mxArray *s = options_struct(params, "options.params", "struct('rho', 2, 'fc', 1)");
+    double v[2] = {1.0, 1.0};
+    static const char *dahl_names[] = {"rho", "fc"};
+    for (int k = 0; k < mxGetNumberOfFields(s); k++) {
+        const char *name = mxGetFieldNameByNumber(s, k);
+        int i = strcmp(name, "rho") == 0 ? 0 : strcmp(name, "fc") == 0 ? 1 : -1;
+        if (i < 0) mexErrMsgIdAndTxt(ERROR_ID, "unknown Dahl parameter '%s' (parameters: rho, fc)", name);
+        char field[80];
+        snprintf(field, sizeof field, "options.params.%s", dahl_names[i]);
+        v[i] = scalar(mxGetFieldByNumber(s, 0, k), field);
+    }
+    LugreModel *m = NULL;
+    check(lugre_model_new_dahl(v[0], v[1], &m));
+    return m;
+}
+
+static const char *FIT_OPTIONS = "kind, t, model, params, fix, free, x0, starts";
+
+static mxArray *logical_column(const int32_t *v, size_t n) {
+    mxArray *a = mxCreateLogicalMatrix(n, 1);
+    mxLogical *p = mxGetLogicals(a);
+    for (size_t i = 0; i < n; i++) p[i] = v[i] != 0;
+    return a;
+}
+
+/* The fit's result as the struct lugre_fit.m documents. */
+static mxArray *fit_result(const LugreFitResult *r, const double *f, const double *fitted,
+                           size_t n, int full) {
+    size_t k = 0;
+    for (size_t i = 0; i < r->parameters; i++) k += r->fitted[i] != 0;
+    mxArray *names = mxCreateCellMatrix(k, 1);
+    double *value = doubles(k), *se = doubles(k);
+    int32_t *at_bound = (int32_t *)mxCalloc(k > 0 ? k : 1, sizeof(int32_t));
+    mxArray *ci95 = mxCreateDoubleMatrix(k, 2, mxREAL);
+    double *ci = mxGetPr(ci95);
+    const char *all[LUGRE_MAX_PARAMETERS];
+    for (size_t i = 0, j = 0; i < r->parameters; i++) {
+        check(lugre_parameter_name(r->family, i, &all[i]));
+        if (!r->fitted[i]) continue;
+        mxSetCell(names, j, mxCreateString(all[i]));
+        value[j] = r->value[i];
+        se[j] = r->std_error[i];
+        ci[j] = r->ci95_lo[i];
+        ci[j + k] = r->ci95_hi[i];
+        at_bound[j] = r->at_bound[i];
+        j++;
+    }
+    mxArray *values = mxCreateStructMatrix(1, 1, (int)r->parameters, all);
+    for (size_t i = 0; i < r->parameters; i++)
+        mxSetFieldByNumber(values, 0, (int)i, mxCreateDoubleScalar(r->value[i]));
+    double *residuals = doubles(n);
+    for (size_t i = 0; i < n; i++) residuals[i] = f[i] - fitted[i];
+    if (!r->converged)
+        mexWarnMsgIdAndTxt("lugre:notConverged",
+                           "the fit did not converge; the best point found is reported");
+    static const char *fields[] = {
+        "names", "value", "stderr", "ci95", "at_bound", "values", "rms", "samples", "dof",
+        "t_quantile", "condition_number", "iterations", "evaluations", "starts", "converged",
+        "turning_points", "model", "kind", "fitted", "residuals"};
+    mxArray *v[] = {
+        names,
+        column(value, k),
+        column(se, k),
+        ci95,
+        logical_column(at_bound, k),
+        values,
+        mxCreateDoubleScalar(r->rms),
+        mxCreateDoubleScalar((double)r->samples),
+        mxCreateDoubleScalar((double)r->dof),
+        mxCreateDoubleScalar(r->t_quantile),
+        mxCreateDoubleScalar(r->condition_number),
+        mxCreateDoubleScalar((double)r->iterations),
+        mxCreateDoubleScalar((double)r->evaluations),
+        mxCreateDoubleScalar((double)r->starts),
+        mxCreateLogicalScalar(r->converged != 0),
+        full ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar((double)r->turning_points),
+        mxCreateString(r->family == LUGRE_FAMILY_DAHL ? "dahl" : "lugre"),
+        mxCreateString(full ? "full" : "slow"),
+        column(fitted, n),
+        column(residuals, n)};
+    return struct_of(20, fields, v);
+}
+
+/* r = lugre_fit(u, f, options): the C ABI's fit, its result as a struct (see lugre_fit.m). */
+static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
+    size_t n = 0, nf = 0, nt = 0;
+    const double *u = vector(prhs[0], "u", &n);
+    const double *f = vector(prhs[1], "f", &nf);
+    if (n != nf) mexErrMsgIdAndTxt(ERROR_ID, "u and f must have the same length, got %d and %d", (int)n, (int)nf);
+    const mxArray *s = options_struct(nrhs > 2 ? prhs[2] : NULL, "options", "struct('kind', 'full', 't', t)");
+    LugreFitOptions o;
+    check(lugre_fit_options_default(&o));
+    int full = 0;
+    const double *t = NULL;
+    const mxArray *params = NULL;
+    for (int k = 0; s != NULL && k < mxGetNumberOfFields(s); k++) {
+        const char *name = mxGetFieldNameByNumber(s, k);
+        const mxArray *v = mxGetFieldByNumber(s, 0, k);
+        char text[16];
+        if (strcmp(name, "kind") == 0) {
+            option_text(v, "options.kind", text, sizeof text);
+            if (strcmp(text, "full") != 0 && strcmp(text, "slow") != 0)
+                mexErrMsgIdAndTxt(ERROR_ID, "options.kind must be 'slow' or 'full', got '%s'", text);
+            full = strcmp(text, "full") == 0;
+        } else if (strcmp(name, "t") == 0) {
+            t = vector(v, "options.t", &nt);
+        } else if (strcmp(name, "model") == 0) {
+            option_text(v, "options.model", text, sizeof text);
+            if (strcmp(text, "lugre") != 0 && strcmp(text, "dahl") != 0)
+                mexErrMsgIdAndTxt(ERROR_ID, "options.model must be 'lugre' or 'dahl', got '%s'", text);
+            o.family = strcmp(text, "dahl") == 0 ? LUGRE_FAMILY_DAHL : LUGRE_FAMILY_LUGRE;
+        } else if (strcmp(name, "params") == 0) {
+            params = v;
+        } else if (strcmp(name, "fix") == 0) {
+            o.fix = names_option(v, "options.fix");
+        } else if (strcmp(name, "free") == 0) {
+            o.free = names_option(v, "options.free");
+        } else if (strcmp(name, "x0") == 0) {
+            o.x0 = scalar(v, "options.x0");
+        } else if (strcmp(name, "starts") == 0) {
+            double starts = scalar(v, "options.starts");
+            if (!(starts >= 1 && starts <= 1e6 && starts == floor(starts)))
+                mexErrMsgIdAndTxt(ERROR_ID, "options.starts must be a whole number from 1 to 1e6, got %g", starts);
+            o.starts = (size_t)starts;
+        } else {
+            mexErrMsgIdAndTxt(ERROR_ID, "unknown option 'options.%s' (options: %s)", name, FIT_OPTIONS);
+        }
+    }
+    if (!full && (o.x0 != 0 || o.starts != 0))
+        mexErrMsgIdAndTxt(ERROR_ID, "options.%s applies to the full fit (options.kind = 'full')",
+                          o.x0 != 0 ? "x0" : "starts");
+    if (full && t == NULL) fail("a full fit (options.kind = 'full') needs the sample times options.t");
+    if (!full && t != NULL)
+        fail("options.t is for the full fit (options.kind = 'full'): the slow fit depends on the turning points alone");
+    if (full && nt != n) mexErrMsgIdAndTxt(ERROR_ID, "options.t and u must have the same length, got %d and %d", (int)nt, (int)n);
+    LugreModel *m = fit_model(params, o.family == LUGRE_FAMILY_DAHL);
+    o.model = m;
+    LugreFitResult r;
+    double *fitted = doubles(n);
+    LugreStatus st = full ? lugre_fit(t, u, f, n, &o, &r, fitted) : lugre_fit_slow(u, f, n, &o, &r, fitted);
+    lugre_model_free(m);
+    check(st);
+    return fit_result(&r, f, fitted, n, full);
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -254,8 +545,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     int args = nrhs - 1;
     const mxArray **a = prhs + 1;
     if (strcmp(cmd, "loop") == 0) {
-        if (args < 1) fail("lugre_loop(u, params): u is missing");
-        plhs[0] = loop_struct(a[0], args > 1 ? a[1] : NULL);
+        if (args < 1) fail("lugre_loop(u, params, n): u is missing");
+        plhs[0] = loop_struct(a[0], args > 1 ? a[1] : NULL, args > 2 ? a[2] : NULL);
     } else if (strcmp(cmd, "cycles") == 0) {
         if (args < 1) fail("lugre_cycles(u, ...): u is missing");
         plhs[0] = cycles_struct(args, a);
@@ -268,6 +559,9 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     } else if (strcmp(cmd, "friction_step") == 0) {
         if (args < 2) fail("lugre_friction_step(x, dt, params, z0, x0): x and dt are needed");
         friction_step(nlhs, plhs, args, a);
+    } else if (strcmp(cmd, "fit") == 0) {
+        if (args < 2) fail("lugre_fit(u, f, options): u and f are needed");
+        plhs[0] = fit_struct(args, a);
     } else {
         mexErrMsgIdAndTxt(ERROR_ID, "lugre_mex: unknown call '%s'", cmd);
     }

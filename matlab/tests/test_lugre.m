@@ -1,5 +1,7 @@
 function failures = test_lugre()
-%TEST_LUGRE  The MEX functions against the CLI's JSON (to the last digit) and bad input.
+%TEST_LUGRE  The MEX functions against the CLI's JSON (to the last digit), MATLAB's habits
+%   (any real numeric class or logical, 1-based indices in outputs and messages, matrices
+%   refused) and bad input.
 %   Run from the repository root after `bash scripts/build-mex.sh` and
 %   `cargo build --release -p lugre-cli`:
 %     octave --no-gui --quiet --eval "addpath('matlab', 'matlab/tests'); exit(test_lugre())"
@@ -25,6 +27,24 @@ function failures = test_lugre()
   failures += expect(isequal(r.work_per_period, numbers(j, 'work_per_period')), 'loop: work per period');
   kinds = regexp(j, '"kind":"(major|minor)"', 'tokens');
   failures += expect(isequal(r.loops.kind, strcmp([kinds{:}], 'minor')'), 'loop: kinds');
+  % The minor loop's parent is the major loop's row (1-based); the major loop has none (0).
+  major = find(r.loops.kind == 0);
+  failures += expect(isequal(r.loops.parent(r.loops.kind == 1), major) && r.loops.parent(major) == 0, ...
+                     'loop: parent rows, 1-based');
+
+  % MATLAB's numeric classes and logical are taken as double, in arguments and struct fields.
+  failures += expect(isequal(lugre_loop(single([0 1 0.5 1.5]), struct('sigma0', single(6))), r), ...
+                     'single arguments and fields');
+  failures += expect(isequal(lugre_loop(int32([0 2 1 3]), struct('sigma0', uint8(3))), ...
+                             lugre_loop([0 2 1 3], struct('sigma0', 3))), 'integer arguments and fields');
+  s1 = lugre_simulate(single([0 1 2]), uint16([0 1 0]), struct('preset', 'canudas1995', 'fs', true + 1));
+  s2 = lugre_simulate([0 1 2], [0 1 0], struct('preset', 'canudas1995', 'fs', 2));
+  failures += expect(isequal(s1, s2), 'single, uint16 and a logical expression');
+
+  % A curve along the loop (lugre_loop(u, params, n)): n points over one period.
+  r5 = lugre_loop([0 1 0.5 1.5], struct('sigma0', 6), 5);
+  failures += expect(isequal(r5.curve.rho', [0 1 2 3 4]) && r5.curve.y(1) == r.y(1) && r5.curve.y(5) == r.y(1), ...
+                     'loop: the curve over one period');
 
   % Rainflow cycles with energies, as `lugre cycles --json`.
   h = [-2 1 -3 5 -1 3 -4 4 -2];
@@ -33,10 +53,19 @@ function failures = test_lugre()
               '"cycles":', '"samples":');
   failures += expect(isequal(c.range, numbers(j, 'range')), 'cycles: ranges');
   failures += expect(isequal(c.count, numbers(j, 'count')), 'cycles: counts');
-  failures += expect(isequal(c.start, numbers(j, 'start')), 'cycles: start indices');
+  % Indices are 1-based (the CLI's are 0-based): h(c.start) and h(c.end) are each cycle's ends.
+  failures += expect(isequal(c.start, numbers(j, 'start') + 1), 'cycles: start indices, 1-based');
+  failures += expect(isequal(c.end, numbers(j, 'end') + 1), 'cycles: end indices, 1-based');
+  failures += expect(isequal(abs(h(c.start) - h(c.end))', c.range), 'cycles: h(start), h(end) span the range');
   full = c.count == 1;
   failures += expect(isequal(c.work(full), numbers(j, 'work')), 'cycles: work of the full cycle');
-  failures += expect(isequal(c.closure_position(full), numbers(j, 'closure_position')), 'cycles: closure');
+  failures += expect(isequal(lugre_cycles(int8(h), int16(0), struct('sigma0', int64(6))), c), ...
+                     'cycles: int8 history, int16 gate, int64 field');
+  failures += expect(isequal(lugre_cycles(logical([0 1 0 1 1 0])), lugre_cycles([0 1 0 1 1 0])), ...
+                     'cycles: a logical history');
+  failures += expect(isequal(c.closure(full), numbers(j, 'closure') + 1) && all(c.closure(~full) == 0), ...
+                     'cycles: closure indices 1-based, 0 for half cycles');
+  failures += expect(isequal(c.closure_position(full), numbers(j, 'closure_position') + 1), 'cycles: closure position, 1-based');
 
   % The closed-loop stick-slip experiment, as `lugre dynamics --json`.
   d = lugre_dynamics('stick-slip', [10 20 30]);
@@ -56,21 +85,83 @@ function failures = test_lugre()
   failures += expect(isequal(z2, z(3:end)), 'friction_step: a run continued');
 
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
-  failures += raises(@() lugre_loop([0 NaN 1]), 'u[1] = NaN is not a finite number');
-  failures += raises(@() lugre_loop('abc'), 'u must be a real double array');
+  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) = NaN is not a finite number');
+  failures += raises(@() lugre_loop('abc'), 'u must be numeric or logical, got a char array');
+  failures += raises(@() lugre_loop([0 1i]), 'u must be real, got a complex array');
+  failures += raises(@() lugre_loop(ones(2)), 'u must be a vector (one row or one column), got a 2x2 array');
+  failures += raises(@() lugre_loop(ones(1, 2, 2)), 'u must be a vector (one row or one column), got a 1x2x2 array');
+  failures += raises(@() lugre_loop([0 1], struct('sigma0', ones(2))), 'params.sigma0 must be a vector (one row or one column), got a 2x2 array');
+  failures += raises(@() lugre_cycles([0 1 2], ones(2)), 'gate must be a vector (one row or one column), got a 2x2 array');
+  failures += raises(@() lugre_simulate(ones(3), ones(3)), 't must be a vector (one row or one column), got a 3x3 array');
+  failures += raises(@() lugre_friction_step([0 1; 2 3], 1e-3), 'x must be a vector');
+  failures += raises(@() lugre_loop([0 1 0.5 1.5], struct(), 1), 'n must be a whole number from 2 to 1e8, got 1');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', -1)), 'sigma0 must be > 0, got -1');
   failures += raises(@() lugre_loop([0 1], struct('sigma9', 1)), 'unknown parameter ''sigma9''');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', [1 2])), 'sigma0 must be a scalar');
   failures += raises(@() lugre_simulate([0 1 2], [0 1]), 't and x must have the same length');
-  failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'strictly increasing');
+  failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'times must be strictly increasing: t(3) = 1 after t(2) = 1');
   failures += raises(@() lugre_friction_step([1e-6 2e-6], 0, p), 'cannot move in a zero step');
   failures += raises(@() lugre_dynamics('nope', [1 2]), 'unknown scenario ''nope''');
-  failures += raises(@() lugre_cycles([0 Inf 1]), 'u[1] = inf is not a finite number');
+  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) = inf is not a finite number');
+  failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
+
+  % The fit, as `lugre fit --json` on the same samples (written with 17 digits: the same
+  % doubles). The slow fit of the Example 4 loop with a small ripple (standard errors not 0).
+  loop = lugre_loop([0 1 0.5 1.5], struct('sigma0', 6), 401);
+  u = loop.curve.u;
+  f = loop.curve.y + 1e-3 * (mod((0:400)' * 7919, 13) - 6);
+  fr = lugre_fit(u, f);
+  j = cli(['fit --input ' record({'u', 'F'}, [u f]) ' --json']);
+  failures += expect(isequal(fr.names, {'sigma0'; 'fs'}), 'fit: the slow fit''s parameters');
+  failures += expect(isequal(fr.value, numbers(j, 'value')), 'fit: the slow fit''s estimates');
+  failures += expect(isequal(fr.stderr, numbers(j, 'stderr')), 'fit: the slow fit''s standard errors');
+  failures += expect(isequal(fr.rms, numbers(j, 'rms')) && fr.turning_points == 4 && fr.converged, ...
+                     'fit: the slow fit''s residual, turning points, convergence');
+  failures += expect(isequal(fr.residuals, f - fr.fitted) && fr.values.sigma0 == fr.value(1), ...
+                     'fit: residuals and the fitted model''s values');
+  failures += expect(abs(fr.value(1) - 6) < 3 * fr.stderr(1) && abs(fr.value(2) - 2) < 3 * fr.stderr(2), ...
+                     'fit: the truth within three standard errors');
+  failures += raises(@() lugre_fit(u, f(1:end - 1)), 'u and f must have the same length, got 401 and 400');
+  failures += raises(@() lugre_fit(u, f, struct('x0', 1)), 'options.x0 applies to the full fit (options.kind = ''full'')');
+  failures += raises(@() lugre_fit(u, f, struct('fixx', 'sigma2')), 'unknown option ''options.fixx''');
+  failures += raises(@() lugre_fit(u, f, struct('fix', 'sigma9')), 'options.fix: ');
+  failures += raises(@() lugre_fit(u, f, struct('fix', {{'fs', 3}})), 'options.fix{2} must be a name');
+  g = f; g(4) = NaN;
+  failures += raises(@() lugre_fit(u, g), 'f(4) = NaN is not a finite number');
+  % The full fit of the paper's model swept at three speeds, sigma2 and beta held.
+  t = 0; x = -6;
+  for speed = [0.1 1 10]
+    for target = [6 -6]
+      k = (1:60)' / 60;
+      t = [t; t(end) + abs(target - x(end)) / speed * k];
+      x = [x; x(end) + (target - x(end)) * k];
+    end
+  end
+  sim = lugre_simulate(t, x, struct());
+  f = sim.F + 1e-3 * (mod((0:numel(t) - 1)' * 7919, 13) - 6);
+  options = struct('kind', 'full', 't', t, 'params', struct(), 'fix', {{'sigma2', 'beta'}}, 'starts', 2);
+  fr = lugre_fit(x, f, options);
+  j = cli(['fit --input ' record({'t', 'u', 'F'}, [t x f]) ' --fit full --fix sigma2=0,beta=1 --starts 2 --json']);
+  failures += expect(isequal(fr.names, {'sigma0'; 'sigma1'; 'fc'; 'fs'; 'vs'}), 'fit: the full fit''s parameters');
+  failures += expect(isequal(fr.value, numbers(j, 'value')) && isequal(fr.stderr, numbers(j, 'stderr')), ...
+                     'fit: the full fit''s estimates and standard errors');
+  failures += expect(isempty(fr.turning_points) && strcmp(fr.kind, 'full') && fr.starts == 2, ...
+                     'fit: the full fit''s report');
+  failures += raises(@() lugre_fit(x, f, struct('kind', 'full')), 'a full fit (options.kind = ''full'') needs the sample times options.t');
   if failures == 0
     printf('test_lugre: all checks passed\n');
   else
     printf('test_lugre: %d checks FAILED\n', failures);
   end
+end
+
+function path = record(names, columns)
+% A CSV file with a header and every number to 17 digits (read back as the same doubles).
+  path = [tempname() '.csv'];
+  fid = fopen(path, 'w');
+  fprintf(fid, '%s\n', strjoin(names, ','));
+  fprintf(fid, [strjoin(repmat({'%.17g'}, 1, numel(names)), ',') '\n'], columns');
+  fclose(fid);
 end
 
 function text = run_cli(exe, args)

@@ -1,7 +1,8 @@
 """lugre-friction.fmu in a real FMI host (fmpy): validated, and simulated headless in
 co-simulation (exact for a piecewise-linear displacement with communication points at its
 kinks: lugre's exact simulation to 1e-12) and in model exchange with CVode (to the solver's
-tolerance); bad parameters and inputs are fmi3Error with the message logged.
+tolerance); bad parameters and inputs, and calls out of FMI's order, are fmi3Error with the
+message logged.
 
 Run by scripts/test.sh after `bash scripts/build-fmu.sh` (needs fmpy and the lugre package).
 """
@@ -20,7 +21,7 @@ from fmpy.fmi3 import FMU3Slave  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target")) / "fmu" / "lugre-friction.fmu"
-VR = dict(x=1, v=2, F=3, z=4, sigma0=10, sigma1=11, sigma2=12, fc=13, fs=14, vs=15, beta=16, x0=17)
+VR = dict(x=1, v=2, F=3, z=4, sigma0=10, sigma1=11, sigma2=12, fc=13, fs=14, vs=15, beta=16, z0=17)
 
 # A piecewise-linear displacement (m) on the Table I scale, with a hold and a reversal.
 T = np.array([0.0, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2])
@@ -114,9 +115,51 @@ def test_bad_parameters_and_inputs_are_errors_with_the_message(unzipped):
     with pytest.raises(FMICallException):
         fmu.setFloat64([VR["x"]], [float("nan")])
     assert any("x must be a finite number" in m for m in logs), logs
-    with pytest.raises(FMICallException):
-        fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=-1.0)
-    assert any("step must be a finite number >= 0" in m for m in logs), logs
+    for h, shown in ((-1.0, "-1"), (float("nan"), "NaN"), (float("inf"), "inf")):
+        logs.clear()
+        with pytest.raises(FMICallException):
+            fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=h)
+        assert logs == [f"fmi3DoStep: the communication step size must be a finite number >= 0, got {shown}"], logs
     (f,) = fmu.getFloat64([VR["F"]])
     assert np.isfinite(f)
+    fmu.freeInstance()
+
+
+def test_z0_is_the_initial_deflection(unzipped):
+    # z0 (named as in the mass FMU; x is the displacement input): at rest F = sigma0 z0.
+    fmu = slave(unzipped)
+    fmu.setFloat64([VR["z0"]], [1e-6])
+    fmu.enterInitializationMode(startTime=0.0)
+    fmu.exitInitializationMode()
+    z, f = fmu.getFloat64([VR["z"], VR["F"]])
+    assert (z, f) == (1e-6, 1e5 * 1e-6)
+    fmu.freeInstance()
+
+
+def test_calls_out_of_order_are_errors(unzipped):
+    logs = []
+    fmu = slave(unzipped, logs)
+    with pytest.raises(FMICallException):
+        fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=1e-3)
+    assert "fmi3DoStep is not allowed in the instantiated state" in logs[-1], logs
+    fmu.enterInitializationMode(startTime=0.0)
+    fmu.exitInitializationMode()
+    fmu.setFloat64([VR["x"], VR["v"]], [0.0, 1e-3])
+    fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=1e-3)
+    (t,) = fmu.getFloat64([0])
+    # Initialization again after a step would rewind time: refused, time unchanged.
+    with pytest.raises(FMICallException):
+        fmu.enterInitializationMode(startTime=0.0)
+    assert logs[-1] == ("fmi3EnterInitializationMode is not allowed in step mode: only in the instantiated "
+                        "state (after instantiation or fmi3Reset) (fmi3Reset starts the instance again)"), logs
+    assert fmu.getFloat64([0]) == [t] and t == 1e-3
+    fmu.terminate()
+    with pytest.raises(FMICallException):
+        fmu.doStep(currentCommunicationPoint=t, communicationStepSize=1e-3)
+    assert "fmi3DoStep is not allowed in the terminated state" in logs[-1], logs
+    # fmi3Reset starts again, from the start values.
+    fmu.reset()
+    fmu.enterInitializationMode(startTime=0.0)
+    fmu.exitInitializationMode()
+    assert fmu.getFloat64([0, VR["x"]]) == [0.0, 0.0]
     fmu.freeInstance()

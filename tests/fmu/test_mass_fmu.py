@@ -1,7 +1,7 @@
 """lugre-mass.fmu (a mass with LuGre friction, drive force in) in a real FMI host (fmpy):
 validated; in a co-simulation loop that closes a spring around it the stick-slip period of
 `lugre dynamics --scenario stick-slip` comes back to 1e-4; model exchange with CVode follows
-lugre.dynamics.
+lugre.dynamics; the run starts from the parameters x0, v0, z0.
 
 Run by scripts/test.sh after `bash scripts/build-fmu.sh` (needs fmpy).
 """
@@ -18,11 +18,21 @@ from fmpy.fmi3 import FMU3Slave  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target")) / "fmu" / "lugre-mass.fmu"
-VR = dict(force=1, dforce=2, x=3, v=4, friction=5, z=6, m=18)
+VR = dict(force=1, dforce=2, x=3, v=4, friction=5, z=6, z0=17, m=18, x0=19, v0=20)
 
 # The stick-slip period of the independent reference (scipy Radau at rtol 1e-12,
 # crates/lugre/tests/reference/dynamics/reference.json), s.
 PERIOD = 6.362719821065907
+
+
+def slave(tmp_path):
+    """A co-simulation instance of the mass FMU, instantiated."""
+    unzipped = extract(str(FMU), unzipdir=str(tmp_path))
+    md = read_model_description(unzipped)
+    fmu = FMU3Slave(guid=md.guid, unzipDirectory=unzipped,
+                    modelIdentifier=md.coSimulation.modelIdentifier, instanceName="mass")
+    fmu.instantiate()
+    return fmu
 
 
 def test_the_fmu_validates():
@@ -33,11 +43,7 @@ def test_the_fmu_validates():
 def test_stick_slip_in_a_host_loop(tmp_path):
     # The host closes the loop: a spring k = 2 N/m whose free end moves at 0.1 m/s, its force
     # (and its rate over the step) set at each 1 ms communication point.
-    unzipped = extract(str(FMU), unzipdir=str(tmp_path))
-    md = read_model_description(unzipped)
-    fmu = FMU3Slave(guid=md.guid, unzipDirectory=unzipped,
-                    modelIdentifier=md.coSimulation.modelIdentifier, instanceName="mass")
-    fmu.instantiate()
+    fmu = slave(tmp_path)
     fmu.enterInitializationMode(startTime=0.0)
     fmu.exitInitializationMode()
     k, pull, h, n = 2.0, 0.1, 1e-3, 30000
@@ -74,3 +80,34 @@ def test_model_exchange_with_cvode_is_lugre_dynamics():
     assert ref["x"][-1] > 0.04  # it slid
     err = np.max(np.abs(res["x"][index] - ref["x"])) / np.max(np.abs(ref["x"]))
     assert err < 1e-5, err
+
+
+def sliding(t, x0=1.0, v0=0.2):
+    """A mass sliding at v0 > 0.09 m/s with no drive and z0 = Fc / sigma0: g(v) = Fc exactly
+    (exp(-(v/vs)^2) underflows), so z stays at its steady value, F = Fc + sigma2 v and
+    v' = -(a + b v) with a = Fc / m = 1, b = sigma2 / m = 0.4: in closed form."""
+    a, b = 1.0, 0.4
+    decay = np.exp(-b * t)
+    return x0 + (v0 + a / b) * (1 - decay) / b - a / b * t, (v0 + a / b) * decay - a / b
+
+
+def test_initial_position_velocity_and_deflection(tmp_path):
+    # Co-simulation and model exchange from x0 = 1 m, v0 = 0.2 m/s, z0 = 1e-5 m, against the
+    # closed form.
+    fmu = slave(tmp_path)
+    fmu.setFloat64([VR["x0"], VR["v0"], VR["z0"]], [1.0, 0.2, 1e-5])
+    fmu.enterInitializationMode(startTime=0.0)
+    fmu.exitInitializationMode()
+    assert fmu.getFloat64([VR["x"], VR["v"], VR["z"], VR["friction"]]) == [1.0, 0.2, 1e-5, 1.0 + 0.4 * 0.2]
+    for i in range(100):
+        fmu.doStep(currentCommunicationPoint=i * 1e-3, communicationStepSize=1e-3)
+    x, v = fmu.getFloat64([VR["x"], VR["v"]])
+    fmu.freeInstance()
+    want_x, want_v = sliding(0.1)
+    assert 0.09 < v < 0.2 and abs(x - want_x) < 1e-9 and abs(v - want_v) < 1e-8, (x - want_x, v - want_v)
+
+    res = fmpy.simulate_fmu(str(FMU), fmi_type="ModelExchange", solver="CVode", relative_tolerance=1e-10,
+                            stop_time=0.1, output_interval=1e-2,
+                            start_values={"x0": 1.0, "v0": 0.2, "z0": 1e-5}, output=["x", "v"])
+    want_x, want_v = sliding(res["time"])
+    assert np.max(np.abs(res["x"] - want_x)) < 1e-8 and np.max(np.abs(res["v"] - want_v)) < 1e-8

@@ -9,6 +9,15 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+// The LuGre family of [`lugre_parameter_name`] and [`LugreFitResult::family`].
+#define LUGRE_FAMILY_LUGRE 0
+
+// The Dahl family.
+#define LUGRE_FAMILY_DAHL 1
+
+// The most parameters a family has (LuGre's seven): the length of the fit's arrays.
+#define LUGRE_MAX_PARAMETERS 7
+
 // The outcome of a call.
 typedef enum LugreStatus {
   LUGRE_STATUS_OK = 0,
@@ -34,14 +43,22 @@ typedef struct LugreLoop LugreLoop;
 // A validated friction model (LuGre, or Dahl as the LuGre model it equals).
 typedef struct LugreModel LugreModel;
 
-// The parameters of a LuGre model (SI units; see [`lugre_params_default`]).
+// The parameters of a LuGre model (SI units; see [`lugre_params_default`]), in the core's
+// order ([`Parameter::LUGRE`]); [`lugre_params_set`] sets one by name.
 typedef struct LugreParams {
+  // bristle stiffness (> 0), unit N/m
   double sigma0;
+  // micro-damping (>= 0), unit N s/m
   double sigma1;
+  // viscous coefficient (>= 0), unit N s/m
   double sigma2;
+  // Coulomb force (> 0), unit N
   double fc;
+  // stiction force (> 0), unit N
   double fs;
+  // Stribeck velocity (> 0), unit m/s
   double vs;
+  // Stribeck exponent (> 0), unit 1
   double beta;
 } LugreParams;
 
@@ -81,6 +98,66 @@ typedef struct LugreCycleColumns {
   double *dissipation;
   double *closure_gap;
 } LugreCycleColumns;
+
+// How to fit (all zero, [`lugre_fit_options_default`]: the defaults).
+typedef struct LugreFitOptions {
+  // `LUGRE_FAMILY_LUGRE` (0) or `LUGRE_FAMILY_DAHL`: the model fitted when `model` is
+  // NULL (a model's own family must be this one).
+  int32_t family;
+  // The values the parameters that are not fitted keep: a LuGre model
+  // ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: no values given
+  // (a parameter the fit holds must then have one: give a model). Free parameters start
+  // from the data either way.
+  const struct LugreModel *model;
+  // The names of parameters held at the model's values, separated by commas (NULL or "":
+  // none), e.g. "sigma2" (a parameter whose value is 0 must be held: fitted ones are
+  // positive).
+  const char *fix;
+  // Names fitted besides the default ones, e.g. "beta" in a full fit (NULL or "": none).
+  const char *free;
+  // The initial bristle deflection `x(0)` (Dahl: `w(0) / rho`), full fit only.
+  double x0;
+  // Start points of the full fit (0: the default, 3).
+  size_t starts;
+} LugreFitOptions;
+
+// The fitted parameters with their standard errors and the fit's statistics (as
+// `lugre fit --json`). The arrays hold the family's parameters in the order of
+// [`lugre_parameter_name`] (`parameters` of them; 0 after).
+typedef struct LugreFitResult {
+  // `LUGRE_FAMILY_LUGRE` or `LUGRE_FAMILY_DAHL`.
+  int32_t family;
+  // The family's number of parameters (7 or 2).
+  size_t parameters;
+  // Every parameter of the fitted model: the estimates and the values held (for a slow
+  // LuGre fit, the parameters the loop does not depend on keep the model's values).
+  double value[LUGRE_MAX_PARAMETERS];
+  // 1 where the parameter was fitted, 0 where it was held.
+  int32_t fitted[LUGRE_MAX_PARAMETERS];
+  // The standard error of each fitted parameter (linearised covariance; 0 if held).
+  double std_error[LUGRE_MAX_PARAMETERS];
+  // The 95 % confidence interval of each fitted parameter (the value if held).
+  double ci95_lo[LUGRE_MAX_PARAMETERS];
+  double ci95_hi[LUGRE_MAX_PARAMETERS];
+  // 1 where the estimate sits on one of its bounds.
+  int32_t at_bound[LUGRE_MAX_PARAMETERS];
+  // The residual RMS.
+  double rms;
+  size_t samples;
+  // Degrees of freedom, samples - fitted parameters.
+  size_t dof;
+  // The factor of the 95 % intervals, Student's t on `dof`.
+  double t_quantile;
+  // Of the scaled normal matrix.
+  double condition_number;
+  size_t iterations;
+  size_t evaluations;
+  size_t starts;
+  // 0: the fit ran out of evaluations at a usable point, reported (the CLI warns).
+  int32_t converged;
+  // The turning points a slow fit found in the record (0 for a full fit).
+  size_t turning_points;
+} LugreFitResult;
 
 #ifdef __cplusplus
 extern "C" {
@@ -128,7 +205,8 @@ enum LugreStatus lugre_loop_turning(const struct LugreLoop *hl,
                                     double *y,
                                     size_t cap);
 
-// The work per period (all of it dissipated), the period and `g(0)`.
+// The work per period (all of it dissipated) and the period (in `rho`, the input's total
+// variation over one period); either pointer may be NULL.
 enum LugreStatus lugre_loop_summary(const struct LugreLoop *hl,
                                     double *work_per_period,
                                     double *period);
@@ -141,8 +219,9 @@ enum LugreStatus lugre_loop_table(const struct LugreLoop *hl,
                                   const struct LugreLoopColumns *columns,
                                   size_t cap);
 
-// `y°` sampled at `n` points evenly spaced in `rho` over one period (`rho`, `u`, `y`; any
-// pointer may be NULL).
+// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
+// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+// of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 enum LugreStatus lugre_loop_sample(const struct LugreLoop *hl,
                                    size_t n,
                                    double *rho,
@@ -191,7 +270,8 @@ void lugre_element_free(struct LugreElement *element);
 
 // Moves the relative displacement to `x` over the next `dt >= 0` seconds (linearly in time:
 // exact at any stiffness) and writes the friction force at the step's end to `force` (may be
-// NULL). A failed step leaves the element as it was.
+// NULL). A failed step leaves the element as it was; a step whose end time is not a finite
+// number is refused.
 enum LugreStatus lugre_element_step(struct LugreElement *element,
                                     double x,
                                     double dt,
@@ -221,6 +301,45 @@ enum LugreStatus lugre_dynamics_scenario(const char *name,
                                          double *v,
                                          double *z,
                                          double *friction);
+
+// The name of parameter `index` of `family` (`LUGRE_FAMILY_LUGRE`: sigma0, sigma1, sigma2,
+// fc, fs, vs, beta, the order of [`LugreParams`] and of the fit's arrays;
+// `LUGRE_FAMILY_DAHL`: rho, fc), a static string, to `name`.
+enum LugreStatus lugre_parameter_name(int32_t family, size_t index, const char **name);
+
+// Sets the LuGre parameter called `name` (case-insensitive, as the CLI's flags) to `value`
+// (checked when a model is made of the parameters, by [`lugre_model_new`]).
+enum LugreStatus lugre_params_set(struct LugreParams *params, const char *name, double value);
+
+// The default options: no model (LuGre), nothing fixed or freed, `x0 = 0`, the default
+// number of starts.
+enum LugreStatus lugre_fit_options_default(struct LugreFitOptions *out);
+
+// The slow-loop fit of `sigma0` and `g(0) = fs` (Dahl: `rho`, `fc`) to `n` samples `(u, f)`
+// of one or more periods of a slow periodic test (as `lugre fit`: the record closes from its
+// last sample to its first; sample the reversals themselves). `options` may be NULL (the
+// defaults); `x0` and `starts` apply to the full fit and must be 0 here. The result goes to
+// `out`, the fitted force at every sample to `fitted` (`n` values; NULL skips it). A fit
+// that ran out of evaluations at a usable point is `LUGRE_STATUS_OK` with `converged = 0`.
+enum LugreStatus lugre_fit_slow(const double *u,
+                                const double *f,
+                                size_t n,
+                                const struct LugreFitOptions *options,
+                                struct LugreFitResult *out,
+                                double *fitted);
+
+// The full fit of `sigma0, sigma1, sigma2, fc, fs, vs` (and `beta` if freed; Dahl: `rho`,
+// `fc`) to `n` rate-dependent samples `(t, u, f)` (`t` strictly increasing) on the exact
+// simulation from `options->x0` (as `lugre fit --fit full`). Otherwise as
+// [`lugre_fit_slow`]. A NaN in `f` marks a sample with no measured force (its `u` still
+// drives the simulation; as an empty force cell in `lugre fit`'s files).
+enum LugreStatus lugre_fit(const double *t,
+                           const double *u,
+                           const double *f,
+                           size_t n,
+                           const struct LugreFitOptions *options,
+                           struct LugreFitResult *out,
+                           double *fitted);
 
 #ifdef __cplusplus
 }  // extern "C"

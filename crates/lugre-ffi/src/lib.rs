@@ -14,7 +14,12 @@
 //!   on failure, and no output is ever NaN or infinite.
 //!
 //! Units are SI, as in the CLI: displacements in m, forces in N, `sigma0` in N/m, `sigma1` and
-//! `sigma2` in N s/m, `vs` in m/s, Dahl's `rho` in 1/m.
+//! `sigma2` in N s/m, `vs` in m/s, Dahl's `rho` in 1/m. The parameters' names, order, units
+//! and descriptions are the core's table ([`lugre::model::Parameter`]; the header's
+//! `LugreParams` is checked against it by `tests/header.rs`).
+//!
+//! Indices in inputs and outputs (cycle starts, closures, a loop's parent) are 0-based, as in
+//! C; the MEX gateway adds 1 for MATLAB.
 
 // The entry points are called from C, where Rust's `unsafe` means nothing: the pointer contract
 // is the module documentation's, and every pointer is checked for NULL before use.
@@ -24,7 +29,11 @@ use std::cell::RefCell;
 use std::ffi::{c_char, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
+use std::sync::OnceLock;
+
 use lugre::dynamics::{Scenario, Tolerances};
+use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
+use lugre::model::Parameter;
 use lugre::simulate::FrictionElement;
 use lugre::{
     CycleColumns, CycleCounter, Dahl, EnergyCycleCounter, Gamma, HysteresisLoop, LoopKind, LuGre,
@@ -46,16 +55,24 @@ pub enum LugreStatus {
     Panic = 4,
 }
 
-/// The parameters of a LuGre model (SI units; see [`lugre_params_default`]).
+/// The parameters of a LuGre model (SI units; see [`lugre_params_default`]), in the core's
+/// order ([`Parameter::LUGRE`]); [`lugre_params_set`] sets one by name.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LugreParams {
+    /// bristle stiffness (> 0), unit N/m
     pub sigma0: f64,
+    /// micro-damping (>= 0), unit N s/m
     pub sigma1: f64,
+    /// viscous coefficient (>= 0), unit N s/m
     pub sigma2: f64,
+    /// Coulomb force (> 0), unit N
     pub fc: f64,
+    /// stiction force (> 0), unit N
     pub fs: f64,
+    /// Stribeck velocity (> 0), unit m/s
     pub vs: f64,
+    /// Stribeck exponent (> 0), unit 1
     pub beta: f64,
 }
 
@@ -201,8 +218,8 @@ fn handle_mut<'a, T>(p: *mut T, name: &str) -> Result<&'a mut T, Failure> {
     unsafe { p.as_mut() }.ok_or_else(|| fail(LugreStatus::NullPointer, format!("{name} is NULL")))
 }
 
-/// `n` input values at `p` (checked finite), or a failure naming them.
-fn input<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure> {
+/// `n` input values at `p` as given, or a failure if `p` is NULL.
+fn values<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure> {
     if n == 0 {
         return Ok(&[]);
     }
@@ -210,7 +227,12 @@ fn input<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure> 
         return Err(fail(LugreStatus::NullPointer, format!("{name} is NULL")));
     }
     // SAFETY: the caller guarantees `n` readable values at `p`.
-    let values = unsafe { std::slice::from_raw_parts(p, n) };
+    Ok(unsafe { std::slice::from_raw_parts(p, n) })
+}
+
+/// `n` input values at `p` (checked finite), or a failure naming them.
+fn input<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure> {
+    let values = values(p, n, name)?;
     if let Some(i) = values.iter().position(|v| !v.is_finite()) {
         return Err(fail(
             LugreStatus::InvalidArgument,
@@ -384,7 +406,8 @@ pub extern "C" fn lugre_loop_turning(
     })
 }
 
-/// The work per period (all of it dissipated), the period and `g(0)`.
+/// The work per period (all of it dissipated) and the period (in `rho`, the input's total
+/// variation over one period); either pointer may be NULL.
 #[no_mangle]
 pub extern "C" fn lugre_loop_summary(
     hl: *const LugreLoop,
@@ -452,8 +475,9 @@ pub extern "C" fn lugre_loop_table(
     })
 }
 
-/// `y°` sampled at `n` points evenly spaced in `rho` over one period (`rho`, `u`, `y`; any
-/// pointer may be NULL).
+/// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
+/// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+/// of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 #[no_mangle]
 pub extern "C" fn lugre_loop_sample(
     hl: *const LugreLoop,
@@ -463,10 +487,28 @@ pub extern "C" fn lugre_loop_sample(
     y: *mut f64,
 ) -> LugreStatus {
     guard(|| {
-        let points = handle(hl, "loop")?.hl.sample(n);
-        output(rho, &points.iter().map(|p| p.rho).collect::<Vec<_>>());
-        output(u, &points.iter().map(|p| p.u).collect::<Vec<_>>());
-        output(y, &points.iter().map(|p| p.y).collect::<Vec<_>>());
+        let hl = &handle(hl, "loop")?.hl;
+        if n < 2 {
+            return Err(fail(
+                LugreStatus::InvalidArgument,
+                format!("n must be at least 2 (both ends of the period), got {n}"),
+            ));
+        }
+        // The points are made before anything is written: refuse a count memory cannot hold
+        // rather than abort the host.
+        let mut room: Vec<lugre::LoopPoint> = Vec::new();
+        room.try_reserve_exact(n).map_err(|_| {
+            fail(
+                LugreStatus::InvalidArgument,
+                format!("n = {n} points do not fit in memory"),
+            )
+        })?;
+        drop(room);
+        let points = hl.sample(n);
+        let column = |f: fn(&lugre::LoopPoint) -> f64| points.iter().map(f).collect::<Vec<_>>();
+        output(rho, &column(|p| p.rho));
+        output(u, &column(|p| p.u));
+        output(y, &column(|p| p.y));
         Ok(())
     })
 }
@@ -601,7 +643,8 @@ pub extern "C" fn lugre_element_free(element: *mut LugreElement) {
 
 /// Moves the relative displacement to `x` over the next `dt >= 0` seconds (linearly in time:
 /// exact at any stiffness) and writes the friction force at the step's end to `force` (may be
-/// NULL). A failed step leaves the element as it was.
+/// NULL). A failed step leaves the element as it was; a step whose end time is not a finite
+/// number is refused.
 #[no_mangle]
 pub extern "C" fn lugre_element_step(
     element: *mut LugreElement,
@@ -699,5 +742,395 @@ pub extern "C" fn lugre_dynamics_scenario(
         output(z, &m.z);
         output(friction, &m.friction);
         Ok(())
+    })
+}
+
+/// The LuGre family of [`lugre_parameter_name`] and [`LugreFitResult::family`].
+pub const LUGRE_FAMILY_LUGRE: i32 = 0;
+/// The Dahl family.
+pub const LUGRE_FAMILY_DAHL: i32 = 1;
+/// The most parameters a family has (LuGre's seven): the length of the fit's arrays.
+pub const LUGRE_MAX_PARAMETERS: usize = 7;
+
+/// A C string argument (NULL: `None`), or a failure naming it.
+fn text<'a>(p: *const c_char, name: &str) -> Result<Option<std::borrow::Cow<'a, str>>, Failure> {
+    if p.is_null() {
+        return Ok(None);
+    }
+    // SAFETY: a NUL-terminated string from the caller.
+    let bytes = unsafe { CStr::from_ptr(p) };
+    match bytes.to_str() {
+        Ok(s) => Ok(Some(s.into())),
+        Err(_) => Err(fail(
+            LugreStatus::InvalidArgument,
+            format!("{name} is not UTF-8 text"),
+        )),
+    }
+}
+
+/// The parameters of a family, in the core's order.
+fn family_parameters(family: i32) -> Result<&'static [Parameter], Failure> {
+    match family {
+        LUGRE_FAMILY_LUGRE => Ok(&Parameter::LUGRE),
+        LUGRE_FAMILY_DAHL => Ok(&Parameter::DAHL),
+        _ => Err(fail(
+            LugreStatus::InvalidArgument,
+            format!(
+                "family must be LUGRE_FAMILY_LUGRE ({LUGRE_FAMILY_LUGRE}) or LUGRE_FAMILY_DAHL ({LUGRE_FAMILY_DAHL}), got {family}"
+            ),
+        )),
+    }
+}
+
+/// The parameter names as C strings, made once from the core's table.
+fn c_name(p: Parameter) -> *const c_char {
+    static NAMES: OnceLock<Vec<(Parameter, CString)>> = OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        let all = Parameter::LUGRE.iter().chain(&Parameter::DAHL);
+        all.map(|&q| (q, CString::new(q.name()).unwrap_or_default()))
+            .collect()
+    });
+    names
+        .iter()
+        .find(|(q, _)| *q == p)
+        .map_or(std::ptr::null(), |(_, c)| c.as_ptr())
+}
+
+/// The name of parameter `index` of `family` (`LUGRE_FAMILY_LUGRE`: sigma0, sigma1, sigma2,
+/// fc, fs, vs, beta, the order of [`LugreParams`] and of the fit's arrays;
+/// `LUGRE_FAMILY_DAHL`: rho, fc), a static string, to `name`.
+#[no_mangle]
+pub extern "C" fn lugre_parameter_name(
+    family: i32,
+    index: usize,
+    name: *mut *const c_char,
+) -> LugreStatus {
+    guard(|| {
+        let out = handle_mut(name, "name")?;
+        let ps = family_parameters(family)?;
+        let p = ps.get(index).ok_or_else(|| {
+            fail(
+                LugreStatus::InvalidArgument,
+                format!("index must be below {}, got {index}", ps.len()),
+            )
+        })?;
+        *out = c_name(*p);
+        Ok(())
+    })
+}
+
+/// Sets the LuGre parameter called `name` (case-insensitive, as the CLI's flags) to `value`
+/// (checked when a model is made of the parameters, by [`lugre_model_new`]).
+#[no_mangle]
+pub extern "C" fn lugre_params_set(
+    params: *mut LugreParams,
+    name: *const c_char,
+    value: f64,
+) -> LugreStatus {
+    guard(|| {
+        let p = handle_mut(params, "params")?;
+        let given =
+            text(name, "name")?.ok_or_else(|| fail(LugreStatus::NullPointer, "name is NULL"))?;
+        let q = Parameter::from_name(&given)
+            .filter(|q| Parameter::LUGRE.contains(q))
+            .ok_or_else(|| {
+                let known: Vec<&str> = Parameter::LUGRE.iter().map(|q| q.name()).collect();
+                fail(
+                    LugreStatus::InvalidArgument,
+                    format!(
+                        "unknown parameter '{given}' (parameters: {})",
+                        known.join(", ")
+                    ),
+                )
+            })?;
+        let mut core: LuGreParams = (*p).into();
+        core.set(q, value);
+        *p = core.into();
+        Ok(())
+    })
+}
+
+/// How to fit (all zero, [`lugre_fit_options_default`]: the defaults).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct LugreFitOptions {
+    /// `LUGRE_FAMILY_LUGRE` (0) or `LUGRE_FAMILY_DAHL`: the model fitted when `model` is
+    /// NULL (a model's own family must be this one).
+    pub family: i32,
+    /// The values the parameters that are not fitted keep: a LuGre model
+    /// ([`lugre_model_new`]) or a Dahl model ([`lugre_model_new_dahl`]); NULL: no values given
+    /// (a parameter the fit holds must then have one: give a model). Free parameters start
+    /// from the data either way.
+    pub model: *const LugreModel,
+    /// The names of parameters held at the model's values, separated by commas (NULL or "":
+    /// none), e.g. "sigma2" (a parameter whose value is 0 must be held: fitted ones are
+    /// positive).
+    pub fix: *const c_char,
+    /// Names fitted besides the default ones, e.g. "beta" in a full fit (NULL or "": none).
+    pub free: *const c_char,
+    /// The initial bristle deflection `x(0)` (Dahl: `w(0) / rho`), full fit only.
+    pub x0: f64,
+    /// Start points of the full fit (0: the default, 3).
+    pub starts: usize,
+}
+
+/// The fitted parameters with their standard errors and the fit's statistics (as
+/// `lugre fit --json`). The arrays hold the family's parameters in the order of
+/// [`lugre_parameter_name`] (`parameters` of them; 0 after).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LugreFitResult {
+    /// `LUGRE_FAMILY_LUGRE` or `LUGRE_FAMILY_DAHL`.
+    pub family: i32,
+    /// The family's number of parameters (7 or 2).
+    pub parameters: usize,
+    /// Every parameter of the fitted model: the estimates and the values held (for a slow
+    /// LuGre fit, the parameters the loop does not depend on keep the model's values).
+    pub value: [f64; LUGRE_MAX_PARAMETERS],
+    /// 1 where the parameter was fitted, 0 where it was held.
+    pub fitted: [i32; LUGRE_MAX_PARAMETERS],
+    /// The standard error of each fitted parameter (linearised covariance; 0 if held).
+    pub std_error: [f64; LUGRE_MAX_PARAMETERS],
+    /// The 95 % confidence interval of each fitted parameter (the value if held).
+    pub ci95_lo: [f64; LUGRE_MAX_PARAMETERS],
+    pub ci95_hi: [f64; LUGRE_MAX_PARAMETERS],
+    /// 1 where the estimate sits on one of its bounds.
+    pub at_bound: [i32; LUGRE_MAX_PARAMETERS],
+    /// The residual RMS.
+    pub rms: f64,
+    pub samples: usize,
+    /// Degrees of freedom, samples - fitted parameters.
+    pub dof: usize,
+    /// The factor of the 95 % intervals, Student's t on `dof`.
+    pub t_quantile: f64,
+    /// Of the scaled normal matrix.
+    pub condition_number: f64,
+    pub iterations: usize,
+    pub evaluations: usize,
+    pub starts: usize,
+    /// 0: the fit ran out of evaluations at a usable point, reported (the CLI warns).
+    pub converged: i32,
+    /// The turning points a slow fit found in the record (0 for a full fit).
+    pub turning_points: usize,
+}
+
+/// The default options: no model (LuGre), nothing fixed or freed, `x0 = 0`, the default
+/// number of starts.
+#[no_mangle]
+pub extern "C" fn lugre_fit_options_default(out: *mut LugreFitOptions) -> LugreStatus {
+    guard(|| {
+        *handle_mut(out, "out")? = options_or_default(std::ptr::null());
+        Ok(())
+    })
+}
+
+/// The request as `lugre fit` builds it from its model flags, `--fix` and `--free`.
+fn fit_spec(o: &LugreFitOptions) -> Result<FitSpec, Failure> {
+    let family = match o.family {
+        LUGRE_FAMILY_DAHL => Family::Dahl,
+        _ => {
+            // Names the option in the message of an unknown family.
+            family_parameters(o.family)
+                .map_err(|Failure(status, m)| Failure(status, format!("options.{m}")))?;
+            Family::LuGre
+        }
+    };
+    // SAFETY: NULL or a handle made by this library.
+    let mut spec = match unsafe { o.model.as_ref() } {
+        None => FitSpec::new(family),
+        Some(LugreModel { dahl: Some(d), .. }) => FitSpec::dahl(d.rho(), d.fc()),
+        Some(m) => FitSpec::lugre(m.model.params()),
+    };
+    if spec.family() != family {
+        return Err(fail(
+            LugreStatus::InvalidArgument,
+            format!(
+                "options.model is a {} model, options.family says {}",
+                spec.family().label(),
+                family.label()
+            ),
+        ));
+    }
+    type Mark = fn(FitSpec, &str) -> Result<FitSpec, lugre::fit::FitError>;
+    let lists: [(&str, *const c_char, Mark); 2] = [
+        ("options.fix", o.fix, FitSpec::fix),
+        ("options.free", o.free, FitSpec::free),
+    ];
+    for (arg, list, mark) in lists {
+        for name in names(list, arg)? {
+            spec = mark(spec, &name)
+                .map_err(|e| fail(LugreStatus::InvalidArgument, format!("{arg}: {e}")))?;
+        }
+    }
+    Ok(spec)
+}
+
+/// The names of a comma-separated list (blanks around them ignored, empty entries refused).
+fn names(p: *const c_char, arg: &str) -> Result<Vec<String>, Failure> {
+    let Some(list) = text(p, arg)? else {
+        return Ok(Vec::new());
+    };
+    if list.trim().is_empty() {
+        return Ok(Vec::new());
+    }
+    list.split(',')
+        .map(|n| match n.trim() {
+            "" => Err(fail(
+                LugreStatus::InvalidArgument,
+                format!("{arg} has an empty name in '{list}'"),
+            )),
+            n => Ok(n.to_string()),
+        })
+        .collect()
+}
+
+/// The options given, or the defaults for NULL.
+fn options_or_default(options: *const LugreFitOptions) -> LugreFitOptions {
+    // SAFETY: NULL or the caller's options.
+    unsafe { options.as_ref() }
+        .copied()
+        .unwrap_or(LugreFitOptions {
+            family: LUGRE_FAMILY_LUGRE,
+            model: std::ptr::null(),
+            fix: std::ptr::null(),
+            free: std::ptr::null(),
+            x0: 0.0,
+            starts: 0,
+        })
+}
+
+/// Writes the report to `out` and the fitted curve to `fitted` (NULL skips it).
+fn deliver_fit(
+    report: &FitReport,
+    spec: &FitSpec,
+    out: &mut LugreFitResult,
+    fitted: *mut f64,
+) -> Result<(), Failure> {
+    let (family, ps): (i32, &[Parameter]) = match report.family {
+        Family::LuGre => (LUGRE_FAMILY_LUGRE, &Parameter::LUGRE),
+        Family::Dahl => (LUGRE_FAMILY_DAHL, &Parameter::DAHL),
+    };
+    // Every value of the fitted model (a slow LuGre fit's report holds only the loop's).
+    let values: Vec<f64> = match report.family {
+        Family::LuGre => report.lugre_params(spec).named().map(|(_, v)| v).to_vec(),
+        Family::Dahl => report.values().into_iter().map(|(_, v)| v).collect(),
+    };
+    let mut r = LugreFitResult {
+        family,
+        parameters: ps.len(),
+        value: [0.0; LUGRE_MAX_PARAMETERS],
+        fitted: [0; LUGRE_MAX_PARAMETERS],
+        std_error: [0.0; LUGRE_MAX_PARAMETERS],
+        ci95_lo: [0.0; LUGRE_MAX_PARAMETERS],
+        ci95_hi: [0.0; LUGRE_MAX_PARAMETERS],
+        at_bound: [0; LUGRE_MAX_PARAMETERS],
+        rms: report.rms,
+        samples: report.samples,
+        dof: report.dof,
+        t_quantile: report.t_quantile,
+        condition_number: report.condition_number,
+        iterations: report.iterations,
+        evaluations: report.evaluations,
+        starts: report.starts,
+        converged: i32::from(report.converged),
+        turning_points: report.turning_points.unwrap_or(0),
+    };
+    for (i, (p, v)) in ps.iter().zip(values).enumerate() {
+        r.value[i] = v;
+        (r.ci95_lo[i], r.ci95_hi[i]) = (v, v);
+        if let Some(e) = report.estimate(p.name()) {
+            r.fitted[i] = 1;
+            r.std_error[i] = e.stderr;
+            [r.ci95_lo[i], r.ci95_hi[i]] = e.ci95;
+            r.at_bound[i] = i32::from(e.at_bound);
+        }
+    }
+    let numbers = r
+        .value
+        .iter()
+        .chain(&r.std_error)
+        .chain(&r.ci95_lo)
+        .chain(&r.ci95_hi);
+    let summary = [r.rms, r.t_quantile, r.condition_number];
+    if !numbers
+        .chain(&summary)
+        .chain(&report.fitted)
+        .all(|v| v.is_finite())
+    {
+        // The core returns finite reports; C gets no NaN or inf whatever happens.
+        return Err(fail(
+            LugreStatus::InvalidArgument,
+            "the fit's result is not finite (the data cannot determine the model)",
+        ));
+    }
+    *out = r;
+    output(fitted, &report.fitted);
+    Ok(())
+}
+
+/// The slow-loop fit of `sigma0` and `g(0) = fs` (Dahl: `rho`, `fc`) to `n` samples `(u, f)`
+/// of one or more periods of a slow periodic test (as `lugre fit`: the record closes from its
+/// last sample to its first; sample the reversals themselves). `options` may be NULL (the
+/// defaults); `x0` and `starts` apply to the full fit and must be 0 here. The result goes to
+/// `out`, the fitted force at every sample to `fitted` (`n` values; NULL skips it). A fit
+/// that ran out of evaluations at a usable point is `LUGRE_STATUS_OK` with `converged = 0`.
+#[no_mangle]
+pub extern "C" fn lugre_fit_slow(
+    u: *const f64,
+    f: *const f64,
+    n: usize,
+    options: *const LugreFitOptions,
+    out: *mut LugreFitResult,
+    fitted: *mut f64,
+) -> LugreStatus {
+    guard(|| {
+        let (u, f) = (input(u, n, "u")?, input(f, n, "f")?);
+        let out = handle_mut(out, "out")?;
+        let o = options_or_default(options);
+        for (name, set) in [
+            ("options.x0", o.x0 != 0.0),
+            ("options.starts", o.starts != 0),
+        ] {
+            if set {
+                return Err(fail(
+                    LugreStatus::InvalidArgument,
+                    format!("{name} applies to the full fit (lugre_fit), not the slow fit"),
+                ));
+            }
+        }
+        let spec = fit_spec(&o)?;
+        let report = fit_slow(&spec, u, f)?;
+        deliver_fit(&report, &spec, out, fitted)
+    })
+}
+
+/// The full fit of `sigma0, sigma1, sigma2, fc, fs, vs` (and `beta` if freed; Dahl: `rho`,
+/// `fc`) to `n` rate-dependent samples `(t, u, f)` (`t` strictly increasing) on the exact
+/// simulation from `options->x0` (as `lugre fit --fit full`). Otherwise as
+/// [`lugre_fit_slow`]. A NaN in `f` marks a sample with no measured force (its `u` still
+/// drives the simulation; as an empty force cell in `lugre fit`'s files).
+#[no_mangle]
+pub extern "C" fn lugre_fit(
+    t: *const f64,
+    u: *const f64,
+    f: *const f64,
+    n: usize,
+    options: *const LugreFitOptions,
+    out: *mut LugreFitResult,
+    fitted: *mut f64,
+) -> LugreStatus {
+    guard(|| {
+        // The core refuses an infinite force; NaN is a missing one.
+        let (t, u, f) = (input(t, n, "t")?, input(u, n, "u")?, values(f, n, "f")?);
+        let out = handle_mut(out, "out")?;
+        let o = options_or_default(options);
+        let spec = fit_spec(&o)?;
+        let starts = match o.starts {
+            0 => FullOptions::DEFAULT_STARTS,
+            k => k,
+        };
+        let full = FullOptions::default().with_x0(o.x0).with_starts(starts);
+        let report = fit_full(&spec, t, u, f, full)?;
+        deliver_fit(&report, &spec, out, fitted)
     })
 }

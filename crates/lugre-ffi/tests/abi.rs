@@ -174,3 +174,373 @@ fn cycles_simulate_and_dynamics_through_the_abi() {
     assert!((xs[2] - 2.5451019).abs() < 1e-6, "{xs:?}");
     assert!(last_error().starts_with("unknown scenario 'nope'"));
 }
+
+#[test]
+fn loop_sample_checks_its_count_and_is_the_cores_sample() {
+    let m = table1();
+    let mut hl = ptr::null_mut();
+    let u = [0.0, 1e-5, 5e-6, 1.5e-5];
+    assert_eq!(lugre_loop_new(m, u.as_ptr(), 4, &mut hl), LugreStatus::Ok);
+    // Buffers sized for n = 0 and 1 (the core would make 2 points): refused, nothing written.
+    let mut y = [7.0; 1];
+    for n in [0, 1] {
+        let status = lugre_loop_sample(hl, n, ptr::null_mut(), ptr::null_mut(), y.as_mut_ptr());
+        assert_eq!(status, LugreStatus::InvalidArgument);
+        assert_eq!(
+            last_error(),
+            format!("n must be at least 2 (both ends of the period), got {n}")
+        );
+    }
+    assert_eq!(y, [7.0]);
+    assert_eq!(
+        lugre_loop_sample(
+            hl,
+            usize::MAX / 8,
+            ptr::null_mut(),
+            ptr::null_mut(),
+            ptr::null_mut()
+        ),
+        LugreStatus::InvalidArgument
+    );
+    assert!(
+        last_error().contains("do not fit in memory"),
+        "{}",
+        last_error()
+    );
+    let (mut rho, mut uu, mut yy) = ([0.0; 5], [0.0; 5], [0.0; 5]);
+    let status = lugre_loop_sample(hl, 5, rho.as_mut_ptr(), uu.as_mut_ptr(), yy.as_mut_ptr());
+    assert_eq!(status, LugreStatus::Ok);
+    let model = lugre::LuGre::from_params(lugre::LuGreParams::canudas_de_wit_1995()).unwrap();
+    let tp = lugre::TurningPoints::new(&u).unwrap();
+    let core = lugre::HysteresisLoop::new(model.rate_independent(), &tp).unwrap();
+    let want = core.sample(5);
+    assert_eq!(rho.to_vec(), want.iter().map(|p| p.rho).collect::<Vec<_>>());
+    assert_eq!(uu.to_vec(), want.iter().map(|p| p.u).collect::<Vec<_>>());
+    assert_eq!(yy.to_vec(), want.iter().map(|p| p.y).collect::<Vec<_>>());
+    let (mut work, mut period) = (0.0, 0.0);
+    assert_eq!(
+        lugre_loop_summary(hl, &mut work, &mut period),
+        LugreStatus::Ok
+    );
+    assert_eq!((work, period), (core.work_per_period(), core.period()));
+    lugre_loop_free(hl);
+    lugre_model_free(m);
+}
+
+#[test]
+fn an_element_step_past_the_largest_time_is_refused() {
+    let m = table1();
+    let mut e = ptr::null_mut();
+    assert_eq!(lugre_element_new(m, 0.0, &mut e), LugreStatus::Ok);
+    assert_eq!(
+        lugre_element_step(e, 0.0, 1.7e308, ptr::null_mut()),
+        LugreStatus::Ok
+    );
+    assert_eq!(
+        lugre_element_step(e, 0.0, 1.7e308, ptr::null_mut()),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(
+        last_error(),
+        "the step 1.7e308 from t = 1.7e308 takes the time past the largest finite number"
+    );
+    let mut t = 0.0;
+    let null = ptr::null_mut();
+    assert_eq!(
+        lugre_element_state(e, &mut t, null, null, null),
+        LugreStatus::Ok
+    );
+    assert_eq!(t, 1.7e308);
+    lugre_element_free(e);
+    lugre_model_free(m);
+}
+
+#[test]
+fn parameters_by_name() {
+    let mut p = LugreParams::default();
+    assert_eq!(
+        lugre_params_set(&mut p, c" FS ".as_ptr(), 3.0),
+        LugreStatus::Ok
+    );
+    assert_eq!(p.fs, 3.0);
+    assert_eq!(
+        lugre_params_set(&mut p, c"rho".as_ptr(), 3.0),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(
+        last_error(),
+        "unknown parameter 'rho' (parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"
+    );
+    let mut name = ptr::null();
+    let names = |family: i32, count: usize| -> Vec<String> {
+        (0..count)
+            .map(|i| {
+                let mut name = ptr::null();
+                assert_eq!(lugre_parameter_name(family, i, &mut name), LugreStatus::Ok);
+                unsafe { CStr::from_ptr(name) }
+                    .to_str()
+                    .unwrap()
+                    .to_string()
+            })
+            .collect()
+    };
+    let core = |ps: &[lugre::model::Parameter]| -> Vec<String> {
+        ps.iter().map(|p| p.name().to_string()).collect()
+    };
+    assert_eq!(
+        names(LUGRE_FAMILY_LUGRE, 7),
+        core(&lugre::model::Parameter::LUGRE)
+    );
+    assert_eq!(
+        names(LUGRE_FAMILY_DAHL, 2),
+        core(&lugre::model::Parameter::DAHL)
+    );
+    assert_eq!(
+        lugre_parameter_name(LUGRE_FAMILY_DAHL, 2, &mut name),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(last_error(), "index must be below 2, got 2");
+    assert_eq!(
+        lugre_parameter_name(5, 0, &mut name),
+        LugreStatus::InvalidArgument
+    );
+    assert!(last_error().starts_with("family must be LUGRE_FAMILY_LUGRE (0)"));
+}
+
+/// Samples of the paper's Example 4 loop (sigma0 = 6, fs = 2), every 1/160 of rho, with a
+/// small deterministic ripple so that the standard errors are not 0.
+fn example4_record() -> (Vec<f64>, Vec<f64>) {
+    let model = lugre::LuGre::paper().with_sigma0(6.0).unwrap();
+    let tp = lugre::TurningPoints::new(&[0.0, 1.0, 0.5, 1.5]).unwrap();
+    let hl = lugre::HysteresisLoop::new(model.rate_independent(), &tp).unwrap();
+    let points = hl.sample(401);
+    let u = points.iter().map(|p| p.u).collect();
+    let f = points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| p.y + 1e-3 * ((i * 7919 % 13) as f64 - 6.0))
+        .collect();
+    (u, f)
+}
+
+fn zero_result() -> LugreFitResult {
+    LugreFitResult {
+        family: -1,
+        parameters: 0,
+        value: [0.0; 7],
+        fitted: [0; 7],
+        std_error: [0.0; 7],
+        ci95_lo: [0.0; 7],
+        ci95_hi: [0.0; 7],
+        at_bound: [0; 7],
+        rms: 0.0,
+        samples: 0,
+        dof: 0,
+        t_quantile: 0.0,
+        condition_number: 0.0,
+        iterations: 0,
+        evaluations: 0,
+        starts: 0,
+        converged: 0,
+        turning_points: 0,
+    }
+}
+
+#[test]
+fn the_slow_fit_is_the_cores() {
+    let (u, f) = example4_record();
+    let n = u.len();
+    let mut r = zero_result();
+    let mut curve = vec![0.0; n];
+    let status = lugre_fit_slow(
+        u.as_ptr(),
+        f.as_ptr(),
+        n,
+        ptr::null(),
+        &mut r,
+        curve.as_mut_ptr(),
+    );
+    assert_eq!(status, LugreStatus::Ok, "{}", last_error());
+    let spec = lugre::FitSpec::new(lugre::fit::Family::LuGre);
+    let core = lugre::fit_slow(&spec, &u, &f).unwrap();
+    let s0 = core.estimate("sigma0").unwrap();
+    let fs = core.estimate("fs").unwrap();
+    assert_eq!((r.family, r.parameters), (LUGRE_FAMILY_LUGRE, 7));
+    assert_eq!(r.fitted, [1, 0, 0, 0, 1, 0, 0]);
+    assert_eq!((r.value[0], r.std_error[0]), (s0.value, s0.stderr));
+    assert_eq!((r.value[4], r.std_error[4]), (fs.value, fs.stderr));
+    assert_eq!([r.ci95_lo[0], r.ci95_hi[0]], s0.ci95);
+    assert!(r.std_error[0] > 0.0 && (r.value[0] - 6.0).abs() < 10.0 * r.std_error[0]);
+    // The parameters the loop does not depend on keep the model's values (the defaults).
+    assert_eq!((r.value[1], r.std_error[1], r.ci95_lo[1]), (1.0, 0.0, 1.0));
+    assert_eq!(
+        (r.rms, r.samples, r.dof, r.converged),
+        (core.rms, n, core.dof, 1)
+    );
+    assert_eq!(r.turning_points, core.turning_points.unwrap());
+    assert_eq!(curve, core.fitted);
+
+    // Dahl, with its values from a model; fc held at 2.
+    let mut dahl = ptr::null_mut();
+    assert_eq!(lugre_model_new_dahl(1.0, 2.0, &mut dahl), LugreStatus::Ok);
+    let mut o = LugreFitOptions {
+        family: 7,
+        model: ptr::null(),
+        fix: ptr::null(),
+        free: ptr::null(),
+        x0: 1.0,
+        starts: 0,
+    };
+    assert_eq!(lugre_fit_options_default(&mut o), LugreStatus::Ok);
+    assert_eq!(
+        (o.model, o.fix, o.x0, o.starts),
+        (ptr::null(), ptr::null(), 0.0, 0)
+    );
+    assert_eq!(o.family, LUGRE_FAMILY_LUGRE);
+    o.model = dahl;
+    let null = ptr::null_mut();
+    let status = lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null);
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert_eq!(
+        last_error(),
+        "options.model is a Dahl model, options.family says LuGre"
+    );
+    o.family = LUGRE_FAMILY_DAHL;
+    o.fix = c"fc".as_ptr();
+    assert_eq!(
+        lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
+        LugreStatus::Ok
+    );
+    assert_eq!(
+        (r.family, r.parameters, r.fitted),
+        (LUGRE_FAMILY_DAHL, 2, [1, 0, 0, 0, 0, 0, 0])
+    );
+    assert_eq!(r.value[1], 2.0);
+    let spec = lugre::FitSpec::dahl(1.0, 2.0).fix("fc").unwrap();
+    assert_eq!(
+        r.value[0],
+        lugre::fit_slow(&spec, &u, &f).unwrap().estimates[0].value
+    );
+
+    // Bad requests: the message names the option or the sample, nothing is written.
+    let before = r;
+    o.fix = c"fc, nope".as_ptr();
+    assert_eq!(
+        lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
+        LugreStatus::InvalidArgument
+    );
+    assert!(
+        last_error().starts_with("options.fix: "),
+        "{}",
+        last_error()
+    );
+    assert!(last_error().contains("nope"), "{}", last_error());
+    o.fix = c"fc,".as_ptr();
+    assert_eq!(
+        lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(last_error(), "options.fix has an empty name in 'fc,'");
+    o.fix = ptr::null();
+    o.family = 9;
+    let status = lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null);
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert!(last_error().starts_with("options.family must be LUGRE_FAMILY_LUGRE (0)"));
+    o.family = LUGRE_FAMILY_DAHL;
+    o.x0 = 0.5;
+    assert_eq!(
+        lugre_fit_slow(u.as_ptr(), f.as_ptr(), n, &o, &mut r, null),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(
+        last_error(),
+        "options.x0 applies to the full fit (lugre_fit), not the slow fit"
+    );
+    let mut g = f.clone();
+    g[3] = f64::NAN;
+    assert_eq!(
+        lugre_fit_slow(u.as_ptr(), g.as_ptr(), n, ptr::null(), &mut r, null),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(last_error(), "f[3] = NaN is not a finite number");
+    assert_eq!(r, before);
+    lugre_model_free(dahl);
+}
+
+#[test]
+fn the_full_fit_is_the_cores() {
+    // Sweeps of +-6 at three speeds of the paper's model; sigma2 = 0 and beta = 1 held.
+    let model = lugre::LuGre::paper();
+    let (mut t, mut u) = (vec![0.0], vec![-6.0_f64]);
+    for speed in [0.1, 1.0, 10.0] {
+        for target in [6.0, -6.0] {
+            let (t0, u0) = (*t.last().unwrap(), *u.last().unwrap());
+            for j in 1..=60 {
+                let x = f64::from(j) / 60.0;
+                t.push(t0 + (target - u0).abs() / speed * x);
+                u.push(u0 + (target - u0) * x);
+            }
+        }
+    }
+    let input = lugre::PiecewiseLinear::new(t.clone(), u.clone()).unwrap();
+    let mut sim = lugre::Trajectory::default();
+    lugre::Simulator::new(&model, lugre::Gamma::ONE, 0.0)
+        .unwrap()
+        .at_knots(&input, 1, &mut sim)
+        .unwrap();
+    let mut f: Vec<f64> = sim
+        .y
+        .iter()
+        .enumerate()
+        .map(|(i, y)| y + 1e-3 * ((i * 7919 % 13) as f64 - 6.0))
+        .collect();
+    f[5] = f64::NAN; // no force measured there
+    let n = t.len();
+    let mut p = LugreParams::default();
+    assert_eq!(lugre_params_default(&mut p), LugreStatus::Ok);
+    let mut m = ptr::null_mut();
+    assert_eq!(lugre_model_new(&p, &mut m), LugreStatus::Ok);
+    let o = LugreFitOptions {
+        family: LUGRE_FAMILY_LUGRE,
+        model: m,
+        fix: c"sigma2,beta".as_ptr(),
+        free: ptr::null(),
+        x0: 0.0,
+        starts: 2,
+    };
+    let mut r = zero_result();
+    let mut curve = vec![0.0; n];
+    let status = lugre_fit(
+        t.as_ptr(),
+        u.as_ptr(),
+        f.as_ptr(),
+        n,
+        &o,
+        &mut r,
+        curve.as_mut_ptr(),
+    );
+    assert_eq!(status, LugreStatus::Ok, "{}", last_error());
+    let spec = lugre::FitSpec::lugre(lugre::LuGreParams::default())
+        .fix("sigma2")
+        .unwrap()
+        .fix("beta")
+        .unwrap();
+    let options = lugre::fit::FullOptions::default().with_starts(2);
+    let core = lugre::fit_full(&spec, &t, &u, &f, options).unwrap();
+    assert_eq!(r.fitted, [1, 1, 0, 1, 1, 1, 0]);
+    for (i, name) in ["sigma0", "sigma1", "fc", "fs", "vs"].iter().enumerate() {
+        let j = [0, 1, 3, 4, 5][i];
+        let e = core.estimate(name).unwrap();
+        assert_eq!((r.value[j], r.std_error[j]), (e.value, e.stderr), "{name}");
+    }
+    assert_eq!((r.starts, r.samples, r.turning_points), (2, n - 1, 0));
+    assert_eq!(curve, core.fitted);
+    let mut bad = f.clone();
+    bad[0] = f64::INFINITY;
+    let null = ptr::null_mut();
+    assert_eq!(
+        lugre_fit(t.as_ptr(), u.as_ptr(), bad.as_ptr(), n, &o, &mut r, null),
+        LugreStatus::InvalidArgument
+    );
+    lugre_model_free(m);
+}

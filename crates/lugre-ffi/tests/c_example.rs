@@ -1,26 +1,7 @@
 //! `examples/c/friction.c` built against the static library and run: what it prints is the core's
 //! own results to the last bit (parsed back from `%.17g`).
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// Builds the staticlib (cargo test builds only the rlib) and returns its path.
-fn static_library() -> PathBuf {
-    let status = Command::new(env!("CARGO"))
-        .args(["build", "--quiet", "-p", "lugre-ffi"])
-        .current_dir(root())
-        .status()
-        .expect("cargo runs");
-    assert!(status.success(), "cargo build -p lugre-ffi failed");
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| root().join("target"));
-    target.join("debug/liblugre_c.a")
-}
+mod common;
 
 fn numbers_after(line: &str, key: &str) -> f64 {
     let rest = &line[line.find(key).expect(key) + key.len()..];
@@ -29,23 +10,7 @@ fn numbers_after(line: &str, key: &str) -> f64 {
 
 #[test]
 fn the_c_example_prints_the_cores_results() {
-    let lib = static_library();
-    let exe = std::env::temp_dir().join(format!("lugre-friction-{}", std::process::id()));
-    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
-    let status = Command::new(cc)
-        .arg(root().join("examples/c/friction.c"))
-        .arg(format!(
-            "-I{}",
-            root().join("crates/lugre-ffi/include").display()
-        ))
-        .arg(&lib)
-        .args(["-lm", "-lpthread", "-ldl", "-Wall", "-Werror", "-o"])
-        .arg(&exe)
-        .status()
-        .expect("a C compiler (cc)");
-    assert!(status.success(), "the C example does not compile");
-    let out = Command::new(&exe).output().expect("the example runs");
-    let _ = std::fs::remove_file(&exe);
+    let out = common::compile_and_run(&common::root().join("examples/c/friction.c"), &[]);
     assert!(
         out.status.success(),
         "{}",

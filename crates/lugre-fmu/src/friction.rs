@@ -1,7 +1,7 @@
 //! `lugre-friction.fmu`: the friction element (see the crate docs for the equations).
 
 use lugre::simulate::FrictionElement;
-use lugre::{LuGre, LuGreParams};
+use lugre::LuGreParams;
 
 use crate::{param, set_param, Kind, Unit};
 
@@ -15,21 +15,22 @@ pub mod vr {
     pub const F: u32 = 3;
     pub const Z: u32 = 4;
     pub const DER_Z: u32 = 5;
-    pub const X0: u32 = 17;
+    /// The initial bristle deflection `z(0)` (as the mass FMU's).
+    pub const Z0: u32 = 17;
 }
 
 /// One instance of the friction FMU.
 pub(crate) struct Friction {
     kind: Kind,
     params: LuGreParams,
-    x0: f64,
+    z0: f64,
     time: f64,
     x: f64,
     v: f64,
-    /// The state (model exchange).
+    /// The state (model exchange; co-simulation: the element's).
     z: f64,
-    model: Option<LuGre>,
-    /// The element (co-simulation), from the end of initialization.
+    /// The element, from the end of initialization: it steps in co-simulation and gives the
+    /// rates in model exchange.
     element: Option<FrictionElement>,
 }
 
@@ -38,24 +39,24 @@ impl Friction {
         Self {
             kind,
             params: LuGreParams::canudas_de_wit_1995(),
-            x0: 0.0,
+            z0: 0.0,
             time: 0.0,
             x: 0.0,
             v: 0.0,
             z: 0.0,
-            model: None,
             element: None,
         }
     }
 
-    /// `z'` and `F` at the current state and inputs (model exchange).
-    fn rates(&self) -> (f64, f64) {
-        let p = &self.params;
-        let Some(m) = &self.model else {
-            return (0.0, p.sigma0 * self.z);
-        };
-        let dz = self.v - p.sigma0 * self.v.abs() * self.z / m.g(self.v);
-        (dz, p.sigma0 * self.z + p.sigma1 * dz + m.f(self.v))
+    /// `z'` and `F` at the current state and inputs (model exchange), from the core.
+    fn rates(&self) -> Result<(f64, f64), String> {
+        crate::rates(self.element.as_ref(), self.params, self.v, self.z)
+    }
+
+    fn co_simulation(&self) -> Option<&FrictionElement> {
+        self.element
+            .as_ref()
+            .filter(|_| self.kind == Kind::CoSimulation)
     }
 }
 
@@ -67,33 +68,33 @@ impl Unit for Friction {
             vr::F => "F",
             vr::Z => "z",
             vr::DER_Z => "der(z)",
-            vr::X0 => "x0",
+            vr::Z0 => "z0",
             _ => crate::param_name(vr),
         }
     }
 
-    fn get(&self, r: u32) -> Option<f64> {
-        Some(match r {
-            crate::vr::TIME => self.time,
+    fn get(&self, r: u32) -> Result<f64, String> {
+        Ok(match r {
+            crate::vr::TIME => self.time(),
             vr::X => self.x,
             vr::V => self.v,
-            vr::F => match &self.element {
-                Some(e) => e.force(),
-                None => self.rates().1,
+            vr::F => match (&self.element, self.kind) {
+                (Some(e), Kind::CoSimulation) => e.force(),
+                _ => self.rates()?.1,
             },
-            vr::Z => self.element.as_ref().map_or(self.z, FrictionElement::state),
-            vr::DER_Z => self.rates().0,
-            vr::X0 => self.x0,
+            vr::Z => self.co_simulation().map_or(self.z, FrictionElement::state),
+            vr::DER_Z => self.rates()?.0,
+            vr::Z0 => self.z0,
             _ => return param(&self.params, r),
         })
     }
 
     fn set(&mut self, r: u32, value: f64) -> Result<(), String> {
-        let initialized = self.model.is_some();
+        let initialized = self.element.is_some();
         match r {
             vr::X => self.x = value,
             vr::V => self.v = value,
-            vr::X0 if !initialized => self.x0 = value,
+            vr::Z0 if !initialized => self.z0 = value,
             _ => {
                 let name = self.name_of(r);
                 set_param(&mut self.params, r, value, initialized, name)?
@@ -104,20 +105,17 @@ impl Unit for Friction {
 
     fn initialize(&mut self, start: f64, _tolerance: Option<f64>) -> Result<(), String> {
         self.time = start;
-        let model = LuGre::from_params(self.params).map_err(|e| e.to_string())?;
-        if self.kind == Kind::CoSimulation {
-            let element = FrictionElement::starting_at(model.clone(), start, self.x, self.x0)
-                .map_err(|e| e.to_string())?;
-            self.element = Some(element);
-        } else {
-            self.z = self.x0;
-        }
-        self.model = Some(model);
+        self.element = Some(crate::element(self.params, start, self.x, self.z0)?);
+        self.z = self.z0;
         Ok(())
     }
 
     fn set_time(&mut self, t: f64) {
         self.time = t;
+    }
+
+    fn time(&self) -> f64 {
+        self.time
     }
 
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
@@ -126,7 +124,12 @@ impl Unit for Friction {
             return Err("fmi3DoStep before the end of initialization".into());
         };
         if !x_end.is_finite() {
-            return Err(format!("the displacement x + v h is not finite (v = {v})"));
+            return Err(format!(
+                "the displacement x + v h at the step's end is not finite (x = {}, v = {}, h = {})",
+                lugre::error::num(self.x),
+                lugre::error::num(v),
+                lugre::error::num(h)
+            ));
         }
         e.step(x_end, h).map_err(|err| err.to_string())?;
         self.time = t + h;
@@ -142,8 +145,8 @@ impl Unit for Friction {
         self.z = states[0];
     }
 
-    fn derivatives(&self) -> Vec<f64> {
-        vec![self.rates().0]
+    fn derivatives(&self) -> Result<Vec<f64>, String> {
+        Ok(vec![self.rates()?.0])
     }
 
     fn nominals(&self) -> Vec<f64> {

@@ -20,17 +20,27 @@
 //! Canudas de Wit et al. 1995):
 //!
 //! ```text
-//! inputs x [m], v = dx/dt [m/s]     state z [m], z(0) = x0
+//! inputs x [m], v = dx/dt [m/s]     state z [m], z(0) = z0
 //! z' = v - sigma0 |v| z / g(v)      g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta)
 //! output F = sigma0 z + sigma1 z' + sigma2 v   [N]
 //! ```
 //!
 //! * Model exchange: the host integrates `z` (one continuous state, no event indicator: the
-//!   non-smoothness of `|v|` is in the input the host provides).
+//!   non-smoothness of `|v|` is in the input the host provides); `z'` and `F` are the core's
+//!   ([`lugre::simulate::FrictionElement::rates_at`], the arithmetic of a co-simulation step's
+//!   output).
 //! * Co-simulation: `fmi3DoStep(t, h)` moves the displacement linearly from where it is to
 //!   `x + v h` (`x`, `v` the inputs set for `t`) and advances the element exactly
 //!   ([`lugre::simulate::FrictionElement`]): exact for a displacement linear over each step at
 //!   any stiffness and step size. A host that gives no `v` holds `x` over each step.
+//!
+//! The parameters' names, units, start values and descriptions in `fmu/*.xml` are the core's
+//! ([`Parameter`], Table I's values; checked by this crate's tests).
+//!
+//! **The state machine.** Every call is checked against FMI 3.0's modes (`Phase`): a call out
+//! of order (a second `fmi3EnterInitializationMode` after steps, `fmi3DoStep` before the end of
+//! initialization or after `fmi3Terminate`, ...) is `fmi3Error` with a message naming the call,
+//! the mode the instance is in and the modes it is allowed in; `fmi3Reset` starts again.
 //!
 //! No panic crosses the boundary; a bad parameter or a non-finite input is `fmi3Error` with the
 //! message sent to the host's logger.
@@ -40,11 +50,15 @@
 use std::ffi::{c_char, c_void, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
+use lugre::error::num;
 use lugre::model::Parameter;
-use lugre::LuGreParams;
+use lugre::simulate::FrictionElement;
+use lugre::{LuGre, LuGreParams};
 
 pub mod friction;
 pub mod mass;
+#[cfg(test)]
+mod tests;
 
 pub use friction::TOKEN as FRICTION_TOKEN;
 pub use mass::TOKEN as MASS_TOKEN;
@@ -83,26 +97,85 @@ pub(crate) enum Kind {
     CoSimulation,
 }
 
+/// Where an instance is in FMI 3.0's state machine: each call is allowed in some of these.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Phase {
+    /// After instantiation or `fmi3Reset`.
+    Instantiated,
+    Initialization,
+    Event,
+    /// Model exchange, between events.
+    ContinuousTime,
+    /// Co-simulation, between communication points.
+    Step,
+    Terminated,
+}
+
+impl Phase {
+    fn name(self) -> &'static str {
+        match self {
+            Phase::Instantiated => "the instantiated state (after instantiation or fmi3Reset)",
+            Phase::Initialization => "initialization mode",
+            Phase::Event => "event mode",
+            Phase::ContinuousTime => "continuous-time mode",
+            Phase::Step => "step mode",
+            Phase::Terminated => "the terminated state",
+        }
+    }
+}
+
 /// What a model provides to the FMI functions. Values are checked finite before `set`.
 pub(crate) trait Unit {
     fn name_of(&self, vr: u32) -> &'static str;
-    fn get(&self, vr: u32) -> Option<f64>;
+    /// The value at `vr` (an error for an unknown reference or a value that cannot be had).
+    fn get(&self, vr: u32) -> Result<f64, String>;
     fn set(&mut self, vr: u32, value: f64) -> Result<(), String>;
     /// The end of initialization: the parameters checked, the state set.
     fn initialize(&mut self, start: f64, tolerance: Option<f64>) -> Result<(), String>;
     fn set_time(&mut self, t: f64);
+    /// The instance's time (what `get(vr::TIME)` returns, without its error path).
+    fn time(&self) -> f64;
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String>;
     fn states(&self) -> Vec<f64>;
     /// `states` has the model's number of states (checked by the caller).
     fn set_states(&mut self, states: &[f64]);
-    fn derivatives(&self) -> Vec<f64>;
+    fn derivatives(&self) -> Result<Vec<f64>, String>;
     fn nominals(&self) -> Vec<f64>;
     fn indicators(&self) -> Vec<f64>;
 }
 
-/// A friction parameter's value.
-pub(crate) fn param(p: &LuGreParams, r: u32) -> Option<f64> {
-    p.get(parameter(r)?)
+/// A friction parameter's value, or the error for a reference no variable has.
+pub(crate) fn param(p: &LuGreParams, r: u32) -> Result<f64, String> {
+    parameter(r)
+        .and_then(|q| p.get(q))
+        .ok_or_else(|| format!("no Float64 variable has value reference {r}"))
+}
+
+/// The friction element of the parameters (checked as the models check them), at rest at
+/// time `t`, displacement `x`, deflection `z`: the core's friction law for both models.
+pub(crate) fn element(p: LuGreParams, t: f64, x: f64, z: f64) -> Result<FrictionElement, String> {
+    let model = LuGre::from_params(p).map_err(|e| e.to_string())?;
+    FrictionElement::starting_at(model, t, x, z).map_err(|e| e.to_string())
+}
+
+/// `(z', F)` at deflection `z` and velocity `v` from `element` (built at the end of
+/// initialization), or, before that, from the parameters as they stand.
+pub(crate) fn rates(
+    element: Option<&FrictionElement>,
+    p: LuGreParams,
+    v: f64,
+    z: f64,
+) -> Result<(f64, f64), String> {
+    let built;
+    let e = match element {
+        Some(e) => e,
+        None => {
+            built = self::element(p, 0.0, 0.0, 0.0)?;
+            &built
+        }
+    };
+    let s = e.rates_at(v, z).map_err(|e| e.to_string())?;
+    Ok((s.dz, s.y))
 }
 
 /// Sets a friction parameter (before the end of initialization only).
@@ -142,9 +215,11 @@ struct Fmu {
     log: LogMessage,
     kind: Kind,
     token: &'static str,
+    /// Co-simulation: `fmi3ExitInitializationMode` enters event mode rather than step mode.
+    event_mode_used: bool,
     start: f64,
     tolerance: Option<f64>,
-    initialized: bool,
+    phase: Phase,
     unit: Box<dyn Unit>,
 }
 
@@ -160,6 +235,42 @@ impl Fmu {
         } else {
             Box::new(friction::Friction::new(kind))
         }
+    }
+
+    /// Refuses `call` unless the instance is in one of the phases `allowed`.
+    #[inline]
+    fn expect(&self, call: &str, allowed: &[Phase]) -> Result<(), String> {
+        if allowed.contains(&self.phase) {
+            Ok(())
+        } else {
+            Err(self.out_of_order(call, allowed))
+        }
+    }
+
+    /// The message of a call out of order (off the hot path of every call).
+    #[cold]
+    #[inline(never)]
+    fn out_of_order(&self, call: &str, allowed: &[Phase]) -> String {
+        let names: Vec<&str> = allowed.iter().map(|p| p.name()).collect();
+        format!(
+            "{call} is not allowed in {}: only in {}{}",
+            self.phase.name(),
+            names.join(" or "),
+            match self.phase {
+                Phase::Instantiated => "",
+                _ => " (fmi3Reset starts the instance again)",
+            }
+        )
+    }
+
+    /// [`Self::expect`] for a function of model exchange only.
+    fn expect_model_exchange(&self, call: &str, allowed: &[Phase]) -> Result<(), String> {
+        if self.kind != Kind::ModelExchange {
+            return Err(format!(
+                "{call} is a model-exchange function: this instance is a co-simulation"
+            ));
+        }
+        self.expect(call, allowed)
     }
 
     fn check_states(&self, n: usize) -> Result<usize, String> {
@@ -230,7 +341,7 @@ fn deliver(fmu: &Fmu, what: &str, values: Vec<f64>, out: *mut f64, n: usize) -> 
     if values.iter().any(|v| !v.is_finite()) {
         return Err(format!(
             "the {what} are not finite at t = {}",
-            fmu.unit.get(vr::TIME).unwrap_or(0.0)
+            fmu.unit.time()
         ));
     }
     slice_mut(out, n).copy_from_slice(&values);
@@ -239,6 +350,7 @@ fn deliver(fmu: &Fmu, what: &str, values: Vec<f64>, out: *mut f64, n: usize) -> 
 
 fn instantiate(
     kind: Kind,
+    event_mode_used: bool,
     token: *const c_char,
     environment: *mut c_void,
     log: LogMessage,
@@ -262,9 +374,10 @@ fn instantiate(
             log,
             kind,
             token,
+            event_mode_used,
             start: 0.0,
             tolerance: None,
-            initialized: false,
+            phase: Phase::Instantiated,
             unit: Fmu::fresh(kind, token),
         };
         Box::into_raw(Box::new(fmu)).cast::<c_void>()
@@ -297,7 +410,7 @@ pub extern "C" fn fmi3InstantiateModelExchange(
     environment: *mut c_void,
     log: LogMessage,
 ) -> Instance {
-    instantiate(Kind::ModelExchange, token, environment, log)
+    instantiate(Kind::ModelExchange, false, token, environment, log)
 }
 
 #[no_mangle]
@@ -308,7 +421,7 @@ pub extern "C" fn fmi3InstantiateCoSimulation(
     _resource_path: *const c_char,
     _visible: bool,
     _logging_on: bool,
-    _event_mode_used: bool,
+    event_mode_used: bool,
     _early_return_allowed: bool,
     _required_intermediate: *const u32,
     _n_required_intermediate: usize,
@@ -316,7 +429,7 @@ pub extern "C" fn fmi3InstantiateCoSimulation(
     log: LogMessage,
     _intermediate_update: *const c_void,
 ) -> Instance {
-    instantiate(Kind::CoSimulation, token, environment, log)
+    instantiate(Kind::CoSimulation, event_mode_used, token, environment, log)
 }
 
 #[no_mangle]
@@ -361,12 +474,18 @@ pub extern "C" fn fmi3EnterInitializationMode(
     _stop_time: f64,
 ) -> Status {
     with(instance, |fmu| {
+        // Once more after steps would silently rewind time: fmi3Reset says so.
+        fmu.expect("fmi3EnterInitializationMode", &[Phase::Instantiated])?;
         if !start_time.is_finite() {
-            return Err(format!("the start time must be finite, got {start_time}"));
+            return Err(format!(
+                "the start time must be finite, got {}",
+                num(start_time)
+            ));
         }
         fmu.start = start_time;
         fmu.unit.set_time(start_time);
         fmu.tolerance = tolerance_defined.then_some(tolerance);
+        fmu.phase = Phase::Initialization;
         Ok(())
     })
 }
@@ -374,27 +493,40 @@ pub extern "C" fn fmi3EnterInitializationMode(
 #[no_mangle]
 pub extern "C" fn fmi3ExitInitializationMode(instance: Instance) -> Status {
     with(instance, |fmu| {
+        fmu.expect("fmi3ExitInitializationMode", &[Phase::Initialization])?;
         fmu.unit.initialize(fmu.start, fmu.tolerance)?;
-        fmu.initialized = true;
+        fmu.phase = match fmu.kind {
+            Kind::CoSimulation if !fmu.event_mode_used => Phase::Step,
+            _ => Phase::Event,
+        };
         Ok(())
     })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3EnterEventMode(instance: Instance) -> Status {
-    with(instance, |_| Ok(()))
+    with(instance, |fmu| {
+        fmu.expect("fmi3EnterEventMode", &[Phase::ContinuousTime, Phase::Step])?;
+        fmu.phase = Phase::Event;
+        Ok(())
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3Terminate(instance: Instance) -> Status {
-    with(instance, |_| Ok(()))
+    with(instance, |fmu| {
+        let live = [Phase::Event, Phase::ContinuousTime, Phase::Step];
+        fmu.expect("fmi3Terminate", &live)?;
+        fmu.phase = Phase::Terminated;
+        Ok(())
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3Reset(instance: Instance) -> Status {
     with(instance, |fmu| {
         fmu.unit = Fmu::fresh(fmu.kind, fmu.token);
-        fmu.initialized = false;
+        fmu.phase = Phase::Instantiated;
         Ok(())
     })
 }
@@ -408,6 +540,7 @@ pub extern "C" fn fmi3GetFloat64(
     n_values: usize,
 ) -> Status {
     with(instance, |fmu| {
+        fmu.expect("fmi3GetFloat64", AFTER_INSTANTIATION)?;
         let (vrs, values) = (slice(vrs, n_vrs), slice_mut(values, n_values));
         if vrs.len() != values.len() {
             return Err(format!(
@@ -417,10 +550,7 @@ pub extern "C" fn fmi3GetFloat64(
             ));
         }
         for (r, out) in vrs.iter().zip(values.iter_mut()) {
-            let value = fmu
-                .unit
-                .get(*r)
-                .ok_or_else(|| format!("no Float64 variable has value reference {r}"))?;
+            let value = fmu.unit.get(*r)?;
             if !value.is_finite() {
                 return Err(format!("{} is not finite", fmu.unit.name_of(*r)));
             }
@@ -439,6 +569,16 @@ pub extern "C" fn fmi3SetFloat64(
     n_values: usize,
 ) -> Status {
     with(instance, |fmu| {
+        fmu.expect(
+            "fmi3SetFloat64",
+            &[
+                Phase::Instantiated,
+                Phase::Initialization,
+                Phase::Event,
+                Phase::ContinuousTime,
+                Phase::Step,
+            ],
+        )?;
         let (vrs, values) = (slice(vrs, n_vrs), slice(values, n_values));
         if vrs.len() != values.len() {
             return Err(format!(
@@ -450,8 +590,9 @@ pub extern "C" fn fmi3SetFloat64(
         vrs.iter().zip(values).try_for_each(|(r, value)| {
             if !value.is_finite() {
                 return Err(format!(
-                    "the value of {} must be a finite number, got {value}",
-                    fmu.unit.name_of(*r)
+                    "the value of {} must be a finite number, got {}",
+                    fmu.unit.name_of(*r),
+                    num(*value)
                 ));
             }
             fmu.unit.set(*r, *value)
@@ -469,7 +610,8 @@ pub extern "C" fn fmi3UpdateDiscreteStates(
     next_event_time_defined: *mut bool,
     _next_event_time: *mut f64,
 ) -> Status {
-    with(instance, |_| {
+    with(instance, |fmu| {
+        fmu.expect("fmi3UpdateDiscreteStates", &[Phase::Event])?;
         write(discrete_states_need_update, false);
         write(terminate, false);
         write(nominals_changed, false);
@@ -481,12 +623,26 @@ pub extern "C" fn fmi3UpdateDiscreteStates(
 
 #[no_mangle]
 pub extern "C" fn fmi3EnterContinuousTimeMode(instance: Instance) -> Status {
-    with(instance, |_| Ok(()))
+    with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3EnterContinuousTimeMode", &[Phase::Event])?;
+        fmu.phase = Phase::ContinuousTime;
+        Ok(())
+    })
 }
 
 #[no_mangle]
 pub extern "C" fn fmi3EnterStepMode(instance: Instance) -> Status {
-    with(instance, |_| Ok(()))
+    with(instance, |fmu| {
+        if fmu.kind != Kind::CoSimulation {
+            return Err(
+                "fmi3EnterStepMode is a co-simulation function: this instance is model exchange"
+                    .into(),
+            );
+        }
+        fmu.expect("fmi3EnterStepMode", &[Phase::Event])?;
+        fmu.phase = Phase::Step;
+        Ok(())
+    })
 }
 
 #[no_mangle]
@@ -496,7 +652,8 @@ pub extern "C" fn fmi3CompletedIntegratorStep(
     enter_event_mode: *mut bool,
     terminate: *mut bool,
 ) -> Status {
-    with(instance, |_| {
+    with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3CompletedIntegratorStep", &[Phase::ContinuousTime])?;
         write(enter_event_mode, false);
         write(terminate, false);
         Ok(())
@@ -506,8 +663,9 @@ pub extern "C" fn fmi3CompletedIntegratorStep(
 #[no_mangle]
 pub extern "C" fn fmi3SetTime(instance: Instance, time: f64) -> Status {
     with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3SetTime", &[Phase::ContinuousTime])?;
         if !time.is_finite() {
-            return Err(format!("the time must be finite, got {time}"));
+            return Err(format!("the time must be finite, got {}", num(time)));
         }
         fmu.unit.set_time(time);
         Ok(())
@@ -521,10 +679,14 @@ pub extern "C" fn fmi3SetContinuousStates(
     n: usize,
 ) -> Status {
     with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3SetContinuousStates", &[Phase::ContinuousTime])?;
         fmu.check_states(n)?;
         let states = slice(states, n);
         if let Some(bad) = states.iter().find(|v| !v.is_finite()) {
-            return Err(format!("the continuous states must be finite, got {bad}"));
+            return Err(format!(
+                "the continuous states must be finite, got {}",
+                num(*bad)
+            ));
         }
         fmu.unit.set_states(states);
         Ok(())
@@ -538,6 +700,7 @@ pub extern "C" fn fmi3GetContinuousStates(
     n: usize,
 ) -> Status {
     with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3GetContinuousStates", AFTER_INSTANTIATION)?;
         deliver(fmu, "continuous states", fmu.unit.states(), states, n)
     })
 }
@@ -549,7 +712,9 @@ pub extern "C" fn fmi3GetContinuousStateDerivatives(
     n: usize,
 ) -> Status {
     with(instance, |fmu| {
-        deliver(fmu, "derivatives", fmu.unit.derivatives(), derivatives, n)
+        let call = "fmi3GetContinuousStateDerivatives";
+        fmu.expect_model_exchange(call, AFTER_INSTANTIATION)?;
+        deliver(fmu, "derivatives", fmu.unit.derivatives()?, derivatives, n)
     })
 }
 
@@ -571,6 +736,7 @@ pub extern "C" fn fmi3GetEventIndicators(
     n: usize,
 ) -> Status {
     with(instance, |fmu| {
+        fmu.expect_model_exchange("fmi3GetEventIndicators", AFTER_INSTANTIATION)?;
         deliver(
             fmu,
             "event indicators",
@@ -613,16 +779,54 @@ pub extern "C" fn fmi3DoStep(
         write(event_handling_needed, false);
         write(terminate, false);
         write(early_return, false);
-        if !fmu.initialized {
-            return Err("fmi3DoStep before the end of initialization".into());
-        }
-        let result = fmu.unit.do_step(current, step);
-        write(
-            last_successful_time,
-            fmu.unit.get(vr::TIME).unwrap_or(current),
-        );
+        fmu.expect("fmi3DoStep", &[Phase::Step])?;
+        let result = check_step(current, step).and_then(|()| fmu.unit.do_step(current, step));
+        write(last_successful_time, fmu.unit.time());
         result
     })
+}
+
+/// The phases after `fmi3EnterInitializationMode`, where values can be read.
+const AFTER_INSTANTIATION: &[Phase] = &[
+    Phase::Initialization,
+    Phase::Event,
+    Phase::ContinuousTime,
+    Phase::Step,
+    Phase::Terminated,
+];
+
+/// `fmi3DoStep`'s arguments: a finite communication point, a finite step size `h >= 0`, and a
+/// finite time at the step's end.
+#[inline]
+fn check_step(current: f64, h: f64) -> Result<(), String> {
+    if current.is_finite() && h >= 0.0 && (current + h).is_finite() {
+        Ok(())
+    } else {
+        Err(bad_step(current, h))
+    }
+}
+
+/// Which of `fmi3DoStep`'s arguments is wrong, in words (off the hot path).
+#[cold]
+#[inline(never)]
+fn bad_step(current: f64, h: f64) -> String {
+    if !current.is_finite() {
+        format!(
+            "fmi3DoStep: the current communication point must be a finite number, got {}",
+            num(current)
+        )
+    } else if !(h >= 0.0 && h.is_finite()) {
+        format!(
+            "fmi3DoStep: the communication step size must be a finite number >= 0, got {}",
+            num(h)
+        )
+    } else {
+        format!(
+            "fmi3DoStep: the step size {} from t = {} takes the time past the largest finite number",
+            num(h),
+            num(current)
+        )
+    }
 }
 
 /// Functions these models do not use: `fmi3Error`, logged.

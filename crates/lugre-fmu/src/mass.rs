@@ -9,10 +9,15 @@
 //!   (`dforce`, the force's rate over the step: a host with a spring sets `k (V - v)`) and solves
 //!   the step with `lugre::dynamics` (Radau IIA with the sign changes of `v` located, to the
 //!   host's tolerance, 1e-8 by default): exact to that tolerance, whatever the step.
-//! * Model exchange: states `x`, `v`, `z`; one event indicator, `v` (where `|v|` kinks).
+//! * Model exchange: states `x`, `v`, `z`; one event indicator, `v` (where `|v|` kinks); `z'`
+//!   and the friction force are the core's ([`FrictionElement::rates_at`]).
+//!
+//! The run starts at the parameters `x0`, `v0` and `z0` (position, velocity, bristle
+//! deflection; all 0 by default).
 
 use lugre::dynamics::{Profile, State, System, Tolerances};
-use lugre::{LuGre, LuGreParams};
+use lugre::simulate::FrictionElement;
+use lugre::LuGreParams;
 
 use crate::{param, set_param, Kind, Unit};
 
@@ -32,6 +37,10 @@ pub mod vr {
     pub const DER_Z: u32 = 9;
     pub const Z0: u32 = 17;
     pub const M: u32 = 18;
+    /// The initial position `x(0)`.
+    pub const X0: u32 = 19;
+    /// The initial velocity `v(0)`.
+    pub const V0: u32 = 20;
 }
 
 /// One instance of the mass FMU.
@@ -39,6 +48,9 @@ pub(crate) struct Mass {
     kind: Kind,
     params: LuGreParams,
     mass: f64,
+    /// The initial position, velocity and bristle deflection.
+    x0: f64,
+    v0: f64,
     z0: f64,
     time: f64,
     force: f64,
@@ -48,7 +60,9 @@ pub(crate) struct Mass {
     z: f64,
     /// The friction force at the end of the last co-simulation step.
     friction: f64,
-    model: Option<LuGre>,
+    /// The friction law, from the end of initialization (its model solves the co-simulation
+    /// steps; its rates are model exchange's).
+    element: Option<FrictionElement>,
     tolerance: Tolerances,
 }
 
@@ -58,6 +72,8 @@ impl Mass {
             kind,
             params: LuGreParams::canudas_de_wit_1995(),
             mass: 1.0,
+            x0: 0.0,
+            v0: 0.0,
             z0: 0.0,
             time: 0.0,
             force: 0.0,
@@ -66,20 +82,15 @@ impl Mass {
             v: 0.0,
             z: 0.0,
             friction: 0.0,
-            model: None,
+            element: None,
             tolerance: Tolerances::default(),
         }
     }
 
     /// `z'`, the friction force and `v'` at the current state and input (model exchange).
-    fn rates(&self) -> (f64, f64, f64) {
-        let p = &self.params;
-        let Some(m) = &self.model else {
-            return (0.0, p.sigma0 * self.z, 0.0);
-        };
-        let dz = self.v - p.sigma0 * self.v.abs() * self.z / m.g(self.v);
-        let friction = p.sigma0 * self.z + p.sigma1 * dz + m.f(self.v);
-        (dz, friction, (self.force - friction) / self.mass)
+    fn rates(&self) -> Result<(f64, f64, f64), String> {
+        let (dz, friction) = crate::rates(self.element.as_ref(), self.params, self.v, self.z)?;
+        Ok((dz, friction, (self.force - friction) / self.mass))
     }
 }
 
@@ -97,37 +108,43 @@ impl Unit for Mass {
             vr::DER_Z => "der(z)",
             vr::Z0 => "z0",
             vr::M => "m",
+            vr::X0 => "x0",
+            vr::V0 => "v0",
             _ => crate::param_name(r),
         }
     }
 
-    fn get(&self, r: u32) -> Option<f64> {
+    fn get(&self, r: u32) -> Result<f64, String> {
         let cs = self.kind == Kind::CoSimulation;
-        Some(match r {
-            crate::vr::TIME => self.time,
+        Ok(match r {
+            crate::vr::TIME => self.time(),
             vr::FORCE => self.force,
             vr::DFORCE => self.dforce,
             vr::X => self.x,
             vr::V => self.v,
             vr::FRICTION if cs => self.friction,
-            vr::FRICTION => self.rates().1,
+            vr::FRICTION => self.rates()?.1,
             vr::Z => self.z,
             vr::DER_X => self.v,
-            vr::DER_V => self.rates().2,
-            vr::DER_Z => self.rates().0,
+            vr::DER_V => self.rates()?.2,
+            vr::DER_Z => self.rates()?.0,
             vr::Z0 => self.z0,
             vr::M => self.mass,
+            vr::X0 => self.x0,
+            vr::V0 => self.v0,
             _ => return param(&self.params, r),
         })
     }
 
     fn set(&mut self, r: u32, value: f64) -> Result<(), String> {
-        let initialized = self.model.is_some();
+        let initialized = self.element.is_some();
         match r {
             vr::FORCE => self.force = value,
             vr::DFORCE => self.dforce = value,
             vr::Z0 if !initialized => self.z0 = value,
             vr::M if !initialized => self.mass = value,
+            vr::X0 if !initialized => self.x0 = value,
+            vr::V0 if !initialized => self.v0 = value,
             _ => {
                 let name = self.name_of(r);
                 set_param(&mut self.params, r, value, initialized, name)?
@@ -137,16 +154,16 @@ impl Unit for Mass {
     }
 
     fn initialize(&mut self, start: f64, tolerance: Option<f64>) -> Result<(), String> {
-        let model = LuGre::from_params(self.params).map_err(|e| e.to_string())?;
+        let element = crate::element(self.params, start, self.x0, self.z0)?;
         // The same checks as `lugre dynamics`: the mass, the tolerance.
-        System::new(model.clone(), self.mass).map_err(|e| e.to_string())?;
+        System::new(element.model().clone(), self.mass).map_err(|e| e.to_string())?;
         if let Some(rtol) = tolerance {
             self.tolerance = Tolerances::new(rtol, None).map_err(|e| e.to_string())?;
         }
+        let (_, friction) = crate::rates(Some(&element), self.params, self.v0, self.z0)?;
         self.time = start;
-        self.z = self.z0;
-        self.friction = self.params.sigma0 * self.z0;
-        self.model = Some(model);
+        (self.x, self.v, self.z, self.friction) = (self.x0, self.v0, self.z0, friction);
+        self.element = Some(element);
         Ok(())
     }
 
@@ -154,13 +171,19 @@ impl Unit for Mass {
         self.time = t;
     }
 
+    fn time(&self) -> f64 {
+        self.time
+    }
+
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
-        let Some(model) = &self.model else {
+        let Some(element) = &self.element else {
             return Err("fmi3DoStep before the end of initialization".into());
         };
-        if !(h > 0.0 && h.is_finite()) {
-            return Err(format!("the step must be a finite number > 0, got {h}"));
+        if h == 0.0 {
+            // Nothing moves in no time (the caller checked h finite and >= 0).
+            return Ok(());
         }
+        let model = element.model();
         let end = self.force + self.dforce * h;
         let drive = Profile::new("the drive force", vec![t, t + h], vec![self.force, end])
             .map_err(|e| e.to_string())?;
@@ -190,9 +213,9 @@ impl Unit for Mass {
         (self.x, self.v, self.z) = (states[0], states[1], states[2]);
     }
 
-    fn derivatives(&self) -> Vec<f64> {
-        let (dz, _, dv) = self.rates();
-        vec![self.v, dv, dz]
+    fn derivatives(&self) -> Result<Vec<f64>, String> {
+        let (dz, _, dv) = self.rates()?;
+        Ok(vec![self.v, dv, dz])
     }
 
     fn nominals(&self) -> Vec<f64> {

@@ -385,6 +385,12 @@ pub enum SimulateError {
         to = num(*.to)
     )]
     JumpInZeroStep { from: f64, to: f64 },
+    #[error(
+        "the step {step} from t = {t} takes the time past the largest finite number",
+        step = num(*.step),
+        t = num(*.t)
+    )]
+    TimeOverflow { t: f64, step: f64 },
     #[error(transparent)]
     Input(#[from] InputError),
 }

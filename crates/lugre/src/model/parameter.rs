@@ -1,6 +1,7 @@
-//! The models' parameters by name: one place for their names, units, defaults and bounds, used
-//! by the models' validation, the fit's specification, the command line's flags and the Python
-//! keywords.
+//! The models' parameters by name: one place for their names, units, defaults, bounds and
+//! descriptions, used by the models' validation, the fit's specification, the command line's
+//! flags, the Python keywords, the C header's parameter struct and the FMUs' model descriptions
+//! (the last two checked against this table by their crates' tests).
 
 use super::{check_non_negative, check_positive, LuGreParams};
 use crate::error::ModelError;
@@ -34,6 +35,16 @@ pub enum Domain {
     Positive,
     /// Finite and `>= 0`.
     NonNegative,
+}
+
+impl Domain {
+    /// The condition as the messages and the FMUs' descriptions write it: `"> 0"`, `">= 0"`.
+    pub const fn condition(self) -> &'static str {
+        match self {
+            Domain::Positive => "> 0",
+            Domain::NonNegative => ">= 0",
+        }
+    }
 }
 
 impl Parameter {
@@ -89,6 +100,20 @@ impl Parameter {
             Parameter::Vs => "m/s",
             Parameter::Beta => "1",
             Parameter::Rho => "1/m",
+        }
+    }
+
+    /// What the parameter is, in a few words (e.g. "bristle stiffness").
+    pub const fn description(self) -> &'static str {
+        match self {
+            Parameter::Sigma0 => "bristle stiffness",
+            Parameter::Sigma1 => "micro-damping",
+            Parameter::Sigma2 => "viscous coefficient",
+            Parameter::Fc => "Coulomb force",
+            Parameter::Fs => "stiction force",
+            Parameter::Vs => "Stribeck velocity",
+            Parameter::Beta => "Stribeck exponent",
+            Parameter::Rho => "Dahl stiffness over the Coulomb force, sigma0 / Fc",
         }
     }
 

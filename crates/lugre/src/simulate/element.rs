@@ -68,6 +68,13 @@ impl<G: VelocityFn, F: VelocityFn> FrictionElement<G, F> {
         if !(dt >= 0.0 && dt.is_finite()) {
             return Err(SimulateError::BadStep { value: dt });
         }
+        if !(self.now.t + dt).is_finite() {
+            // A time of inf would make every later step a zero step.
+            return Err(SimulateError::TimeOverflow {
+                t: self.now.t,
+                step: dt,
+            });
+        }
         let du = x - self.now.u;
         if dt == 0.0 || dt + self.now.t == self.now.t {
             if du != 0.0 {
@@ -88,6 +95,26 @@ impl<G: VelocityFn, F: VelocityFn> FrictionElement<G, F> {
         }
         self.now = next;
         Ok(next)
+    }
+
+    /// Eq. 1's right-hand side at deflection `z` with the displacement moving at `v`, without
+    /// stepping: the sample at the element's time and displacement with `z' = v - sigma0 |v|
+    /// z / g(v)` (`dz`) and `F = sigma0 z + sigma1 z' + f(v)` (`y`), the same arithmetic as a
+    /// step's output. For a host that integrates `z` itself (an FMU in model exchange).
+    ///
+    /// ```
+    /// use lugre::simulate::FrictionElement;
+    /// use lugre::{LuGre, LuGreParams};
+    ///
+    /// let model = LuGre::from_params(LuGreParams::canudas_de_wit_1995()).unwrap();
+    /// let element = FrictionElement::new(model, 0.0).unwrap();
+    /// let s = element.rates_at(1e-3, 0.0).unwrap();
+    /// assert_eq!(s.dz, 1e-3); // no deflection yet: z' = v
+    /// ```
+    #[inline]
+    pub fn rates_at(&self, v: f64, z: f64) -> Result<Sample, SimulateError> {
+        let simulator = Simulator::new(&self.model, Gamma::ONE, z)?;
+        Ok(simulator.sample_at_slope(self.now.t, self.now.u, v, z))
     }
 
     /// The friction force `F` after the last step.
@@ -190,5 +217,24 @@ mod tests {
         element.reset();
         assert_eq!(element.state(), 0.0);
         assert!(element.reset_to(0.0, 0.0, f64::NAN).is_err());
+        // A step whose end time overflows is refused; the time stays finite.
+        element.step(0.0, 1.7e308).unwrap();
+        assert_eq!(
+            element.step(0.0, 1.7e308).unwrap_err().to_string(),
+            "the step 1.7e308 from t = 1.7e308 takes the time past the largest finite number"
+        );
+        assert_eq!(element.sample().t, 1.7e308);
+    }
+
+    /// The rates a model-exchange host integrates are the step's own output arithmetic: at a
+    /// step's end, with its slope and state, they give the step's `z'` and force to the bit.
+    #[test]
+    fn rates_are_the_steps_output() {
+        let model = LuGre::from_params(LuGreParams::canudas_de_wit_1995()).unwrap();
+        let mut element = FrictionElement::new(model, 2e-6).unwrap();
+        let s = element.step(3e-6, 2e-3).unwrap();
+        let r = element.rates_at(3e-6 / 2e-3, s.z).unwrap();
+        assert_eq!((r.dz, r.y, r.t, r.u), (s.dz, s.y, s.t, s.u));
+        assert!(element.rates_at(1.0, f64::NAN).is_err());
     }
 }

@@ -1,0 +1,159 @@
+/* Every function of include/lugre.h called from C, each with a check of what it returned
+ * (tests/exports.rs compiles and runs this program, and fails when the header declares a
+ * function this file does not call). Exits 0 and prints "ok" when every check holds; else
+ * prints the failed check and exits 1. LUGRE_EXPECTED_VERSION is set by the test. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "lugre.h"
+
+static int failures = 0;
+
+#define CHECK(cond)                                                          \
+    do {                                                                     \
+        if (!(cond)) {                                                       \
+            printf("FAILED line %d: %s (last error: %s)\n", __LINE__, #cond, \
+                   lugre_last_error());                                     \
+            failures++;                                                      \
+        }                                                                    \
+    } while (0)
+
+#define OK(call) CHECK((call) == LUGRE_STATUS_OK)
+
+static void versions_and_parameters(void) {
+    CHECK(strcmp(lugre_version(), LUGRE_EXPECTED_VERSION) == 0);
+    LugreParams p;
+    OK(lugre_params_default(&p));
+    CHECK(p.sigma0 == 1 && p.fs == 2 && p.sigma2 == 0);
+    OK(lugre_params_canudas1995(&p));
+    CHECK(p.sigma0 == 1e5 && p.vs == 1e-3);
+    OK(lugre_params_set(&p, "beta", 3));
+    CHECK(p.beta == 3);
+    CHECK(lugre_params_set(&p, "gamma", 3) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strstr(lugre_last_error(), "unknown parameter 'gamma'") != NULL);
+    const char *name = NULL;
+    OK(lugre_parameter_name(LUGRE_FAMILY_DAHL, 0, &name));
+    CHECK(name != NULL && strcmp(name, "rho") == 0);
+}
+
+static void loops(const LugreModel *m) {
+    const double u[] = {0, 1, 0.5, 1.5};
+    LugreLoop *hl = NULL;
+    OK(lugre_loop_new(m, u, 4, &hl));
+    size_t k = 0, rows = 0;
+    OK(lugre_loop_turning_len(hl, &k));
+    CHECK(k == 4);
+    double tu[4], ty[4];
+    OK(lugre_loop_turning(hl, tu, NULL, ty, 4));
+    CHECK(tu[3] == 1.5 && ty[0] < 0 && ty[1] > 0);
+    double work = 0, period = 0;
+    OK(lugre_loop_summary(hl, &work, &period));
+    CHECK(work > 0 && period == 4);
+    OK(lugre_loop_table_len(hl, &rows));
+    CHECK(rows == 2);
+    int32_t kind[2];
+    int64_t parent[2];
+    double loop_work[2];
+    LugreLoopColumns c = {0};
+    c.kind = kind;
+    c.parent = parent;
+    c.work = loop_work;
+    OK(lugre_loop_table(hl, &c, rows));
+    CHECK(loop_work[0] + loop_work[1] > 0 && (parent[0] == -1 || parent[1] == -1));
+    double rho[3], y[3];
+    OK(lugre_loop_sample(hl, 3, rho, NULL, y));
+    CHECK(rho[0] == 0 && rho[2] == period && y[0] == ty[0]);
+    CHECK(lugre_loop_sample(hl, 1, rho, NULL, y) == LUGRE_STATUS_INVALID_ARGUMENT);
+    lugre_loop_free(hl);
+}
+
+static void cycles(const LugreModel *m) {
+    const double h[] = {-2, 1, -3, 5, -1, 3, -4, 4, -2};
+    LugreCycles *cy = NULL;
+    OK(lugre_cycles_new(h, 9, 0, m, 0, &cy));
+    size_t n = 0;
+    OK(lugre_cycles_len(cy, &n));
+    CHECK(n == 7);
+    double range[7], count[7], work[7];
+    int64_t closure[7];
+    LugreCycleColumns c = {0};
+    c.range = range;
+    c.count = count;
+    c.closure = closure;
+    c.work = work;
+    OK(lugre_cycles_columns(cy, &c, n));
+    CHECK(range[2] == 4 && count[2] == 1 && closure[2] == 6 && work[2] > 0);
+    lugre_cycles_free(cy);
+}
+
+static void simulation_and_element(const LugreModel *m) {
+    const double t[] = {0, 1e-2, 2e-2}, x[] = {0, 1e-5, 1e-5};
+    double z[3], f[3];
+    OK(lugre_simulate(m, t, x, 3, 0, z, f));
+    CHECK(z[1] > 0 && f[1] > 0);
+    LugreElement *e = NULL;
+    OK(lugre_element_new(m, 0, &e));
+    double force = 0, now = 0, zz = 0;
+    OK(lugre_element_step(e, 1e-5, 1e-2, &force));
+    OK(lugre_element_state(e, &now, NULL, &zz, NULL));
+    CHECK(now == 1e-2 && zz == z[1]);
+    OK(lugre_element_reset(e, 0, 0, 0));
+    OK(lugre_element_state(e, &now, NULL, &zz, &force));
+    CHECK(now == 0 && zz == 0 && force == 0);
+    lugre_element_free(e);
+    double times[] = {10, 20}, pos[2];
+    OK(lugre_dynamics_scenario("stick-slip", 0, times, 2, pos, NULL, NULL, NULL));
+    CHECK(pos[0] > 0 && pos[1] > pos[0]);
+}
+
+static void fits(void) {
+    /* The paper's Example 4 loop (sigma0 = 6, fs = 2) sampled at 201 points, fitted back. */
+    LugreParams p;
+    OK(lugre_params_default(&p));
+    p.sigma0 = 6;
+    LugreModel *m = NULL;
+    OK(lugre_model_new(&p, &m));
+    const double tp[] = {0, 1, 0.5, 1.5};
+    LugreLoop *hl = NULL;
+    OK(lugre_loop_new(m, tp, 4, &hl));
+    enum { N = 201 };
+    double u[N], f[N], t[N], fitted[N];
+    OK(lugre_loop_sample(hl, N, NULL, u, f));
+    lugre_loop_free(hl);
+    for (int i = 0; i < N; i++) t[i] = i;
+    LugreFitOptions o;
+    OK(lugre_fit_options_default(&o));
+    LugreFitResult r;
+    OK(lugre_fit_slow(u, f, N, &o, &r, fitted));
+    CHECK(r.family == LUGRE_FAMILY_LUGRE && r.fitted[0] == 1 && fabs(r.value[0] - 6) < 1e-9);
+    CHECK(fabs(r.value[4] - 2) < 1e-9 && fabs(fitted[7] - f[7]) < 1e-9);
+    /* The full fit of the model's own exact simulation of that input at 1 per second, the
+     * parameters but sigma0 and fs held: both come back. */
+    double z[N], force[N];
+    OK(lugre_simulate(m, t, u, N, 0, z, force));
+    o.model = m;
+    o.fix = "sigma1, sigma2, vs, fc";
+    OK(lugre_fit(t, u, force, N, &o, &r, NULL));
+    CHECK(r.fitted[0] == 1 && r.fitted[4] == 1 && r.fitted[1] == 0 && r.turning_points == 0);
+    CHECK(fabs(r.value[0] - 6) < 1e-6 && fabs(r.value[4] - 2) < 1e-6 && r.value[1] == 1);
+    lugre_model_free(m);
+}
+
+int main(void) {
+    versions_and_parameters();
+    LugreParams p;
+    OK(lugre_params_canudas1995(&p));
+    LugreModel *m = NULL, *dahl = NULL;
+    OK(lugre_model_new(&p, &m));
+    OK(lugre_model_new_dahl(2, 1, &dahl));
+    loops(dahl);
+    cycles(dahl);
+    simulation_and_element(m);
+    lugre_model_free(dahl);
+    lugre_model_free(m);
+    lugre_model_free(NULL);
+    fits();
+    if (failures == 0) printf("ok\n");
+    return failures == 0 ? 0 : 1;
+}
