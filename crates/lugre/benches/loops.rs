@@ -1,6 +1,7 @@
 //! The hysteresis loop, every minor loop and their energies for periodic inputs of 10^3 to 10^7
-//! random turning points (issue 8: 10^6, and linear scaling from 10^3 to 10^7). Throughput is
-//! in turning points per second; equal throughput across sizes means linear scaling.
+//! random turning points (the target is set at 10^6, with linear scaling from 10^3 to 10^7).
+//! Throughput is in turning points per second; equal throughput across sizes means linear
+//! scaling.
 //!
 //! * `loop_and_minor_loops`: `HysteresisLoop::new`, which computes `y°` at every turning point
 //!   and every loop with its energies and nesting (the `LoopTable`), for the paper's model
