@@ -6,6 +6,7 @@
  *   r = lugre_mex('cycles', u, gate, params_or_empty, x0)
  *   r = lugre_mex('simulate', t, x, params, z0)
  *   r = lugre_mex('dynamics', name, times, rtol)
+ *   r = lugre_mex('dynamics', request_struct)
  *   [F, z] = lugre_mex('friction_step', x, dt, params, z0, x0)
  *   r = lugre_mex('fit', u, f, options)
  *
@@ -309,7 +310,7 @@ static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     return struct_of(4, names, v);
 }
 
-static mxArray *dynamics_struct(int nrhs, const mxArray *prhs[]) {
+static mxArray *dynamics_scenario(int nrhs, const mxArray *prhs[]) {
     char name[32];
     if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0)
         fail("the scenario must be a string: presliding, breakaway, stick-slip, lag or pid");
@@ -321,6 +322,133 @@ static mxArray *dynamics_struct(int nrhs, const mxArray *prhs[]) {
     static const char *names[] = {"t", "x", "v", "z", "friction"};
     mxArray *v[] = {column(times, n), column(x, n), column(v_, n), column(z, n), column(f, n)};
     return struct_of(5, names, v);
+}
+
+/* The request fields given as points (t, value): an N-by-2 matrix [t value]. */
+static int is_points_field(const char *name, const mxArray *value) {
+    if (strcmp(name, "force") == 0 || strcmp(name, "input") == 0 || strcmp(name, "end") == 0 ||
+        strcmp(name, "velocity") == 0)
+        return 1;
+    /* A set point: a number, or steps [t xd]. */
+    return strcmp(name, "setpoint") == 0 && mxGetN(value) == 2 && mxGetM(value) > 1;
+}
+
+/* One field of a request struct, converted before any handle is made (a bad value raises
+ * with nothing to free). */
+typedef struct {
+    const char *name;
+    const double *values; /* numbers, or t then the values for points */
+    size_t n;             /* the numbers, or the points */
+    int points;
+} RequestField;
+
+static RequestField request_field(const mxArray *s, int k) {
+    RequestField f;
+    f.name = mxGetFieldNameByNumber(s, k);
+    const mxArray *value = mxGetFieldByNumber(s, 0, k);
+    char label[80];
+    snprintf(label, sizeof label, "request.%s", f.name);
+    f.points = is_points_field(f.name, value);
+    if (!f.points) {
+        f.values = vector(value, label, &f.n);
+        return f;
+    }
+    if (!(mxIsNumeric(value) || mxIsLogical(value)) || mxIsComplex(value) || mxIsSparse(value) ||
+        mxGetNumberOfDimensions(value) != 2 || mxGetN(value) != 2)
+        mexErrMsgIdAndTxt(ERROR_ID, "%s must be an N-by-2 real matrix [t value], got a %dx%d %s array",
+                          label, (int)mxGetM(value), (int)mxGetN(value), mxGetClassName(value));
+    f.n = mxGetM(value);
+    /* Column-major: the times, then the values. */
+    f.values = as_doubles(value, 2 * f.n);
+    return f;
+}
+
+/* Frees what a request holds and raises the C ABI's message. */
+static void check_request(LugreStatus st, LugreDynamics *d, LugreModel *m, LugreMotion *run) {
+    if (st == LUGRE_STATUS_OK) return;
+    char message[1024];
+    snprintf(message, sizeof message, "%s", lugre_last_error());
+    lugre_motion_free(run);
+    lugre_model_free(m);
+    lugre_dynamics_free(d);
+    fail(message);
+}
+
+static mxArray *scalar_struct(int count, const char **names, const double *values) {
+    mxArray *v[16];
+    for (int i = 0; i < count; i++) v[i] = mxCreateDoubleScalar(values[i]);
+    return struct_of(count, names, v);
+}
+
+/* r = lugre_dynamics(request): every field of the core's request by its name. */
+static mxArray *dynamics_request(const mxArray *s) {
+    if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
+        fail("request must be a scalar struct, e.g. struct('scenario', 'pid', 'pid', [3 8 6])");
+    int count = mxGetNumberOfFields(s);
+    char scenario[32] = "";
+    const mxArray *model = NULL;
+    RequestField *fields = (RequestField *)mxCalloc(count > 0 ? count : 1, sizeof(RequestField));
+    int used = 0;
+    for (int k = 0; k < count; k++) {
+        const char *name = mxGetFieldNameByNumber(s, k);
+        const mxArray *value = mxGetFieldByNumber(s, 0, k);
+        if (strcmp(name, "scenario") == 0) {
+            if (!mxIsChar(value) || mxGetString(value, scenario, sizeof scenario) != 0)
+                fail("request.scenario must be a string: presliding, breakaway, stick-slip, lag or pid");
+        } else if (strcmp(name, "model") == 0) {
+            model = value;
+        } else {
+            fields[used++] = request_field(s, k);
+        }
+    }
+    LugreParams p;
+    if (model != NULL) p = params_of(model);
+    /* Every value is converted: from here on only the C ABI can fail. */
+    LugreDynamics *d = NULL;
+    LugreModel *m = NULL;
+    LugreMotion *run = NULL;
+    check_request(lugre_dynamics_new(&d), d, m, run);
+    if (scenario[0] != '\0') check_request(lugre_dynamics_set_scenario(d, scenario), d, m, run);
+    if (model != NULL) {
+        check_request(lugre_model_new(&p, &m), d, m, run);
+        check_request(lugre_dynamics_set_model(d, m), d, m, run);
+    }
+    for (int i = 0; i < used; i++) {
+        RequestField f = fields[i];
+        LugreStatus st = f.points
+            ? lugre_dynamics_set_points(d, f.name, f.values, f.values + f.n, f.n)
+            : lugre_dynamics_set(d, f.name, f.values, f.n);
+        check_request(st, d, m, run);
+    }
+    check_request(lugre_dynamics_run(d, &run), d, m, run);
+    size_t n = 0;
+    check_request(lugre_motion_len(run, &n), d, m, run);
+    double *c[6];
+    for (int i = 0; i < 6; i++) c[i] = doubles(n);
+    check_request(lugre_motion_columns(run, n, c[0], c[1], c[2], c[3], c[4], c[5]), d, m, run);
+    LugreMotionSummary sum;
+    check_request(lugre_motion_summary(run, &sum), d, m, run);
+    lugre_motion_free(run);
+    lugre_model_free(m);
+    lugre_dynamics_free(d);
+    static const char *energy_names[] = {"input", "stored_start", "stored_end", "dissipated"};
+    double energy[] = {sum.energy_input, sum.stored_start, sum.stored_end, sum.dissipated};
+    static const char *stats_names[] = {"steps", "rejected", "events"};
+    double stats[] = {(double)sum.steps, (double)sum.rejected, (double)sum.events};
+    mxArray *breakaway = mxCreateDoubleMatrix(0, 0, mxREAL);
+    if (sum.has_breakaway) {
+        static const char *b_names[] = {"t", "force", "x"};
+        double b[] = {sum.breakaway_t, sum.breakaway_force, sum.breakaway_x};
+        breakaway = scalar_struct(3, b_names, b);
+    }
+    static const char *names[] = {"t", "x", "v", "z", "friction", "drive", "t_end",
+                                  "energy", "stats", "breakaway", "slip_onsets", "period"};
+    mxArray *v[] = {column(c[0], n), column(c[1], n), column(c[2], n), column(c[3], n),
+                    column(c[4], n), column(c[5], n), mxCreateDoubleScalar(sum.t_end),
+                    scalar_struct(4, energy_names, energy), scalar_struct(3, stats_names, stats),
+                    breakaway, mxCreateDoubleScalar((double)sum.slip_onsets),
+                    mxCreateDoubleScalar(sum.period)};
+    return struct_of(12, names, v);
 }
 
 /* [F, z] after each step to x(k) over dt (a scalar or one per step), from displacement x0 and
@@ -554,8 +682,13 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
         if (args < 2) fail("lugre_simulate(t, x, params, z0): t and x are needed");
         plhs[0] = simulate_struct(args, a);
     } else if (strcmp(cmd, "dynamics") == 0) {
-        if (args < 2) fail("lugre_dynamics(scenario, times, rtol): scenario and times are needed");
-        plhs[0] = dynamics_struct(args, a);
+        if (args == 1 && mxIsStruct(a[0])) {
+            plhs[0] = dynamics_request(a[0]);
+        } else {
+            if (args < 2)
+                fail("lugre_dynamics(request) with a struct, or lugre_dynamics(scenario, times, rtol)");
+            plhs[0] = dynamics_scenario(args, a);
+        }
     } else if (strcmp(cmd, "friction_step") == 0) {
         if (args < 2) fail("lugre_friction_step(x, dt, params, z0, x0): x and dt are needed");
         friction_step(nlhs, plhs, args, a);

@@ -73,6 +73,19 @@ function failures = test_lugre()
   failures += expect(isequal(d.x, array(j, 'x')), 'dynamics: x');
   failures += expect(isequal(d.friction, array(j, 'friction')), 'dynamics: friction');
 
+  % The request, field by field as `lugre dynamics` takes flags: new gains on the PID
+  % experiment keep its set point; the same doubles as the command line.
+  d = lugre_dynamics(struct('scenario', 'pid', 'pid', int32([3 8 6]), 't_end', 20, 'samples', 11));
+  j = cli('dynamics --scenario pid --pid 3,8,6 --t-end 20 --samples 11 --json');
+  failures += expect(isequal(d.x, array(j, 'x')) && isequal(d.drive, array(j, 'drive')), 'dynamics request: x and drive as the CLI');
+  failures += expect(d.t_end == 20 && d.stats.steps > 0 && isempty(d.breakaway), 'dynamics request: t_end, stats, no break-away');
+  d = lugre_dynamics(struct('model', struct('preset', 'canudas1995'), 'force', [0 0; 1 1], 'times', 0:0.25:1));
+  failures += expect(numel(d.t) == 5 && d.t_end == 1 && d.x(end) > 0, 'dynamics request: a force profile, the run to the last time');
+  d = lugre_dynamics(struct('scenario', 'lag', 'times', 0:0.5:2));
+  failures += expect(numel(d.x) == 5 && d.t_end == 2, 'dynamics request: times past the scenario''s end');
+  d = lugre_dynamics(struct('scenario', 'breakaway', 'force_rate', single(4), 'samples', 3));
+  failures += expect(d.t_end == 0.5 && d.breakaway.force > 1, 'dynamics request: the break-away at another rate');
+
   % The friction element stepped through the knots is the exact simulation there.
   p = struct('preset', 'canudas1995');
   t = [0 5e-3 1e-2 1.5e-2 2e-2];
@@ -102,6 +115,13 @@ function failures = test_lugre()
   failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'times must be strictly increasing: t(3) = 1 after t(2) = 1');
   failures += raises(@() lugre_friction_step([1e-6 2e-6], 0, p), 'cannot move in a zero step');
   failures += raises(@() lugre_dynamics('nope', [1 2]), 'unknown scenario ''nope''');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'force_rate', 1, 'force', [0 1 2])), 'request.force must be an N-by-2 real matrix [t value], got a 1x3 double array');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'force_rate', 1, 'force', [0 1; 1 2])), 'give force_rate or force, not both');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'presliding', 'setpoint', 1)), 'setpoint needs pid');
+  failures += raises(@() lugre_dynamics(struct('force_rate', 1, 't_end', 1)), 'name the friction model');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'samples', 1e12)), 'samples must be a whole number from 2 to 10000000');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'pid', [1 2])), 'pid takes 3 numbers, got 2');
+  failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'gamma', 1)), 'unknown field ''gamma''');
   failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) = inf is not a finite number');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 

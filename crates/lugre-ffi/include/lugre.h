@@ -34,6 +34,9 @@ typedef enum LugreStatus {
 // The rainflow cycles of a history, as columns.
 typedef struct LugreCycles LugreCycles;
 
+// A dynamics request being built (see [`lugre_dynamics_new`]).
+typedef struct LugreDynamics LugreDynamics;
+
 // A stateful friction element for host simulators.
 typedef struct LugreElement LugreElement;
 
@@ -42,6 +45,9 @@ typedef struct LugreLoop LugreLoop;
 
 // A validated friction model (LuGre, or Dahl as the LuGre model it equals).
 typedef struct LugreModel LugreModel;
+
+// A solved run: the motion at the output times, its events, energies and headlines.
+typedef struct LugreMotion LugreMotion;
 
 // The parameters of a LuGre model (SI units; see [`lugre_params_default`]), in the core's
 // order ([`Parameter::LUGRE`]); [`lugre_params_set`] sets one by name.
@@ -158,6 +164,30 @@ typedef struct LugreFitResult {
   // The turning points a slow fit found in the record (0 for a full fit).
   size_t turning_points;
 } LugreFitResult;
+
+// What a run gives besides its columns. `has_breakaway` is 1 when a force ramp located the
+// break-away (`breakaway_t`, `breakaway_force`, `breakaway_x`; else 0 and the three 0), and
+// `slip_onsets` counts the upward crossings of a pulled spring's speed (`period`: the last
+// interval between two, 0 with fewer than two).
+typedef struct LugreMotionSummary {
+  double t_end;
+  size_t steps;
+  size_t rejected;
+  size_t events;
+  double energy_input;
+  double stored_start;
+  double stored_end;
+  double dissipated;
+  int32_t has_breakaway;
+  double breakaway_t;
+  double breakaway_force;
+  double breakaway_x;
+  size_t slip_onsets;
+  double period;
+  // The friction-displacement loops computed (0 unless asked for with `"loops"` or the
+  // pre-sliding scenario).
+  size_t loops;
+} LugreMotionSummary;
 
 #ifdef __cplusplus
 extern "C" {
@@ -291,8 +321,9 @@ enum LugreStatus lugre_element_reset(struct LugreElement *element, double t, dou
 // One of the experiments of Canudas de Wit et al. (1995) (`lugre dynamics --scenario NAME`:
 // "presliding", "breakaway" (10 N/s), "stick-slip", "lag", "pid"), with Table I and a 1 kg
 // mass, at relative tolerance `rtol` (0: the default 1e-8), reported at the `n` times
-// (strictly increasing, within the scenario's run): position, velocity, bristle deflection and
-// friction force (any output may be NULL).
+// (strictly increasing; the run ends at the last): position, velocity, bristle deflection and
+// friction force (any output may be NULL). The shorthand of a request naming the scenario,
+// the times and the tolerance ([`lugre_dynamics_new`] for every other field).
 enum LugreStatus lugre_dynamics_scenario(const char *name,
                                          double rtol,
                                          const double *times,
@@ -340,6 +371,63 @@ enum LugreStatus lugre_fit(const double *t,
                            const struct LugreFitOptions *options,
                            struct LugreFitResult *out,
                            double *fitted);
+
+// An empty request to `out`: every field at the core's default (free it with
+// [`lugre_dynamics_free`]).
+enum LugreStatus lugre_dynamics_new(struct LugreDynamics **out);
+
+void lugre_dynamics_free(struct LugreDynamics *request);
+
+// One of the 1995 experiments as the request's preset ("presliding", "breakaway",
+// "stick-slip", "lag", "pid"): its model (Table I), drive and end, each replaced by a field
+// set on top of it, before or after.
+enum LugreStatus lugre_dynamics_set_scenario(struct LugreDynamics *request, const char *name);
+
+// The friction model (copied: the model may be freed after).
+enum LugreStatus lugre_dynamics_set_model(struct LugreDynamics *request,
+                                          const struct LugreModel *model);
+
+// A field from `n` numbers: one for `mass`, `damping`, `force_rate`, `spring`, `pull`,
+// `setpoint`, `t_end`, `samples`, `rtol`, `atol`, `loops` (0 or 1); three for `pid`
+// (`Kp, Ki, Kv`); the output times for `times`. Two fields that cannot hold together (two
+// applied forces, `times` and `samples`) fail naming both.
+enum LugreStatus lugre_dynamics_set(struct LugreDynamics *request,
+                                    const char *name,
+                                    const double *values,
+                                    size_t n);
+
+// A field from `n` points `(t[i], values[i])`: `force` (an applied force, linear between the
+// points, held after), `input` (a measured force history: the run ends at its last time),
+// `end` (the spring's free end), `setpoint` (steps), `velocity` (prescribed).
+enum LugreStatus lugre_dynamics_set_points(struct LugreDynamics *request,
+                                           const char *name,
+                                           const double *t,
+                                           const double *values,
+                                           size_t n);
+
+// Checks the request as a whole and solves it into `out` (free it with
+// [`lugre_motion_free`]).
+enum LugreStatus lugre_dynamics_run(const struct LugreDynamics *request, struct LugreMotion **out);
+
+void lugre_motion_free(struct LugreMotion *motion);
+
+// The number of output times, to `len`.
+enum LugreStatus lugre_motion_len(const struct LugreMotion *motion, size_t *len);
+
+// The sampled columns `t, x, v, z, friction, drive` (`lugre dynamics --csv`), each into a
+// buffer of `capacity` values (NULL skips a column).
+enum LugreStatus lugre_motion_columns(const struct LugreMotion *motion,
+                                      size_t capacity,
+                                      double *t,
+                                      double *x,
+                                      double *v,
+                                      double *z,
+                                      double *friction,
+                                      double *drive);
+
+// The run's summary (see [`LugreMotionSummary`]), to `out`.
+enum LugreStatus lugre_motion_summary(const struct LugreMotion *motion,
+                                      struct LugreMotionSummary *out);
 
 #ifdef __cplusplus
 }  // extern "C"

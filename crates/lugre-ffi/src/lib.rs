@@ -31,7 +31,14 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use std::sync::OnceLock;
 
-use lugre::dynamics::{Scenario, Tolerances};
+mod dynamics;
+pub use dynamics::{
+    lugre_dynamics_free, lugre_dynamics_new, lugre_dynamics_run, lugre_dynamics_set,
+    lugre_dynamics_set_model, lugre_dynamics_set_points, lugre_dynamics_set_scenario,
+    lugre_motion_columns, lugre_motion_free, lugre_motion_len, lugre_motion_summary, LugreDynamics,
+    LugreMotion, LugreMotionSummary,
+};
+
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
 use lugre::model::Parameter;
 use lugre::simulate::FrictionElement;
@@ -697,8 +704,9 @@ pub extern "C" fn lugre_element_reset(
 /// One of the experiments of Canudas de Wit et al. (1995) (`lugre dynamics --scenario NAME`:
 /// "presliding", "breakaway" (10 N/s), "stick-slip", "lag", "pid"), with Table I and a 1 kg
 /// mass, at relative tolerance `rtol` (0: the default 1e-8), reported at the `n` times
-/// (strictly increasing, within the scenario's run): position, velocity, bristle deflection and
-/// friction force (any output may be NULL).
+/// (strictly increasing; the run ends at the last): position, velocity, bristle deflection and
+/// friction force (any output may be NULL). The shorthand of a request naming the scenario,
+/// the times and the tolerance ([`lugre_dynamics_new`] for every other field).
 #[no_mangle]
 pub extern "C" fn lugre_dynamics_scenario(
     name: *const c_char,
@@ -711,32 +719,16 @@ pub extern "C" fn lugre_dynamics_scenario(
     friction: *mut f64,
 ) -> LugreStatus {
     guard(|| {
-        if name.is_null() {
-            return Err(fail(LugreStatus::NullPointer, "name is NULL"));
-        }
-        // SAFETY: a NUL-terminated string from the caller.
-        let name = unsafe { CStr::from_ptr(name) }.to_string_lossy();
-        let scenario = Scenario::from_name(&name, None, None).ok_or_else(|| {
-            fail(
-                LugreStatus::InvalidArgument,
-                format!(
-                    "unknown scenario '{name}' (scenarios: {})",
-                    Scenario::NAMES.join(", ")
-                ),
-            )
-        })?;
+        let name =
+            text(name, "name")?.ok_or_else(|| fail(LugreStatus::NullPointer, "name is NULL"))?;
         let times = input(times, n, "times")?;
-        let model = LuGre::from_params(LuGreParams::canudas_de_wit_1995())?;
-        let setup = scenario.setup(model, 1.0)?;
-        let tol = Tolerances::new(
-            if rtol == 0.0 {
-                Tolerances::DEFAULT_RTOL
-            } else {
-                rtol
-            },
-            None,
-        )?;
-        let m = setup.system.solve(setup.t_end, times, tol)?;
+        let mut request = lugre::dynamics::Request::new()
+            .with_scenario(dynamics::scenario_named(&name)?)
+            .with_times(times.to_vec())?;
+        if rtol != 0.0 {
+            request = request.with_rtol(rtol)?;
+        }
+        let m = request.build()?.run()?.motion;
         output(x, &m.x);
         output(v, &m.v);
         output(z, &m.z);

@@ -544,3 +544,82 @@ fn the_full_fit_is_the_cores() {
     );
     lugre_model_free(m);
 }
+
+/// A dynamics request through the C ABI is the core's: the same motion to the last bit, and a
+/// request the core refuses is refused with its message, the request left as it was.
+#[test]
+fn a_dynamics_request_is_the_cores() {
+    use lugre::dynamics::{Request, Scenario};
+    let mut d = ptr::null_mut();
+    assert_eq!(lugre_dynamics_new(&mut d), LugreStatus::Ok);
+    assert_eq!(
+        lugre_dynamics_set_scenario(d, c"breakaway".as_ptr()),
+        LugreStatus::Ok
+    );
+    let (rate, samples) = (4.0, 7.0);
+    assert_eq!(
+        lugre_dynamics_set(d, c"force_rate".as_ptr(), &rate, 1),
+        LugreStatus::Ok
+    );
+    assert_eq!(
+        lugre_dynamics_set(d, c"samples".as_ptr(), &samples, 1),
+        LugreStatus::Ok
+    );
+    // Refused, naming both fields; the request keeps its samples.
+    let times = [0.0, 0.1];
+    assert_eq!(
+        lugre_dynamics_set(d, c"times".as_ptr(), times.as_ptr(), 2),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(
+        last_error(),
+        "give samples or times, not both: they set the same thing"
+    );
+    let half = 0.5;
+    assert_eq!(
+        lugre_dynamics_set(d, c"samples".as_ptr(), &half, 1),
+        LugreStatus::InvalidArgument
+    );
+    assert_eq!(last_error(), "samples must be a whole number >= 0, got 0.5");
+    let mut m = ptr::null_mut();
+    assert_eq!(lugre_dynamics_run(d, &mut m), LugreStatus::Ok);
+    let want = Request::new()
+        .with_scenario(Scenario::Breakaway { rate: 10.0 })
+        .with_force_rate(4.0)
+        .unwrap()
+        .with_samples(7)
+        .unwrap()
+        .build()
+        .unwrap()
+        .run()
+        .unwrap();
+    let mut n = 0;
+    assert_eq!(lugre_motion_len(m, &mut n), LugreStatus::Ok);
+    assert_eq!(n, 7);
+    let mut cols = vec![[0.0; 7]; 6];
+    let [t, x, v, z, f, drive] = &mut cols[..] else {
+        unreachable!()
+    };
+    assert_eq!(
+        lugre_motion_columns(
+            m,
+            7,
+            t.as_mut_ptr(),
+            x.as_mut_ptr(),
+            v.as_mut_ptr(),
+            z.as_mut_ptr(),
+            f.as_mut_ptr(),
+            drive.as_mut_ptr()
+        ),
+        LugreStatus::Ok
+    );
+    for (got, column) in cols.iter().zip(want.motion.columns()) {
+        assert_eq!(&got[..], column);
+    }
+    let mut s = LugreMotionSummary::default();
+    assert_eq!(lugre_motion_summary(m, &mut s), LugreStatus::Ok);
+    let b = want.breakaway.unwrap();
+    assert_eq!((s.t_end, s.has_breakaway, s.breakaway_t), (0.5, 1, b.t));
+    lugre_motion_free(m);
+    lugre_dynamics_free(d);
+}

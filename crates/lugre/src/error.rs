@@ -463,6 +463,10 @@ pub enum DynamicsError {
         most: u64,
     },
     #[error("{}", self.render(|f| f.name().to_string()))]
+    NotNumbers { field: Field },
+    #[error("{}", self.render(|f| f.name().to_string()))]
+    NotPoints { field: Field },
+    #[error("{}", self.render(|f| f.name().to_string()))]
     NoModel,
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoDrive,
@@ -495,8 +499,26 @@ impl DynamicsError {
                 value,
                 least,
                 most,
+            } if least == most => format!(
+                "{} takes {least} number{}, got {value}",
+                spell(*field),
+                if *least == 1 { "" } else { "s" }
+            ),
+            DynamicsError::Count {
+                field,
+                value,
+                least,
+                most,
             } => format!(
                 "{} must be a whole number from {least} to {most}, got {value}",
+                spell(*field)
+            ),
+            DynamicsError::NotNumbers { field } => format!(
+                "{} is not given as numbers (it takes points (t, value), a name or a model)",
+                spell(*field)
+            ),
+            DynamicsError::NotPoints { field } => format!(
+                "{} is not given as points (t, value): it takes numbers",
                 spell(*field)
             ),
             DynamicsError::NoModel => format!(

@@ -140,6 +140,54 @@ static void fits(void) {
     lugre_model_free(m);
 }
 
+/* The dynamics request: the PID experiment with new gains keeps its set point (1 m); a model, a
+ * force profile and a measured force; two applied forces fail naming both. */
+static void dynamics(const LugreModel *m) {
+    LugreDynamics *d = NULL;
+    LugreMotion *run = NULL;
+    OK(lugre_dynamics_new(&d));
+    OK(lugre_dynamics_set_scenario(d, "pid"));
+    double gains[3] = {3, 8, 6}, t_end = 40, samples = 5;
+    OK(lugre_dynamics_set(d, "pid", gains, 3));
+    OK(lugre_dynamics_set(d, "t_end", &t_end, 1));
+    OK(lugre_dynamics_set(d, "samples", &samples, 1));
+    OK(lugre_dynamics_run(d, &run));
+    size_t n = 0;
+    OK(lugre_motion_len(run, &n));
+    CHECK(n == 5);
+    double t[5], x[5], drive[5];
+    CHECK(lugre_motion_columns(run, 4, t, x, NULL, NULL, NULL, drive) ==
+          LUGRE_STATUS_BUFFER_TOO_SMALL);
+    OK(lugre_motion_columns(run, 5, t, x, NULL, NULL, NULL, drive));
+    CHECK(t[4] == 40 && fabs(x[4] - 1) < 0.15);
+    LugreMotionSummary s;
+    OK(lugre_motion_summary(run, &s));
+    CHECK(s.t_end == 40 && s.steps > 0 && s.energy_input > 0 && s.has_breakaway == 0);
+    CHECK(fabs(s.energy_input - (s.stored_end - s.stored_start) - s.dissipated) < 1e-6);
+    lugre_motion_free(run);
+    lugre_dynamics_free(d);
+
+    double rate = 10, ft[2] = {0, 1}, f[2] = {0, 1};
+    OK(lugre_dynamics_new(&d));
+    OK(lugre_dynamics_set_model(d, m));
+    OK(lugre_dynamics_set(d, "force_rate", &rate, 1));
+    CHECK(lugre_dynamics_set_points(d, "force", ft, f, 2) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strcmp(lugre_last_error(),
+                 "give force_rate or force, not both: they set the same thing") == 0);
+    CHECK(lugre_dynamics_set(d, "mass", &rate, 2) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(lugre_dynamics_set(d, "gamma", &rate, 1) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strstr(lugre_last_error(), "unknown field 'gamma'") != NULL);
+    double end = 0.3;
+    OK(lugre_dynamics_set(d, "t_end", &end, 1));
+    OK(lugre_dynamics_run(d, &run));
+    OK(lugre_motion_summary(run, &s));
+    CHECK(s.has_breakaway == 1 && s.breakaway_force > 1 && s.breakaway_force < 1.5);
+    lugre_motion_free(run);
+    lugre_motion_free(NULL);
+    lugre_dynamics_free(d);
+    lugre_dynamics_free(NULL);
+}
+
 int main(void) {
     versions_and_parameters();
     LugreParams p;
@@ -150,6 +198,7 @@ int main(void) {
     loops(dahl);
     cycles(dahl);
     simulation_and_element(m);
+    dynamics(m);
     lugre_model_free(dahl);
     lugre_model_free(m);
     lugre_model_free(NULL);

@@ -263,6 +263,77 @@ impl Request {
         self
     }
 
+    /// The field `field` from numbers, for hosts that pass a request field by field (the C
+    /// ABI, the MEX function): one number for `mass`, `damping`, `force_rate`, `spring`,
+    /// `pull`, `setpoint`, `t_end`, `samples` (whole), `rtol`, `atol`, `loops` (0 or 1); three
+    /// for `pid`; the list for `times`. Fields given as points take [`Self::with_points`];
+    /// `scenario` and `model` have their own setters.
+    ///
+    /// # Errors
+    /// [`DynamicsError::Count`] for the wrong number of values (or a `samples` that is not a
+    /// whole number in range), [`DynamicsError::NotNumbers`] for a field that does not take
+    /// numbers, and the field's own check.
+    pub fn with_numbers(self, field: Field, values: &[f64]) -> Result<Self, DynamicsError> {
+        if field == Field::Times {
+            return self.with_times(values.to_vec());
+        }
+        let want = if field == Field::Pid { 3 } else { 1 };
+        if values.len() != want {
+            return Err(DynamicsError::Count {
+                field,
+                value: values.len() as u64,
+                least: want as u64,
+                most: want as u64,
+            });
+        }
+        let x = values[0];
+        match field {
+            Field::Mass => self.with_mass(x),
+            Field::Damping => self.with_damping(x),
+            Field::ForceRate => self.with_force_rate(x),
+            Field::Spring => self.with_spring(x),
+            Field::Pull => self.with_pull(x),
+            Field::Setpoint => self.with_setpoint(x),
+            Field::TEnd => self.with_t_end(x),
+            Field::Rtol => self.with_rtol(x),
+            Field::Atol => self.with_atol(x),
+            Field::Pid => self.with_pid(values[0], values[1], values[2]),
+            Field::Samples => self.with_samples(whole(field, x)?),
+            Field::Loops => match x {
+                0.0 => Ok(self.with_loops(false)),
+                1.0 => Ok(self.with_loops(true)),
+                _ => Err(DynamicsError::BadValue {
+                    field,
+                    rule: "0 or 1",
+                    value: x,
+                }),
+            },
+            _ => Err(DynamicsError::NotNumbers { field }),
+        }
+    }
+
+    /// The field `field` from points `(t_i, value_i)`: `force`, `input` (a measured force;
+    /// `label` names it), `end`, `setpoint` (steps), `velocity`.
+    ///
+    /// # Errors
+    /// [`DynamicsError::NotPoints`] for a field that does not take points, and the profile's
+    /// checks.
+    pub fn with_points(
+        self,
+        field: Field,
+        t: Vec<f64>,
+        values: Vec<f64>,
+    ) -> Result<Self, DynamicsError> {
+        match field {
+            Field::Force => self.with_force(t, values),
+            Field::Input => self.with_input("a measured force", t, values),
+            Field::End => self.with_end(t, values),
+            Field::Setpoint => self.with_setpoint_steps(t, values),
+            Field::Velocity => self.with_velocity(t, values),
+            _ => Err(DynamicsError::NotPoints { field }),
+        }
+    }
+
     fn set_force(&mut self, field: Field, force: Force) -> Result<(), DynamicsError> {
         conflict(&self.force, field)?;
         self.force = user(field, force);
@@ -738,6 +809,20 @@ fn non_negative(field: Field, value: f64) -> Result<f64, DynamicsError> {
             field,
             rule: "a finite number >= 0",
             value,
+        })
+    }
+}
+
+/// A whole number `>= 0` given as a float.
+fn whole(field: Field, x: f64) -> Result<u64, DynamicsError> {
+    // 2^64 is the first float past u64::MAX.
+    if x >= 0.0 && x.fract() == 0.0 && x < 18_446_744_073_709_551_616.0 {
+        Ok(x as u64)
+    } else {
+        Err(DynamicsError::BadValue {
+            field,
+            rule: "a whole number >= 0",
+            value: x,
         })
     }
 }
