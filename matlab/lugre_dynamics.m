@@ -18,8 +18,13 @@ function r = lugre_dynamics(request, times, rtol)
 %   force, x with a force ramp, else []), r.slip_onsets (how many) and r.period.
 %   Example: r = lugre_dynamics(struct('scenario', 'pid', 'pid', [3 8 6], 't_end', 40));
 %
+%   r = lugre_dynamics(scenario) runs a scenario alone (its run, 1001 samples).
 %   r = lugre_dynamics(scenario, times, rtol) is the shorthand of the scenario at those times
 %   (rtol default 1e-8): r.t, r.x, r.v, r.z, r.friction.
+  if nargin == 1 && ischar(request)
+    % A scenario alone: its own run and 1001 samples.
+    request = struct('scenario', request);
+  end
   if nargin == 1
     r = lugre_mex('dynamics', request);
     return;

@@ -81,6 +81,8 @@ function failures = test_lugre()
   failures += expect(d.t_end == 20 && d.stats.steps > 0 && isempty(d.breakaway), 'dynamics request: t_end, stats, no break-away');
   d = lugre_dynamics(struct('model', struct('preset', 'canudas1995'), 'force', [0 0; 1 1], 'times', 0:0.25:1));
   failures += expect(numel(d.t) == 5 && d.t_end == 1 && d.x(end) > 0, 'dynamics request: a force profile, the run to the last time');
+  d = lugre_dynamics('pid');
+  failures += expect(numel(d.x) == 1001 && d.t_end == 100, 'dynamics: a scenario alone');
   d = lugre_dynamics(struct('scenario', 'lag', 'times', 0:0.5:2));
   failures += expect(numel(d.x) == 5 && d.t_end == 2, 'dynamics request: times past the scenario''s end');
   d = lugre_dynamics(struct('scenario', 'breakaway', 'force_rate', single(4), 'samples', 3));

@@ -197,8 +197,9 @@ pub fn simulate<'py>(
         .with_output(output)
         .map_err(value_error)?;
 
-    // The number of output samples, checked against the memory there is before the core
-    // allocates (a failed allocation there would abort the interpreter).
+    // The core's bounds first, then the memory there is before the core allocates (a failed
+    // allocation there would abort the interpreter).
+    request.check_work().map_err(value_error)?;
     let samples = request.rows();
     match samples {
         Some(n) => drop(try_vec::<[f64; 6]>(n)?),

@@ -311,6 +311,8 @@ pub enum SimulateError {
     BadGamma { value: f64 },
     #[error("the number of periods must be at least 1, got {value}")]
     BadPeriods { value: u32 },
+    #[error("the run would produce {rows} output rows (more than {limit}): ask for fewer periods or samples per period, or give the output times")]
+    TooManyRows { rows: u64, limit: usize },
     #[error("periods must be at most {limit} for a sine (the adaptive integrator steps through each), got {periods}")]
     TooManyPeriods { periods: u32, limit: u64 },
     #[error("periods must be at most {most} for this input ({per_period} pieces a period, at most {limit} pieces a run), got {periods}", most = .limit / .per_period.max(&1))]

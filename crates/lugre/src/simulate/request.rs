@@ -81,6 +81,8 @@ impl Request {
     /// The most pieces of a piecewise-linear input a run walks (periods times pieces per
     /// period): about ten seconds of the exact solution on one core.
     pub const MAX_PIECES: u64 = 1_000_000_000;
+    /// The most output rows a run may produce (five columns of 8 bytes: 2 GB).
+    pub const MAX_ROWS: usize = 50_000_000;
     /// The most periods of a sine a run integrates (the adaptive integrator takes tens of
     /// steps a period).
     pub const MAX_SINE_PERIODS: u64 = 1_000_000;
@@ -199,14 +201,24 @@ impl Request {
         }
     }
 
-    /// Checks that the run is work a machine can do: a piecewise-linear input walks at most
+    /// Checks that the run is work a machine can do: at most [`Self::MAX_ROWS`] output rows
+    /// (before anything is allocated); a piecewise-linear input walks at most
     /// [`Self::MAX_PIECES`] pieces (periods times pieces per period), a sine runs at most
     /// [`Self::MAX_SINE_PERIODS`] periods. [`Self::run_on`] checks it first.
     ///
     /// # Errors
-    /// [`SimulateError::TooMuchWork`] and [`SimulateError::TooManyPeriods`] naming the periods
-    /// and the limit.
+    /// [`SimulateError::TooManyRows`], [`SimulateError::TooMuchWork`] and
+    /// [`SimulateError::TooManyPeriods`] naming the count and the limit.
     pub fn check_work(&self) -> Result<(), SimulateError> {
+        match self.rows() {
+            Some(rows) if rows <= Self::MAX_ROWS => {}
+            rows => {
+                return Err(SimulateError::TooManyRows {
+                    rows: rows.map_or(u64::MAX, |r| r as u64),
+                    limit: Self::MAX_ROWS,
+                })
+            }
+        }
         let periods = u64::from(self.periods);
         let (pieces, limit) = match &self.drive {
             Drive::TurningPoints(pl) | Drive::Samples(pl) => {

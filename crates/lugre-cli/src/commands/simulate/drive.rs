@@ -114,7 +114,10 @@ fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String
     let span = format!("t in [{}, {}]", sig(t0, 10), sig(t1, 10));
     let with_file = |e: lugre::SimulateError| anyhow!("{}: {e}", path.display());
     if velocity || args.interpolate == Interpolate::Cubic {
-        let tol = super::parse_scalar("--tol", &args.tol)?;
+        let tol = match &args.tol {
+            Some(text) => super::parse_scalar("--tol", text)?,
+            None => lugre::Tolerance::DEFAULT.value(),
+        };
         let (motion, what) = if velocity {
             let m = SmoothSamples::from_velocity(t, values, 0.0, tol).map_err(with_file)?;
             (m, "velocity samples integrated from u = 0")
