@@ -198,3 +198,17 @@ def test_dynamics_takes_the_core_request_fields():
     the command line's; Python takes the arrays as `force`."""
     sig = inspect.signature(lugre.dynamics)
     assert set(sig.parameters) == set(lugre.DYNAMICS_FIELDS) - {"input"}
+
+
+def test_the_fit_result_stub_has_every_key():
+    """The keys of lugre.fit's result are FitResult's in the stub (a key added to one and not
+    the other fails here)."""
+    import ast
+    import importlib.resources
+
+    tree = ast.parse(importlib.resources.files("lugre").joinpath("__init__.pyi").read_text())
+    cls = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "FitResult")
+    stub = {n.target.id for n in cls.body if isinstance(n, ast.AnnAssign)}
+    rho, u, y = lugre.LuGre(sigma0=6).loop([0, 1, 0.5, 1.5]).sample(401)
+    r = lugre.fit(u, y + 1e-3 * np.sin(np.arange(len(u))))
+    assert set(r) == stub

@@ -173,8 +173,11 @@ def test_simulate_type_errors(kwargs):
 
 
 def test_simulate_huge_outputs_fail_cleanly():
-    with pytest.raises(MemoryError):
+    # The core's bound on the output rows (the CLI's too), before anything is allocated.
+    with pytest.raises(ValueError, match=r"the run would produce 4000000000000000001 output rows \(more than 50000000\)"):
         lugre.LuGre().simulate([0, 1], periods=4_000_000_000, samples_per_period=10**9)
+    with pytest.raises(ValueError, match="periods must be at most 1000000 for a sine"):
+        lugre.LuGre().simulate(sine=(1, 1), periods=4_294_967_295, times=[0, 1])
 
 
 # ---------------------------------------------------------------------------------------------

@@ -321,6 +321,7 @@ class FitResult(TypedDict):
     turning_points: Optional[int]
     model: Literal["lugre", "dahl"]
     kind: Literal["slow", "full"]
+    normal_force: bool
     fitted: _Floats
     residuals: _Floats
 
