@@ -91,7 +91,7 @@ pub enum Error {
         header: String,
     },
     #[error("line {line}: no column {role}{names} in the header {header} (fields separated by {sep}){hint}",
-        names = match role.names_in_words() { n if n.is_empty() => n, n => format!(" (named {n})") },
+        names = match role.names_in_words() { n if n.is_empty() => n, n => format!(" ({n})") },
         sep = delimiter.describe(),
         hint = closest.as_ref().map(|c| format!("; did you mean '{c}'?")).unwrap_or_else(|| format!("; name it with {option} {}=NAME", role.name())))]
     MissingColumn {

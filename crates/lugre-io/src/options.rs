@@ -177,7 +177,7 @@ impl ReadOptions {
     }
 
     /// Whether any column is chosen.
-    pub(crate) fn selects_any(&self) -> bool {
+    pub fn selects_any(&self) -> bool {
         !self.select.is_empty()
     }
 

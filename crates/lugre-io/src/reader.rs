@@ -209,6 +209,16 @@ impl<R: Read> Reader<R> {
         self.header.as_ref().map(|h| h.fields.as_slice())
     }
 
+    /// The number of fields of the header, or of the first row of a file without one (0 for
+    /// a file without either).
+    pub fn width(&self) -> usize {
+        match (&self.header, &self.first_row) {
+            (Some(h), _) => h.fields.len(),
+            (None, Some((_, _, width))) => *width,
+            (None, None) => 0,
+        }
+    }
+
     /// The delimiter found (or given).
     pub fn delimiter(&self) -> Delimiter {
         self.delimiter
@@ -220,6 +230,20 @@ impl<R: Read> Reader<R> {
             .is_some_and(|h| h.iter().any(|f| f.role == *role))
     }
 
+    /// The motion a record holds: [`Role::V`] (a velocity record) where the options choose a
+    /// `v` column, or the header has `v` and no `u` and the options choose no `u`; else
+    /// [`Role::U`].
+    pub fn motion(&self) -> Role {
+        let o = &self.options;
+        let velocity = o.selects(&Role::V)
+            || (!o.selects(&Role::U) && self.header_has(&Role::V) && !self.header_has(&Role::U));
+        if velocity {
+            Role::V
+        } else {
+            Role::U
+        }
+    }
+
     /// Places the columns `spec` asks for and returns the rows. Refused: a role of the options
     /// that `spec` does not read, a column it needs that the file does not have, a role two
     /// header columns hold (unless the options say which), one column in two roles.
@@ -228,11 +252,12 @@ impl<R: Read> Reader<R> {
         let layout = match (&self.header, &self.first_row) {
             (None, None) => None,
             (header, first) => {
-                let (line, width) = match (header, first) {
-                    (Some(h), _) => (h.line, h.fields.len()),
-                    (None, Some((line, _, width))) => (*line, *width),
+                let line = match (header, first) {
+                    (Some(h), _) => h.line,
+                    (None, Some((line, _, _))) => *line,
                     (None, None) => unreachable!("matched above"),
                 };
+                let width = self.width();
                 let locator = Locator {
                     header: header.as_ref(),
                     width,
@@ -475,20 +500,30 @@ impl Locator<'_> {
         Some(h.fields[k].text.clone())
     }
 
+    /// Refuses a column placed in two roles; two the options chose are named first (the
+    /// user's own contradiction), then one chosen and one found by its header name.
     fn check_one_role_per_column(&self, placed: &[(Role, usize)]) -> Result<(), Error> {
+        let chosen = |r: &Role| usize::from(self.options.selects(r));
+        let mut pairs: Vec<(&Role, &Role, usize)> = Vec::new();
         for (i, (first, k)) in placed.iter().enumerate() {
-            if let Some((second, _)) = placed[i + 1..].iter().find(|(_, j)| j == k) {
-                return Err(Error::ColumnInTwoRoles {
-                    line: self.line,
-                    column: k + 1,
-                    name: self.header.map(|h| h.fields[*k].text.clone()),
-                    first: first.name().into(),
-                    second: second.name().into(),
-                    option: self.options.labels().columns,
-                });
+            for (second, j) in &placed[i + 1..] {
+                if j == k {
+                    pairs.push((first, second, *k));
+                }
             }
         }
-        Ok(())
+        pairs.sort_by_key(|(a, b, _)| 2 - chosen(a) - chosen(b));
+        match pairs.first() {
+            Some((first, second, k)) => Err(Error::ColumnInTwoRoles {
+                line: self.line,
+                column: k + 1,
+                name: self.header.map(|h| h.fields[*k].text.clone()),
+                first: first.name().into(),
+                second: second.name().into(),
+                option: self.options.labels().columns,
+            }),
+            None => Ok(()),
+        }
     }
 }
 

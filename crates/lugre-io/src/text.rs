@@ -26,27 +26,29 @@ pub fn excerpt(text: &str) -> String {
     }
 }
 
-/// `text` whole, or its start and its length in characters; control characters escaped (a
-/// message stays one line, and a NUL or an escape sequence from a file never reaches a
-/// terminal).
+/// `text` whole, or its start and its length in characters; control characters escaped.
 fn shortened(text: &str) -> (String, Option<usize>) {
     let n = text.chars().count();
-    let shown = |chars: &mut dyn Iterator<Item = char>| -> String {
-        chars
-            .map(|c| {
-                if c.is_control() {
-                    c.escape_default().to_string()
-                } else {
-                    c.to_string()
-                }
-            })
-            .collect()
-    };
     if n <= QUOTE_CHARS {
-        (shown(&mut text.chars()), None)
+        (printable(text), None)
     } else {
-        (shown(&mut text.chars().take(QUOTE_CHARS - 8)), Some(n))
+        let start: String = text.chars().take(QUOTE_CHARS - 8).collect();
+        (printable(&start), Some(n))
     }
+}
+
+/// `text` with its control characters escaped (`\u{0}`, `\n`): a message stays one line, and
+/// a NUL or an escape sequence from a file never reaches a terminal.
+pub fn printable(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }
 
 /// The longest text [`quoted`] and [`excerpt`] show whole.

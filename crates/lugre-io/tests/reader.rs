@@ -138,9 +138,10 @@ fn a_role_twice_or_a_column_in_two_roles_is_refused() {
     let text = "t,u,F\n0,1,2\n1,2,3\n";
     let cases: [(&str, Result<ReadOptions, Error>, &str); 5] = [
         (
+            // The two roles the options put on column 1 are named, not t found there too.
             text,
             opts().parse_columns("u=1,F=1"),
-            "line 1: column 1 ('t') would be read as both t and u: give each its own column with --columns",
+            "line 1: column 1 ('t') would be read as both u and F: give each its own column with --columns",
         ),
         (
             text,
@@ -345,7 +346,7 @@ fn the_usual_shapes_of_a_file() {
     // Times required.
     let e = message("u\n1\n", &series().require_time(), opts());
     assert!(
-        e.starts_with("line 1: no column t (named t or time) in the header 'u'"),
+        e.starts_with("line 1: no column t (t or time) in the header 'u'"),
         "{e}"
     );
     let e = message("1\n2\n", &series().require_time(), opts());
@@ -435,7 +436,7 @@ fn errors_name_the_line_the_column_and_the_value() {
         (
             "a,b\n0,1\n",
             series(),
-            "line 1: no column u (named u, x, position or displacement) in the header 'a,b'",
+            "line 1: no column u (u, x, position or displacement) in the header 'a,b'",
         ),
         (
             "t,u\n0,1\n0,2\n",
@@ -485,7 +486,7 @@ fn errors_name_the_line_the_column_and_the_value() {
         (
             "t,u\n0,1\n",
             record(),
-            "line 1: no column F (named F, force, friction or y) in the header 't,u'",
+            "line 1: no column F (F, force, friction or y) in the header 't,u'",
         ),
     ];
     for (text, spec, want) in cases {
@@ -602,6 +603,7 @@ fn the_header_is_known_before_the_columns_are_chosen() {
     // `fit` and `simulate` read a velocity record when the header has v and no u.
     let r = Reader::new("t,velocity [m/s],F\n0,1,2\n".as_bytes(), opts()).unwrap();
     assert!(r.header_has(&Role::V) && !r.header_has(&Role::U));
+    assert_eq!(r.motion(), Role::V);
     assert_eq!(r.delimiter(), Delimiter::Comma);
     let mut t = r
         .rows(&Spec::new([Role::V, Role::F]))
@@ -611,4 +613,14 @@ fn the_header_is_known_before_the_columns_are_chosen() {
     assert_eq!(t.take(&Role::V), Some(vec![1.0]));
     let r = Reader::new("0,1\n".as_bytes(), opts()).unwrap();
     assert!(r.header().is_none());
+    assert_eq!(r.motion(), Role::U);
+    // A displacement beside the velocity is the motion (`lugre dynamics --csv` writes both).
+    let r = Reader::new("t,x,v\n0,1,2\n".as_bytes(), opts()).unwrap();
+    assert_eq!(r.motion(), Role::U);
+    // Chosen: `v` by --columns, or `u` by --columns over a header's `v`.
+    for (columns, header, motion) in [("v=x", "t,x,v", Role::V), ("u=3", "t,v,pos", Role::U)] {
+        let o = opts().parse_columns(columns).unwrap();
+        let text = format!("{header}\n0,1,2\n");
+        assert_eq!(Reader::new(text.as_bytes(), o).unwrap().motion(), motion);
+    }
 }

@@ -1,4 +1,4 @@
-//! Files and streams: CSV in and out, the JSON writer, atomic files, the spool, and progress on
+//! Files and streams: CSV out (data files are read by `lugre-io`), the JSON writer, atomic files, the spool, and progress on
 //! stderr.
 
 pub(crate) mod atomic;

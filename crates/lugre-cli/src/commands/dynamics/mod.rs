@@ -14,10 +14,11 @@ use std::io::Write;
 use crate::args::{ModelArgs, OutputArgs, PlotArgs, Preset};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::{Columns, NumberRows};
+use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+use lugre_io::Role;
 
 mod loops;
 use loops::{friction_loops, FrictionLoop};
@@ -230,15 +231,12 @@ fn parse(args: &DynamicsArgs) -> Result<Request> {
         if args.force_profile.is_some() {
             bail!("give --force-profile or --input, not both");
         }
-        let options = args.data.options(&["F"])?;
-        let table = crate::io::csv::read_table_with(path, Columns::Named("F"), options)?;
-        let Some(t) = table.t else {
-            bail!(
-                "{}: needs a column t (the times of the force F)",
-                path.display()
-            );
-        };
-        let f = table.columns.into_iter().next().unwrap_or_default();
+        // The times and the force F (force, friction, y), other columns ignored.
+        let options = args.data.options(&[Role::F])?;
+        let spec = lugre_io::Spec::new([Role::F]).require_time();
+        let mut table = lugre_io::read_file(path, &spec, options)?;
+        let (t, f) = (table.take(&Role::T), table.take(&Role::F));
+        let (t, f) = (t.unwrap_or_default(), f.unwrap_or_default());
         // A measured history runs to its last sample unless told otherwise.
         t_end = t_end.or(t.last().copied());
         system = system.with_force(Profile::new("--input", t, f)?);
