@@ -10,6 +10,7 @@ mod dynamics;
 mod fit;
 mod loops;
 mod models;
+mod read;
 mod simulate;
 
 use pyo3::prelude::*;
@@ -39,5 +40,6 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(chunk::chunk_history_energy, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(dynamics::dynamics, m)?)?;
+    m.add_function(wrap_pyfunction!(read::read, m)?)?;
     Ok(())
 }
