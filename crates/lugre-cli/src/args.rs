@@ -7,6 +7,7 @@ use anyhow::{bail, Result};
 use clap::{Args, ValueEnum};
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
+use lugre_io::{Delimiter, ReadOptions, Role, Spec};
 use std::path::{Path, PathBuf};
 
 use crate::io::outputs::Files;
@@ -25,7 +26,8 @@ pub(crate) enum ModelKind {
 #[derive(Args, Debug, Clone, Default)]
 pub(crate) struct DataArgs {
     /// Which column holds what, by header name (units in brackets ignored, any case) or
-    /// 1-based number: t=Time,u=Position,F=Friction or t=1,u=3,F=4 (other columns ignored);
+    /// 1-based number: t=Time,u=Position,F=Friction or t=1,u=3,F=4 (other columns ignored;
+    /// each role once, each column in one role);
     /// v=NAME a velocity record; N=NAME a normal force (fit and simulate: the model is then the
     /// friction coefficient's, its parameters per newton).
     #[arg(long, value_name = "ROLE=COLUMN,...", help_heading = "Data file")]
@@ -65,77 +67,35 @@ pub(crate) enum DelimiterArg {
 
 impl DataArgs {
     /// Whether `--columns` names the column of `role` (`v`, `N`: roles that change what a
-    /// command reads).
-    pub(crate) fn selects(&self, role: &str) -> bool {
-        self.columns.as_deref().is_some_and(|c| {
-            c.split(',').any(|item| {
-                item.split_once('=')
-                    .is_some_and(|(r, _)| r.trim().eq_ignore_ascii_case(role))
-            })
+    /// command reads). False for a `--columns` that cannot be parsed: [`DataArgs::options`]
+    /// then says why.
+    pub(crate) fn selects(&self, role: Role) -> bool {
+        self.columns.as_deref().is_some_and(|text| {
+            ReadOptions::default()
+                .parse_columns(text)
+                .is_ok_and(|o| o.selects(&role))
         })
     }
 
     /// The reader's options; `roles` are the columns the command reads (`t` always allowed).
-    pub(crate) fn options(&self, roles: &[&str]) -> anyhow::Result<crate::io::csv::ReadOptions> {
-        use crate::io::csv::{ReadOptions, Selector};
-        let known = |flag: &str, role: &str| -> anyhow::Result<String> {
-            if role == "t" || roles.iter().any(|r| r.eq_ignore_ascii_case(role)) {
-                Ok(role.to_ascii_lowercase())
-            } else {
-                anyhow::bail!(
-                    "{flag}: unknown column role '{role}' (this command reads t, {})",
-                    roles.join(", ")
-                )
-            }
-        };
-        let pairs =
-            |flag: &'static str, text: &Option<String>| -> anyhow::Result<Vec<(String, String)>> {
-                let Some(text) = text else {
-                    return Ok(Vec::new());
-                };
-                text.split(',')
-                    .map(|item| {
-                        let Some((role, value)) = item.split_once('=') else {
-                            anyhow::bail!("{flag}: '{item}' is not ROLE=VALUE");
-                        };
-                        Ok((known(flag, role.trim())?, value.trim().to_string()))
-                    })
-                    .collect()
-            };
-        let select = pairs("--columns", &self.columns)?
-            .into_iter()
-            .map(|(role, v)| match v.parse::<usize>() {
-                Ok(i) => (role, Selector::Index(i)),
-                Err(_) => (role, Selector::Name(v)),
-            })
-            .collect();
-        let scale = pairs("--scale", &self.scale)?
-            .into_iter()
-            .map(|(role, v)| {
-                let factor: f64 = v
-                    .parse()
-                    .map_err(|_| anyhow::anyhow!("--scale {role}={v}: not a number"))?;
-                if !factor.is_finite() || factor == 0.0 {
-                    anyhow::bail!(
-                        "--scale {role}={v}: a factor must be a finite number other than 0"
-                    );
-                }
-                Ok((role, factor))
-            })
-            .collect::<anyhow::Result<_>>()?;
-        use crate::io::csv::Delimiter;
-        let delimiter = self.delimiter.map(|d| match d {
-            DelimiterArg::Comma => Delimiter::Comma,
-            DelimiterArg::Semicolon => Delimiter::Semicolon,
-            DelimiterArg::Tab => Delimiter::Tab,
-            DelimiterArg::Space => Delimiter::Spaces,
-        });
-        Ok(ReadOptions {
-            select,
-            scale,
-            optional: None,
-            delimiter,
-        })
+    pub(crate) fn options(&self, roles: &[Role]) -> Result<ReadOptions> {
+        let mut options = ReadOptions::default();
+        if let Some(text) = &self.columns {
+            options = options.parse_columns(text)?;
+        }
+        if let Some(text) = &self.scale {
+            options = options.parse_scale(text)?;
+        }
+        if let Some(d) = self.delimiter {
+            options = options.with_delimiter(match d {
+                DelimiterArg::Comma => Delimiter::Comma,
+                DelimiterArg::Semicolon => Delimiter::Semicolon,
+                DelimiterArg::Tab => Delimiter::Tab,
+                DelimiterArg::Space => Delimiter::Spaces,
+            });
+        }
+        options.check_roles(roles)?;
+        Ok(options)
     }
 }
 
@@ -371,8 +331,8 @@ pub(crate) struct PeriodicInputArgs {
         help_heading = "Input"
     )]
     pub(crate) bimodal: Option<String>,
-    /// One period of samples from a CSV file: header 't,u' or a single column 'u' (header
-    /// optional; '#' comments allowed).
+    /// One period of samples from a data file: its column u (u, x, position or displacement;
+    /// other columns ignored) and t if it has one (see the README's "Data files").
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
     pub(crate) input: Option<PathBuf>,
 }
@@ -428,10 +388,12 @@ impl PeriodicInputArgs {
             ));
         }
         if let Some(path) = &self.input {
-            let series = crate::io::csv::read_series(path)?;
-            let turning_points = match &series.t {
-                Some(t) => lugre::TurningPoints::from_samples(t, &series.u),
-                None => lugre::TurningPoints::new(&series.u),
+            let mut table =
+                lugre_io::read_file(path, &Spec::new([Role::U]), ReadOptions::default())?;
+            let u = table.take(&Role::U).unwrap_or_default();
+            let turning_points = match table.take(&Role::T) {
+                Some(t) => lugre::TurningPoints::from_samples(&t, &u),
+                None => lugre::TurningPoints::new(&u),
             }
             .map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
             return Ok(PeriodicInput::Samples(turning_points));

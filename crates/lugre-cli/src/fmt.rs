@@ -1,6 +1,7 @@
 //! Numbers for people (tables), for machines (JSON, CSV: shortest round-trip repr) and for
 //! messages ([`num`], the core's formatter, so that the CLI's messages and the library's print
-//! a number the same way), and text quoted in messages ([`quoted`], [`excerpt`]).
+//! a number the same way), and text quoted in messages ([`quoted`], [`excerpt`], from the
+//! reader).
 
 /// A number in a message: shortest round-trip, exponent form beyond 1e-5..1e16 (`1e299`).
 pub(crate) use lugre::error::num;
@@ -58,22 +59,9 @@ pub fn exact(x: f64) -> String {
     s.strip_suffix(".0").unwrap_or(s).to_string()
 }
 
-/// Text from a file, quoted for a message: whole up to [`QUOTE_CHARS`] characters, else its
-/// start, '...' and its length (a cell or a header may run to a megabyte).
-pub(crate) fn quoted(text: &str) -> String {
-    match shortened(text) {
-        (start, None) => format!("'{start}'"),
-        (start, Some(n)) => format!("'{start}...' ({n} characters)"),
-    }
-}
-
-/// [`quoted`] without the quotes.
-pub(crate) fn excerpt(text: &str) -> String {
-    match shortened(text) {
-        (start, None) => start,
-        (start, Some(n)) => format!("{start}... ({n} characters)"),
-    }
-}
+/// Text from a file, quoted for a message, cut short (the reader's, so that every message
+/// shows file text the same way).
+pub(crate) use lugre_io::text::{excerpt, quoted};
 
 /// A message written elsewhere (clap's, which quote the command line whole: `unexpected
 /// argument '...' found`) with every '-quoted text cut short as `quoted` cuts it.
@@ -93,19 +81,6 @@ pub fn shorten_quoted(message: &str) -> String {
     }
     out
 }
-
-/// `text` whole, or its start and its length in characters.
-fn shortened(text: &str) -> (String, Option<usize>) {
-    let n = text.chars().count();
-    if n <= QUOTE_CHARS {
-        (text.to_string(), None)
-    } else {
-        (text.chars().take(QUOTE_CHARS - 8).collect(), Some(n))
-    }
-}
-
-/// The longest text [`quoted`] and [`excerpt`] show whole.
-const QUOTE_CHARS: usize = 40;
 
 #[cfg(test)]
 mod tests {
@@ -136,20 +111,7 @@ mod tests {
     }
 
     #[test]
-    fn quoted_text_is_short() {
-        assert_eq!(quoted("1e999"), "'1e999'");
-        let forty = "x".repeat(40);
-        assert_eq!(quoted(&forty), format!("'{forty}'"));
-        let digits = format!("1{}", "0".repeat(400));
-        assert_eq!(
-            quoted(&digits),
-            format!("'1{}...' (401 characters)", "0".repeat(31))
-        );
-        // Characters, not bytes: never a split UTF-8 sequence.
-        assert_eq!(
-            quoted(&"µ".repeat(41)),
-            format!("'{}...' (41 characters)", "µ".repeat(32))
-        );
+    fn quoted_messages_are_short() {
         let long = "x".repeat(1000);
         assert_eq!(
             shorten_quoted(&format!("unexpected argument '{long}' found; 'a' b")),
@@ -160,10 +122,5 @@ mod tests {
         );
         assert_eq!(shorten_quoted("it's"), "it's");
         assert_eq!(shorten_quoted("no quotes"), "no quotes");
-        assert_eq!(excerpt("t,u"), "t,u");
-        assert_eq!(
-            excerpt(&"x,".repeat(30)),
-            format!("{}... (60 characters)", "x,".repeat(16))
-        );
     }
 }

@@ -94,16 +94,5 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 /// `s` on one line: runs of whitespace become one space, and other control characters (a NUL
 /// or an escape sequence from a file's contents) are shown escaped, not sent to the terminal.
 fn one_line(s: &str) -> String {
-    s.split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ")
-        .chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    lugre_io::text::printable(&s.split_whitespace().collect::<Vec<_>>().join(" "))
 }

@@ -337,6 +337,19 @@ fn csv_files_good_and_bad() {
         ),
         ("no-final-newline.csv", clean.trim_end().to_string()),
         ("spaces.csv", clean.replace(',', " , ")),
+        ("tabs.csv", clean.replace(',', "\t")),
+        // The usual names with units, and columns the commands do not read.
+        (
+            "units.csv",
+            clean.replace("t,u\n", "Time [s],Displacement [um]\n"),
+        ),
+        (
+            "extra-columns.csv",
+            clean
+                .lines()
+                .map(|l| format!("{l},{}\n", if l == "t,u" { "F" } else { "7" }))
+                .collect(),
+        ),
     ];
     let runs: [&[&str]; 3] = [
         &["loop", "--json", "--input"],
@@ -365,19 +378,25 @@ fn csv_files_good_and_bad() {
     assert_eq!(a, b);
     rejects(
         &["simulate", "--input", &no_header],
-        "simulate needs the samples' times",
+        "line 1: expected 2 columns (t,u), found 1",
     );
 
-    let bad: [(&str, &[u8], &str); 12] = [
+    let bad: [(&str, &[u8], &str); 13] = [
         (
             "wrong-header.csv",
             b"time,value\n0,1\n1,2\n",
-            "line 1: unexpected header 'time,value': expected 'u' or 't,u'",
+            "line 1: no column u (u, x, position or displacement) in the header 'time,value'",
         ),
         (
-            "three-columns.csv",
-            b"t,u,F\n0,0,0\n1,1,1\n",
-            "line 1: unexpected header 't,u,F'",
+            // After comments, CRLF: the header's own line.
+            "wrong-header-crlf.csv",
+            b"# rig 3\r\n# 2024-05-01\r\ntime,value\r\n0,1\r\n1,2\r\n",
+            "line 3: no column u",
+        ),
+        (
+            "two-u-columns.csv",
+            b"t,u,x\n0,0,0\n1,1,1\n",
+            "line 1: the header has two columns for u: 'u' (column 2) and 'x' (column 3)",
         ),
         (
             "missing-cell.csv",
@@ -396,8 +415,8 @@ fn csv_files_good_and_bad() {
         ),
         (
             "extra-cell.csv",
-            b"u\n0\n1,2\n",
-            "line 3: expected 1 value (u), found 2",
+            b"t,u\n0,0\n1,1,2\n",
+            "line 3: expected 2 values (t,u), found 3",
         ),
         (
             "non-utf8.csv",
@@ -421,7 +440,7 @@ fn csv_files_good_and_bad() {
         ),
         (
             "inline-comment.csv",
-            b"u\n0\n1 # peak\n",
+            b"t,u\n0,0\n1,1 # peak\n",
             "line 3: u = '1 # peak' is not a number",
         ),
         ("bom-only.csv", b"\xef\xbb\xbf", "no data rows"),
@@ -499,6 +518,19 @@ fn fit_csv_files_good_and_bad() {
         ("no-header.csv", rows.to_string()),
         ("spaces.csv", clean.replace(',', " , ")),
         ("swapped.csv", format!("f,U\n{swapped}")),
+        // The usual names with units; a file as `lugre loop --csv` writes it (rho,u,y: rho is
+        // not a time, y is the force).
+        ("names.csv", format!("Position [m],Friction [N]\n{rows}")),
+        (
+            "loop-csv.csv",
+            format!(
+                "rho,u,y\n{}",
+                rows.lines()
+                    .enumerate()
+                    .map(|(k, l)| format!("{k},{l}\n"))
+                    .collect::<String>()
+            ),
+        ),
     ];
     let want = accepts_json(&["fit", "--json", "--input", &dir.file("clean.csv", &clean)]);
     for (name, text) in &variants {
@@ -514,17 +546,18 @@ fn fit_csv_files_good_and_bad() {
         (
             "wrong-header.csv",
             b"time,force\n0,1\n".to_vec(),
-            "line 1: unexpected header 'time,force': expected 'u,F' or 't,u,F'".into(),
+            "line 1: no column u (u, x, position or displacement) in the header 'time,force'"
+                .into(),
         ),
         (
             "series-header.csv",
             b"t,u\n0,1\n".to_vec(),
-            "line 1: unexpected header 't,u': expected 'u,F' or 't,u,F'".into(),
+            "line 1: no column F (F, force, friction or y) in the header 't,u'".into(),
         ),
         (
             "repeated-column.csv",
             b"u,F,F\n0,1,2\n".to_vec(),
-            "line 1: unexpected header 'u,F,F'".into(),
+            "line 1: the header has two columns for F: 'F' (column 2) and 'F' (column 3)".into(),
         ),
         (
             "four-columns.csv",
@@ -568,7 +601,7 @@ fn fit_csv_files_good_and_bad() {
         (
             "huge-header.csv",
             format!("u,{garbage}\n0,0\n").into_bytes(),
-            "line 1: unexpected header 'u,xxxxx".into(),
+            "line 1: no column F (F, force, friction or y) in the header 'u,xxxxx".into(),
         ),
         (
             "huge-times.csv",

@@ -409,14 +409,23 @@ fn bad_input_is_one_line_and_status_2() {
         &["cycles", "--input", &wide],
         "line 3: expected 2 values (t,u), found 3",
     );
-    let nocol = p("nocol.csv", b"t,x\n0,1\n1,2\n");
+    let nocol = p("nocol.csv", b"t,w\n0,1\n1,2\n");
     rejects(
         &["cycles", "--input", &nocol],
-        "no column 'u' in the header 't,x'",
+        "line 1: no column u (u, x, position or displacement) in the header 't,w'",
     );
     rejects(
         &["cycles", "--input", &nocol, "--column", "force"],
-        "no column 'force'",
+        "line 1: no column F (F, force, friction or y) in the header 't,w'",
+    );
+    rejects(
+        &["cycles", "--input", &nocol, "--column", "strain"],
+        "line 1: no column 'strain' in the header 't,w'",
+    );
+    let twice = p("twice.csv", b"t,u,u\n0,1,1\n1,2,2\n");
+    rejects(
+        &["cycles", "--input", &twice],
+        "line 1: the header has two columns for u: 'u' (column 2) and 'u' (column 3); say which with --columns u=NUMBER",
     );
     let nan = p("nan.csv", b"u\n1\nnan\n");
     rejects(
@@ -484,7 +493,54 @@ fn a_tab_separated_lab_file() {
     assert_eq!(j["cycles"], want["cycles"]);
     let e = rejects(
         &["cycles", "--input", &path, "--column", "Friction"],
-        "no column 'Friction'",
+        "no column F (F, force, friction or y) in the header 'Time [s],Normal [uN],Position [mm]'",
     );
     assert!(e.contains("fields separated by tabs"), "{e}");
+    // Without --column: Position is u by its usual name.
+    let j = json(&["cycles", "--input", &path, "--json"]);
+    assert_eq!(j["cycles"], want["cycles"]);
+}
+
+/// The files other commands write and the usual lab headers are histories too: `cycles`
+/// reads their displacement column whatever else they hold.
+#[test]
+fn histories_from_other_commands_and_lab_headers() {
+    let dir = common::TempDir::new("cycles-headers");
+    let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0, -2.0];
+    let want = json(&["cycles", "--values=-2,1,-3,5,-1,3,-4,4,-2", "--json"]);
+    let rows = |f: &dyn Fn(usize, f64) -> String| -> String {
+        u.iter().enumerate().map(|(k, &v)| f(k, v)).collect()
+    };
+    for (name, text) in [
+        // Said "no column 'u'" before.
+        (
+            "lab.csv",
+            format!(
+                "Time [s],Displacement [um]\n{}",
+                rows(&|k, v| format!("{k},{v}\n"))
+            ),
+        ),
+        (
+            "loop.csv",
+            format!("rho,u,y\n{}", rows(&|k, v| format!("{k},{v},0.5\n"))),
+        ),
+        (
+            "dynamics.csv",
+            format!(
+                "t,x,v,z,friction,drive\n{}",
+                rows(&|k, v| format!("{k},{v},1,2,3,4\n"))
+            ),
+        ),
+        (
+            "crlf-comments.csv",
+            format!(
+                "# run 3\r\n\r\nt;x\r\n{}",
+                rows(&|k, v| format!("{k};{v}\r\n"))
+            ),
+        ),
+    ] {
+        let path = dir.file(name, text);
+        let j = json(&["cycles", "--input", &path, "--json"]);
+        assert_eq!(j["cycles"], want["cycles"], "{name}");
+    }
 }

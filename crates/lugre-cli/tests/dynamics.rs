@@ -148,7 +148,7 @@ fn a_force_history_from_a_file_is_the_same_drive_as_its_profile() {
     assert_eq!(from_file, from_profile);
     rejects(
         &["dynamics", "--input", no_f.to_str().unwrap()],
-        "no column 'F'",
+        "no column F (F, force, friction or y) in the header 't,u'",
     );
     rejects(
         &[
@@ -158,7 +158,7 @@ fn a_force_history_from_a_file_is_the_same_drive_as_its_profile() {
             "--t-end",
             "1",
         ],
-        "needs a column t",
+        "line 1: no column t (t or time) in the header 'F'",
     );
     rejects(
         &[

@@ -305,7 +305,7 @@ fn bad_inputs_are_one_line_and_status_2() {
     );
     rejects(
         &["loop", "--input", "/nonexistent/x.csv"],
-        "cannot read '/nonexistent/x.csv'",
+        "/nonexistent/x.csv: cannot read the file: No such file or directory",
     );
     rejects(
         &[
@@ -329,7 +329,11 @@ fn csv_errors_name_the_line() {
             "line 4: times must be strictly increasing",
         ),
         ("t,u\n0,0\n1\n", "line 3: expected 2 values"),
-        ("a,b\n0,0\n", "line 1: unexpected header"),
+        ("a,b\n0,0\n", "line 1: no column u"),
+        (
+            "# c\r\n\r\nu,u\r\n0,0\r\n",
+            "line 3: the header has two columns for u",
+        ),
         (
             "u\n0\n1e400\n",
             "line 3: u = '1e400' is not a finite number",

@@ -342,7 +342,10 @@ fn bad_requests_are_one_line_and_exit_2() {
         ),
         (with(&["--input", &empty]), "no data rows"),
         (with(&["--input", &backwards]), "strictly increasing"),
-        (with(&["--input", &u_only]), "needs the samples' times"),
+        (
+            with(&["--input", &u_only]),
+            "line 1: no column t (t or time) in the header 'u'",
+        ),
         (
             with(&["--input", &open, "--periods", "2"]),
             "must end where it starts",
@@ -545,7 +548,7 @@ fn a_normal_force_column_scales_the_friction_coefficient() {
     std::fs::write(&file, "t,u,N\n0,0,1\n1,1,0\n2,0,4\n").unwrap();
     rejects(
         &["simulate", "--input", f, "--columns", "N=N"],
-        "row 2: the normal force N must be > 0, got 0",
+        "line 3: N must be > 0, got 0",
     );
     rejects(
         &["simulate", "--sine", "1,1", "--columns", "N=2"],

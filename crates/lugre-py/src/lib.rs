@@ -10,6 +10,7 @@ mod dynamics;
 mod fit;
 mod loops;
 mod models;
+mod read;
 mod simulate;
 
 use pyo3::prelude::*;
@@ -44,5 +45,6 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DYNAMICS_FIELDS",
         lugre::dynamics::Field::ALL.map(|f| f.name()),
     )?;
+    m.add_function(wrap_pyfunction!(read::read, m)?)?;
     Ok(())
 }

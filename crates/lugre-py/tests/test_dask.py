@@ -174,6 +174,56 @@ def test_cycles_many_and_fit_many(tmp_path):
     np.testing.assert_allclose(table.fs, 2.0, rtol=1e-6)
 
 
+def test_many_files_are_read_as_lugre_read_reads_them(tmp_path):
+    """The files pandas' sniffer misread: a leading comment line (taken as the header), a
+    one-column file `u` (its letter taken as the delimiter), two `u` columns (the first taken
+    silently)."""
+    u = walk(200, 3)
+    want = pd.DataFrame(lugre.cycles(u, reversals=False)["cycles"])
+    body = "".join(f"{v!r}\n" for v in u.tolist())
+    files = {
+        "comment.csv": "# rig 3, run 7\nu\n" + body,
+        "one-column.csv": "u\n" + body,
+        "crlf-units.csv": ("# run\nTime [s];Displacement [um]\n"
+                           + "".join(f"{k};{v!r}\n" for k, v in enumerate(u.tolist()))).replace("\n", "\r\n"),
+    }
+    paths = []
+    for name, text in files.items():
+        p = tmp_path / name
+        p.write_text(text, newline="")
+        paths.append(str(p))
+    with dask.config.set(scheduler="threads"):
+        table = ld.cycles_many(paths)
+    for p in paths:
+        got = table[table.file == p].drop(columns="file").reset_index(drop=True)
+        pd.testing.assert_frame_equal(got, want, check_exact=True)
+    twice = tmp_path / "twice.csv"
+    twice.write_text("u,u\n1,2\n3,4\n")
+    with pytest.raises(ValueError, match=r"twice\.csv: line 1: the header has two columns for u"):
+        ld.cycles_many([str(twice)])
+    bad = tmp_path / "bad.csv"
+    bad.write_text("# c\r\nt,u\r\n0,1\r\n1,x\r\n")
+    with pytest.raises(ValueError, match=r"bad\.csv: line 4: u = 'x' is not a number"):
+        ld.cycles_many([str(bad)])
+    # fit_many: the usual names and units, a file `lugre loop --csv` writes (rho,u,y), or
+    # columns named; errors name the file and the line.
+    hl = lugre.LuGre(sigma0=6).loop([0, 1])
+    rho, uu, yy = (a.tolist() for a in hl.sample(401))
+    lab = tmp_path / "lab.tsv"
+    lab.write_text("Position [m]\tFriction [N]\n" + "".join(f"{a!r}\t{b!r}\n" for a, b in zip(uu, yy)))
+    loop = tmp_path / "loop.csv"
+    loop.write_text("rho,u,y\n" + "".join(f"{r!r},{a!r},{b!r}\n" for r, a, b in zip(rho, uu, yy)))
+    named = tmp_path / "named.csv"
+    named.write_text("in,out\n" + "".join(f"{a!r},{b!r}\n" for a, b in zip(uu, yy)))
+    with dask.config.set(scheduler="threads"):
+        table = ld.fit_many([str(lab), str(loop)])
+        np.testing.assert_allclose(table.sigma0, 6.0, rtol=1e-6)
+        table = ld.fit_many([str(named)], u="in", f="out")
+        np.testing.assert_allclose(table.sigma0, 6.0, rtol=1e-6)
+        with pytest.raises(ValueError, match=r"named\.csv: line 1: no column u"):
+            ld.fit_many([str(named)])
+
+
 def test_on_a_two_worker_local_cluster(tmp_path):
     from dask.distributed import Client, LocalCluster
 

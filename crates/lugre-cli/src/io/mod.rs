@@ -1,5 +1,5 @@
-//! Files and streams: CSV in and out, the JSON writer, atomic files, the output policy, the
-//! spool, and progress on stderr.
+//! Files and streams: CSV out (data files are read by `lugre-io`), the JSON writer, atomic
+//! files, the output policy, the spool, and progress on stderr.
 
 pub(crate) mod atomic;
 pub(crate) mod csv;

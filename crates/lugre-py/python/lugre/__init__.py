@@ -26,6 +26,10 @@ Histories too large for one machine: ``lugre.dask`` (``pip install lugre[dask]``
 ``dask.array`` or a list of ``.npy`` files chunk by chunk, equal to ``lugre.cycles`` row for row;
 the chunk functions it schedules (``chunk_count``, ``chunk_merge``, ``ChunkPlan``, ...) are here.
 
+Data files: ``lugre.read(path, columns=None, scale=None, delimiter=None, *, roles=None)``
+returns a file's columns by role ("t", "u", "F", ...) with their units, read by the same reader
+as the ``lugre`` command's ``--input`` (see ``help(lugre.read)``).
+
 Parameter identification (``lugre fit``): ``lugre.fit(u, f, *, t=None, model="lugre",
 kind="slow", fix=(), free=(), start=None, bounds=None, x0=None, starts=None)`` returns a dict of
 the estimates with standard errors, 95 % intervals and correlations, and the fitted curve (see
@@ -58,6 +62,7 @@ from ._lugre import (
     dynamics,
     fit,
 )
+from ._read import Columns, read
 
 __all__ = [
     "DYNAMICS_COLUMNS",
@@ -65,6 +70,7 @@ __all__ = [
     "ChunkPlan",
     "ChunkRows",
     "ChunkSummary",
+    "Columns",
     "Curve",
     "Dahl",
     "DynamicsResult",
@@ -85,6 +91,7 @@ __all__ = [
     "cycles",
     "dynamics",
     "fit",
+    "read",
 ]
 
 

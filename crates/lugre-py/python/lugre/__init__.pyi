@@ -18,6 +18,8 @@ from typing import (
     type_check_only,
 )
 
+import os
+
 import numpy as np
 import numpy.typing as npt
 
@@ -344,6 +346,33 @@ def fit(
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
+    ...
+
+class Columns(dict[str, _Floats]):
+    """A data file's columns by role ("t", "u", "v", "F", "N" or a column's own name), with the
+    header's units and names."""
+    units: dict[str, Optional[str]]
+    names: dict[str, Optional[str]]
+    path: str
+    def __init__(
+        self,
+        values: Mapping[str, _Floats],
+        units: Mapping[str, Optional[str]],
+        names: Mapping[str, Optional[str]],
+        path: str,
+    ) -> None: ...
+
+def read(
+    path: Union[str, "os.PathLike[str]"],
+    columns: Optional[Union[Mapping[str, Union[str, int]], str]] = None,
+    scale: Optional[Union[Mapping[str, _Real], str]] = None,
+    delimiter: Optional[Literal["comma", "semicolon", "tab", "space", ",", ";", "\t", " "]] = None,
+    *,
+    roles: Optional[Sequence[str]] = None,
+) -> Columns:
+    """The columns of a data file by role, with their units, read as the `lugre` command reads
+    `--input` files (header synonyms, units, comments, delimiters; ValueError naming the file,
+    line and column)."""
     ...
 
 

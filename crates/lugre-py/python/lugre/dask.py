@@ -47,6 +47,7 @@ except ImportError as e:  # pragma: no cover - the message is the point
     ) from e
 
 from . import _lugre
+from ._read import read as _read
 from . import cycles as _single_cycles
 from . import fit as _single_fit
 
@@ -388,29 +389,15 @@ def cycles(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
 def _series_of(path: str, column: Optional[str]) -> np.ndarray:
     if path.endswith(".npy"):
         return _read_npy(path)
-    table = _read_table(path)
-    return _as_floats(table[_column(table, column or "u", path)].to_numpy())
-
-
-def _read_table(path: str) -> "pd.DataFrame":
-    # Delimiter sniffed (comma, semicolon, tab, whitespace), as the lugre command reads files.
-    return pd.read_csv(path, sep=None, engine="python")
-
-
-def _column(table: "pd.DataFrame", name: str, path: str) -> str:
-    """The column called ``name``, case-insensitively, ignoring a unit suffix in brackets."""
-    def bare(c: str) -> str:
-        return re.sub(r"\s*[\[(].*[\])]\s*$", "", str(c)).strip().lower()
-
-    for c in table.columns:
-        if bare(c) == name.lower():
-            return c
-    raise ValueError(f"{path}: no column {name!r} (columns: {', '.join(map(str, table.columns))})")
+    # The reader of lugre.read and the lugre command (its errors name the file and the line).
+    d = _read(path, roles=[column or "u"])
+    (role,) = [k for k in d if k != "t"]
+    return d[role]
 
 
 def _cycles_file(path: str, column: Optional[str], gate: float, model: Any, x0: float) -> "pd.DataFrame":
+    u = _series_of(path, column)
     try:
-        u = _series_of(path, column)
         r = _single_cycles(u, gate, model, x0, reversals=False)
     except (ValueError, TypeError) as e:
         raise type(e)(f"{path}: {e}") from None
@@ -421,9 +408,11 @@ def _cycles_file(path: str, column: Optional[str], gate: float, model: Any, x0: 
 
 def cycles_many(paths: Sequence[Any], model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
                 column: Optional[str] = None) -> "pd.DataFrame":
-    """The cycles of independent records, one task per file (``.npy``, or a delimited text
-    file with a header, the series in the column named ``column``, default "u"), as one pandas
-    table with a "file" column first; the gate is allowed (each file is counted whole)."""
+    """The cycles of independent records, one task per file, as one pandas table with a "file"
+    column first; the gate is allowed (each file is counted whole). A file is a ``.npy`` array,
+    or a data file read by ``lugre.read`` (the ``lugre`` command's reader): the series is its
+    column ``column`` (default "u": a header's u, x, position or displacement; or a column's
+    own name), other columns ignored, a time column checked."""
     names = [os.fspath(p) for p in paths]
     for p in names:
         if not os.path.isfile(p):
@@ -436,16 +425,13 @@ def cycles_many(paths: Sequence[Any], model: Any = None, x0: float = 0.0, gate: 
     return pd.concat(frames, ignore_index=True)
 
 
-def _fit_file(path: str, columns: dict, kwargs: dict) -> dict:
+def _fit_file(path: str, names: dict, kwargs: dict) -> dict:
+    # Columns by name where given, else by role; the reader's errors name the file and the line.
+    d = _read(path, columns={k: v for k, v in names.items() if v is not None} or None,
+              roles=["u", "F"])
     try:
-        table = _read_table(path)
-        get = {k: _as_floats(table[_column(table, v, path)].to_numpy())
-               for k, v in columns.items() if v is not None}
-        t = get.get("t")
-        if "t" in columns and columns["t"] is not None and t is None:
-            raise ValueError("no time column")
-        r = _single_fit(get["u"], get["f"], t=t, **kwargs)
-    except (ValueError, TypeError, KeyError) as e:
+        r = _single_fit(d["u"], d["F"], t=d.get("t"), **kwargs)
+    except (ValueError, TypeError) as e:
         raise ValueError(f"{path}: {e}") from None
     row = {"file": path, "rms": r["rms"], "samples": r["samples"], "converged": r["converged"]}
     for name, p in r["parameters"].items():
@@ -454,16 +440,18 @@ def _fit_file(path: str, columns: dict, kwargs: dict) -> dict:
     return row
 
 
-def fit_many(paths: Sequence[Any], *, u: str = "u", f: str = "F", t: Optional[str] = None,
-             **kwargs: Any) -> "pd.DataFrame":
-    """``lugre.fit`` on independent records, one task per file (delimited text with a header;
-    columns ``u``, ``f`` and optionally ``t`` matched by name case-insensitively, a unit suffix
-    in brackets ignored), as one pandas table: "file", "rms", "samples", "converged", and each
-    fitted parameter's value and "<name>_stderr". ``kwargs`` go to ``lugre.fit``."""
+def fit_many(paths: Sequence[Any], *, u: Optional[str] = None, f: Optional[str] = None,
+             t: Optional[str] = None, **kwargs: Any) -> "pd.DataFrame":
+    """``lugre.fit`` on independent records, one task per file, as one pandas table: "file",
+    "rms", "samples", "converged", and each fitted parameter's value and "<name>_stderr".
+    Files are read by ``lugre.read`` (the ``lugre`` command's reader): the columns u, F and t
+    (when the file has one) by their usual names (u, x, position, displacement; F, force,
+    friction, y; t, time), or those ``u``, ``f`` and ``t`` name (header names, units ignored);
+    other columns ignored. ``kwargs`` go to ``lugre.fit``."""
     names = [os.fspath(p) for p in paths]
     for p in names:
         if not os.path.isfile(p):
             raise ValueError(f"lugre.dask: file {p} does not exist")
-    columns = {"u": u, "f": f, "t": t}
+    columns = {"u": u, "F": f, "t": t}
     rows = dask.compute(*[dask.delayed(_fit_file)(p, columns, kwargs) for p in names])
     return pd.DataFrame(list(rows))

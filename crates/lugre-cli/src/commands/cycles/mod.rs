@@ -57,12 +57,13 @@ const CSV_HELP: &str = "Write the cycles to this CSV file, one row per cycle";
     mut_arg("csv", |a| a.help(CSV_HELP))
 )]
 pub(crate) struct CyclesArgs {
-    /// The history from a CSV file: a column 'u' (header 'u' or 't,u', or no header), or the
-    /// column --column names; a column 't' is checked as strictly increasing times.
+    /// The history from a data file: its column u (u, x, position or displacement; no header:
+    /// u or t,u), or the column --column names; other columns are ignored, a column t is
+    /// checked as strictly increasing times.
     #[arg(long, value_name = "FILE.csv", help_heading = "Input")]
     pub(crate) input: Option<PathBuf>,
-    /// The column of FILE.csv holding the history, by its header name (default u); other
-    /// columns are ignored.
+    /// The column of FILE.csv holding the history, by its header name or a role's usual name
+    /// (default u).
     #[arg(long, value_name = "NAME", requires = "input", help_heading = "Input")]
     pub(crate) column: Option<String>,
     #[command(flatten)]
@@ -279,7 +280,9 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
         (Some(path), None) => Source::File {
             path,
             column,
-            options: args.data.options(&["u", column])?,
+            options: args
+                .data
+                .options(&[lugre_io::Role::U, lugre_io::Role::of(column)])?,
         },
         (None, Some(text)) => {
             let u = parse_list("--values", text)?;

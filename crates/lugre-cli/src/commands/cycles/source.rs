@@ -1,13 +1,13 @@
 //! Where the samples come from (a CSV file, streamed, or `--values`), and the counter they go
 //! to (with or without energies).
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use lugre::cycles::MAX_SAMPLE;
 use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter};
 use std::path::Path;
 
 use crate::fmt::num;
-use crate::io::csv::{Columns, SampleReader};
+use lugre_io::{ReadOptions, Reader, Role, Spec};
 
 /// Samples handed to the counter at a time.
 const BLOCK: usize = 4096;
@@ -18,7 +18,7 @@ pub(super) enum Source<'a> {
         path: &'a Path,
         column: &'a str,
         /// `--columns` and `--scale`.
-        options: crate::io::csv::ReadOptions,
+        options: ReadOptions,
     },
     Values(Vec<f64>),
 }
@@ -50,21 +50,25 @@ impl Source<'_> {
                 options,
             } => {
                 let name = || path.display().to_string();
-                let mut reader =
-                    SampleReader::open(path, Columns::Named(column))?.with_options(options.clone());
+                // The column and `t` where the file has one (times are checked, not used).
+                let spec = Spec::new([Role::of(column)]);
+                let mut rows = Reader::open(path, options.clone())?
+                    .rows(&spec)
+                    .map_err(|e| e.in_file(*path))?;
                 let mut block = Vec::with_capacity(BLOCK);
-                while let Some(s) = reader.next_sample().with_context(name)? {
+                while let Some(row) = rows.next_row().map_err(|e| e.in_file(*path))? {
+                    let u = row.values[0];
                     // Finite already (the reader checks).
-                    if s.u.abs() > MAX_SAMPLE {
+                    if u.abs() > MAX_SAMPLE {
                         bail!(
                             "{}: line {}: u = {} is too large (|u| must be at most {} so that ranges stay finite)",
                             name(),
-                            reader.line(),
-                            num(s.u),
+                            rows.line(),
+                            num(u),
                             num(MAX_SAMPLE)
                         );
                     }
-                    block.push(s.u);
+                    block.push(u);
                     if block.len() == BLOCK {
                         f(&block)?;
                         block.clear();

@@ -11,10 +11,11 @@ use std::io::Write;
 use crate::args::{ModelArgs, Needed, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::{Columns, NumberRows};
+use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+use lugre_io::Role;
 
 /// Rows of the table printed (all of them are in --json / --csv).
 const TABLE_HEAD: usize = 12;
@@ -294,16 +295,12 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
 
 /// The times and forces of the `--input` file.
 fn read_force(args: &DynamicsArgs, path: &std::path::Path) -> Result<(Vec<f64>, Vec<f64>)> {
-    let options = args.data.options(&["F"])?;
-    let table = crate::io::csv::read_table_with(path, Columns::Named("F"), options)?;
-    let Some(t) = table.t else {
-        bail!(
-            "{}: needs a column t (the times of the force F)",
-            path.display()
-        );
-    };
-    let f = table.columns.into_iter().next().unwrap_or_default();
-    Ok((t, f))
+    // The times and the force F (force, friction, y), other columns ignored.
+    let options = args.data.options(&[Role::F])?;
+    let spec = lugre_io::Spec::new([Role::F]).require_time();
+    let mut table = lugre_io::read_file(path, &spec, options)?;
+    let (t, f) = (table.take(&Role::T), table.take(&Role::F));
+    Ok((t.unwrap_or_default(), f.unwrap_or_default()))
 }
 
 /// The numbers of a list flag.

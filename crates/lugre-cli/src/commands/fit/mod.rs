@@ -27,11 +27,11 @@ use std::time::{Duration, Instant};
 use crate::args::{check_files, ModelArgs, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
-use crate::io::csv::Columns;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
 use lugre::simulate::SmoothSamples;
+use lugre_io::{Reader, Role, Rows, Spec};
 
 mod output;
 mod spec;
@@ -185,25 +185,11 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
-    let velocity = velocity_record(args, path);
-    let normal = normal_force(args);
-    let mut options = args.data.options(if velocity {
-        &["v", "F", "N"]
-    } else {
-        &["u", "F", "N"]
-    })?;
     // A row without a force (empty or NaN) is an input-only sample of the full fit.
-    options.optional = Some("f".into());
-    let columns = match (velocity, normal) {
-        (false, false) => Columns::Record,
-        (false, true) => Columns::RecordN,
-        (true, false) => Columns::VelocityRecord,
-        (true, true) => Columns::VelocityRecordN,
-    };
     // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
-    let mut record = read_record(path, columns, options, velocity)?;
+    let mut record = read_record(args, path)?;
     if let Some(n) = &record.normal {
-        to_coefficient(&mut record.f, n, path)?;
+        to_coefficient(&mut record.f, n);
     }
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
         if kind == FitKind::Slow {
@@ -331,38 +317,47 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     Ok(())
 }
 
-/// Reads `u,F` or `t,u,F` (header optional; a header may name the columns in any order), or
-/// a velocity record `t,v,F` (`velocity`: integrated from `u = 0` at the first sample, the C1
-/// cubic reading of the motion subdivided to `CUBIC_READING_TOL`), with `N` where `columns`
-/// has it.
-fn read_record(
-    path: &Path,
-    columns: Columns,
-    options: crate::io::csv::ReadOptions,
-    velocity: bool,
-) -> Result<Record> {
-    let table = crate::io::csv::read_table_with(path, columns, options)?;
-    let mut values = table.columns.into_iter();
+/// Reads the record: `u,F` or `t,u,F` (the columns of those roles in any header, others
+/// ignored; without a header, in this order), or a velocity record `t,v,F` (a header with `v`
+/// and no `u`, or `--columns v=NAME`: integrated from `u = 0` at the first sample, the C1 cubic
+/// reading of the motion subdivided to `CUBIC_READING_TOL`), with the normal force `N` when
+/// `--columns` names it (never inferred from a header: a file that records its load would
+/// otherwise change what the parameters mean). A force may be missing (empty or `NaN`): an
+/// input-only row of the full fit.
+fn read_record(args: &FitArgs, path: &Path) -> Result<Record> {
+    let options = args.data.options(&[Role::U, Role::V, Role::F, Role::N])?;
+    let reader = Reader::open(path, options.clone())?;
+    let motion = reader.motion();
+    let velocity = motion == Role::V;
+    let normal = options.selects(&Role::N);
+    let mut roles = vec![motion.clone(), Role::F];
+    if normal {
+        roles.push(Role::N);
+    }
+    let mut spec = Spec::new(roles).allow_missing(Role::F).positive(Role::N);
+    if velocity {
+        spec = spec.require_time();
+    }
+    let mut table = reader
+        .rows(&spec)
+        .and_then(Rows::collect_table)
+        .map_err(|e| e.in_file(path))?;
     let (u, f, normal) = (
-        values.next().unwrap_or_default(),
-        values.next().unwrap_or_default(),
-        values.next(),
+        table.take(&motion).unwrap_or_default(),
+        table.take(&Role::F).unwrap_or_default(),
+        table.take(&Role::N),
     );
+    let t = table.take(&Role::T);
     if !velocity {
         return Ok(Record {
-            t: table.t,
+            t,
             u,
             f,
             velocity: None,
             normal,
         });
     }
-    let Some(t) = table.t else {
-        bail!(
-            "{}: a velocity record needs the samples' times: a column 't' (or --columns t=NAME)",
-            path.display()
-        );
-    };
+    let t = t.unwrap_or_default(); // required above
     let motion = SmoothSamples::from_velocity(t.clone(), u, 0.0, CUBIC_READING_TOL)
         .map_err(|e| anyhow!("{}: {e}", path.display()))?;
     Ok(Record {
@@ -374,23 +369,10 @@ fn read_record(
     })
 }
 
-/// Whether the fit is to the friction coefficient `F / N`: asked for with `--columns N=NAME`
-/// (never from the header alone: a file that records the load would otherwise change what
-/// the parameters mean).
-fn normal_force(args: &FitArgs) -> bool {
-    args.data.selects("N")
-}
-
-/// `F / N` in place: the friction coefficient the model is fitted to (`N > 0` at every row).
-fn to_coefficient(f: &mut [f64], n: &[f64], path: &Path) -> Result<()> {
-    crate::io::csv::check_normal_force(path, n)?;
+/// `F / N` in place: the friction coefficient the model is fitted to (the reader checked
+/// `N > 0` at every row).
+fn to_coefficient(f: &mut [f64], n: &[f64]) {
     f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
-    Ok(())
-}
-
-/// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).
-fn velocity_record(args: &FitArgs, path: &Path) -> bool {
-    args.data.selects("v") || crate::io::csv::is_velocity_record(path)
 }
 
 /// A spinner on stderr for the full fit (see [`Progress`]), redrawn at most 20 times a second.

@@ -52,6 +52,7 @@ pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
             .map_err(|e| anyhow!("--free: {}", short_name(e)))?;
     }
     if let Some(text) = &args.bounds {
+        once("--bounds", &text.split(',').collect::<Vec<_>>())?;
         for item in text.split(',') {
             let Some((name, range)) = item.split_once('=') else {
                 bail!("--bounds: {} is not NAME=LO:HI", quoted(item.trim()));
@@ -96,7 +97,27 @@ fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
             quoted(text)
         );
     }
+    once(flag, &items)?;
     Ok(items)
+}
+
+/// Refuses a parameter named twice in one flag's `NAME[=...]` items (`--fix fs=1,fs=2`: which
+/// value was meant cannot be known).
+fn once(flag: &str, items: &[&str]) -> Result<()> {
+    fn name(item: &str) -> &str {
+        item.split_once('=').map_or(item, |(n, _)| n).trim()
+    }
+    for (k, first) in items.iter().enumerate() {
+        if let Some(second) = items[k + 1..].iter().find(|i| name(i) == name(first)) {
+            bail!(
+                "{flag}: {} is given twice ({} and {})",
+                quoted(&excerpt(name(first))),
+                quoted(&excerpt(first)),
+                quoted(&excerpt(second))
+            );
+        }
+    }
+    Ok(())
 }
 
 /// A core error as one line, with what to do about it where the CLI knows.

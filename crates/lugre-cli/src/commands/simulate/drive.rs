@@ -9,6 +9,7 @@ use super::SimulateArgs;
 use crate::args::Interpolate;
 use crate::fmt::sig;
 use crate::numbers::parse_list;
+use lugre_io::{Reader, Role, Rows, Spec};
 
 /// A record's normal force (`--columns N=NAME`) at its times.
 pub(super) type Normal = Option<(Vec<f64>, Vec<f64>)>;
@@ -48,7 +49,7 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
             sig(sine.phase(), 10),
             sig(sine.offset(), 10)
         );
-        if args.data.selects("N") {
+        if args.data.selects(Role::N) {
             bail!("--columns N=...: a normal force is read from the record (--input FILE)");
         }
         return Ok((Drive::Sine(sine), text, None));
@@ -56,7 +57,7 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
     if let Some(path) = &args.input.input {
         return sampled(args, path);
     }
-    if args.data.selects("N") {
+    if args.data.selects(Role::N) {
         bail!("--columns N=...: a normal force is read from the record (--input FILE)");
     }
     if given.is_empty() {
@@ -83,32 +84,25 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
 }
 
 /// A record from a file: displacement `t,u` (linear or cubic reading) or velocity `t,v`
-/// (integrated, cubic reading).
+/// (integrated, cubic reading: a header with `v` and no `u`, or `--columns v=NAME`), with the
+/// normal force `N` when `--columns` names it; other columns ignored.
 fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String, Normal)> {
-    use crate::io::csv::{check_normal_force, read_table_with, Columns};
-    let velocity = args.data.selects("v") || crate::io::csv::is_velocity_record(path);
-    let (columns, role) = match (velocity, args.data.selects("N")) {
-        (true, false) => (Columns::Named("v"), "v"),
-        (true, true) => (Columns::VelocityN, "v"),
-        (false, false) => (Columns::Series, "u"),
-        (false, true) => (Columns::SeriesN, "u"),
-    };
-    let table = read_table_with(path, columns, args.data.options(&[role, "N"])?)?;
-    let Some(t) = table.t else {
-        bail!(
-            "{}: simulate needs the samples' times: a column 't' (or --columns t=NAME)",
-            path.display()
-        );
-    };
-    let mut columns = table.columns.into_iter();
-    let values = columns.next().unwrap_or_default();
-    let normal = match columns.next() {
-        Some(n) => {
-            check_normal_force(path, &n)?;
-            Some((t.clone(), n))
-        }
-        None => None,
-    };
+    let options = args.data.options(&[Role::U, Role::V, Role::N])?;
+    let reader = Reader::open(path, options.clone())?;
+    let motion = reader.motion();
+    let velocity = motion == Role::V;
+    let mut roles = vec![motion.clone()];
+    if options.selects(&Role::N) {
+        roles.push(Role::N);
+    }
+    let spec = Spec::new(roles).require_time().positive(Role::N);
+    let mut table = reader
+        .rows(&spec)
+        .and_then(Rows::collect_table)
+        .map_err(|e| e.in_file(path))?;
+    let t = table.take(&Role::T).unwrap_or_default();
+    let values = table.take(&motion).unwrap_or_default();
+    let normal = table.take(&Role::N).map(|n| (t.clone(), n));
     let n = t.len();
     let (t0, t1) = (t[0], t[n - 1]);
     let span = format!("t in [{}, {}]", sig(t0, 10), sig(t1, 10));
