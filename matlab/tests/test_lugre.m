@@ -98,7 +98,7 @@ function failures = test_lugre()
   failures += expect(isequal(z2, z(3:end)), 'friction_step: a run continued');
 
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
-  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) = NaN is not a finite number');
+  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) must be a finite number, got NaN');
   failures += raises(@() lugre_loop('abc'), 'u must be numeric or logical, got a char array');
   failures += raises(@() lugre_loop([0 1i]), 'u must be real, got a complex array');
   failures += raises(@() lugre_loop(ones(2)), 'u must be a vector (one row or one column), got a 2x2 array');
@@ -107,7 +107,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_cycles([0 1 2], ones(2)), 'gate must be a vector (one row or one column), got a 2x2 array');
   failures += raises(@() lugre_simulate(ones(3), ones(3)), 't must be a vector (one row or one column), got a 3x3 array');
   failures += raises(@() lugre_friction_step([0 1; 2 3], 1e-3), 'x must be a vector');
-  failures += raises(@() lugre_loop([0 1 0.5 1.5], struct(), 1), 'n must be a whole number from 2 to 1e8, got 1');
+  failures += raises(@() lugre_loop([0 1 0.5 1.5], struct(), 1), 'n must be at least 2 (both ends of the period), got 1');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', -1)), 'sigma0 must be > 0, got -1');
   failures += raises(@() lugre_loop([0 1], struct('sigma9', 1)), 'unknown parameter ''sigma9''');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', [1 2])), 'sigma0 must be a scalar');
@@ -122,7 +122,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'samples', 1e12)), 'samples must be a whole number from 2 to 10000000');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'pid', [1 2])), 'pid takes 3 numbers, got 2');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'gamma', 1)), 'unknown field ''gamma''');
-  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) = inf is not a finite number');
+  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) must be a finite number, got inf');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 
   % The fit, as `lugre fit --json` on the same samples (written with 17 digits: the same
@@ -147,7 +147,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_fit(u, f, struct('fix', 'sigma9')), 'options.fix: ');
   failures += raises(@() lugre_fit(u, f, struct('fix', {{'fs', 3}})), 'options.fix{2} must be a name');
   g = f; g(4) = NaN;
-  failures += raises(@() lugre_fit(u, g), 'f(4) = NaN is not a finite number');
+  failures += raises(@() lugre_fit(u, g), 'f(4) must be a finite number, got NaN');
   % The full fit of the paper's model swept at three speeds, sigma2 and beta held.
   t = 0; x = -6;
   for speed = [0.1 1 10]
