@@ -155,6 +155,13 @@ def judge(case, front_end, run):
                 f"{ours} is not the CLI's {theirs}:\n  got {b}\n  CLI {a}")
 
 
+def exe():
+    """The CLI, the reference every number is compared with."""
+    if not os.path.exists(EXE):
+        pytest.fail(f"{EXE} is missing: cargo build --release -p lugre-cli (or set LUGRE_EXE)")
+    return EXE
+
+
 def cli(case):
     """The CLI's JSON for the case (its file written with every digit of the doubles)."""
     with tempfile.TemporaryDirectory() as d:
@@ -168,7 +175,7 @@ def cli(case):
         for a in case["cli"]:
             a = a.replace("@dir/", d + "/")
             args.append(a.replace("@file", path) if path else a)
-        r = subprocess.run([EXE, *args], capture_output=True, text=True)
+        r = subprocess.run([exe(), *args], capture_output=True, text=True)
         assert r.returncode == 0, f"the CLI refused {args}: {r.stderr}"
         return json.loads(r.stdout)
 
@@ -182,7 +189,7 @@ TABLE1 = {}
 def table1():
     """Table I as the CLI's preset gives it (Python has no presets: the values are passed)."""
     if not TABLE1:
-        r = subprocess.run([EXE, "loop", "--preset", "canudas1995", "--turning-points", "0,1", "--json"],
+        r = subprocess.run([exe(), "loop", "--preset", "canudas1995", "--turning-points", "0,1", "--json"],
                            capture_output=True, text=True, check=True)
         TABLE1.update({k: v for k, v in json.loads(r.stdout)["model"].items() if k != "kind"})
     return TABLE1
