@@ -300,7 +300,8 @@ static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nx = 0;
     const double *t = vector(prhs[0], "t", &n);
     const double *x = vector(prhs[1], "x", &nx);
-    if (n != nx) mexErrMsgIdAndTxt(ERROR_ID, "t and x must have the same length, got %d and %d", (int)n, (int)nx);
+    /* The core's words (InputError), the displacement named as here. */
+    if (n != nx) mexErrMsgIdAndTxt(ERROR_ID, "t and x have different lengths (%d and %d)", (int)n, (int)nx);
     double z0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "z0") : 0.0;
     LugreModel *m = model_of(nrhs > 2 ? prhs[2] : NULL);
     double *z = doubles(n), *f = doubles(n);
@@ -611,7 +612,9 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nf = 0, nt = 0;
     const double *u = vector(prhs[0], "u", &n);
     const double *f = vector(prhs[1], "f", &nf);
-    if (n != nf) mexErrMsgIdAndTxt(ERROR_ID, "u and f must have the same length, got %d and %d", (int)n, (int)nf);
+    /* The core's words (FitError), the force named as here. */
+    if (n != nf)
+        mexErrMsgIdAndTxt(ERROR_ID, "the data columns have different lengths: f has %d values, u has %d", (int)nf, (int)n);
     const mxArray *s = options_struct(nrhs > 2 ? prhs[2] : NULL, "options", "struct('kind', 'full', 't', t)");
     LugreFitOptions o;
     check(lugre_fit_options_default(&o));

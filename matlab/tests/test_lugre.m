@@ -111,7 +111,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_loop([0 1], struct('sigma0', -1)), 'sigma0 must be > 0, got -1');
   failures += raises(@() lugre_loop([0 1], struct('sigma9', 1)), 'unknown parameter ''sigma9''');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', [1 2])), 'sigma0 must be a scalar');
-  failures += raises(@() lugre_simulate([0 1 2], [0 1]), 't and x must have the same length');
+  failures += raises(@() lugre_simulate([0 1 2], [0 1]), 't and x have different lengths (3 and 2)');
   failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'times must be strictly increasing: t(3) = 1 after t(2) = 1');
   failures += raises(@() lugre_friction_step([1e-6 2e-6], 0, p), 'cannot move in a zero step');
   failures += raises(@() lugre_dynamics('nope', [1 2]), 'unknown scenario ''nope''');
@@ -141,7 +141,7 @@ function failures = test_lugre()
                      'fit: residuals and the fitted model''s values');
   failures += expect(abs(fr.value(1) - 6) < 3 * fr.stderr(1) && abs(fr.value(2) - 2) < 3 * fr.stderr(2), ...
                      'fit: the truth within three standard errors');
-  failures += raises(@() lugre_fit(u, f(1:end - 1)), 'u and f must have the same length, got 401 and 400');
+  failures += raises(@() lugre_fit(u, f(1:end - 1)), 'the data columns have different lengths: f has 400 values, u has 401');
   failures += raises(@() lugre_fit(u, f, struct('x0', 1)), 'options.x0 applies to the full fit (options.kind = ''full'')');
   failures += raises(@() lugre_fit(u, f, struct('fixx', 'sigma2')), 'unknown option ''options.fixx''');
   failures += raises(@() lugre_fit(u, f, struct('fix', 'sigma9')), 'options.fix: ');
