@@ -8,13 +8,18 @@ function failures = conformance()
 %   Run from the repository root after `bash scripts/build-mex.sh` and
 %   `cargo build --release -p lugre-cli`:
 %     octave --no-gui --quiet --eval "addpath('matlab', 'tests/conformance'); exit(conformance())"
-%   Returns the number of failed cases (0: all passed). The CLI is $LUGRE_EXE or
-%   target/release/lugre. Octave's jsondecode rounds some decimals wrongly (...944 for
-%   -1.9573070266459942), so the JSON is read here, each number by str2double.
+%   Returns the number of failed cases (0: all passed). The CLI is $LUGRE_EXE, else
+%   target/release/lugre (under $CARGO_TARGET_DIR if set). Octave's jsondecode rounds some
+%   decimals wrongly (...944 for -1.9573070266459942), so the JSON is read here, each number
+%   by str2double.
   failures = 0;
   exe = getenv('LUGRE_EXE');
   if isempty(exe)
-    exe = 'target/release/lugre';
+    target = getenv('CARGO_TARGET_DIR');
+    if isempty(target)
+      target = 'target';
+    end
+    exe = fullfile(target, 'release', 'lugre');
   end
   here = fileparts(mfilename('fullpath'));
   table = json_read(fileread(fullfile(here, 'cases.json')));
