@@ -13,7 +13,7 @@
  * MATLAB's habits: a numeric argument (or struct field) of any real class (double, single,
  * int8 ... uint64) or logical is taken as double; a matrix (more than one row and more than
  * one column) is refused, naming the argument; indices are 1-based, in outputs (cycle starts,
- * ends, closures, a loop's parent; 0 for "none") and in messages ("u(2) = NaN": the C ABI's
+ * ends, closures, a loop's parent; 0 for "none") and in messages ("u(2) must be ...": the C ABI's
  * 0-based "name[k]" is rewritten to "name(k+1)").
  *
  * Every error (a wrong type or size, a NaN, an invalid parameter) is raised as a MATLAB error
@@ -204,9 +204,11 @@ static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const m
     size_t n = 0;
     const double *u = vector(u_arg, "u", &n);
     double points = 0;
-    if (n_arg != NULL && !mxIsEmpty(n_arg)) {
+    int sampled = n_arg != NULL && !mxIsEmpty(n_arg);
+    if (sampled) {
         points = scalar(n_arg, "n");
-        if (!(points >= 2 && points <= 1e8 && points == floor(points)))
+        /* n < 2 is the C ABI's to refuse, in its words (as Python's and C's). */
+        if (!(points >= 0 && points <= 1e8 && points == floor(points)))
             mexErrMsgIdAndTxt(ERROR_ID, "n must be a whole number from 2 to 1e8, got %g", points);
     }
     LugreModel *m = model_of(params);
@@ -239,7 +241,7 @@ static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const m
      * freed before an error unwinds through check(). */
     mxArray *curve = NULL;
     size_t np = (size_t)points;
-    if (np > 0) {
+    if (sampled) {
         double *rho = doubles(np), *cu = doubles(np), *cy = doubles(np);
         st = lugre_loop_sample(hl, np, rho, cu, cy);
         static const char *curve_names[] = {"rho", "u", "y"};
@@ -298,7 +300,8 @@ static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nx = 0;
     const double *t = vector(prhs[0], "t", &n);
     const double *x = vector(prhs[1], "x", &nx);
-    if (n != nx) mexErrMsgIdAndTxt(ERROR_ID, "t and x must have the same length, got %d and %d", (int)n, (int)nx);
+    /* The core's words (InputError), the displacement named as here. */
+    if (n != nx) mexErrMsgIdAndTxt(ERROR_ID, "t and x have different lengths (%d and %d)", (int)n, (int)nx);
     double z0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "z0") : 0.0;
     LugreModel *m = model_of(nrhs > 2 ? prhs[2] : NULL);
     double *z = doubles(n), *f = doubles(n);
@@ -609,7 +612,9 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nf = 0, nt = 0;
     const double *u = vector(prhs[0], "u", &n);
     const double *f = vector(prhs[1], "f", &nf);
-    if (n != nf) mexErrMsgIdAndTxt(ERROR_ID, "u and f must have the same length, got %d and %d", (int)n, (int)nf);
+    /* The core's words (FitError), the force named as here. */
+    if (n != nf)
+        mexErrMsgIdAndTxt(ERROR_ID, "the data columns have different lengths: f has %d values, u has %d", (int)nf, (int)n);
     const mxArray *s = options_struct(nrhs > 2 ? prhs[2] : NULL, "options", "struct('kind', 'full', 't', t)");
     LugreFitOptions o;
     check(lugre_fit_options_default(&o));
@@ -642,8 +647,10 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
             o.x0 = scalar(v, "options.x0");
         } else if (strcmp(name, "starts") == 0) {
             double starts = scalar(v, "options.starts");
-            if (!(starts >= 1 && starts <= 1e6 && starts == floor(starts)))
-                mexErrMsgIdAndTxt(ERROR_ID, "options.starts must be a whole number from 1 to 1e6, got %g", starts);
+            /* The count's bounds are the core's (its message, as the CLI's and Python's);
+             * here only what a size_t holds (0 is the C ABI's default, so refused). */
+            if (!(starts >= 1 && starts <= 1e15 && starts == floor(starts)))
+                mexErrMsgIdAndTxt(ERROR_ID, "options.starts must be a whole number from 1 to 64, got %g", starts);
             o.starts = (size_t)starts;
         } else {
             mexErrMsgIdAndTxt(ERROR_ID, "unknown option 'options.%s' (options: %s)", name, FIT_OPTIONS);

@@ -15,7 +15,10 @@
 #      LocalCluster), the package built from crates/lugre-py and installed into it, its pytest
 #      suite;
 #   4. the FMI 3.0 FMUs (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
-#      into the same environment): tests/fmu.
+#      into the same environment): tests/fmu;
+#   5. the conformance table (tests/conformance/cases.json: one input, the same answer from
+#      every front end): through the CLI and the C ABI in step 1 (crates/lugre-cli/tests/
+#      conformance.rs), the MEX functions in step 2, Python and the FMUs last.
 #
 # Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy, pytest
 # and dask from PyPI. Re-runs reuse the environment and cargo's build cache.
@@ -54,6 +57,9 @@ if command -v mkoctfile >/dev/null && command -v octave >/dev/null; then
     bash scripts/build-mex.sh
     cargo build --release --quiet -p lugre-cli
     octave --no-gui --quiet --eval "addpath('matlab', 'matlab/tests'); exit(test_lugre())"
+    # The conformance table through the MEX functions (the same cases as the Rust and Python
+    # runners: tests/conformance/).
+    octave --no-gui --quiet --eval "addpath('matlab', 'tests/conformance'); exit(conformance())"
 else
     echo "!!! SKIPPED the Octave/MEX tests: octave and liboctave-dev are not installed (apt-get install octave liboctave-dev, as root) !!!" >&2
     skipped+=("Octave/MEX")
@@ -86,6 +92,11 @@ step "FMI 3.0: the FMUs in fmpy"
 "${pip[@]}" fmpy
 bash scripts/build-fmu.sh
 "$py" -m pytest -q -p no:cacheprovider tests/fmu
+
+step "The conformance table through Python and the FMUs"
+# The CLI is the reference (built above with the Octave tests; cargo does nothing if so).
+cargo build --release --quiet -p lugre-cli
+"$py" -m pytest -q -p no:cacheprovider tests/conformance
 if [ ${#skipped[@]} -gt 0 ]; then
     echo "!!! scripts/test.sh: SKIPPED suites: ${skipped[*]} (CI runs them all) !!!" >&2
 fi

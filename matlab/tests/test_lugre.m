@@ -100,7 +100,7 @@ function failures = test_lugre()
   failures += expect(isequal(z2, z(3:end)), 'friction_step: a run continued');
 
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
-  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) = NaN is not a finite number');
+  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) must be a finite number, got NaN');
   failures += raises(@() lugre_loop('abc'), 'u must be numeric or logical, got a char array');
   failures += raises(@() lugre_loop([0 1i]), 'u must be real, got a complex array');
   failures += raises(@() lugre_loop(ones(2)), 'u must be a vector (one row or one column), got a 2x2 array');
@@ -109,11 +109,11 @@ function failures = test_lugre()
   failures += raises(@() lugre_cycles([0 1 2], ones(2)), 'gate must be a vector (one row or one column), got a 2x2 array');
   failures += raises(@() lugre_simulate(ones(3), ones(3)), 't must be a vector (one row or one column), got a 3x3 array');
   failures += raises(@() lugre_friction_step([0 1; 2 3], 1e-3), 'x must be a vector');
-  failures += raises(@() lugre_loop([0 1 0.5 1.5], struct(), 1), 'n must be a whole number from 2 to 1e8, got 1');
+  failures += raises(@() lugre_loop([0 1 0.5 1.5], struct(), 1), 'n must be at least 2 (both ends of the period), got 1');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', -1)), 'sigma0 must be > 0, got -1');
   failures += raises(@() lugre_loop([0 1], struct('sigma9', 1)), 'unknown parameter ''sigma9''');
   failures += raises(@() lugre_loop([0 1], struct('sigma0', [1 2])), 'sigma0 must be a scalar');
-  failures += raises(@() lugre_simulate([0 1 2], [0 1]), 't and x must have the same length');
+  failures += raises(@() lugre_simulate([0 1 2], [0 1]), 't and x have different lengths (3 and 2)');
   failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'times must be strictly increasing: t(3) = 1 after t(2) = 1');
   failures += raises(@() lugre_friction_step([1e-6 2e-6], 0, p), 'cannot move in a zero step');
   failures += raises(@() lugre_dynamics('nope', [1 2]), 'unknown scenario ''nope''');
@@ -124,7 +124,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'samples', 1e12)), 'samples must be a whole number from 2 to 10000000');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'pid', [1 2])), 'pid takes 3 numbers, got 2');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'gamma', 1)), 'unknown field ''gamma''');
-  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) = inf is not a finite number');
+  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) must be a finite number, got inf');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 
   % The fit, as `lugre fit --json` on the same samples (written with 17 digits: the same
@@ -143,13 +143,13 @@ function failures = test_lugre()
                      'fit: residuals and the fitted model''s values');
   failures += expect(abs(fr.value(1) - 6) < 3 * fr.stderr(1) && abs(fr.value(2) - 2) < 3 * fr.stderr(2), ...
                      'fit: the truth within three standard errors');
-  failures += raises(@() lugre_fit(u, f(1:end - 1)), 'u and f must have the same length, got 401 and 400');
+  failures += raises(@() lugre_fit(u, f(1:end - 1)), 'the data columns have different lengths: f has 400 values, u has 401');
   failures += raises(@() lugre_fit(u, f, struct('x0', 1)), 'options.x0 applies to the full fit (options.kind = ''full'')');
   failures += raises(@() lugre_fit(u, f, struct('fixx', 'sigma2')), 'unknown option ''options.fixx''');
   failures += raises(@() lugre_fit(u, f, struct('fix', 'sigma9')), 'options.fix: ');
   failures += raises(@() lugre_fit(u, f, struct('fix', {{'fs', 3}})), 'options.fix{2} must be a name');
   g = f; g(4) = NaN;
-  failures += raises(@() lugre_fit(u, g), 'f(4) = NaN is not a finite number');
+  failures += raises(@() lugre_fit(u, g), 'f(4) must be a finite number, got NaN');
   % The full fit of the paper's model swept at three speeds, sigma2 and beta held.
   t = 0; x = -6;
   for speed = [0.1 1 10]

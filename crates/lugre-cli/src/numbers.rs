@@ -29,9 +29,11 @@ pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
     }
     match item.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => bail!(
-            "{flag}: item {position} is {}, which is not a finite number",
-            quoted(item)
+        // The core's words for a value that is not finite (`u[1] must be a finite number, got
+        // NaN` in Python and C), the item counted from 1 as a list on the command line is.
+        Ok(v) => bail!(
+            "{flag}: item {position} must be a finite number, got {}",
+            lugre::error::num(v)
         ),
         Err(_) => bail!(
             "{flag}: item {position} is {}, which is not a number",

@@ -384,7 +384,7 @@ fn flags_on_a_scenario_replace_its_fields() {
     );
     rejects(
         &["dynamics", "--scenario", "pid", "--setpoint", "1,2"],
-        "--setpoint takes one number",
+        "--setpoint takes 1 number, got 2",
     );
     rejects(
         &[

@@ -246,7 +246,10 @@ fn dahl_model() {
 fn bad_inputs_are_one_line_and_status_2() {
     rejects(&["loop", "--bogus"], "unexpected argument '--bogus'");
     rejects(&["loop"], "no input");
-    rejects(&["loop", "--turning-points", "0,nan,1"], "item 2 is 'nan'");
+    rejects(
+        &["loop", "--turning-points", "0,nan,1"],
+        "item 2 must be a finite number, got NaN",
+    );
     rejects(&["loop", "--turning-points", "0,1,x"], "item 3 is 'x'");
     rejects(
         &["loop", "--turning-points", "1,1,1"],

@@ -330,7 +330,7 @@ fn bad_requests_are_one_line_and_exit_2() {
         ),
         (
             with(&[&["--times", "0,nan"][..], &bimodal].concat()),
-            "not a finite number",
+            "--times: item 2 must be a finite number, got NaN",
         ),
         (
             with(&[&["--samples-per-period", "0"][..], &bimodal].concat()),

@@ -157,7 +157,8 @@ pub extern "C" fn lugre_dynamics_set(
 ) -> LugreStatus {
     change(request, |r| {
         let field = field(name)?;
-        let values = input(values, n, field.name())?;
+        // As given: the core checks each field's numbers and names the field.
+        let values = super::values(values, n, field.name())?;
         Ok(r.with_numbers(field, values)?)
     })
 }

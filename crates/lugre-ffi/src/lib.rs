@@ -237,14 +237,17 @@ fn values<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure>
     Ok(unsafe { std::slice::from_raw_parts(p, n) })
 }
 
-/// `n` input values at `p` (checked finite), or a failure naming them.
-fn input<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure> {
+/// `n` input values at `p` (checked finite), or a failure naming them in the core's words
+/// (`u[1] must be a finite number, got NaN`, as Python says it).
+fn input<'a>(p: *const f64, n: usize, name: &'static str) -> Result<&'a [f64], Failure> {
     let values = values(p, n, name)?;
-    if let Some(i) = values.iter().position(|v| !v.is_finite()) {
-        return Err(fail(
-            LugreStatus::InvalidArgument,
-            format!("{name}[{i}] = {} is not a finite number", values[i]),
-        ));
+    if let Some(index) = values.iter().position(|v| !v.is_finite()) {
+        let e = lugre::DataError::NotFinite {
+            what: name,
+            index,
+            value: values[index],
+        };
+        return Err(fail(LugreStatus::InvalidArgument, e.to_string()));
     }
     Ok(values)
 }
@@ -823,18 +826,8 @@ pub extern "C" fn lugre_params_set(
         let p = handle_mut(params, "params")?;
         let given =
             text(name, "name")?.ok_or_else(|| fail(LugreStatus::NullPointer, "name is NULL"))?;
-        let q = Parameter::from_name(&given)
-            .filter(|q| Parameter::LUGRE.contains(q))
-            .ok_or_else(|| {
-                let known: Vec<&str> = Parameter::LUGRE.iter().map(|q| q.name()).collect();
-                fail(
-                    LugreStatus::InvalidArgument,
-                    format!(
-                        "unknown parameter '{given}' (parameters: {})",
-                        known.join(", ")
-                    ),
-                )
-            })?;
+        // The fit's lookup: its message is the CLI's and Python's for an unknown name.
+        let q = Parameter::LUGRE[Family::LuGre.index(&given)?];
         let mut core: LuGreParams = (*p).into();
         core.set(q, value);
         *p = core.into();
@@ -870,7 +863,7 @@ pub struct LugreFitOptions {
 /// `lugre fit --json`). The arrays hold the family's parameters in the order of
 /// [`lugre_parameter_name`] (`parameters` of them; 0 after).
 #[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct LugreFitResult {
     /// `LUGRE_FAMILY_LUGRE` or `LUGRE_FAMILY_DAHL`.
     pub family: i32,

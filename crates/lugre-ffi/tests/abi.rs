@@ -52,7 +52,7 @@ fn non_finite_inputs_and_short_buffers_are_refused() {
         lugre_loop_new(m, u.as_ptr(), 3, &mut hl),
         LugreStatus::InvalidArgument
     );
-    assert_eq!(last_error(), "u[2] = inf is not a finite number");
+    assert_eq!(last_error(), "u[2] must be a finite number, got inf");
     let u = [0.0, 1e-5, 5e-6];
     assert_eq!(lugre_loop_new(m, u.as_ptr(), 3, &mut hl), LugreStatus::Ok);
     let mut len = 0;
@@ -269,7 +269,7 @@ fn parameters_by_name() {
     );
     assert_eq!(
         last_error(),
-        "unknown parameter 'rho' (parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"
+        "unknown parameter 'rho' for the LuGre model (its parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"
     );
     let mut name = ptr::null();
     let names = |family: i32, count: usize| -> Vec<String> {
@@ -462,7 +462,7 @@ fn the_slow_fit_is_the_cores() {
         lugre_fit_slow(u.as_ptr(), g.as_ptr(), n, ptr::null(), &mut r, null),
         LugreStatus::InvalidArgument
     );
-    assert_eq!(last_error(), "f[3] = NaN is not a finite number");
+    assert_eq!(last_error(), "f[3] must be a finite number, got NaN");
     assert_eq!(r, before);
     lugre_model_free(dahl);
 }
@@ -580,7 +580,10 @@ fn a_dynamics_request_is_the_cores() {
         lugre_dynamics_set(d, c"samples".as_ptr(), &half, 1),
         LugreStatus::InvalidArgument
     );
-    assert_eq!(last_error(), "samples must be a whole number >= 0, got 0.5");
+    assert_eq!(
+        last_error(),
+        "samples must be a whole number from 2 to 10000000, got 0.5"
+    );
     let mut m = ptr::null_mut();
     assert_eq!(lugre_dynamics_run(d, &mut m), LugreStatus::Ok);
     let want = Request::new()

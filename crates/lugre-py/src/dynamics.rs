@@ -104,14 +104,17 @@ pub fn dynamics<'py>(
         let (t, y) = pair(&e, Field::End.name())?;
         r = r.with_end(t, y).map_err(request_error)?;
     }
+    // Numbers go to the core as given: it counts them (`pid takes 3 numbers, got 2`).
     if let Some(g) = given(pid) {
-        let [kp, ki, kv] = gains(&g)?;
-        r = r.with_pid(kp, ki, kv).map_err(request_error)?;
+        let g = floats(&g, "pid")?.one_dimensional("pid", &g)?;
+        r = r.with_numbers(Field::Pid, &g).map_err(request_error)?;
     }
     if let Some(s) = given(setpoint) {
-        r = match real(&s, Field::Setpoint.name()) {
-            Ok(x) => r.with_setpoint(x),
-            Err(_) => {
+        r = match (real(&s, Field::Setpoint.name()), numbers_only(&s)) {
+            (Ok(x), _) => r.with_setpoint(x),
+            // A flat list of numbers is not (t, xd) steps: counted as a set point's numbers.
+            (_, Some(xs)) => r.with_numbers(Field::Setpoint, &xs),
+            _ => {
                 let (t, x) = pair(&s, Field::Setpoint.name())?;
                 r.with_setpoint_steps(t, x)
             }
@@ -132,9 +135,15 @@ pub fn dynamics<'py>(
         r = r.with_times(t).map_err(request_error)?;
     }
     if let Some(n) = given(samples) {
-        r = r
-            .with_samples(count(&n, Field::Samples.name())?)
-            .map_err(request_error)?;
+        r = match count(&n, Field::Samples.name()) {
+            Ok(n) => r.with_samples(n),
+            // A negative count: the core's words for what a count must be (as the CLI's).
+            Err(e) => match n.extract::<i64>() {
+                Ok(v) if v < 0 => r.with_numbers(Field::Samples, &[v as f64]),
+                _ => return Err(e),
+            },
+        }
+        .map_err(request_error)?;
     }
     if let Some(x) = given(rtol) {
         r = r
@@ -185,14 +194,11 @@ fn scenario_of(name: &Bound<'_, PyAny>) -> PyResult<Scenario> {
 }
 
 /// `(Kp, Ki, Kv)`.
-fn gains(obj: &Bound<'_, PyAny>) -> PyResult<[f64; 3]> {
-    let g = floats(obj, "pid")?.one_dimensional("pid", obj)?;
-    g.try_into().map_err(|g: Vec<f64>| {
-        PyValueError::new_err(format!(
-            "pid must be three gains (Kp, Ki, Kv), got {}",
-            g.len()
-        ))
-    })
+/// The numbers of a flat sequence of real numbers (None for anything else, e.g. a pair of
+/// arrays).
+fn numbers_only(obj: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
+    let items: Vec<Bound<'_, PyAny>> = obj.try_iter().ok()?.collect::<PyResult<_>>().ok()?;
+    items.iter().map(|x| real(x, "setpoint").ok()).collect()
 }
 
 /// The result as a `lugre.DynamicsResult` (a dict with `to_frame()`).

@@ -247,7 +247,7 @@ impl PyHysteresisLoop {
         };
         if n < 2 {
             return Err(PyValueError::new_err(format!(
-                "n must be at least 2 (both ends of the period are included), got {n}"
+                "n must be at least 2 (both ends of the period), got {n}"
             )));
         }
         let n = usize::try_from(n)

@@ -71,7 +71,7 @@ TABLE1 = dict(sigma0=1e5, sigma1=math.sqrt(1e5), sigma2=0.4, fc=1, fs=1.5, vs=1e
         (dict(scenario="pid", samples=1), "samples must be a whole number from 2 to 10000000, got 1"),
         (dict(scenario="pid", samples=10**12), "samples must be a whole number from 2 to 10000000"),
         (dict(scenario="pid", samples=2**64 - 1), "samples must be a whole number from 2 to 10000000"),
-        (dict(scenario="pid", samples=-1), "samples must be >= 0, got -1"),
+        (dict(scenario="pid", samples=-1), "samples must be a whole number from 2 to 10000000, got -1"),
         (dict(scenario="presliding", setpoint=2.0), "setpoint needs pid"),
         (dict(scenario="pid", force_rate=1.0, force=([0], [1])), "give force_rate or force, not both"),
         (dict(scenario="lag", velocity=([0], [1e-3]), spring=1.0, pull=1.0), "give spring or velocity, not both"),

@@ -137,7 +137,7 @@ def test_sample_arguments():
     hl = lugre.LuGre().loop([0, 1])
     with pytest.raises(ValueError) as e:
         hl.sample(1)
-    assert str(e.value) == "n must be at least 2 (both ends of the period are included), got 1"
+    assert str(e.value) == "n must be at least 2 (both ends of the period), got 1"
     with pytest.raises(ValueError, match=">= 0"):
         hl.sample(-3)
     with pytest.raises((ValueError, MemoryError)):

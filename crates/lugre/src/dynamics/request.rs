@@ -819,9 +819,12 @@ fn whole(field: Field, x: f64) -> Result<u64, DynamicsError> {
     if x >= 0.0 && x.fract() == 0.0 && x < 18_446_744_073_709_551_616.0 {
         Ok(x as u64)
     } else {
+        // The words of `count`'s error for a count out of range (the one field that takes a
+        // count is `samples`): one message for -1, 1.5 and 10^12 in every front end.
+        const _: () = assert!(Request::MAX_OUTPUTS == 10_000_000);
         Err(DynamicsError::BadValue {
             field,
-            rule: "a whole number >= 0",
+            rule: "a whole number from 2 to 10000000",
             value: x,
         })
     }

@@ -9,11 +9,11 @@ use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
 use crate::args::{ModelArgs, Needed, OutputArgs, PlotArgs};
-use crate::fmt::sig;
+use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
-use crate::numbers::{parse_list, Whole};
+use crate::numbers::{parse_list, parse_number};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
 use lugre_io::Role;
 
@@ -131,8 +131,13 @@ pub(crate) struct DynamicsArgs {
     )]
     pub(crate) times: Option<String>,
     /// N >= 2 evenly spaced output times over [0, t_end] (default 1001, at most 10^7).
-    #[arg(long, value_parser = Whole(2), help_heading = "Run")]
-    pub(crate) samples: Option<usize>,
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        help_heading = "Run"
+    )]
+    pub(crate) samples: Option<String>,
     /// Report the friction-displacement loops of x(t): each closed loop (a rainflow cycle of
     /// x) with the work of the friction over it, the bristle energy change and the
     /// dissipation, beside the rate-independent loop of `lugre loop` on the same turning
@@ -240,19 +245,16 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
         let (t, y) = pairs(Field::End, text)?;
         r = r.with_end(t, y)?;
     }
+    // Lists of numbers go to the core as they are: it counts them (`--pid takes 3 numbers`).
     if let Some(text) = &args.pid {
-        let g = numbers(Field::Pid, text)?;
-        let [kp, ki, kv] = g[..] else {
-            return Err(anyhow!("--pid takes 3 numbers KP,KI,KV, got {}", g.len()).into());
-        };
-        r = r.with_pid(kp, ki, kv)?;
+        r = r.with_numbers(Field::Pid, &numbers(Field::Pid, text)?)?;
     }
     if let Some(text) = &args.setpoint {
         r = if text.contains(':') {
             let (t, x) = pairs(Field::Setpoint, text)?;
             r.with_setpoint_steps(t, x)?
         } else {
-            r.with_setpoint(one(Field::Setpoint, text)?)?
+            r.with_numbers(Field::Setpoint, &numbers(Field::Setpoint, text)?)?
         };
     }
     if let Some(text) = &args.velocity_profile {
@@ -265,8 +267,21 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(text) = &args.times {
         r = r.with_times(numbers(Field::Times, text)?)?;
     }
-    if let Some(n) = args.samples {
-        r = r.with_samples(n as u64)?;
+    if let Some(text) = &args.samples {
+        r = match text.trim().parse::<u64>() {
+            Ok(n) => r.with_samples(n)?,
+            // Not a count (negative, fractional): the core's words for what a count must be.
+            Err(_) => {
+                let x = text.trim().parse::<f64>().map_err(|_| {
+                    anyhow!(
+                        "{} expects a number, got {}",
+                        flag(Field::Samples),
+                        quoted(text)
+                    )
+                })?;
+                r.with_numbers(Field::Samples, &[x])?
+            }
+        };
     }
     if let Some(rtol) = args.rtol {
         r = r.with_rtol(rtol)?;
@@ -308,18 +323,6 @@ fn numbers(field: Field, text: &str) -> Result<Vec<f64>> {
     parse_list(&flag(field), text)
 }
 
-/// The one number of a flag that takes one.
-fn one(field: Field, text: &str) -> Result<f64> {
-    match numbers(field, text)?[..] {
-        [x] => Ok(x),
-        ref xs => bail!(
-            "{} takes one number (or T:VALUE,... steps), got {}",
-            flag(field),
-            xs.len()
-        ),
-    }
-}
-
 /// `T:V,T:V,...` as two columns.
 fn pairs(field: Field, text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
     let mut t = Vec::new();
@@ -328,8 +331,8 @@ fn pairs(field: Field, text: &str) -> Result<(Vec<f64>, Vec<f64>)> {
         let Some((a, b)) = item.split_once(':') else {
             bail!("{}: item {} is not T:VALUE", flag(field), i + 1);
         };
-        t.push(one(field, a.trim())?);
-        v.push(one(field, b.trim())?);
+        t.push(parse_number(&flag(field), i + 1, a)?);
+        v.push(parse_number(&flag(field), i + 1, b)?);
     }
     Ok((t, v))
 }
