@@ -85,7 +85,7 @@ function failures = test_lugre()
   failures += expect(isequal(z2, z(3:end)), 'friction_step: a run continued');
 
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
-  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) = NaN is not a finite number');
+  failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) must be a finite number, got NaN');
   failures += raises(@() lugre_loop('abc'), 'u must be numeric or logical, got a char array');
   failures += raises(@() lugre_loop([0 1i]), 'u must be real, got a complex array');
   failures += raises(@() lugre_loop(ones(2)), 'u must be a vector (one row or one column), got a 2x2 array');
@@ -102,7 +102,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_simulate([0 1 1], [0 1 2]), 'times must be strictly increasing: t(3) = 1 after t(2) = 1');
   failures += raises(@() lugre_friction_step([1e-6 2e-6], 0, p), 'cannot move in a zero step');
   failures += raises(@() lugre_dynamics('nope', [1 2]), 'unknown scenario ''nope''');
-  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) = inf is not a finite number');
+  failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) must be a finite number, got inf');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 
   % The fit, as `lugre fit --json` on the same samples (written with 17 digits: the same
@@ -127,7 +127,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_fit(u, f, struct('fix', 'sigma9')), 'options.fix: ');
   failures += raises(@() lugre_fit(u, f, struct('fix', {{'fs', 3}})), 'options.fix{2} must be a name');
   g = f; g(4) = NaN;
-  failures += raises(@() lugre_fit(u, g), 'f(4) = NaN is not a finite number');
+  failures += raises(@() lugre_fit(u, g), 'f(4) must be a finite number, got NaN');
   % The full fit of the paper's model swept at three speeds, sigma2 and beta held.
   t = 0; x = -6;
   for speed = [0.1 1 10]

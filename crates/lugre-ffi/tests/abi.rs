@@ -52,7 +52,7 @@ fn non_finite_inputs_and_short_buffers_are_refused() {
         lugre_loop_new(m, u.as_ptr(), 3, &mut hl),
         LugreStatus::InvalidArgument
     );
-    assert_eq!(last_error(), "u[2] = inf is not a finite number");
+    assert_eq!(last_error(), "u[2] must be a finite number, got inf");
     let u = [0.0, 1e-5, 5e-6];
     assert_eq!(lugre_loop_new(m, u.as_ptr(), 3, &mut hl), LugreStatus::Ok);
     let mut len = 0;
@@ -141,6 +141,24 @@ fn cycles_simulate_and_dynamics_through_the_abi() {
         "no NaN for half cycles: {pos:?}"
     );
     lugre_cycles_free(c);
+
+    // The library's messages, word for word those of `lugre cycles --values` and
+    // `lugre.cycles` on the same series.
+    for (u, message) in [
+        (
+            &[0.0, f64::NAN, 1.0][..],
+            "u[1] must be a finite number, got NaN",
+        ),
+        (&[1.0][..], "a history needs at least 2 samples, got 1"),
+    ] {
+        let mut c = ptr::null_mut();
+        assert_eq!(
+            lugre_cycles_new(u.as_ptr(), u.len(), 0.0, ptr::null(), 0.0, &mut c),
+            LugreStatus::InvalidArgument
+        );
+        assert_eq!(last_error(), message);
+        assert!(c.is_null());
+    }
 
     let m = table1();
     // An open record (it does not end where it starts): the last value is the last segment's.
@@ -462,7 +480,7 @@ fn the_slow_fit_is_the_cores() {
         lugre_fit_slow(u.as_ptr(), g.as_ptr(), n, ptr::null(), &mut r, null),
         LugreStatus::InvalidArgument
     );
-    assert_eq!(last_error(), "f[3] = NaN is not a finite number");
+    assert_eq!(last_error(), "f[3] must be a finite number, got NaN");
     assert_eq!(r, before);
     lugre_model_free(dahl);
 }

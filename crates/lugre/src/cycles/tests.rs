@@ -284,7 +284,10 @@ fn streaming_in_pieces_gives_the_same_cycles() {
     let whole =
         count_cycles_with_energy(&u, 0.1, crate::LuGre::paper().rate_independent(), 0.0).unwrap();
     let model = crate::LuGre::paper().rate_independent();
-    let mut counter = EnergyCycleCounter::new(0.1, model, 0.0).unwrap();
+    let mut counter = CycleCounter::new(0.1)
+        .unwrap()
+        .with_energy(model, 0.0)
+        .unwrap();
     let mut cycles: Vec<Cycle> = Vec::new();
     for chunk in u.chunks(37) {
         for &x in chunk {
@@ -531,15 +534,19 @@ fn errors_name_the_offending_value() {
     );
     assert!(matches!(
         count_cycles(&[0.0, 1.0, f64::NAN], 0.0).unwrap_err(),
-        HistoryError::NotFinite { index: 2, .. }
+        HistoryError::Data(crate::DataError::NotFinite { index: 2, .. })
     ));
+    let e = count_cycles(&[0.0, f64::NEG_INFINITY], 0.0).unwrap_err();
     assert_eq!(
-        count_cycles(&[0.0, f64::NEG_INFINITY], 0.0).unwrap_err(),
-        HistoryError::NotFinite {
+        e,
+        HistoryError::Data(crate::DataError::NotFinite {
+            what: "u",
             index: 1,
             value: f64::NEG_INFINITY
-        }
+        })
     );
+    // The wording every front end shares.
+    assert_eq!(e.to_string(), "u[1] must be a finite number, got -inf");
     assert_eq!(
         count_cycles(&[0.0, 1e308], 0.0).unwrap_err(),
         HistoryError::TooLarge {
@@ -805,7 +812,10 @@ fn columns_with_energies() {
     let model = crate::LuGre::paper().rate_independent();
     let h = count_cycles_with_energy(&u, 0.05, model, 0.1).unwrap();
     let mut columns = CycleColumns::new().with_energy(true);
-    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    let mut counter = CycleCounter::new(0.05)
+        .unwrap()
+        .with_energy(model, 0.1)
+        .unwrap();
     counter.push_all(&u, &mut columns).unwrap();
     assert_eq!(counter.finish(&mut columns).unwrap(), h.summary);
     let want = expected_columns(&h, &CycleColumns::new().with_energy(true));
@@ -815,7 +825,10 @@ fn columns_with_energies() {
     let filled = column_rows(&columns);
     columns.clear();
     assert!(columns.is_empty() && columns.reversal_u.is_empty() && columns.work.is_empty());
-    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    let mut counter = CycleCounter::new(0.05)
+        .unwrap()
+        .with_energy(model, 0.1)
+        .unwrap();
     counter.push_all(&u, &mut columns).unwrap();
     counter.finish(&mut columns).unwrap();
     assert_eq!(column_rows(&columns), filled);
