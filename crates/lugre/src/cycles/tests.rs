@@ -525,6 +525,31 @@ fn periodic_history_agrees_with_the_loop() {
     }
 }
 
+/// One counter: `with_energy(None, _)` leaves it counting only (the same rows, no energies),
+/// a model given after the first sample is refused (the energies start at the first one).
+#[test]
+fn one_counter_with_or_without_a_model() {
+    let u = [0.0, 2.0, 1.0, 3.0, -1.0];
+    let plain = count_cycles(&u, 0.0).unwrap();
+    let mut sink = Collect::default();
+    let mut counter = CycleCounter::new(0.0)
+        .unwrap()
+        .with_energy(None, f64::NAN)
+        .unwrap();
+    counter.push_all(&u, &mut sink).unwrap();
+    assert_eq!(counter.finish(&mut sink).unwrap(), plain.summary);
+    assert_eq!(sink.cycles, plain.cycles);
+    let model = crate::RateIndependent::new(2.0, 1.0).unwrap();
+    let mut counter = CycleCounter::new(0.0).unwrap();
+    counter.push(0.0, &mut sink).unwrap();
+    assert_eq!(
+        counter.with_energy(model, 0.0).unwrap_err(),
+        HistoryError::EnergyAfterStart { samples: 1 }
+    );
+    let e = CycleCounter::new(0.0).unwrap().with_energy(model, 0.6);
+    assert!(matches!(e, Err(HistoryError::BadInitialState { .. })));
+}
+
 #[test]
 fn errors_name_the_offending_value() {
     assert_eq!(count_cycles(&[], 0.0).unwrap_err(), HistoryError::Empty);
