@@ -6,7 +6,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use lugre::cycles::Collect;
-use lugre::{CycleColumns, CycleCounter, EnergyCycleCounter, HistoryError, RateIndependent};
+use lugre::{CycleColumns, CycleCounter, HistoryError, RateIndependent};
 
 /// Counts `u` pushed in slices of `chunk` (0: all at once).
 fn count(u: &[f64], gate: f64, chunk: usize) -> Result<(Collect, u64, u64, u64), HistoryError> {
@@ -147,7 +147,8 @@ fuzz_target!(|data: &[u8]| {
     let model = RateIndependent::new(sigma0, 1.5).unwrap();
     let mut sink = Collect::default();
     // y*(0) = sigma0 x0 = 0.5.
-    let energy = EnergyCycleCounter::new(gate, model, 0.5 / sigma0).and_then(|mut c| {
+    let counter = CycleCounter::new(gate).and_then(|c| c.with_energy(model, 0.5 / sigma0));
+    let energy = counter.and_then(|mut c| {
         c.push_all(&u, &mut sink)?;
         c.finish(&mut sink)
     });

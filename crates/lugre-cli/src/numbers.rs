@@ -10,19 +10,43 @@ use crate::fmt::quoted;
 
 /// Parses `a,b,c` into finite numbers, naming the flag and the offending item.
 pub fn parse_list(flag: &str, text: &str) -> Result<Vec<f64>> {
+    items(flag, text)?
+        .map(|(i, item)| parse_number(flag, i + 1, item))
+        .collect()
+}
+
+/// Parses `a,b,c` into numbers, `nan` and `inf` included: a series the library judges as a
+/// whole (`lugre cycles --values`), so that a value that is not finite gets the library's
+/// message, the one the Python package and the C ABI give for the same series.
+pub(crate) fn parse_series(flag: &str, text: &str) -> Result<Vec<f64>> {
+    items(flag, text)?
+        .map(|(i, item)| number(flag, i + 1, item))
+        .collect()
+}
+
+/// The items of a comma-separated list, numbered from 0.
+fn items<'a>(flag: &str, text: &'a str) -> Result<impl Iterator<Item = (usize, &'a str)> + 'a> {
     let text = text.trim();
     if text.is_empty() {
         bail!("{flag}: empty list (expected numbers separated by commas)");
     }
-    text.split(',')
-        .enumerate()
-        .map(|(i, item)| parse_number(flag, i + 1, item))
-        .collect()
+    Ok(text.split(',').enumerate())
 }
 
 /// One finite number; `position` is 1-based for messages, and the item is quoted short (a
 /// list may run to megabytes).
 pub fn parse_number(flag: &str, position: usize, item: &str) -> Result<f64> {
+    match number(flag, position, item)? {
+        v if v.is_finite() => Ok(v),
+        _ => bail!(
+            "{flag}: item {position} is {}, which is not a finite number",
+            quoted(item.trim())
+        ),
+    }
+}
+
+/// One number, finite or not (see [`parse_number`]).
+fn number(flag: &str, position: usize, item: &str) -> Result<f64> {
     let item = item.trim();
     if item.is_empty() {
         bail!("{flag}: item {position} is empty");

@@ -78,6 +78,9 @@ fn bad_numbers_in_every_list_flag() {
         position,
     } in list_flags()
     {
+        // A history (`cycles --values`) is judged as a series by the library, in the words
+        // `lugre.cycles` and the C ABI use for the same samples.
+        let series = head == ["cycles"];
         for (item, want) in bad {
             let text = list(item);
             rejects(
@@ -754,7 +757,7 @@ fn numeric_flags_take_values_starting_with_a_minus() {
         ),
         (
             &["simulate", "--sine", "1,1", "--times", "-1"],
-            "--times: output time t[0] = -1 is outside the simulated interval [0, 1]",
+            "--times: output time t[0] = -1 is outside the run [0, 1]",
         ),
         (
             &["simulate", "--sine", "1,1", "--samples-per-period", "-5"],
@@ -1437,7 +1440,7 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["simulate", "--sine", "1,1", "--times", "0,2"],
-            "--times: output time t[1] = 2 is outside the simulated interval [0, 1]",
+            "--times: output time t[1] = 2 is outside the run [0, 1]",
         ),
         (
             vec!["cycles", "--values", "1,2,1", "--gate", "inf"],

@@ -452,10 +452,19 @@ fn bad_input_is_one_line_and_status_2() {
         "a history needs at least 2 samples, got 1",
     );
     rejects(&["cycles", "--values", "3"], "at least 2 samples");
-    rejects(&["cycles", "--values", "1,nan,2"], "--values: item 2");
+    // The library's words, as `lugre.cycles` and the C ABI give them for the same series, the
+    // item counted from 1 as a list on the command line is.
+    rejects(
+        &["cycles", "--values", "1,nan,2"],
+        "--values: item 2 must be a finite number, got NaN",
+    );
     rejects(
         &["cycles", "--values", "1,1e308"],
-        "--values: item 2 is 1e308, which is too large",
+        "--values: u[1] = 1e308 is too large",
+    );
+    rejects(
+        &["cycles", "--values", "3"],
+        "--values: a history needs at least 2 samples, got 1",
     );
     rejects(&["cycles", "--input", "/nonexistent/x.csv"], "cannot read");
     rejects(&["cycles"], "no input");

@@ -326,7 +326,7 @@ fn bad_requests_are_one_line_and_exit_2() {
         ),
         (
             with(&[&["--times", "0,20"][..], &bimodal].concat()),
-            "outside the simulated interval",
+            "outside the run",
         ),
         (
             with(&[&["--times", "0,nan"][..], &bimodal].concat()),

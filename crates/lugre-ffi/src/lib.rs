@@ -43,8 +43,8 @@ use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
 use lugre::model::Parameter;
 use lugre::simulate::FrictionElement;
 use lugre::{
-    CycleColumns, CycleCounter, Dahl, EnergyCycleCounter, Gamma, HysteresisLoop, LoopKind, LuGre,
-    LuGreParams, PiecewiseLinear, Simulator, Trajectory, TurningPoints,
+    CycleColumns, CycleCounter, Dahl, Gamma, HysteresisLoop, LoopKind, LuGre, LuGreParams,
+    PiecewiseLinear, Simulator, Trajectory, TurningPoints,
 };
 
 /// The outcome of a call.
@@ -237,18 +237,11 @@ fn values<'a>(p: *const f64, n: usize, name: &str) -> Result<&'a [f64], Failure>
     Ok(unsafe { std::slice::from_raw_parts(p, n) })
 }
 
-/// `n` input values at `p` (checked finite), or a failure naming them in the core's words
-/// (`u[1] must be a finite number, got NaN`, as Python says it).
+/// `n` input values at `p` (checked finite, with the library's message), or a failure naming
+/// them.
 fn input<'a>(p: *const f64, n: usize, name: &'static str) -> Result<&'a [f64], Failure> {
     let values = values(p, n, name)?;
-    if let Some(index) = values.iter().position(|v| !v.is_finite()) {
-        let e = lugre::DataError::NotFinite {
-            what: name,
-            index,
-            value: values[index],
-        };
-        return Err(fail(LugreStatus::InvalidArgument, e.to_string()));
-    }
+    lugre::input::check_finite(name, values)?;
     Ok(values)
 }
 
@@ -543,18 +536,10 @@ pub extern "C" fn lugre_cycles_new(
             .with_reversals(false)
             .with_closures(true)
             .with_energy(model.is_some());
-        match model {
-            Some(m) => {
-                let mut counter = EnergyCycleCounter::new(gate, m.rate_independent(), x0)?;
-                counter.push_all(u, &mut columns)?;
-                counter.finish(&mut columns)?;
-            }
-            None => {
-                let mut counter = CycleCounter::new(gate)?;
-                counter.push_all(u, &mut columns)?;
-                counter.finish(&mut columns)?;
-            }
-        }
+        let model = model.map(|m| m.rate_independent());
+        let mut counter = CycleCounter::new(gate)?.with_energy(model, x0)?;
+        counter.push_all(u, &mut columns)?;
+        counter.finish(&mut columns)?;
         set_out(out, LugreCycles { columns })
     })
 }

@@ -142,6 +142,24 @@ fn cycles_simulate_and_dynamics_through_the_abi() {
     );
     lugre_cycles_free(c);
 
+    // The library's messages, word for word those of `lugre cycles --values` and
+    // `lugre.cycles` on the same series.
+    for (u, message) in [
+        (
+            &[0.0, f64::NAN, 1.0][..],
+            "u[1] must be a finite number, got NaN",
+        ),
+        (&[1.0][..], "a history needs at least 2 samples, got 1"),
+    ] {
+        let mut c = ptr::null_mut();
+        assert_eq!(
+            lugre_cycles_new(u.as_ptr(), u.len(), 0.0, ptr::null(), 0.0, &mut c),
+            LugreStatus::InvalidArgument
+        );
+        assert_eq!(last_error(), message);
+        assert!(c.is_null());
+    }
+
     let m = table1();
     // An open record (it does not end where it starts): the last value is the last segment's.
     let (t, x) = ([0.0, 1e-2, 2e-2], [0.0, 1e-5, 2e-6]);

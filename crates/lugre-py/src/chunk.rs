@@ -7,6 +7,7 @@ use lugre::cycles::chunk::{
 };
 use lugre::{Closure, Cycle, CycleColumns};
 use numpy::{IntoPyArray, PyReadonlyArray1};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
@@ -100,7 +101,7 @@ impl PyChunkRows {
     }
     #[staticmethod]
     fn from_dict(columns: &Bound<'_, PyDict>) -> PyResult<Self> {
-        columns_of(columns).map(Self)
+        columns_of(columns, "columns").map(Self)
     }
     fn __reduce__<'py>(
         &self,
@@ -119,19 +120,84 @@ impl PyChunkRows {
     }
 }
 
-fn f64s(d: &Bound<'_, PyDict>, key: &str) -> PyResult<Vec<f64>> {
-    let a: PyReadonlyArray1<f64> = item(d, key)?.extract()?;
-    Ok(a.as_array().to_vec())
+/// The columns of a dict a chunk function takes (named `what` in errors): each column asked
+/// for must be there, a 1-D numpy array of the right dtype, as long as the first one read.
+struct Columns<'a, 'py> {
+    d: &'a Bound<'py, PyDict>,
+    what: &'static str,
+    /// The first column read and its length.
+    first: Option<(&'static str, usize)>,
 }
 
-fn i64s(d: &Bound<'_, PyDict>, key: &str) -> PyResult<Vec<i64>> {
-    let a: PyReadonlyArray1<i64> = item(d, key)?.extract()?;
-    Ok(a.as_array().to_vec())
-}
+impl<'a, 'py> Columns<'a, 'py> {
+    fn new(d: &'a Bound<'py, PyDict>, what: &'static str) -> Self {
+        Self {
+            d,
+            what,
+            first: None,
+        }
+    }
 
-fn item<'py>(d: &Bound<'py, PyDict>, key: &str) -> PyResult<Bound<'py, PyAny>> {
-    d.get_item(key)?
-        .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(key.to_string()))
+    fn has(&self, key: &str) -> PyResult<bool> {
+        self.d.contains(key)
+    }
+
+    fn item(&self, key: &str) -> PyResult<Bound<'py, PyAny>> {
+        self.d
+            .get_item(key)?
+            .ok_or_else(|| PyValueError::new_err(format!("{}: no column '{key}'", self.what)))
+    }
+
+    /// Column `key` as `T`s (`dtype` names numpy's type in errors), of the common length.
+    fn column<T: numpy::Element + Copy>(
+        &mut self,
+        key: &'static str,
+        dtype: &str,
+    ) -> PyResult<Vec<T>> {
+        let item = self.item(key)?;
+        let a: PyReadonlyArray1<T> = item.extract().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{}: column '{key}' must be a 1-D numpy array of {dtype}, got {}",
+                self.what,
+                convert::type_name(&item)
+            ))
+        })?;
+        let n = a.len()?;
+        match self.first {
+            None => self.first = Some((key, n)),
+            Some((name, len)) if len != n => {
+                return Err(PyValueError::new_err(format!(
+                    "{}: column '{key}' has {n} values, column '{name}' has {len}",
+                    self.what
+                )))
+            }
+            Some(_) => {}
+        }
+        Ok(a.as_array().to_vec())
+    }
+
+    fn f64s(&mut self, key: &'static str) -> PyResult<Vec<f64>> {
+        self.column(key, "float64")
+    }
+
+    fn i64s(&mut self, key: &'static str) -> PyResult<Vec<i64>> {
+        self.column(key, "int64")
+    }
+
+    /// An int64 column of sample indices or ids (none negative).
+    fn indices(&mut self, key: &'static str) -> PyResult<Vec<u64>> {
+        let v = self.i64s(key)?;
+        v.iter()
+            .map(|&i| {
+                u64::try_from(i).map_err(|_| {
+                    PyValueError::new_err(format!(
+                        "{}: column '{key}' must hold indices >= 0, got {i}",
+                        self.what
+                    ))
+                })
+            })
+            .collect()
+    }
 }
 
 /// The cycle table columns of `c` (those of `lugre.cycles`, closures included).
@@ -140,23 +206,37 @@ fn table<'py>(py: Python<'py>, c: CycleColumns) -> PyResult<Bound<'py, PyDict>> 
     cycle_table(py, c, energy)
 }
 
-fn columns_of(d: &Bound<'_, PyDict>) -> PyResult<CycleColumns> {
+/// The cycle table in the dict `d` (the argument `what`): the columns of `lugre.cycles`,
+/// closures included, with energies when "work" is there; all of one length.
+fn columns_of(d: &Bound<'_, PyDict>, what: &'static str) -> PyResult<CycleColumns> {
+    let mut t = Columns::new(d, what);
     let mut c = CycleColumns::new().with_reversals(false);
-    c.range = f64s(d, "range")?;
-    c.mean = f64s(d, "mean")?;
-    c.count = f64s(d, "count")?;
-    c.start = i64s(d, "start")?;
-    c.end = i64s(d, "end")?;
-    c.closure = i64s(d, "closure")?;
-    c.closure_position = f64s(d, "closure_position")?;
-    if d.contains("work")? {
+    c.range = t.f64s("range")?;
+    c.mean = t.f64s("mean")?;
+    c.count = t.f64s("count")?;
+    c.start = t.i64s("start")?;
+    c.end = t.i64s("end")?;
+    c.closure = t.i64s("closure")?;
+    c.closure_position = t.f64s("closure_position")?;
+    if t.has("work")? {
         c = c.with_energy(true);
-        c.work = f64s(d, "work")?;
-        c.stored_energy_change = f64s(d, "stored_energy_change")?;
-        c.dissipation = f64s(d, "dissipation")?;
-        c.closure_gap = f64s(d, "closure_gap")?;
+        c.work = t.f64s("work")?;
+        c.stored_energy_change = t.f64s("stored_energy_change")?;
+        c.dissipation = t.f64s("dissipation")?;
+        c.closure_gap = t.f64s("closure_gap")?;
     }
     Ok(c)
+}
+
+/// Where a chunk lies: `offset` (an index >= 0) such that its `samples` samples end at or
+/// before the last index a history can have, and `prev` (the sample before it) only after
+/// u[0] and a sample the count takes; each error names its argument.
+fn placed(offset: &Bound<'_, PyAny>, samples: usize, prev: Option<f64>) -> PyResult<u64> {
+    let offset = convert::count(offset, "offset")?;
+    chunk::check_offset(offset, samples)
+        .map_err(|e| PyValueError::new_err(format!("offset: {e}")))?;
+    chunk::check_prev(offset, prev).map_err(|e| PyValueError::new_err(format!("prev: {e}")))?;
+    Ok(offset)
 }
 
 /// `chunk_count(samples, offset)`: the chunk's summary and its own rows (`ChunkRows`; the few
@@ -165,10 +245,11 @@ fn columns_of(d: &Bound<'_, PyDict>) -> PyResult<CycleColumns> {
 pub fn chunk_count<'py>(
     py: Python<'py>,
     samples: &Bound<'py, PyAny>,
-    offset: u64,
+    offset: &Bound<'py, PyAny>,
 ) -> PyResult<(PyChunkSummary, PyChunkRows)> {
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
+    let offset = placed(offset, u.len(), None)?;
     let (s, rows) = py
         .detach(|| chunk::count_chunk(u, offset))
         .map_err(value_error)?;
@@ -203,17 +284,18 @@ pub fn chunk_merge<'py>(
 }
 
 fn open_of(d: &Bound<'_, PyDict>) -> PyResult<Vec<OpenCycle>> {
-    let (range, mean, count) = (f64s(d, "range")?, f64s(d, "mean")?, f64s(d, "count")?);
-    let (u_start, u_end) = (f64s(d, "u_start")?, f64s(d, "u_end")?);
-    let (start, end) = (i64s(d, "start")?, i64s(d, "end")?);
+    let mut t = Columns::new(d, "open");
+    let (range, mean, count) = (t.f64s("range")?, t.f64s("mean")?, t.f64s("count")?);
+    let (u_start, u_end) = (t.f64s("u_start")?, t.f64s("u_end")?);
+    let (start, end) = (t.indices("start")?, t.indices("end")?);
     Ok((0..range.len())
         .map(|k| OpenCycle {
             cycle: Cycle {
                 range: range[k],
                 mean: mean[k],
                 count: count[k],
-                start: start[k] as u64,
-                end: end[k] as u64,
+                start: start[k],
+                end: end[k],
                 closure: None,
                 energy: None,
             },
@@ -278,17 +360,14 @@ impl PyChunkPlan {
 
     /// Records the closures `chunk_close` found.
     fn resolve(&mut self, found: &Bound<'_, PyDict>) -> PyResult<()> {
-        let (id, index, position) = (
-            i64s(found, "id")?,
-            i64s(found, "index")?,
-            f64s(found, "position")?,
-        );
+        let mut t = Columns::new(found, "found");
+        let (id, index, position) = (t.indices("id")?, t.indices("index")?, t.f64s("position")?);
         let found: Vec<(usize, Closure)> = (0..id.len())
             .map(|k| {
                 (
                     id[k] as usize,
                     Closure {
-                        index: index[k] as u64,
+                        index: index[k],
                         position: position[k],
                     },
                 )
@@ -363,22 +442,24 @@ impl PyChunkPlan {
 pub fn chunk_close<'py>(
     py: Python<'py>,
     samples: &Bound<'py, PyAny>,
-    offset: u64,
+    offset: &Bound<'py, PyAny>,
     prev: Option<f64>,
     queries: &Bound<'py, PyDict>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let (id, after) = (i64s(queries, "id")?, i64s(queries, "after")?);
-    let (u_start, u_end) = (f64s(queries, "u_start")?, f64s(queries, "u_end")?);
+    let mut t = Columns::new(queries, "queries");
+    let (id, after) = (t.indices("id")?, t.indices("after")?);
+    let (u_start, u_end) = (t.f64s("u_start")?, t.f64s("u_end")?);
     let qs: Vec<ClosureQuery> = (0..id.len())
         .map(|k| ClosureQuery {
             id: id[k] as usize,
-            after: after[k] as u64,
+            after: after[k],
             u_start: u_start[k],
             u_end: u_end[k],
         })
         .collect();
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
+    let offset = placed(offset, u.len(), prev)?;
     let found = py
         .detach(|| chunk::close_in_chunk(u, offset, prev, &qs))
         .map_err(value_error)?;
@@ -402,8 +483,19 @@ pub fn chunk_assemble<'py>(
     own: &PyChunkRows,
     extras: &Bound<'py, PyDict>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let more = columns_of(extras)?;
-    let keys: Vec<u8> = item(extras, "key")?.extract()?;
+    let more = columns_of(extras, "extras")?;
+    let keys: Vec<u8> = Columns::new(extras, "extras")
+        .item("key")?
+        .extract()
+        .map_err(|_| PyTypeError::new_err("extras: 'key' must be bytes"))?;
+    if keys.len() != RowKey::BYTES * more.len() {
+        return Err(PyValueError::new_err(format!(
+            "extras: 'key' has {} bytes, {} for the {} rows",
+            keys.len(),
+            RowKey::BYTES * more.len(),
+            more.len()
+        )));
+    }
     let rows: Vec<(RowKey, Cycle)> = keys
         .chunks_exact(RowKey::BYTES)
         .zip(0..more.len())
@@ -432,13 +524,14 @@ fn energies(passes: &[Vec<u8>]) -> PyResult<Vec<ChunkEnergy>> {
 pub fn chunk_bounds(
     py: Python<'_>,
     samples: &Bound<'_, PyAny>,
-    offset: u64,
+    offset: &Bound<'_, PyAny>,
     prev: Option<f64>,
     model: &Bound<'_, PyAny>,
 ) -> PyResult<(f64, f64)> {
     let m = lugre_of(model)?.rate_independent();
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
+    let offset = placed(offset, u.len(), prev)?;
     let b = py
         .detach(|| chunk::state_bounds(u, offset, prev, m))
         .map_err(value_error)?;
@@ -458,7 +551,7 @@ pub fn chunk_guess_entries(
         .into_iter()
         .map(|(upper, lower)| StateBounds { upper, lower })
         .collect();
-    Ok(chunk::guess_entries(m, y_start, &b))
+    chunk::guess_entries(m, y_start, &b).map_err(value_error)
 }
 
 /// `chunk_count_energy(samples, offset, prev, y_entry, model, spans)`: the chunk's own rows
@@ -469,7 +562,7 @@ pub fn chunk_guess_entries(
 pub fn chunk_count_energy<'py>(
     py: Python<'py>,
     samples: &Bound<'py, PyAny>,
-    offset: u64,
+    offset: &Bound<'py, PyAny>,
     prev: Option<f64>,
     y_entry: f64,
     model: &Bound<'py, PyAny>,
@@ -479,8 +572,9 @@ pub fn chunk_count_energy<'py>(
     let spans: Vec<ArcSpan> = match spans {
         None => Vec::new(),
         Some(d) => {
-            let (id, from, to) = (i64s(d, "id")?, i64s(d, "from")?, i64s(d, "to")?);
-            let u_a = f64s(d, "u_start")?;
+            let mut t = Columns::new(d, "spans");
+            let (id, from, to) = (t.indices("id")?, t.i64s("from")?, t.i64s("to")?);
+            let u_a = t.f64s("u_start")?;
             (0..id.len())
                 .map(|k| ArcSpan {
                     id: id[k] as usize,
@@ -492,6 +586,7 @@ pub fn chunk_count_energy<'py>(
     };
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
+    let offset = placed(offset, u.len(), prev)?;
     let (rows, pass) = py
         .detach(|| chunk::count_chunk_energy(u, offset, prev, y_entry, m, &spans))
         .map_err(value_error)?;
@@ -513,7 +608,7 @@ pub fn chunk_history_energy<'py>(
     passes: Vec<Vec<u8>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let m = lugre_of(model)?.rate_independent();
-    let e = chunk::history_energy(m, y_start, &energies(&passes)?);
+    let e = chunk::history_energy(m, y_start, &energies(&passes)?).map_err(value_error)?;
     let s = lugre::CycleSummary {
         samples: 0,
         reversals: 0,

@@ -19,7 +19,8 @@ use crate::models::lugre_of;
 /// Cycles follow the conventions of the Python package `rainflow` 3.x (same cycles, same
 /// order, same indices) and of `lugre cycles`.
 ///
-/// Returns a dict:
+/// Returns a CyclesResult, a dict (picklable) whose `to_frame()` gives the cycle table as a
+/// `pandas.DataFrame`:
 ///
 /// * "reversals": {"index": int64 array, "u": float64 array}, or None with
 ///   `reversals=False`;
@@ -39,7 +40,8 @@ use crate::models::lugre_of;
 /// in Rust and handed to numpy without a copy; `reversals=False` and `closures=False` skip
 /// what is not needed (less memory and time for long histories).
 ///
-/// Invalid input raises ValueError with the message of `lugre cycles`.
+/// Invalid input raises ValueError with the message of `lugre cycles` and the C ABI (a sample
+/// that is not a finite number, fewer than 2 samples, a bad gate or x0).
 #[pyfunction]
 #[pyo3(
     signature = (series, gate=None, model=None, x0=None, *, reversals=None, closures=None),
@@ -53,7 +55,7 @@ pub fn cycles<'py>(
     x0: Option<&Bound<'py, PyAny>>,
     reversals: Option<&Bound<'py, PyAny>>,
     closures: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let u = convert::series(series, "series")?;
     let gate = match gate.filter(|g| !g.is_none()) {
         Some(g) => real(g, "gate")?,
@@ -73,7 +75,10 @@ pub fn cycles<'py>(
     let (columns, summary) = py
         .detach(|| count(u, gate, model, x0, keep_reversals, keep_closures))
         .map_err(value_error)?;
-    to_dict(py, columns, &summary, model.is_some())
+    let result = to_dict(py, columns, &summary, model.is_some())?;
+    py.import("lugre")?
+        .getattr("CyclesResult")?
+        .call1((result,))
 }
 
 /// A keyword that must be a `bool` (`TypeError` otherwise); `True` when not given.
@@ -90,7 +95,8 @@ fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
 }
 
 /// Counts `u` into columns (room for every reversal and cycle there can be, one per sample,
-/// so that counting never reallocates), trimmed at the end.
+/// so that counting never reallocates), trimmed at the end. A history of 0 or 1 samples is
+/// refused, as by `lugre cycles` and the C ABI (the core's one rule).
 fn count(
     u: &[f64],
     gate: f64,
@@ -99,61 +105,16 @@ fn count(
     keep_reversals: bool,
     keep_closures: bool,
 ) -> Result<(CycleColumns, lugre::CycleSummary), lugre::HistoryError> {
-    let n = u.len();
+    let mut counter = lugre::CycleCounter::new(gate)?.with_energy(model, x0)?;
     let mut c = CycleColumns::new()
         .with_reversals(keep_reversals)
         .with_closures(keep_closures)
         .with_energy(model.is_some());
-    c.reserve_for_samples(n);
-    if n < 2 {
-        return Ok((c, no_cycles(n, gate, model, x0)?));
-    }
-    let summary = match model {
-        Some(m) => {
-            let mut counter = lugre::EnergyCycleCounter::new(gate, m, x0)?;
-            counter.push_all(u, &mut c)?;
-            counter.finish(&mut c)?
-        }
-        None => {
-            let mut counter = lugre::CycleCounter::new(gate)?;
-            counter.push_all(u, &mut c)?;
-            counter.finish(&mut c)?
-        }
-    };
+    c.reserve_for_samples(u.len());
+    counter.push_all(u, &mut c)?;
+    let summary = counter.finish(&mut c)?;
     c.shrink_to_fit();
     Ok((c, summary))
-}
-
-/// The summary of a history of 0 or 1 samples: no reversal, no cycle (as the `rainflow`
-/// package returns nothing), the arguments checked as for a longer one.
-fn no_cycles(
-    n: usize,
-    gate: f64,
-    model: Option<lugre::RateIndependent>,
-    x0: f64,
-) -> Result<lugre::CycleSummary, lugre::HistoryError> {
-    lugre::CycleCounter::new(gate)?;
-    let energy = match model {
-        Some(m) => {
-            lugre::EnergyCycleCounter::new(gate, m, x0)?;
-            let y = m.sigma0() * x0;
-            Some(lugre::HistoryEnergy {
-                y_start: y,
-                y_end: y,
-                work: 0.0,
-                stored_energy_change: 0.0,
-                dissipation: 0.0,
-            })
-        }
-        None => None,
-    };
-    Ok(lugre::CycleSummary {
-        samples: n as u64,
-        reversals: 0,
-        full_cycles: 0,
-        half_cycles: 0,
-        energy,
-    })
 }
 
 /// The result dict of [`cycles`]; the columns become numpy arrays without a copy.

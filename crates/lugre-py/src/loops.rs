@@ -23,12 +23,24 @@ use crate::convert::{
 /// model, theorem_a (bimodal inputs; None otherwise), loops, loop_table (the loops as numpy
 /// columns).
 /// Methods: y_at(rho), u_at(rho), sample(n).
+///
+/// Picklable (multiprocessing, joblib, Dask): it pickles as its model and input and is
+/// computed again on loading, to the same bits.
 #[pyclass(frozen, module = "lugre", name = "HysteresisLoop")]
 pub struct PyHysteresisLoop {
     hl: lugre::HysteresisLoop,
     model: Py<PyAny>,
     theorem_a: Option<lugre::TheoremA>,
     loops: OnceLock<Vec<lugre::Loop>>,
+    /// What the loop was made from, to make it again (pickling): the bimodal corners, or the
+    /// turning points.
+    made_from: Input,
+}
+
+/// The input of a [`PyHysteresisLoop`], as the model's method that made it took it.
+enum Input {
+    TurningPoints(Vec<f64>),
+    Bimodal([f64; 4]),
 }
 
 /// `f(r)` for a finite `r`, NaN otherwise (a NaN or infinite rho has no place on the loop).
@@ -47,7 +59,7 @@ impl PyHysteresisLoop {
         model_obj: &Bound<'_, PyAny>,
         model: lugre::RateIndependent,
         tp: &lugre::TurningPoints,
-        bimodal: Option<lugre::Bimodal>,
+        bimodal: Option<(lugre::Bimodal, [f64; 4])>,
         input_name: &str,
     ) -> PyResult<Self> {
         let hl = py
@@ -56,12 +68,17 @@ impl PyHysteresisLoop {
                 lugre::LoopError::Input(e) => PyValueError::new_err(format!("{input_name}{e}")),
                 e => value_error(e),
             })?;
-        let theorem_a = bimodal.map(|b| lugre::TheoremA::new(&b, &hl));
+        let theorem_a = bimodal.map(|(b, _)| lugre::TheoremA::new(&b, &hl));
+        let made_from = match bimodal {
+            Some((_, corners)) => Input::Bimodal(corners),
+            None => Input::TurningPoints(tp.values().to_vec()),
+        };
         Ok(Self {
             hl,
             model: model_obj.clone().unbind(),
             theorem_a,
             loops: OnceLock::new(),
+            made_from,
         })
     }
 
@@ -88,7 +105,15 @@ impl PyHysteresisLoop {
         let [umin1, umin2, umax1, umax2] =
             crate::convert::reals(corners, ["umin1", "umin2", "umax1", "umax2"])?;
         let b = lugre::Bimodal::new(umin1, umin2, umax1, umax2).map_err(value_error)?;
-        Self::build(py, model_obj, model, &b.turning_points(), Some(b), "")
+        let corners = [umin1, umin2, umax1, umax2];
+        Self::build(
+            py,
+            model_obj,
+            model,
+            &b.turning_points(),
+            Some((b, corners)),
+            "",
+        )
     }
 
     fn rust_loops(&self, py: Python<'_>) -> &[lugre::Loop] {
@@ -287,9 +312,31 @@ impl PyHysteresisLoop {
         ))
     }
 
+    /// Pickling: the model's `loop` (or `loop_bimodal`) with the input it took.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Pickle<'py, Bound<'py, PyTuple>> {
+        let model = self.model.bind(py);
+        match &self.made_from {
+            Input::Bimodal(corners) => {
+                Ok((model.getattr("loop_bimodal")?, PyTuple::new(py, corners)?))
+            }
+            Input::TurningPoints(u) => Ok((
+                model.getattr("loop")?,
+                PyTuple::new(py, [vec_out(py, u.clone())])?,
+            )),
+        }
+    }
+
     fn __traverse__(&self, visit: pyo3::PyVisit<'_>) -> Result<(), pyo3::PyTraverseError> {
         visit.call(&self.model)
     }
+}
+
+/// What `__reduce__` returns: a callable and its arguments.
+type Pickle<'py, S> = PyResult<(Bound<'py, PyAny>, S)>;
+
+/// `(cls._restore, state)`: how the value classes below pickle.
+fn restore_with<'py, S>(cls: Bound<'py, pyo3::types::PyType>, state: S) -> Pickle<'py, S> {
+    Ok((cls.getattr("_restore")?, state))
 }
 
 /// A point of the loop: rho, the input u = psi_u(rho) and the output y = y°(rho). Unpacks as
@@ -342,6 +389,20 @@ impl PyLoopPoint {
     /// {"rho": ..., "u": ..., "y": ...}
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         point_dict(py, &self.inner)
+    }
+
+    /// Pickling: the point's three numbers.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Pickle<'py, (f64, f64, f64)> {
+        let p = self.inner;
+        restore_with(py.get_type::<Self>(), (p.rho, p.u, p.y))
+    }
+
+    /// The point of a pickle.
+    #[staticmethod]
+    fn _restore(rho: f64, u: f64, y: f64) -> Self {
+        Self {
+            inner: lugre::LoopPoint { rho, u, y },
+        }
     }
 }
 
@@ -468,7 +529,58 @@ impl PyLoop {
         d.set_item("depth", l.depth)?;
         Ok(d)
     }
+
+    /// Pickling: the loop's fields.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Pickle<'py, LoopState> {
+        let l = &self.inner;
+        let point = |p: &lugre::LoopPoint| (p.rho, p.u, p.y);
+        let e = l.energy;
+        let state = (
+            l.kind == lugre::LoopKind::Major,
+            [point(&l.start), point(&l.reversal), point(&l.end)],
+            [e.work, e.stored_energy_change, e.dissipation, e.closure_gap],
+            l.parent,
+            l.depth,
+        );
+        restore_with(py.get_type::<Self>(), state)
+    }
+
+    /// The loop of a pickle.
+    #[staticmethod]
+    fn _restore(
+        major: bool,
+        points: [(f64, f64, f64); 3],
+        energy: [f64; 4],
+        parent: Option<usize>,
+        depth: usize,
+    ) -> Self {
+        let point = |(rho, u, y)| lugre::LoopPoint { rho, u, y };
+        let [work, stored_energy_change, dissipation, closure_gap] = energy;
+        Self {
+            inner: lugre::Loop {
+                kind: if major {
+                    lugre::LoopKind::Major
+                } else {
+                    lugre::LoopKind::Minor
+                },
+                start: point(points[0]),
+                reversal: point(points[1]),
+                end: point(points[2]),
+                energy: lugre::ArcEnergy {
+                    work,
+                    stored_energy_change,
+                    dissipation,
+                    closure_gap,
+                },
+                parent,
+                depth,
+            },
+        }
+    }
 }
+
+/// A pickled [`PyLoop`]: major, (start, reversal, end), the four energies, parent, depth.
+type LoopState = (bool, [(f64, f64, f64); 3], [f64; 4], Option<usize>, usize);
 
 /// Theorem A for a bimodal input: rho_0..rho_5 (the turning points at rho_0..rho_3, the
 /// period rho_4, and rho_5 where the input first returns to umax1), y° at each, and the minor
@@ -538,6 +650,20 @@ impl PyTheoremA {
         d.set_item("minor_loop", self.inner.minor_loop.to_vec())?;
         Ok(d)
     }
+
+    /// Pickling: rho_0..rho_5, y there and the minor loop.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Pickle<'py, ([f64; 6], [f64; 6], [f64; 2])> {
+        let t = self.inner;
+        restore_with(py.get_type::<Self>(), (t.rho, t.y, t.minor_loop))
+    }
+
+    /// Theorem A of a pickle.
+    #[staticmethod]
+    fn _restore(rho: [f64; 6], y: [f64; 6], minor_loop: [f64; 2]) -> Self {
+        Self {
+            inner: lugre::TheoremA { rho, y, minor_loop },
+        }
+    }
 }
 
 /// Points of the loop: float64 arrays rho, u (= psi_u(rho)) and y (= y°(rho)). Unpacks as
@@ -578,6 +704,39 @@ impl PyCurve {
 
     fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
         Ok(format!("Curve(n={})", self.rho.bind(py).len()?))
+    }
+
+    /// {"rho": ..., "u": ..., "y": ...} (the arrays themselves, not copies).
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        d.set_item("rho", self.rho.bind(py))?;
+        d.set_item("u", self.u.bind(py))?;
+        d.set_item("y", self.y.bind(py))?;
+        Ok(d)
+    }
+
+    /// The points as a `pandas.DataFrame` with the columns rho, u, y (pandas is imported
+    /// here, only).
+    fn to_frame<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import("pandas")?
+            .getattr("DataFrame")?
+            .call1((self.to_dict(py)?,))
+    }
+
+    /// Pickling: the three arrays.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> Pickle<'py, (Py<PyAny>, Py<PyAny>, Py<PyAny>)> {
+        let state = (
+            self.rho.clone_ref(py),
+            self.u.clone_ref(py),
+            self.y.clone_ref(py),
+        );
+        restore_with(py.get_type::<Self>(), state)
+    }
+
+    /// The curve of a pickle.
+    #[staticmethod]
+    fn _restore(rho: Py<PyAny>, u: Py<PyAny>, y: Py<PyAny>) -> Self {
+        Self { rho, u, y }
     }
 
     fn __traverse__(&self, visit: pyo3::PyVisit<'_>) -> Result<(), pyo3::PyTraverseError> {

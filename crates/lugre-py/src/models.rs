@@ -173,7 +173,7 @@ impl PyLuGre {
     /// of `lugre simulate`) or TypeError.
     #[pyo3(
         signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None, speed=None),
-        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear', speed=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
@@ -328,7 +328,7 @@ impl PyDahl {
     /// LuGre.simulate): a dict of float64 arrays t, u, z, dz, y.
     #[pyo3(
         signature = (turning_points=None, t=None, u=None, sine=None, gamma=None, periods=None, x0=None, times=None, samples_per_period=None, tol=None, interpolate=None, speed=None),
-        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear')"
+        text_signature = "($self, turning_points=None, t=None, u=None, sine=None, gamma=1.0, periods=1, x0=0.0, times=None, samples_per_period=None, tol=1e-10, interpolate='linear', speed=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(

@@ -38,24 +38,45 @@ def assert_gil_released():
 
 
 @pytest.fixture(scope="session")
-def lugre_cli():
-    """`lugre_cli(args)` runs the `lugre` command built from this checkout (the newest of the
-    debug and release builds: scripts/test.sh runs the Rust tests, which build it, first) and
-    returns its JSON output: for checks that Python and the command line give the same answer."""
-    import json
+def lugre_exe():
+    """The `lugre` command built from this checkout: the newest of the debug and release
+    builds (scripts/test.sh runs the Rust tests, which build it, first)."""
     import os
     import pathlib
-    import subprocess
 
     root = pathlib.Path(__file__).resolve().parents[3]
     target = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", root / "target"))
     builds = [p for p in (target / "debug" / "lugre", target / "release" / "lugre") if p.exists()]
     if not builds:
         pytest.fail(f"no lugre binary under {target}: run `cargo build -p lugre-cli` first")
-    exe = max(builds, key=lambda p: p.stat().st_mtime)
+    return str(max(builds, key=lambda p: p.stat().st_mtime))
+
+
+@pytest.fixture(scope="session")
+def lugre_cli(lugre_exe):
+    """`lugre_cli(args)` runs the `lugre` command ([`lugre_exe`]) and returns its JSON output:
+    for checks that Python and the command line give the same answer."""
+    import json
+    import subprocess
 
     def run(args):
-        out = subprocess.run([str(exe), *args], capture_output=True, text=True, check=True)
+        out = subprocess.run([lugre_exe, *args], capture_output=True, text=True, check=True)
         return json.loads(out.stdout)
+
+    return run
+
+
+@pytest.fixture(scope="session")
+def lugre_cli_error(lugre_exe):
+    """`lugre_cli_error(args)` runs the `lugre` command on arguments it must refuse and returns
+    its one line of error (after "lugre: error: "), having checked the exit status 2."""
+    import subprocess
+
+    def run(args):
+        out = subprocess.run([lugre_exe, *args], capture_output=True, text=True)
+        assert out.returncode == 2, (args, out.returncode, out.stderr)
+        lines = out.stderr.strip().splitlines()
+        assert len(lines) == 1, out.stderr
+        return lines[0].removeprefix("lugre: error: ")
 
     return run

@@ -126,9 +126,12 @@ def test_type_stubs_are_shipped():
     files = res.files("lugre")
     assert files.joinpath("__init__.pyi").is_file()
     assert files.joinpath("py.typed").is_file()
+    assert files.joinpath("chunk.pyi").is_file()
     stub = files.joinpath("__init__.pyi").read_text()
     for name in lugre.__all__:
-        if name[0].islower() and name != "__version__":  # functions
+        if inspect.ismodule(getattr(lugre, name)):
+            assert f"from . import {name} as {name}" in stub, name
+        elif name[0].islower() and name != "__version__":  # functions
             assert f"def {name}(" in stub, name
         elif name.isupper():  # constants
             assert f"\n{name}: " in stub, name
@@ -159,37 +162,93 @@ def _env():
     return {k: v for k, v in os.environ.items()}
 
 
-def _stub_functions():
+def _stub_tree(module):
     import ast
     import importlib.resources
 
-    tree = ast.parse(importlib.resources.files("lugre").joinpath("__init__.pyi").read_text())
-    return {node.name: node for node in tree.body if isinstance(node, ast.FunctionDef)}
+    name = "__init__.pyi" if module is lugre else module.__name__.rsplit(".", 1)[1] + ".pyi"
+    return ast.parse(importlib.resources.files("lugre").joinpath(name).read_text())
 
 
-def _stub_parameters(node):
+def _stub_parameters(node, drop_self=False):
     a = node.args
-    return [p.arg for p in a.posonlyargs + a.args], [p.arg for p in a.kwonlyargs]
+    positional = [p.arg for p in a.posonlyargs + a.args]
+    if drop_self and positional[:1] in (["self"], ["cls"]):
+        positional = positional[1:]
+    return positional, [p.arg for p in a.kwonlyargs]
+
+
+def _runtime_parameters(func):
+    """(positional, keyword-only) parameter names of a compiled callable, without self."""
+    sig = inspect.signature(func)
+    params = [p for p in sig.parameters.values() if p.name not in ("self", "$self", "cls")]
+    positional = [p.name for p in params if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    keyword = [p.name for p in params if p.kind == p.KEYWORD_ONLY]
+    return positional, keyword
+
+
+def _decorators(node):
+    import ast
+
+    return {d.id for d in node.decorator_list if isinstance(d, ast.Name)}
+
+
+def _stubbed_modules():
+    return [lugre, lugre.chunk]
 
 
 def test_the_stubs_match_the_signatures():
-    """Every module-level function's stub has the compiled function's parameters, positional
-    and keyword-only alike (a keyword added to one and not the other fails here)."""
-    stubs = _stub_functions()
+    """Every function's stub (of the package and of lugre.chunk) and every method's stub (of
+    each class stubbed) has the compiled callable's parameters, positional and keyword-only
+    alike: a keyword added to one and not the other fails here. Every public method a class
+    has at run time is stubbed, and every name a module exports has a stub."""
+    import ast
+
     checked = 0
-    for name, node in stubs.items():
-        func = getattr(lugre, name, None)
-        if func is None or not callable(func):
+    for module in _stubbed_modules():
+        tree = _stub_tree(module)
+        stubbed = {node.name for node in tree.body if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+        stubbed |= {a.asname or a.name for node in tree.body if isinstance(node, ast.ImportFrom)
+                    for a in node.names}
+        stubbed |= {t.id for node in tree.body if isinstance(node, ast.AnnAssign)
+                    for t in [node.target] if isinstance(t, ast.Name)}
+        for name in module.__all__:
+            assert name in stubbed or name == "__version__", f"{module.__name__}.{name} has no stub"
+        for node in tree.body:
+            obj = getattr(module, getattr(node, "name", ""), None)
+            if isinstance(node, ast.FunctionDef) and callable(obj):
+                assert _stub_parameters(node) == _runtime_parameters(obj), f"{module.__name__}.{node.name}"
+                checked += 1
+            elif isinstance(node, ast.ClassDef) and isinstance(obj, type):
+                checked += _check_class(node, obj)
+    assert checked >= 50, checked  # the functions and methods stubbed (51 today)
+
+
+def _check_class(node, cls):
+    """The methods stubbed in `node` against the class `cls`; returns how many were checked."""
+    import ast
+
+    methods = [m for m in node.body if isinstance(m, ast.FunctionDef)]
+    names = {m.name for m in methods}
+    public = {n for n, v in vars(cls).items() if not n.startswith("_") and callable(v)}
+    public |= {n for n, v in vars(cls).items() if not n.startswith("_") and isinstance(v, (property, type(lugre.LuGre.g0)))}
+    missing = public - names
+    assert not missing, f"{cls.__name__}: not in the stub: {sorted(missing)}"
+    checked = 0
+    for m in methods:
+        if "property" in _decorators(m) or (m.name.startswith("__") and m.name != "__init__"):
+            continue
+        target = cls if m.name == "__init__" else getattr(cls, m.name, None)
+        assert target is not None, f"{cls.__name__}.{m.name} is stubbed but does not exist"
+        if m.name == "__init__" and cls.__init__ is object.__init__ and cls.__new__ is object.__new__:
             continue
         try:
-            sig = inspect.signature(func)
+            runtime = _runtime_parameters(target)
         except (TypeError, ValueError):
-            continue
-        positional = [p.name for p in sig.parameters.values() if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
-        keyword = [p.name for p in sig.parameters.values() if p.kind == p.KEYWORD_ONLY]
-        assert _stub_parameters(node) == (positional, keyword), name
+            continue  # a dict subclass' inherited slots, say
+        assert _stub_parameters(m, drop_self=True) == runtime, f"{cls.__name__}.{m.name}"
         checked += 1
-    assert checked >= 3, checked
+    return checked
 
 
 def test_dynamics_takes_the_core_request_fields():

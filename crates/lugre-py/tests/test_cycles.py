@@ -174,13 +174,17 @@ def test_closures_are_the_first_return_to_the_start(walks):
 
 
 def test_empty_and_short_histories():
-    # As the rainflow package: nothing for an empty or one-sample history (columns empty).
-    for h in ([], [1.0], np.array([]), np.array([2.5])):
-        c = lugre.cycles(h)
-        assert table(c) == [] and len(c["reversals"]["index"]) == 0
-        assert c["summary"]["samples"] == len(h) and c["summary"]["half_cycles"] == 0
-    e = lugre.cycles([1.0], model=lugre.LuGre())["summary"]["energy"]
-    assert e["work"] == 0.0 and e["y_start"] == e["y_end"] == 0.0
+    # One rule in the core, as `lugre cycles` and the C ABI: a history of 0 or 1 samples has
+    # no range and is refused (the rainflow package returns nothing).
+    for h, message in (([], "the history is empty (no samples)"),
+                       (np.array([]), "the history is empty (no samples)"),
+                       ([1.0], "a history needs at least 2 samples, got 1"),
+                       (np.array([2.5]), "a history needs at least 2 samples, got 1")):
+        with pytest.raises(ValueError) as e:
+            lugre.cycles(h)
+        assert str(e.value) == message
+        with pytest.raises(ValueError):
+            lugre.cycles(h, model=lugre.LuGre())
     with pytest.raises(ValueError, match="gate"):
         lugre.cycles([], gate=-1.0)
     # Two samples are one half cycle (ASTM E1049); rainflow 3.2 gives none (its reversals()

@@ -147,7 +147,7 @@ def test_dahl_simulates_as_its_lugre_model():
         (dict(t=[0, 1, 1], u=[0, 1, 0]), "times must be strictly increasing: t[2] = 1 after t[1] = 1"),
         (dict(t=[0, 1, 2], u=[0, 1]), "t and u have different lengths (3 and 2)"),
         (dict(t=[0, 1], u=[0, 1], periods=2), "to repeat the input over 2 periods it must end where it starts, but u[0] = 0 and u[1] = 1"),
-        (dict(turning_points=[0, 1], times=[5]), "output time t[0] = 5 is outside the simulated interval [0, 2]"),
+        (dict(turning_points=[0, 1], times=[5]), "output time t[0] = 5 is outside the run [0, 2]"),
         (dict(turning_points=[], gamma=2), "turning_points: the input is empty"),
         (dict(sine=(1,)), "sine takes 2 to 4 numbers (A, T[, phase[, offset]]), got 1"),
         (dict(sine=(0, 2)), "the sine's amplitude must be a finite number > 0, got 0"),

@@ -6,7 +6,7 @@
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
-use lugre::{Cycle, CycleColumns, CycleCounter, CycleSink, EnergyCycleCounter, LuGre, Reversal};
+use lugre::{Cycle, CycleColumns, CycleCounter, CycleSink, LuGre, Reversal};
 use std::hint::black_box;
 
 /// The history lengths: the walk's first `n` samples.
@@ -108,7 +108,9 @@ fn cycles(c: &mut Criterion) {
         group.bench_with_input(BenchmarkId::new("count_with_energy", n), u, |b, u| {
             b.iter(|| {
                 let mut sink = Checksum::default();
-                let mut counter = EnergyCycleCounter::new(0.0, model, 0.0).expect("valid");
+                let mut counter = CycleCounter::new(0.0)
+                    .and_then(|c| c.with_energy(model, 0.0))
+                    .expect("valid");
                 for block in black_box(u).chunks(4096) {
                     counter.push_all(block, &mut sink).expect("finite");
                 }
@@ -186,7 +188,9 @@ fn chunked(c: &mut Criterion) {
         b.iter(|| {
             let mut columns = CycleColumns::new().with_reversals(false).with_energy(true);
             columns.reserve_for_samples(n);
-            let mut counter = EnergyCycleCounter::new(0.0, model, 0.0).expect("valid");
+            let mut counter = CycleCounter::new(0.0)
+                .and_then(|c| c.with_energy(model, 0.0))
+                .expect("valid");
             counter
                 .push_all(black_box(&walk), &mut columns)
                 .expect("finite");

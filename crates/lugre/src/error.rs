@@ -144,19 +144,34 @@ pub enum ModelError {
     BadRatio { sigma0: f64, g0: f64 },
 }
 
-/// A series of numbers that cannot be used as data: shared by inputs ([`InputError`]) and fits
-/// ([`FitError`]), which nest it.
+/// A series of numbers that cannot be used as data, with one wording for every front end:
+/// shared by inputs ([`InputError`]), histories ([`HistoryError`]), fits ([`FitError`]) and
+/// the output times of simulations ([`SimulateError`], [`DynamicsError`]), which nest it. The
+/// checks are in [`crate::input`].
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum DataError {
     #[error("{what}[{index}] must be a finite number, got {value}", value = num(*.value))]
     NotFinite {
         what: &'static str,
-        index: usize,
+        index: u64,
         value: f64,
     },
-    #[error("times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    /// `what` names the series: `times` (of data), `output times`.
+    #[error("{what} must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
+    TimesNotIncreasing {
+        what: &'static str,
+        index: u64,
+        prev: f64,
+        value: f64,
+    },
+    #[error("output time t[{index}] = {value} is outside the run [{start}, {end}]", value = num(*.value), start = num(*.start), end = num(*.end))]
+    TimeOutOfRange {
+        index: u64,
+        value: f64,
+        start: f64,
+        end: f64,
+    },
 }
 
 /// An invalid input signal.
@@ -199,14 +214,17 @@ pub enum HistoryError {
     Empty,
     #[error("a history needs at least 2 samples, got {samples}")]
     TooShort { samples: u64 },
-    #[error("u[{index}] must be a finite number, got {value}", value = num(*.value))]
-    NotFinite { index: u64, value: f64 },
+    /// A sample that is not a finite number (`DataError::NotFinite` of `u`).
+    #[error(transparent)]
+    Data(#[from] DataError),
     #[error("u[{index}] = {value} is too large: |u| must be at most {limit} so that ranges and means stay finite", value = num(*.value), limit = num(f64::MAX / 2.0))]
     TooLarge { index: u64, value: f64 },
     #[error("the gate must be a finite number >= 0, got {value}", value = num(*.value))]
     BadGate { value: f64 },
     #[error("x0 must satisfy |sigma0 x0| <= g(0) (the bristle deflection the model can hold), got x0 = {x0} with sigma0 = {sigma0}, g(0) = {g0}", x0 = num(*.x0), sigma0 = num(*.sigma0), g0 = num(*.g0))]
     BadInitialState { x0: f64, sigma0: f64, g0: f64 },
+    #[error("the model must be given before the first sample (the counter has taken {samples})")]
+    EnergyAfterStart { samples: u64 },
     #[error("the energies of the cycle closing at u[{index}] overflow f64 (values too large)")]
     EnergyOverflow { index: u64 },
     #[error("a histogram needs at least 1 bin, got {bins}")]
@@ -215,6 +233,22 @@ pub enum HistoryError {
     BadBounds { min: f64, max: f64 },
     #[error("the chunk starting at u[{start}] is empty: every chunk needs at least 1 sample")]
     EmptyChunk { start: u64 },
+    #[error("a chunk of {samples} samples from u[{offset}] runs past u[{last}], the last index a history can have (indices are int64)", last = i64::MAX)]
+    IndexOverflow { offset: u64, samples: u64 },
+    #[error("the chunk starts at u[0]: there is no sample before it, got {value}", value = num(*.value))]
+    PrevBeforeStart { value: f64 },
+    #[error("{name} must be a finite number with |{name}| <= g(0) = {g0} (a state y* can hold), got {value}", value = num(*.value), g0 = num(*.g0))]
+    BadEntryState {
+        name: &'static str,
+        value: f64,
+        g0: f64,
+    },
+    #[error("bounds[{index}] = ({upper}, {lower}) must be finite numbers (states y* a chunk can end at)", upper = num(*.upper), lower = num(*.lower))]
+    BadStateBounds {
+        index: usize,
+        upper: f64,
+        lower: f64,
+    },
     #[error("chunks are not adjacent: the left one ends at u[{left_end}], the right one starts at u[{right_start}]")]
     NotAdjacent { left_end: u64, right_start: u64 },
     #[error("the chunks merged cover u[{start}..={end}], not the whole history from u[0]")]
@@ -353,17 +387,9 @@ pub enum SimulateError {
         last_index: usize,
         last: f64,
     },
-    #[error("output time t[{index}] = {value} is not a finite number", value = num(*.value))]
-    TimeNotFinite { index: usize, value: f64 },
-    #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
-    #[error("output time t[{index}] = {value} is outside the simulated interval [{start}, {end}]", value = num(*.value), start = num(*.start), end = num(*.end))]
-    TimeOutOfRange {
-        index: usize,
-        value: f64,
-        start: f64,
-        end: f64,
-    },
+    /// Output times that are not finite, not increasing or outside the run.
+    #[error(transparent)]
+    Data(#[from] DataError),
     #[error("{what} overflows f64 at t = {t}", t = num(*.t))]
     Overflow { what: &'static str, t: f64 },
     #[error(
@@ -425,15 +451,9 @@ pub enum DynamicsError {
     },
     #[error("the tolerance {name} must be a number in (0, 1) (atol: > 0), got {value}", value = num(*.value))]
     BadTolerance { name: &'static str, value: f64 },
-    #[error("output time t[{index}] = {value} is outside the run [{t0}, {t_end}]", value = num(*.value), t0 = num(*.t0), t_end = num(*.t_end))]
-    TimeOutOfRange {
-        index: usize,
-        value: f64,
-        t0: f64,
-        t_end: f64,
-    },
-    #[error("output times must be strictly increasing: t[{index}] = {value} after t[{prev_index}] = {prev}", prev_index = index - 1, value = num(*.value), prev = num(*.prev))]
-    TimesNotIncreasing { index: usize, prev: f64, value: f64 },
+    /// Output times that are not finite, not increasing or outside the run.
+    #[error(transparent)]
+    Data(#[from] DataError),
     #[error("the motion overflows f64 near t = {t}", t = num(*.t))]
     Overflow { t: f64 },
     #[error("the integrator failed near t = {t}: {reason}", t = num(*.t))]

@@ -8,6 +8,10 @@
 //! * repeated consecutive values are collapsed, and points that are not reversals (the input
 //!   keeps its direction through them) are dropped, cyclically;
 //! * rho is measured from the first listed point that is a turning point.
+//!
+//! The checks every series of numbers goes through (finite, strictly increasing times, output
+//! times inside a run) live here, with their errors in [`DataError`]: the library, the
+//! command line, the Python package and the C ABI word them alike.
 
 use crate::error::{num, DataError, InputError};
 
@@ -60,7 +64,7 @@ pub fn check_finite(what: &'static str, values: &[f64]) -> Result<(), DataError>
     match values.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(DataError::NotFinite {
             what,
-            index,
+            index: index as u64,
             value: values[index],
         }),
         None => Ok(()),
@@ -69,11 +73,48 @@ pub fn check_finite(what: &'static str, values: &[f64]) -> Result<(), DataError>
 
 /// Checks that (finite) times are strictly increasing, naming the first that is not.
 pub fn check_increasing(t: &[f64]) -> Result<(), DataError> {
+    increasing("times", t)
+}
+
+/// Checks that `t` (the `what`) is strictly increasing.
+fn increasing(what: &'static str, t: &[f64]) -> Result<(), DataError> {
     match (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
         Some(index) => Err(DataError::TimesNotIncreasing {
-            index,
+            what,
+            index: index as u64,
             prev: t[index - 1],
             value: t[index],
+        }),
+        None => Ok(()),
+    }
+}
+
+/// How far (in units of the run's largest time) an output time may lie outside the run
+/// `[start, end]` and still be reported, at the end it is beyond (see [`check_output_times`]).
+const OUTPUT_TIME_SLACK: f64 = 8.0 * f64::EPSILON;
+
+/// Checks output times for a run over `[start, end]`: finite, strictly increasing, and inside
+/// the run up to 8 units in the last place of its largest time `max(|start|, |end|, end - start)`.
+///
+/// One rule for every run (simulate, dynamics): an end is often computed (`periods x period`,
+/// `3 x 4.6 = 13.799999999999999`) and output times are often computed too (`numpy.arange`,
+/// `k dt`), so a time meant as the end can differ from it by a few units in the last place
+/// on either side. Such a time belongs to the run and is reported at the end's state; a time
+/// further out is refused. (8 ulps covers a sum or product of a few rounded terms; a time
+/// off by more is not the end.)
+pub fn check_output_times(times: &[f64], start: f64, end: f64) -> Result<(), DataError> {
+    check_finite("t", times)?;
+    increasing("output times", times)?;
+    let slack = OUTPUT_TIME_SLACK * start.abs().max(end.abs()).max(end - start);
+    match times
+        .iter()
+        .position(|&t| t < start - slack || t > end + slack)
+    {
+        Some(index) => Err(DataError::TimeOutOfRange {
+            index: index as u64,
+            value: times[index],
+            start,
+            end,
         }),
         None => Ok(()),
     }
@@ -232,6 +273,34 @@ mod tests {
                 ..
             }))
         ));
+    }
+
+    #[test]
+    fn output_times_within_rounding_of_the_run_belong_to_it() {
+        // 3 x 4.6 is computed as 13.799999999999999: 13.8 written by the user is its end.
+        let end = 3.0 * 4.6;
+        assert!(13.8 > end);
+        assert_eq!(check_output_times(&[0.0, 13.8], 0.0, end), Ok(()));
+        // numpy.arange(0, 1.0001, 0.1)[-1] is 1.0000000000000002.
+        assert_eq!(check_output_times(&[1.0 + f64::EPSILON], 0.0, 1.0), Ok(()));
+        assert_eq!(check_output_times(&[-f64::EPSILON], 0.0, 1.0), Ok(()));
+        let beyond = 1.0 + 16.0 * f64::EPSILON;
+        assert_eq!(
+            check_output_times(&[0.5, beyond], 0.0, 1.0),
+            Err(DataError::TimeOutOfRange {
+                index: 1,
+                value: beyond,
+                start: 0.0,
+                end: 1.0
+            })
+        );
+        let e = check_output_times(&[0.5, 0.5], 0.0, 1.0).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "output times must be strictly increasing: t[1] = 0.5 after t[0] = 0.5"
+        );
+        let e = check_output_times(&[0.5, f64::NAN], 0.0, 1.0).unwrap_err();
+        assert_eq!(e.to_string(), "t[1] must be a finite number, got NaN");
     }
 
     #[test]

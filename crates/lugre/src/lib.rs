@@ -55,8 +55,7 @@ pub mod simulate;
 
 pub use cycles::{
     count_cycles, count_cycles_with_energy, Closure, Cycle, CycleColumns, CycleCounter,
-    CycleEnergy, CycleSink, CycleSummary, EnergyCycleCounter, Histogram, History, HistoryEnergy,
-    Reversal,
+    CycleEnergy, CycleSink, CycleSummary, Histogram, History, HistoryEnergy, Reversal,
 };
 pub use error::{
     DataError, DynamicsError, Error, FitError, HistoryError, InputError, LoopError, ModelError,

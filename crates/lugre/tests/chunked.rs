@@ -8,8 +8,7 @@ use lugre::cycles::chunk::{
     ChunkPlan,
 };
 use lugre::{
-    count_cycles, CycleColumns, CycleCounter, CycleSummary, EnergyCycleCounter, HistoryError,
-    RateIndependent,
+    count_cycles, CycleColumns, CycleCounter, CycleSummary, HistoryError, RateIndependent,
 };
 use proptest::prelude::*;
 
@@ -18,18 +17,10 @@ fn single(u: &[f64], model: Option<(RateIndependent, f64)>) -> (CycleColumns, Cy
     let mut c = CycleColumns::new()
         .with_reversals(false)
         .with_energy(model.is_some());
-    let s = match model {
-        None => {
-            let mut counter = CycleCounter::new(0.0).unwrap();
-            counter.push_all(u, &mut c).unwrap();
-            counter.finish(&mut c).unwrap()
-        }
-        Some((m, x0)) => {
-            let mut counter = EnergyCycleCounter::new(0.0, m, x0).unwrap();
-            counter.push_all(u, &mut c).unwrap();
-            counter.finish(&mut c).unwrap()
-        }
-    };
+    let (m, x0) = (model.map(|(m, _)| m), model.map_or(0.0, |(_, x0)| x0));
+    let mut counter = CycleCounter::new(0.0).unwrap().with_energy(m, x0).unwrap();
+    counter.push_all(u, &mut c).unwrap();
+    let s = counter.finish(&mut c).unwrap();
     (c, s)
 }
 
@@ -90,7 +81,7 @@ fn chunked(
             .iter()
             .map(|&(c, o, p)| state_bounds(c, o, p, m))
             .collect::<Result<_, _>>()?;
-        let guesses = lugre::cycles::chunk::guess_entries(m, y0, &b);
+        let guesses = lugre::cycles::chunk::guess_entries(m, y0, &b)?;
         let mut passes = Vec::new();
         for (k, &(c, o, p)) in pieces.iter().enumerate() {
             let mut y = guesses[k];
@@ -107,7 +98,7 @@ fn chunked(
             passes.push(pass);
         }
         plan.attach_energy(m, &passes)?;
-        summary.energy = Some(history_energy(m, y0, &passes));
+        summary.energy = Some(history_energy(m, y0, &passes)?);
     }
     let extras = plan.extras()?;
     let mut out = CycleColumns::new()
@@ -315,7 +306,10 @@ fn bad_chunks_are_errors() {
     );
     let e = count_chunk(&[0.0, 1.0, f64::NAN], 100).unwrap_err();
     assert!(
-        matches!(e, HistoryError::NotFinite { index: 102, .. }),
+        matches!(
+            e,
+            HistoryError::Data(lugre::DataError::NotFinite { index: 102, .. })
+        ),
         "{e:?}"
     );
     let (a, _) = count_chunk(&[0.0, 1.0], 0).unwrap();
@@ -334,6 +328,48 @@ fn bad_chunks_are_errors() {
         a
     );
     assert!(lugre::cycles::chunk::ChunkSummary::from_bytes(&bytes[..bytes.len() - 1]).is_err());
+}
+
+/// Where a chunk lies and what enters it are checked: an end index past `i64::MAX` (or past
+/// `u64::MAX`, where it would wrap), a sample before `u[0]` or one that is not finite, an
+/// entry state `y*` cannot hold, state bounds that are not numbers.
+#[test]
+fn a_chunk_out_of_place_or_entered_wrongly_is_an_error() {
+    use lugre::cycles::chunk::{close_in_chunk, guess_entries, StateBounds, MAX_INDEX};
+    let u = [0.0, 1.0, 0.5];
+    for offset in [u64::MAX - 1, MAX_INDEX - 1] {
+        let e = count_chunk(&u, offset).unwrap_err();
+        assert_eq!(e, HistoryError::IndexOverflow { offset, samples: 3 });
+        assert!(
+            e.to_string().contains("runs past u[9223372036854775807]"),
+            "{e}"
+        );
+    }
+    assert!(count_chunk(&u, MAX_INDEX - 2).is_ok());
+    let m = RateIndependent::new(2.0, 1.5).unwrap();
+    let e = state_bounds(&u, 0, Some(f64::NAN), m).unwrap_err();
+    assert!(matches!(e, HistoryError::PrevBeforeStart { value } if value.is_nan()));
+    let e = state_bounds(&u, 10, Some(f64::NAN), m).unwrap_err();
+    assert_eq!(e.to_string(), "u[9] must be a finite number, got NaN");
+    assert!(close_in_chunk(&u, 10, Some(f64::INFINITY), &[]).is_err());
+    assert!(count_chunk_energy(&u, 10, Some(f64::NAN), 0.0, m, &[]).is_err());
+    let e = count_chunk_energy(&u, 10, Some(1.0), f64::NAN, m, &[]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "y_entry must be a finite number with |y_entry| <= g(0) = 1.5 (a state y* can hold), got NaN"
+    );
+    let e = guess_entries(m, f64::NAN, &[]).unwrap_err();
+    assert!(
+        e.to_string().starts_with("y_start must be a finite number"),
+        "{e}"
+    );
+    let bad = StateBounds {
+        upper: 1.0,
+        lower: f64::NAN,
+    };
+    let e = guess_entries(m, 0.0, &[bad]).unwrap_err();
+    assert!(e.to_string().starts_with("bounds[0] = (1, NaN)"), "{e}");
+    assert!(history_energy(m, 2.0, &[]).is_err());
 }
 
 /// `n` samples of a random walk with uniform steps in [-0.5, 0.5) from a fixed LCG.

@@ -386,6 +386,17 @@ fn bad_systems_and_requests_are_errors() {
         .solve(1.0, &[0.5, 2.0], Tolerances::default())
         .unwrap_err();
     assert!(e.to_string().contains("outside the run"), "{e}");
+    // The one rule of output times (`lugre::input::check_output_times`, as for simulate): a
+    // time within rounding past the end is the end, reported with the end's state.
+    let past = 1.0 + f64::EPSILON;
+    let end = stick_slip()
+        .solve(1.0, &[0.5, 1.0], Tolerances::default())
+        .unwrap();
+    let beyond = stick_slip()
+        .solve(1.0, &[0.5, past], Tolerances::default())
+        .unwrap();
+    assert_eq!(beyond.t, [0.5, past]);
+    assert_eq!(beyond.x, end.x);
 }
 
 /// The cross-check with a well-kept stiff solver: the `differential-equations` crate's Radau5

@@ -1039,8 +1039,8 @@ fn invalid_requests_are_typed_errors() {
     ));
     for (times, want) in [
         (vec![0.5, 0.5], "strictly increasing"),
-        (vec![0.5, f64::NAN], "not a finite number"),
-        (vec![0.5, 1.5], "outside the simulated interval [0, 1]"),
+        (vec![0.5, f64::NAN], "t[1] must be a finite number, got NaN"),
+        (vec![0.5, 1.5], "outside the run [0, 1]"),
         (vec![-0.1], "outside"),
     ] {
         let e = sim.at_times(&open, 1, &times, &mut out).unwrap_err();

@@ -24,7 +24,13 @@ message the ``lugre`` command prints; arguments of the wrong type raise TypeErro
 
 Histories too large for one machine: ``lugre.dask`` (``pip install lugre[dask]``) counts a
 ``dask.array`` or a list of ``.npy`` files chunk by chunk, equal to ``lugre.cycles`` row for row;
-the chunk functions it schedules (``chunk_count``, ``chunk_merge``, ``ChunkPlan``, ...) are here.
+the chunk functions it schedules (``chunk_count``, ``chunk_merge``, ``ChunkPlan``, ...) are in
+``lugre.chunk``.
+
+Results are plain values: models, loops and result dicts pickle (multiprocessing, joblib,
+Dask), and tables go straight into pandas (``lugre.cycles(...).to_frame()``,
+``lugre.dynamics(...).to_frame()``, ``hl.sample(n).to_frame()``,
+``pandas.DataFrame(model.simulate(...))``, ``pandas.DataFrame(hl.loop_table)``).
 
 Data files: ``lugre.read(path, columns=None, scale=None, delimiter=None, *, roles=None)``
 returns a file's columns by role ("t", "u", "F", ...) with their units, read by the same reader
@@ -36,12 +42,12 @@ the estimates with standard errors, 95 % intervals and correlations, and the fit
 ``help(lugre.fit)``).
 """
 
+import warnings as _warnings
+
+from . import chunk
 from ._lugre import (
     DYNAMICS_COLUMNS,
     DYNAMICS_FIELDS,
-    ChunkPlan,
-    ChunkRows,
-    ChunkSummary,
     Curve,
     Dahl,
     HysteresisLoop,
@@ -50,14 +56,6 @@ from ._lugre import (
     LuGre,
     TheoremA,
     __version__,
-    chunk_assemble,
-    chunk_bounds,
-    chunk_close,
-    chunk_count,
-    chunk_count_energy,
-    chunk_guess_entries,
-    chunk_history_energy,
-    chunk_merge,
     cycles,
     dynamics,
     fit,
@@ -67,11 +65,9 @@ from ._read import Columns, read
 __all__ = [
     "DYNAMICS_COLUMNS",
     "DYNAMICS_FIELDS",
-    "ChunkPlan",
-    "ChunkRows",
-    "ChunkSummary",
     "Columns",
     "Curve",
+    "CyclesResult",
     "Dahl",
     "DynamicsResult",
     "HysteresisLoop",
@@ -80,19 +76,42 @@ __all__ = [
     "LuGre",
     "TheoremA",
     "__version__",
-    "chunk_assemble",
-    "chunk_bounds",
-    "chunk_close",
-    "chunk_count",
-    "chunk_count_energy",
-    "chunk_guess_entries",
-    "chunk_history_energy",
-    "chunk_merge",
+    "chunk",
     "cycles",
     "dynamics",
     "fit",
     "read",
 ]
+
+
+def __getattr__(name):
+    """The chunk protocol's old top-level names (``lugre.chunk_count``, ...): deprecated
+    aliases of ``lugre.chunk``'s, kept for this release only (see CHANGELOG.md)."""
+    if name in chunk.__all__:
+        _warnings.warn(
+            f"lugre.{name} is deprecated and will be removed in the next release: "
+            f"use lugre.chunk.{name}",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return getattr(chunk, name)
+    raise AttributeError(f"module 'lugre' has no attribute {name!r}")
+
+
+class CyclesResult(dict):
+    """What ``lugre.cycles`` returns: a dict with "reversals" (columns "index", "u", or None),
+    "cycles" (the cycle table: one numpy array per column, all of one length) and "summary";
+    ``to_frame()`` gives the cycle table as a ``pandas.DataFrame`` (as
+    ``pandas.DataFrame(r["cycles"])``). Picklable like any dict."""
+
+    __slots__ = ()
+
+    def to_frame(self):
+        """The cycle table as a ``pandas.DataFrame``, one row per cycle in the order they
+        close (pandas is imported here, only)."""
+        import pandas as pd
+
+        return pd.DataFrame(self["cycles"])
 
 
 class DynamicsResult(dict):

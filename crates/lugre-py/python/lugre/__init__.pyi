@@ -1,5 +1,7 @@
 """Type stubs of the package `lugre` (defined in the compiled module `lugre._lugre`)."""
 
+from . import chunk as chunk
+
 from typing import (
     Any,
     Dict,
@@ -220,6 +222,8 @@ class Curve:
     @property
     def y(self) -> _Floats: ...
     def __iter__(self) -> Iterator[_Floats]: ...
+    def to_dict(self) -> dict[str, _Floats]: ...
+    def to_frame(self) -> Any: ...
 
 @type_check_only
 class LoopTable(TypedDict):
@@ -269,16 +273,15 @@ class CycleSummary(TypedDict):
     half_cycles: int
     energy: Optional[CycleTotals]
 
-@type_check_only
-class CyclesResult(TypedDict):
-    """The result of lugre.cycles (a dict at runtime). "cycles" maps each column name to a
-    numpy array (one row per cycle): float64 "range", "mean", "count"; int64 "start", "end";
-    unless closures=False, int64 "closure" and float64 "closure_position"; with a model,
-    float64 "work", "stored_energy_change", "dissipation", "closure_gap"."""
+class CyclesResult(Dict[str, Any]):
+    """The result of lugre.cycles: a dict with "reversals" (CycleReversals or None), "cycles"
+    (each column name to a numpy array, one row per cycle: float64 "range", "mean", "count";
+    int64 "start", "end"; unless closures=False, int64 "closure" and float64
+    "closure_position"; with a model, float64 "work", "stored_energy_change", "dissipation",
+    "closure_gap") and "summary" (CycleSummary). ``to_frame()`` gives the cycle table as a
+    ``pandas.DataFrame``."""
 
-    reversals: Optional[CycleReversals]
-    cycles: dict[str, npt.NDArray[Any]]
-    summary: CycleSummary
+    def to_frame(self) -> Any: ...
 
 def cycles(
     series: _Reals,
@@ -453,75 +456,4 @@ def dynamics(
     velocity located as events; ``scenario`` runs the experiments of Canudas de Wit et al.
     (1995) as presets whose fields the other keywords replace. Defaults: the core request's
     (mass 1 kg, 1001 samples, rtol 1e-8)."""
-    ...
-
-# The chunked rainflow count (core lugre::cycles::chunk), the pieces lugre.dask schedules.
-
-class ChunkSummary:
-    """What a chunk (or a run of adjacent chunks) tells the rest of the history: its ends,
-    extremes and irreducible residue. Picklable (``to_bytes``/``from_bytes``)."""
-
-    @property
-    def start(self) -> int: ...
-    @property
-    def end(self) -> int: ...
-    @property
-    def first(self) -> float: ...
-    @property
-    def last(self) -> float: ...
-    @property
-    def min(self) -> float: ...
-    @property
-    def max(self) -> float: ...
-    @property
-    def full_cycles(self) -> int: ...
-    @property
-    def residue_len(self) -> int: ...
-    def to_bytes(self) -> bytes: ...
-    @staticmethod
-    def from_bytes(data: bytes) -> ChunkSummary: ...
-
-class ChunkRows:
-    """A chunk's own rows, held in Rust between the count and the assembly. Picklable."""
-
-    def __len__(self) -> int: ...
-    def to_dict(self) -> dict[str, npt.NDArray[Any]]: ...
-    @staticmethod
-    def from_dict(columns: dict[str, npt.NDArray[Any]]) -> ChunkRows: ...
-
-class ChunkPlan:
-    """The driver's bookkeeping of a chunked count: open cycles, closures, energies, rows."""
-
-    def __init__(self, leaves: Sequence[ChunkSummary]) -> None: ...
-    def add_open(self, open: dict[str, npt.NDArray[Any]]) -> None: ...
-    def finish(self, root: ChunkSummary) -> CycleSummary: ...
-    def queries(self) -> list[Optional[dict[str, npt.NDArray[Any]]]]: ...
-    def resolve(self, found: dict[str, npt.NDArray[Any]]) -> None: ...
-    def energy_spans(self) -> list[Optional[dict[str, npt.NDArray[Any]]]]: ...
-    def attach_energy(self, model: Union[LuGre, Dahl], passes: Sequence[bytes]) -> None: ...
-    def extras(self, energy: bool = False) -> list[dict[str, Any]]: ...
-
-def chunk_count(samples: _Reals, offset: int) -> Tuple[ChunkSummary, ChunkRows]:
-    """A chunk's summary and its own rows (first sample at global index ``offset``)."""
-    ...
-def chunk_merge(left: ChunkSummary, right: ChunkSummary) -> Tuple[ChunkSummary, dict[str, npt.NDArray[Any]]]:
-    """The summary of two adjacent runs and the cycles only the two together complete."""
-    ...
-def chunk_close(samples: _Reals, offset: int, prev: Optional[float], queries: dict[str, npt.NDArray[Any]]) -> dict[str, npt.NDArray[Any]]:
-    """The closures of ``queries`` found in this chunk (``prev``: the sample before it)."""
-    ...
-def chunk_bounds(samples: _Reals, offset: int, prev: Optional[float], model: Union[LuGre, Dahl]) -> Tuple[float, float]:
-    """``y*`` at the chunk's last sample from the entry states ``+g0`` and ``-g0``."""
-    ...
-def chunk_guess_entries(model: Union[LuGre, Dahl], y_start: float, bounds: Sequence[Tuple[float, float]]) -> list[float]:
-    """Every chunk's guessed entry state (exact for chunk 0), to be verified in order."""
-    ...
-def chunk_count_energy(samples: _Reals, offset: int, prev: Optional[float], y_entry: float, model: Union[LuGre, Dahl], spans: Optional[dict[str, npt.NDArray[Any]]]) -> Tuple[ChunkRows, bytes, float]:
-    """A chunk's own rows with energies, its energy pass for the driver, ``y*`` at its end."""
-    ...
-def chunk_history_energy(model: Union[LuGre, Dahl], y_start: float, passes: Sequence[bytes]) -> dict[str, float]:
-    """The history's energy totals from every chunk's energy pass, in order."""
-    ...
-def chunk_assemble(own: ChunkRows, extras: dict[str, Any]) -> dict[str, npt.NDArray[Any]]:
-    """A chunk's rows in the single pass's order."""
     ...

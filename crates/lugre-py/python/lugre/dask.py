@@ -46,8 +46,8 @@ except ImportError as e:  # pragma: no cover - the message is the point
         "lugre.dask needs Dask: pip install 'lugre[dask]' (dask[distributed,dataframe])"
     ) from e
 
-from . import _lugre
 from ._read import read as _read
+from . import chunk as _chunk
 from . import cycles as _single_cycles
 from . import fit as _single_fit
 
@@ -141,6 +141,7 @@ def _from_array(x: Any) -> _Chunks:
             "lugre.dask: the dask array has unknown chunk sizes; call x.compute_chunk_sizes() first"
         )
     lengths = [int(n) for n in lengths]
+    _check_length(sum(lengths))
     for k, n in enumerate(lengths):
         if n == 0:
             a = sum(lengths[:k])
@@ -150,6 +151,16 @@ def _from_array(x: Any) -> _Chunks:
             )
     readers = [dask.delayed(_as_floats)(b) for b in x.to_delayed().ravel()]
     return _Chunks(readers, lengths, ["" for _ in lengths])
+
+
+def _check_length(total: int) -> None:
+    """A history of 0 or 1 samples is refused, with ``lugre.cycles``' own words (the core's one
+    rule, as ``lugre cycles`` and the C ABI refuse it)."""
+    if total < 2:
+        try:
+            _single_cycles(np.zeros(total), reversals=False)
+        except ValueError as e:
+            raise ValueError(f"lugre.dask: x: {e}") from None
 
 
 def _chunks_of(x: Any, check_order: bool) -> _Chunks:
@@ -175,15 +186,15 @@ def _in_chunk(where: str, f: Callable, *args: Any) -> Any:
 
 
 def _leaf(u: np.ndarray, offset: int, where: str, model: Any) -> tuple:
-    summary, rows = _in_chunk(where, _lugre.chunk_count, u, offset)
+    summary, rows = _in_chunk(where, _chunk.chunk_count, u, offset)
     bounds = None
     if model is not None:
         # The state at the chunk's end from both extremes over its last samples; the whole
         # chunk where these do not agree (a quiet stretch). A guess either way: verified.
         tail = max(len(u) - _TAIL, 0)
-        bounds = _in_chunk(where, _lugre.chunk_bounds, u[tail:], offset + tail, None, model)
+        bounds = _in_chunk(where, _chunk.chunk_bounds, u[tail:], offset + tail, None, model)
         if bounds[0] != bounds[1] and tail > 0:
-            bounds = _in_chunk(where, _lugre.chunk_bounds, u, offset, None, model)
+            bounds = _in_chunk(where, _chunk.chunk_bounds, u, offset, None, model)
         rows = None  # counted again with energies
     return summary, rows, bounds
 
@@ -196,18 +207,18 @@ def _merge(*summaries: Any) -> tuple:
     """Merges adjacent summaries left to right: the summary of all and the open cycles."""
     acc, opens = summaries[0], []
     for s in summaries[1:]:
-        acc, o = _lugre.chunk_merge(acc, s)
+        acc, o = _chunk.chunk_merge(acc, s)
         opens.append(o)
     return acc, opens
 
 
 def _close(u: np.ndarray, offset: int, prev: Optional[float], queries: dict, where: str) -> dict:
-    return _in_chunk(where, _lugre.chunk_close, u, offset, prev, queries)
+    return _in_chunk(where, _chunk.chunk_close, u, offset, prev, queries)
 
 
 def _energy(u: np.ndarray, offset: int, prev: Optional[float], y: float, model: Any,
             spans: Optional[dict], where: str) -> tuple:
-    return _in_chunk(where, _lugre.chunk_count_energy, u, offset, prev, y, model, spans)
+    return _in_chunk(where, _chunk.chunk_count_energy, u, offset, prev, y, model, spans)
 
 
 def _energy_small(t: tuple) -> tuple:
@@ -215,7 +226,7 @@ def _energy_small(t: tuple) -> tuple:
 
 
 def _assemble(own: dict, extras: dict, first_row: int, energy: bool) -> "pd.DataFrame":
-    rows = _lugre.chunk_assemble(own, extras)
+    rows = _chunk.chunk_assemble(own, extras)
     columns = _COLUMNS + (_ENERGY if energy else [])
     n = len(rows["range"])
     # copy=False: one block per column, as the arrays come (no consolidating copy).
@@ -284,6 +295,7 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
     chunks = _chunks_of(x, check_order)
     n = len(chunks)
     total = sum(chunks.lengths)
+    _check_length(total)
     energy = model is not None
     stages: dict[str, float] = {}
 
@@ -297,15 +309,9 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
     stages["count"] = time.perf_counter() - tic
 
     tic = time.perf_counter()
-    if total < 2:
-        # One sample: what lugre.cycles says of it (no rows).
-        r = _single_cycles(np.zeros(total), 0.0, model, x0, reversals=False)
-        df = dd.from_pandas(_meta(energy), npartitions=1)
-        return {"cycles": df, "summary": r["summary"], "chunks": n, "stages": stages,
-                "entries": None}
     root, opens = _merge_tree(summaries, merge_fan_in)
     root_v, opens_v = dask.compute(root, opens, optimize_graph=False)
-    plan = _lugre.ChunkPlan(list(summaries_v))
+    plan = _chunk.ChunkPlan(list(summaries_v))
     for group in opens_v:
         for o in group:
             plan.add_open(o)
@@ -326,7 +332,7 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
         tic = time.perf_counter()
         spans = plan.energy_spans()
         y0 = model.sigma0 * x0
-        guesses = _lugre.chunk_guess_entries(model, y0, list(bounds_v))
+        guesses = _chunk.chunk_guess_entries(model, y0, list(bounds_v))
 
         def energy_task(k: int, y: float) -> Any:
             return dask.delayed(_energy)(
@@ -349,7 +355,7 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
             small[k] = dask.compute(dask.delayed(_energy_small)(passes[k]),
                                     optimize_graph=False)[0]
         plan.attach_energy(model, [s[0] for s in small])
-        summary["energy"] = _lugre.chunk_history_energy(model, y0, [s[0] for s in small])
+        summary["energy"] = _chunk.chunk_history_energy(model, y0, [s[0] for s in small])
         own = [dask.delayed(_pick)(p, 0) for p in passes]
         entries = {"held": held, "chunks": n - 1}
         stages["energies"] = time.perf_counter() - tic

@@ -3,8 +3,8 @@
 //!
 //! A history is a sequence of samples `u_0, u_1, ...`, joined by straight lines. Everything is
 //! computed in one streaming pass with memory bounded by the rainflow stack (the open
-//! reversals), so histories of any length can be fed as they are read ([`CycleCounter`],
-//! [`EnergyCycleCounter`]; blocks of a few thousand samples through `push_all` are fastest,
+//! reversals), so histories of any length can be fed as they are read ([`CycleCounter`], with
+//! or without energies; blocks of a few thousand samples through `push_all` are fastest,
 //! and fastest of all without gate and energies into [`CycleColumns`]: BENCHMARKS.md);
 //! [`count_cycles`] and [`count_cycles_with_energy`] take a slice.
 //!
@@ -91,7 +91,8 @@ use crate::error::HistoryError;
 use crate::kernel::ArcEnergy;
 use crate::model::RateIndependent;
 pub(crate) use energy::{CutSums, EnergyTrack};
-use engine::{Engine, NoTrack};
+pub(crate) use engine::Engine;
+use engine::NoTrack;
 
 /// A reversal: its sample index and value.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -212,120 +213,129 @@ impl CycleSink for Collect {
     }
 }
 
-/// Streaming rainflow counter: push samples one at a time, then finish.
+/// Streaming rainflow counter: push samples (in blocks, or one at a time), then finish.
+/// [`CycleCounter::new`] counts; [`CycleCounter::with_energy`] also follows `y*` and reports
+/// each full cycle's energies. The two are one type, so a caller with an optional model builds
+/// one counter and feeds it the same way.
+///
+/// ```
+/// use lugre::cycles::Collect;
+/// use lugre::{CycleCounter, LuGre};
+///
+/// let model = Some(LuGre::paper().rate_independent());
+/// let mut counter = CycleCounter::new(0.0)?.with_energy(model, 0.0)?;
+/// let mut sink = Collect::default();
+/// counter.push_all(&[0.0, 2.0, 1.0, 3.0, 0.0], &mut sink)?;
+/// let summary = counter.finish(&mut sink)?;
+/// assert_eq!(summary.full_cycles, 1);
+/// assert!(sink.cycles.iter().any(|c| c.energy.is_some()));
+/// assert!(summary.energy.is_some());
+/// # Ok::<(), lugre::HistoryError>(())
+/// ```
 #[derive(Debug, Clone)]
 pub struct CycleCounter {
-    engine: Engine<NoTrack>,
+    engine: Counting,
+}
+
+/// The engine of a [`CycleCounter`]: counting only (the block paths), or with the energies
+/// (the per-sample walk). Chosen once, before the first sample; each call dispatches once.
+#[derive(Debug, Clone)]
+enum Counting {
+    Plain(Engine<NoTrack>),
+    Energy(Box<Engine<EnergyTrack>>),
 }
 
 impl CycleCounter {
     /// A counter with noise gate `gate` (finite, `>= 0`; 0 is no gate).
     pub fn new(gate: f64) -> Result<Self, HistoryError> {
         Ok(Self {
-            engine: Engine::new(gate, NoTrack)?,
+            engine: Counting::Plain(Engine::new(gate, NoTrack)?),
+        })
+    }
+
+    /// The counter with the energies of `model` (when given) from the initial state `x0`
+    /// (`y*(0) = sigma0 x0`, with `|sigma0 x0| <= g(0)`): `y*` is followed along the history
+    /// and every full cycle carries its energies, the summary the totals. `None` leaves the
+    /// counter as it is (`x0` unused). Call it before the first sample: the energies start at
+    /// the first sample (a counter that has taken samples is refused).
+    pub fn with_energy(
+        self,
+        model: impl Into<Option<RateIndependent>>,
+        x0: f64,
+    ) -> Result<Self, HistoryError> {
+        let Some(model) = model.into() else {
+            return Ok(self);
+        };
+        let (gate, origin, taken) = match &self.engine {
+            Counting::Plain(e) => (e.gate(), e.origin(), e.taken()),
+            Counting::Energy(e) => (e.gate(), e.origin(), e.taken()),
+        };
+        if taken > 0 {
+            return Err(HistoryError::EnergyAfterStart { samples: taken });
+        }
+        let engine = Engine::new(gate, EnergyTrack::new(model, x0)?)?.with_origin(origin);
+        Ok(Self {
+            engine: Counting::Energy(Box::new(engine)),
         })
     }
 
     /// A counter for a chunk whose first sample is sample `origin` of a longer history: its
     /// indices, closures and errors are the history's.
     pub(crate) fn with_origin(self, origin: u64) -> Self {
-        Self {
-            engine: self.engine.with_origin(origin),
+        let engine = match self.engine {
+            Counting::Plain(e) => Counting::Plain(e.with_origin(origin)),
+            Counting::Energy(e) => Counting::Energy(Box::new(e.with_origin(origin))),
+        };
+        Self { engine }
+    }
+
+    /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).
+    #[inline]
+    pub fn push(&mut self, u: f64, sink: &mut impl CycleSink) -> Result<(), HistoryError> {
+        self.push_all(std::slice::from_ref(&u), sink)
+    }
+
+    /// Takes the next samples (faster than one at a time: feed blocks of a few thousand).
+    #[inline]
+    pub fn push_all(&mut self, u: &[f64], sink: &mut impl CycleSink) -> Result<(), HistoryError> {
+        match &mut self.engine {
+            Counting::Plain(e) => e.push_slice(u, sink),
+            Counting::Energy(e) => e.push_slice(u, sink),
         }
     }
 
-    /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).
-    #[inline]
-    pub fn push(&mut self, u: f64, sink: &mut impl CycleSink) -> Result<(), HistoryError> {
-        self.engine.push_slice(std::slice::from_ref(&u), sink)
-    }
-
-    /// Takes the next samples (faster than one at a time: feed blocks of a few thousand).
-    pub fn push_all(&mut self, u: &[f64], sink: &mut impl CycleSink) -> Result<(), HistoryError> {
-        self.engine.push_slice(u, sink)
-    }
-
     /// Ends the history (at least 2 samples): the last reversal and the residue's half cycles
-    /// go to `sink`.
+    /// go to `sink`; with energies, the summary has the totals along the whole history.
     pub fn finish(self, sink: &mut impl CycleSink) -> Result<CycleSummary, HistoryError> {
-        let c = self.engine.finish(sink)?;
-        Ok(CycleSummary {
-            samples: c.samples,
-            reversals: c.reversals,
-            full_cycles: c.full,
-            half_cycles: c.half,
-            energy: None,
-        })
+        match self.engine {
+            Counting::Plain(e) => Ok(e.finish(sink)?.summary(None)),
+            Counting::Energy(e) => {
+                let counts = e.finish(sink)?;
+                let energy = counts.track.summary();
+                Ok(counts.summary(Some(energy)))
+            }
+        }
     }
 }
 
-/// Streaming rainflow counter that also follows `y*` and reports each full cycle's energies.
-#[derive(Debug, Clone)]
-pub struct EnergyCycleCounter {
-    engine: Engine<EnergyTrack>,
-}
-
-impl EnergyCycleCounter {
-    /// A counter with noise gate `gate` for `model`, from the initial state `x0`
-    /// (`y*(0) = sigma0 x0`, which must be finite).
-    pub fn new(gate: f64, model: RateIndependent, x0: f64) -> Result<Self, HistoryError> {
-        Ok(Self {
-            engine: Engine::new(gate, EnergyTrack::new(model, x0)?)?,
-        })
+/// Checks a whole history as a count of it would, before counting: every sample finite with
+/// `|u| <=` [`MAX_SAMPLE`], then at least 2 samples. The same errors, in the same order, as
+/// [`CycleCounter`] gives on `u`: one rule for every front end (a history of 0 or 1 samples
+/// has no range and is refused, where the `rainflow` package returns nothing).
+pub fn check_history(u: &[f64]) -> Result<(), HistoryError> {
+    if let Some(k) = u.iter().position(|&x| !engine::admissible(x)) {
+        return Err(engine::bad_sample(k as u64, u[k]));
     }
-
-    /// A counter (no gate) for a chunk whose first sample is sample `origin` of a longer
-    /// history, with the chunk's track ([`EnergyTrack::for_chunk`]).
-    pub(crate) fn for_chunk(track: EnergyTrack, origin: u64) -> Result<Self, HistoryError> {
-        Ok(Self {
-            engine: Engine::new(0.0, track)?.with_origin(origin),
-        })
-    }
-
-    /// Ends a chunk's count: its rows go to `sink`; returns its track.
-    pub(crate) fn finish_chunk(
-        self,
-        sink: &mut impl CycleSink,
-    ) -> Result<EnergyTrack, HistoryError> {
-        Ok(self.engine.finish(sink)?.track)
-    }
-
-    /// Takes the next sample (finite, `|u| <= f64::MAX / 2`).
-    #[inline]
-    pub fn push(&mut self, u: f64, sink: &mut impl CycleSink) -> Result<(), HistoryError> {
-        self.engine.push_slice(std::slice::from_ref(&u), sink)
-    }
-
-    /// Takes the next samples (faster than one at a time: feed blocks of a few thousand).
-    pub fn push_all(&mut self, u: &[f64], sink: &mut impl CycleSink) -> Result<(), HistoryError> {
-        self.engine.push_slice(u, sink)
-    }
-
-    /// Ends the history (at least 2 samples), as [`CycleCounter::finish`], with the energy
-    /// totals along the whole history.
-    pub fn finish(self, sink: &mut impl CycleSink) -> Result<CycleSummary, HistoryError> {
-        let c = self.engine.finish(sink)?;
-        Ok(CycleSummary {
-            samples: c.samples,
-            reversals: c.reversals,
-            full_cycles: c.full,
-            half_cycles: c.half,
-            energy: Some(c.track.summary()),
-        })
+    match u.len() {
+        0 => Err(HistoryError::Empty),
+        1 => Err(HistoryError::TooShort { samples: 1 }),
+        _ => Ok(()),
     }
 }
 
 /// Reversals and rainflow cycles of the history `u` with noise gate `gate`.
 pub fn count_cycles(u: &[f64], gate: f64) -> Result<History, HistoryError> {
-    let mut sink = Collect::default();
-    let mut counter = CycleCounter::new(gate)?;
-    counter.push_all(u, &mut sink)?;
-    let summary = counter.finish(&mut sink)?;
-    Ok(History {
-        reversals: sink.reversals,
-        cycles: sink.cycles,
-        summary,
-    })
+    count_with(CycleCounter::new(gate)?, u)
 }
 
 /// [`count_cycles`] with `y*` for `model` from `x0` and the energies of every full cycle.
@@ -335,8 +345,12 @@ pub fn count_cycles_with_energy(
     model: RateIndependent,
     x0: f64,
 ) -> Result<History, HistoryError> {
+    count_with(CycleCounter::new(gate)?.with_energy(model, x0)?, u)
+}
+
+/// Everything `counter` reports on the history `u`.
+fn count_with(mut counter: CycleCounter, u: &[f64]) -> Result<History, HistoryError> {
     let mut sink = Collect::default();
-    let mut counter = EnergyCycleCounter::new(gate, model, x0)?;
     counter.push_all(u, &mut sink)?;
     let summary = counter.finish(&mut sink)?;
     Ok(History {

@@ -284,7 +284,10 @@ fn streaming_in_pieces_gives_the_same_cycles() {
     let whole =
         count_cycles_with_energy(&u, 0.1, crate::LuGre::paper().rate_independent(), 0.0).unwrap();
     let model = crate::LuGre::paper().rate_independent();
-    let mut counter = EnergyCycleCounter::new(0.1, model, 0.0).unwrap();
+    let mut counter = CycleCounter::new(0.1)
+        .unwrap()
+        .with_energy(model, 0.0)
+        .unwrap();
     let mut cycles: Vec<Cycle> = Vec::new();
     for chunk in u.chunks(37) {
         for &x in chunk {
@@ -522,6 +525,31 @@ fn periodic_history_agrees_with_the_loop() {
     }
 }
 
+/// One counter: `with_energy(None, _)` leaves it counting only (the same rows, no energies),
+/// a model given after the first sample is refused (the energies start at the first one).
+#[test]
+fn one_counter_with_or_without_a_model() {
+    let u = [0.0, 2.0, 1.0, 3.0, -1.0];
+    let plain = count_cycles(&u, 0.0).unwrap();
+    let mut sink = Collect::default();
+    let mut counter = CycleCounter::new(0.0)
+        .unwrap()
+        .with_energy(None, f64::NAN)
+        .unwrap();
+    counter.push_all(&u, &mut sink).unwrap();
+    assert_eq!(counter.finish(&mut sink).unwrap(), plain.summary);
+    assert_eq!(sink.cycles, plain.cycles);
+    let model = crate::RateIndependent::new(2.0, 1.0).unwrap();
+    let mut counter = CycleCounter::new(0.0).unwrap();
+    counter.push(0.0, &mut sink).unwrap();
+    assert_eq!(
+        counter.with_energy(model, 0.0).unwrap_err(),
+        HistoryError::EnergyAfterStart { samples: 1 }
+    );
+    let e = CycleCounter::new(0.0).unwrap().with_energy(model, 0.6);
+    assert!(matches!(e, Err(HistoryError::BadInitialState { .. })));
+}
+
 #[test]
 fn errors_name_the_offending_value() {
     assert_eq!(count_cycles(&[], 0.0).unwrap_err(), HistoryError::Empty);
@@ -531,15 +559,19 @@ fn errors_name_the_offending_value() {
     );
     assert!(matches!(
         count_cycles(&[0.0, 1.0, f64::NAN], 0.0).unwrap_err(),
-        HistoryError::NotFinite { index: 2, .. }
+        HistoryError::Data(crate::DataError::NotFinite { index: 2, .. })
     ));
+    let e = count_cycles(&[0.0, f64::NEG_INFINITY], 0.0).unwrap_err();
     assert_eq!(
-        count_cycles(&[0.0, f64::NEG_INFINITY], 0.0).unwrap_err(),
-        HistoryError::NotFinite {
+        e,
+        HistoryError::Data(crate::DataError::NotFinite {
+            what: "u",
             index: 1,
             value: f64::NEG_INFINITY
-        }
+        })
     );
+    // The wording every front end shares.
+    assert_eq!(e.to_string(), "u[1] must be a finite number, got -inf");
     assert_eq!(
         count_cycles(&[0.0, 1e308], 0.0).unwrap_err(),
         HistoryError::TooLarge {
@@ -805,7 +837,10 @@ fn columns_with_energies() {
     let model = crate::LuGre::paper().rate_independent();
     let h = count_cycles_with_energy(&u, 0.05, model, 0.1).unwrap();
     let mut columns = CycleColumns::new().with_energy(true);
-    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    let mut counter = CycleCounter::new(0.05)
+        .unwrap()
+        .with_energy(model, 0.1)
+        .unwrap();
     counter.push_all(&u, &mut columns).unwrap();
     assert_eq!(counter.finish(&mut columns).unwrap(), h.summary);
     let want = expected_columns(&h, &CycleColumns::new().with_energy(true));
@@ -815,7 +850,10 @@ fn columns_with_energies() {
     let filled = column_rows(&columns);
     columns.clear();
     assert!(columns.is_empty() && columns.reversal_u.is_empty() && columns.work.is_empty());
-    let mut counter = EnergyCycleCounter::new(0.05, model, 0.1).unwrap();
+    let mut counter = CycleCounter::new(0.05)
+        .unwrap()
+        .with_energy(model, 0.1)
+        .unwrap();
     counter.push_all(&u, &mut columns).unwrap();
     counter.finish(&mut columns).unwrap();
     assert_eq!(column_rows(&columns), filled);

@@ -26,9 +26,9 @@ use crate::simulate::uniform_times;
 type Result<T> = std::result::Result<T, Error>;
 
 /// Outputs over the run from which the loops are taken.
-pub const LOOP_SAMPLES: usize = 20_000;
+pub(crate) const LOOP_SAMPLES: usize = 20_000;
 /// Reversals of `x` smaller than this fraction of its span are ringing, not loops.
-pub const GATE: f64 = 1e-3;
+pub(crate) const GATE: f64 = 1e-3;
 
 /// One closed friction-displacement loop.
 #[derive(Debug, Clone, PartialEq)]

@@ -45,7 +45,7 @@ mod scenario;
 mod solver;
 
 pub use crate::error::Field;
-pub use loops::{FrictionLoop, GATE as LOOP_GATE, LOOP_SAMPLES};
+pub use loops::FrictionLoop;
 pub use profile::{Profile, Steps};
 pub use request::{Outcome, Plan, Request};
 pub use scenario::{Scenario, Setup};

@@ -357,6 +357,8 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             }
             if bound >= t_end {
                 run.out.energy.stored_end = self.stored(t, &y);
+                // Times within rounding past the end (`check_output_times`): the end's state.
+                run.report_until(f64::INFINITY, &y, s, None);
             }
             if bound < t_end {
                 run.out.events.push(Event {
@@ -851,24 +853,7 @@ fn check_times(t0: f64, t_end: f64, times: &[f64]) -> Result<(), DynamicsError> 
             value: t_end - t0,
         });
     }
-    for (index, &value) in times.iter().enumerate() {
-        if !(value.is_finite() && (t0..=t_end).contains(&value)) {
-            return Err(DynamicsError::TimeOutOfRange {
-                index,
-                value,
-                t0,
-                t_end,
-            });
-        }
-        if index > 0 && value <= times[index - 1] {
-            return Err(DynamicsError::TimesNotIncreasing {
-                index,
-                prev: times[index - 1],
-                value,
-            });
-        }
-    }
-    Ok(())
+    Ok(crate::input::check_output_times(times, t0, t_end)?)
 }
 
 fn check_finite(t: f64, y: &[f64; N]) -> Result<(), DynamicsError> {

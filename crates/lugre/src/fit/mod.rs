@@ -39,7 +39,7 @@
 //! **Uncertainty** (eqs. S1-S2 in `fit/stats.rs`): the linearised covariance
 //! `s^2 (J^T J)^-1` at the optimum, `s^2 = RSS / (m - p)`, and 95 % intervals
 //! `p -+ t_{0.975, m-p} se` with Student's t quantile on `m - p` degrees of freedom
-//! ([`t_quantile_975`]; 1.96 for large samples). They assume independent errors of equal
+//! (`stats::t_quantile_975`; 1.96 for large samples). They assume independent errors of equal
 //! variance on `F` and a correct model, and are symmetric in the parameter itself. On
 //! synthetic data with 1 % noise they cover the truth at their nominal rate (the ignored test
 //! `intervals_cover_the_truth_at_their_nominal_rate`).
@@ -86,8 +86,7 @@ mod stats;
 
 pub use crate::error::{FitError, Unidentified, Why};
 pub use lm::FitProgress;
-pub use spec::{Bounds, Family, FitKind, FitSpec, DAHL_PARAMETERS, LUGRE_PARAMETERS};
-pub use stats::{t_quantile_975, CONDITION_LIMIT, NO_EFFECT};
+pub use spec::{Bounds, Family, FitKind, FitSpec};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
@@ -238,7 +237,7 @@ impl<'p> FullOptions<'p> {
 }
 
 /// The fit needs at least this many samples, and twice as many as free parameters.
-pub const MIN_SAMPLES: usize = 10;
+pub(crate) const MIN_SAMPLES: usize = 10;
 
 /// A slow fit of more samples than this first iterates on about [`COARSE_SAMPLES`] of them.
 const COARSE_ABOVE: usize = 32_768;

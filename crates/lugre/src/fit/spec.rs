@@ -5,10 +5,10 @@ use crate::error::FitError;
 use crate::model::{LuGreParams, Parameter};
 
 /// The LuGre parameters' names, in the order of [`LuGreParams`] ([`Parameter::LUGRE`]).
-pub const LUGRE_PARAMETERS: [&str; 7] = names(Parameter::LUGRE);
+pub(crate) const LUGRE_PARAMETERS: [&str; 7] = names(Parameter::LUGRE);
 
 /// The Dahl parameters' names ([`Parameter::DAHL`]).
-pub const DAHL_PARAMETERS: [&str; 2] = names(Parameter::DAHL);
+pub(crate) const DAHL_PARAMETERS: [&str; 2] = names(Parameter::DAHL);
 
 const fn names<const N: usize>(ps: [Parameter; N]) -> [&'static str; N] {
     let mut out = [""; N];
@@ -107,7 +107,7 @@ pub struct Bounds {
 }
 
 impl Bounds {
-    pub const POSITIVE: Bounds = Bounds {
+    pub(crate) const POSITIVE: Bounds = Bounds {
         lo: 0.0,
         hi: f64::INFINITY,
     };

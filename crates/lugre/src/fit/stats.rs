@@ -33,10 +33,10 @@ use crate::error::{FitError, Unidentified, Why};
 use nalgebra::{DMatrix, SymmetricEigen};
 
 /// A column this small relative to the data (`|p_j J_j| / |F|`) is no effect at all.
-pub const NO_EFFECT: f64 = 1e-12;
+pub(crate) const NO_EFFECT: f64 = 1e-12;
 
 /// Largest condition number of the scaled normal matrix accepted.
-pub const CONDITION_LIMIT: f64 = 1e10;
+pub(crate) const CONDITION_LIMIT: f64 = 1e10;
 
 /// Weight in the near-null combination above which a parameter is named as collinear.
 const COLLINEAR_WEIGHT: f64 = 0.2;
@@ -185,7 +185,7 @@ pub(crate) fn uncertainty(
 /// Hill's approximation (G. W. Hill, "Algorithm 396: Student's t-quantiles", CACM 13, 1970),
 /// within 2e-6 relative for every `dof` (checked against mpmath below); 1.96 (the normal
 /// quantile) in the limit.
-pub fn t_quantile_975(dof: f64) -> f64 {
+pub(crate) fn t_quantile_975(dof: f64) -> f64 {
     // Two-sided tail probability.
     const P: f64 = 0.05;
     // The standard normal's 2.5 % quantile (lower tail), mpmath.

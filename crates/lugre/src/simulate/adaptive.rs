@@ -134,7 +134,8 @@ impl Integrator {
         }
     }
 
-    /// Steps accepted and rejected so far.
+    /// Steps accepted and rejected so far (what the tests check the controller by).
+    #[cfg(test)]
     pub fn steps(&self) -> (u64, u64) {
         (self.accepted, self.rejected)
     }

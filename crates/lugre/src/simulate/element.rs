@@ -143,7 +143,12 @@ impl<G: VelocityFn, F: VelocityFn> FrictionElement<G, F> {
     /// At rest at time `t`, displacement `x`, deflection `z0`, and make that the reset point.
     pub fn reset_to(&mut self, t: f64, x: f64, z0: f64) -> Result<(), SimulateError> {
         if !t.is_finite() {
-            return Err(SimulateError::TimeNotFinite { index: 0, value: t });
+            return Err(crate::DataError::NotFinite {
+                what: "t",
+                index: 0,
+                value: t,
+            }
+            .into());
         }
         self.now = rest(&self.model, t, x, z0)?;
         self.start = (t, x, z0);

@@ -10,8 +10,8 @@
 //!
 //! `x` is exact: between reversals it is the kernel's `relax` in the variable
 //! `u` (the Dahl model is rate independent). `y` is the linear ODE `y' = -y + x(t)`, integrated
-//! by the adaptive method of [`super::adaptive`] with a stop at every reversal, where `x` has a
-//! kink in its second derivative.
+//! by the adaptive method of [`Simulator::sine`](super::Simulator::sine) with a stop at every
+//! reversal, where `x` has a kink in its second derivative.
 //!
 //! The steady state is the periodic solution, from the fixed point of the period map, which is
 //! affine: `x(T) = exp(-4) x(0) + X` (the input travels 4 per period) and

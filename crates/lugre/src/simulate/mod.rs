@@ -17,7 +17,9 @@
 //!   where `u' = v` is constant eq. 5 is linear with constant coefficients, and
 //!   the kernel's `relax` gives its solution at any stiffness, with no step-size limit.
 //! * [`Sine`] inputs are integrated by an adaptive, L-stable method with a user tolerance
-//!   ([`adaptive`]), except for `gamma = inf`, where eq. 6 is again closed form.
+//!   ([`Simulator::sine`]; the method, Radau IIA with step doubling, in
+//!   `docs/mathematics.md`, "Sines: adaptive Radau IIA"), except for `gamma = inf`, where eq. 6
+//!   is again closed form.
 //!
 //! The output `y` jumps where `u'` does (through the `(sigma1 / gamma) z'` and `f` terms): at a
 //! kink the value **just after** it is reported. At the end of a piecewise-linear input that
@@ -55,7 +57,7 @@
 //! assert!(gap < 0.3); // O(1 / gamma)
 //! ```
 
-pub mod adaptive;
+pub(crate) mod adaptive;
 mod element;
 pub mod exact;
 pub mod example1;
@@ -235,32 +237,10 @@ impl Trajectory {
     }
 }
 
-/// Checks output times: finite, strictly increasing, inside `[start, end]`.
+/// Checks output times: finite, strictly increasing, inside `[start, end]` (the one rule of
+/// [`crate::input::check_output_times`]).
 pub(crate) fn check_output_times(times: &[f64], start: f64, end: f64) -> Result<(), SimulateError> {
-    for (index, &value) in times.iter().enumerate() {
-        if !value.is_finite() {
-            return Err(SimulateError::TimeNotFinite { index, value });
-        }
-        if index > 0 && value <= times[index - 1] {
-            return Err(SimulateError::TimesNotIncreasing {
-                index,
-                prev: times[index - 1],
-                value,
-            });
-        }
-        // The run's end is computed (e.g. 3 x 4.6 = 13.799999999999999): a time the user wrote
-        // as the end is within a few ulps of it and belongs to the run.
-        let slack = 8.0 * f64::EPSILON * start.abs().max(end.abs()).max(end - start);
-        if value < start - slack || value > end + slack {
-            return Err(SimulateError::TimeOutOfRange {
-                index,
-                value,
-                start,
-                end,
-            });
-        }
-    }
-    Ok(())
+    Ok(crate::input::check_output_times(times, start, end)?)
 }
 
 /// `per_period` evenly spaced times per period over `periods` periods from `start`, both ends

@@ -156,7 +156,7 @@ fn data(e: crate::error::DataError) -> SimulateError {
 /// Shape-preserving slopes: 0 where the data reverse, else the three-point (Bessel) slope
 /// limited to three times the smaller neighbouring secant (Hyman's monotonicity filter); at the
 /// ends SciPy's `PchipInterpolator` three-point condition.
-pub fn pchip_slopes(t: &[f64], x: &[f64]) -> Vec<f64> {
+pub(crate) fn pchip_slopes(t: &[f64], x: &[f64]) -> Vec<f64> {
     let n = t.len();
     let h: Vec<f64> = (0..n - 1).map(|k| t[k + 1] - t[k]).collect();
     let d: Vec<f64> = (0..n - 1).map(|k| (x[k + 1] - x[k]) / h[k]).collect();

@@ -17,17 +17,15 @@
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
-use lugre::cycles::MAX_SAMPLE;
-use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter, Histogram};
+use lugre::{CycleCounter, CycleSink, CycleSummary, Histogram};
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
 use crate::args::{check_files, ModelArgs, ModelChoice, Needed, OutputArgs};
-use crate::fmt::num;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::spool::Spool;
-use crate::numbers::{parse_list, Real, Whole};
+use crate::numbers::{parse_series, Real, Whole};
 
 mod passes;
 mod report;
@@ -35,7 +33,7 @@ mod source;
 
 use passes::{FirstPass, SecondPass};
 use report::Report;
-use source::{Counter, Source};
+use source::Source;
 
 /// Rows of the cycle table printed before the rest is summarised (all of it is in --json and
 /// --csv).
@@ -146,15 +144,11 @@ struct Request<'a> {
 }
 
 impl Request<'_> {
-    fn counter(&self) -> Result<Counter> {
-        Ok(match &self.energy {
-            Some(e) => Counter::Energy(Box::new(EnergyCycleCounter::new(
-                self.gate,
-                e.model.rate_independent(),
-                e.x0,
-            )?)),
-            None => Counter::Plain(CycleCounter::new(self.gate)?),
-        })
+    /// The counter, with the energies of the model when one is named.
+    fn counter(&self) -> Result<CycleCounter, lugre::HistoryError> {
+        let model = self.energy.as_ref().map(|e| e.model.rate_independent());
+        let x0 = self.energy.as_ref().map_or(0.0, |e| e.x0);
+        CycleCounter::new(self.gate)?.with_energy(model, x0)
     }
 
     /// A counter's error, naming the input.
@@ -259,13 +253,14 @@ pub(crate) fn run(args: &CyclesArgs) -> Result<()> {
 fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
     let gate = args.gate.unwrap_or(0.0);
     // Validated here so that a bad flag is reported before any input is read.
-    CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
+    let counter = CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
     let energy = if args.wants_energy() {
         // Values given are checked first, then that the model is named.
         let model = args.model.build()?;
         args.model.check_named(Needed::RateIndependent)?;
         let x0 = args.x0.unwrap_or(0.0);
-        EnergyCycleCounter::new(gate, model.rate_independent(), x0)
+        counter
+            .with_energy(model.rate_independent(), x0)
             .map_err(|e| anyhow!("--x0: {e}"))?;
         Some(Energy { model, x0 })
     } else {
@@ -285,16 +280,9 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
                 .options(&[lugre_io::Role::U, lugre_io::Role::of(column)])?,
         },
         (None, Some(text)) => {
-            let u = parse_list("--values", text)?;
-            // Finite already (parse_list checks).
-            if let Some(k) = u.iter().position(|v| v.abs() > MAX_SAMPLE) {
-                bail!(
-                    "--values: item {} is {}, which is too large (|u| must be at most {})",
-                    k + 1,
-                    num(u[k]),
-                    num(MAX_SAMPLE)
-                );
-            }
+            // Judged by the library, as `lugre.cycles` and the C ABI judge the same series.
+            let u = parse_series("--values", text)?;
+            lugre::cycles::check_history(&u).map_err(|e| anyhow!("--values: {e}"))?;
             Source::Values(u)
         }
         _ => bail!("no input: give --input FILE.csv or --values V0,V1,..."),

@@ -1,9 +1,7 @@
-//! Where the samples come from (a CSV file, streamed, or `--values`), and the counter they go
-//! to (with or without energies).
+//! Where the samples come from (a CSV file, streamed, or `--values`).
 
 use anyhow::{bail, Result};
 use lugre::cycles::MAX_SAMPLE;
-use lugre::{CycleCounter, CycleSink, CycleSummary, EnergyCycleCounter};
 use std::path::Path;
 
 use crate::fmt::num;
@@ -79,35 +77,6 @@ impl Source<'_> {
                 }
                 Ok(())
             }
-        }
-    }
-}
-
-/// The counter, with or without energies.
-pub(super) enum Counter {
-    Plain(CycleCounter),
-    Energy(Box<EnergyCycleCounter>),
-}
-
-impl Counter {
-    pub(super) fn push_all(
-        &mut self,
-        u: &[f64],
-        sink: &mut impl CycleSink,
-    ) -> Result<(), lugre::HistoryError> {
-        match self {
-            Counter::Plain(c) => c.push_all(u, sink),
-            Counter::Energy(c) => c.push_all(u, sink),
-        }
-    }
-
-    pub(super) fn finish(
-        self,
-        sink: &mut impl CycleSink,
-    ) -> Result<CycleSummary, lugre::HistoryError> {
-        match self {
-            Counter::Plain(c) => c.finish(sink),
-            Counter::Energy(c) => c.finish(sink),
         }
     }
 }

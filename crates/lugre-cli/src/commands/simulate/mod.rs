@@ -233,9 +233,8 @@ fn compute(r: &Request) -> Result<Trajectory> {
     };
     progress.finish();
     let out = result.map_err(|e| match &e {
-        SimulateError::TimeOutOfRange { .. }
-        | SimulateError::TimesNotIncreasing { .. }
-        | SimulateError::TimeNotFinite { .. } => anyhow!("--times: {e}"),
+        // Only the output times are checked as data by the run itself.
+        SimulateError::Data(_) => anyhow!("--times: {e}"),
         SimulateError::NotClosed { .. } => anyhow!("--periods: {e}"),
         _ => anyhow!("{e}"),
     })?;

@@ -33,9 +33,7 @@
 
 use super::super::engine::Track;
 use super::super::engine::{admissible, bad_sample, closure_at};
-use super::super::{
-    CutSums, CycleColumns, CycleEnergy, EnergyCycleCounter, EnergyTrack, HistoryEnergy,
-};
+use super::super::{CutSums, CycleColumns, CycleEnergy, EnergyTrack, Engine, HistoryEnergy};
 use super::Reader;
 use crate::error::HistoryError;
 use crate::kernel::arc::{arc_energy, Sums, LANES};
@@ -69,6 +67,19 @@ impl std::ops::Add for ArcSums {
     }
 }
 
+/// Checks that `y` (the argument `name`) is a state `y*` can hold: finite, `|y| <= g0`.
+fn check_state(name: &'static str, y: f64, model: RateIndependent) -> Result<(), HistoryError> {
+    if y.abs() <= model.g0() {
+        Ok(())
+    } else {
+        Err(HistoryError::BadEntryState {
+            name,
+            value: y,
+            g0: model.g0(),
+        })
+    }
+}
+
 /// `y*` after the piece from `from` to `to` entered at `y` (the single pass's step).
 #[inline]
 fn advance(model: RateIndependent, y: f64, from: f64, to: f64) -> f64 {
@@ -86,6 +97,8 @@ pub fn state_bounds(
     prev: Option<f64>,
     model: RateIndependent,
 ) -> Result<StateBounds, HistoryError> {
+    super::check_offset(offset, u.len())?;
+    super::check_prev(offset, prev)?;
     let g0 = model.g0();
     let (mut upper, mut lower) = (g0, -g0);
     let mut from = prev;
@@ -110,9 +123,27 @@ pub fn state_bounds(
 
 /// Guesses of every chunk's entry state (chunk 0: `y_start`, exact) from the chunks'
 /// [`state_bounds`] (in order; the last one is not needed): the certified value where the
-/// bounds agree, else the affine interpolation between them at the previous guess.
-pub fn guess_entries(model: RateIndependent, y_start: f64, bounds: &[StateBounds]) -> Vec<f64> {
+/// bounds agree, else the affine interpolation between them at the previous guess (clamped to
+/// `[-g0, g0]`). `y_start` must be a state `y*` can hold (finite, in `[-g0, g0]`), the bounds
+/// finite.
+pub fn guess_entries(
+    model: RateIndependent,
+    y_start: f64,
+    bounds: &[StateBounds],
+) -> Result<Vec<f64>, HistoryError> {
     let g0 = model.g0();
+    check_state("y_start", y_start, model)?;
+    if let Some(index) = bounds
+        .iter()
+        .position(|b| !(b.upper.is_finite() && b.lower.is_finite()))
+    {
+        let b = bounds[index];
+        return Err(HistoryError::BadStateBounds {
+            index,
+            upper: b.upper,
+            lower: b.lower,
+        });
+    }
     let mut y = y_start;
     let mut out = Vec::with_capacity(bounds.len());
     for b in bounds {
@@ -122,7 +153,7 @@ pub fn guess_entries(model: RateIndependent, y_start: f64, bounds: &[StateBounds
             (b.lower + t * (b.upper - b.lower)).clamp(-g0, g0)
         });
     }
-    out
+    Ok(out)
 }
 
 /// The part of a merge-time cycle's arc inside one chunk: from `A` (`from`, a sample of this
@@ -171,21 +202,18 @@ pub fn count_chunk_energy(
     let Some(&first) = u.first() else {
         return Err(HistoryError::EmptyChunk { start: offset });
     };
-    if y_entry.is_nan() || y_entry.abs() > model.g0() {
-        return Err(HistoryError::BadInitialState {
-            x0: y_entry / model.sigma0(),
-            sigma0: model.sigma0(),
-            g0: model.g0(),
-        });
-    }
+    super::check_offset(offset, u.len())?;
+    super::check_prev(offset, prev)?;
+    check_state("y_entry", y_entry, model)?;
     let cuts = cuts(offset, u.len() as u64 - 1, spans)?;
     let track = EnergyTrack::for_chunk(model, y_entry, prev, CutSums::new(cuts.clone()));
     let mut rows = CycleColumns::new().with_reversals(false).with_energy(true);
     let track = if u.iter().any(|&x| x != first) {
         rows.reserve_for_samples(u.len());
-        let mut counter = EnergyCycleCounter::for_chunk(track, offset)?;
-        counter.push_all(u, &mut rows)?;
-        let track = counter.finish_chunk(&mut rows)?;
+        // The engine itself (no gate), for the track it hands back.
+        let mut engine = Engine::new(0.0, track)?.with_origin(offset);
+        engine.push_slice(u, &mut rows)?;
+        let track = engine.finish(&mut rows)?.track;
         rows.shrink_to_fit();
         track
     } else if !admissible(first) {
@@ -332,25 +360,27 @@ pub fn arc_energy_of(
     Ok(energy)
 }
 
-/// The history's totals from its chunks' energy passes, in order, entering at `y_start`.
+/// The history's totals from its chunks' energy passes, in order, entering at `y_start` (a
+/// state `y*` can hold).
 pub fn history_energy(
     model: RateIndependent,
     y_start: f64,
     chunks: &[ChunkEnergy],
-) -> HistoryEnergy {
+) -> Result<HistoryEnergy, HistoryError> {
+    check_state("y_start", y_start, model)?;
     let (mut work, mut dissipation) = (DoubleDouble::ZERO, DoubleDouble::ZERO);
     for c in chunks {
         work = work + c.work;
         dissipation = dissipation + c.dissipation;
     }
     let y_end = chunks.last().map_or(y_start, |c| c.y_last);
-    HistoryEnergy {
+    Ok(HistoryEnergy {
         y_start,
         y_end,
         work: work.to_f64(),
         stored_energy_change: (y_end - y_start) * (y_end + y_start) / (2.0 * model.sigma0()),
         dissipation: dissipation.to_f64().max(0.0),
-    }
+    })
 }
 
 const MAGIC: &[u8; 14] = b"lugre-energy1\0";

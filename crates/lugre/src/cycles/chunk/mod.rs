@@ -332,6 +332,40 @@ impl Reader<'_> {
     }
 }
 
+/// The largest sample index a chunk may reach: rows carry indices as `i64` (numpy's and the C
+/// ABI's columns), so a history ends at `u[i64::MAX]` at the latest.
+pub const MAX_INDEX: u64 = i64::MAX as u64;
+
+/// Checks that a chunk of `samples` samples from `offset` ends at or before [`MAX_INDEX`].
+pub fn check_offset(offset: u64, samples: usize) -> Result<(), HistoryError> {
+    let last = (samples as u64)
+        .checked_sub(1)
+        .and_then(|n| offset.checked_add(n));
+    match last {
+        Some(last) if last > MAX_INDEX => Err(HistoryError::IndexOverflow {
+            offset,
+            samples: samples as u64,
+        }),
+        None if samples > 0 => Err(HistoryError::IndexOverflow {
+            offset,
+            samples: samples as u64,
+        }),
+        _ => Ok(()),
+    }
+}
+
+/// Checks `prev`, the sample before a chunk starting at `offset`: none before `u[0]`, and a
+/// sample as the single pass takes it (finite, `|u| <=` [`MAX_SAMPLE`](super::MAX_SAMPLE),
+/// named `u[offset - 1]`).
+pub fn check_prev(offset: u64, prev: Option<f64>) -> Result<(), HistoryError> {
+    match (offset.checked_sub(1), prev) {
+        (_, None) => Ok(()),
+        (None, Some(value)) => Err(HistoryError::PrevBeforeStart { value }),
+        (Some(_), Some(p)) if admissible(p) => Ok(()),
+        (Some(index), Some(p)) => Err(bad_sample(index, p)),
+    }
+}
+
 /// The single pass's closing test for `q` at value `u`.
 #[inline]
 fn reaches(u: f64, q: &ClosureQuery) -> bool {
@@ -352,6 +386,7 @@ pub fn count_chunk(u: &[f64], offset: u64) -> Result<(ChunkSummary, CycleColumns
         (Some(f), Some(l)) => (f, l),
         _ => return Err(HistoryError::EmptyChunk { start: offset }),
     };
+    check_offset(offset, u.len())?;
     if !admissible(first) {
         return Err(bad_sample(offset, first));
     }
@@ -766,6 +801,8 @@ pub fn close_in_chunk(
     prev: Option<f64>,
     queries: &[ClosureQuery],
 ) -> Result<Vec<(usize, Closure)>, HistoryError> {
+    check_offset(offset, u.len())?;
+    check_prev(offset, prev)?;
     if queries.is_empty() {
         return Ok(Vec::new());
     }

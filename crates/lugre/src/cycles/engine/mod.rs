@@ -48,7 +48,7 @@ mod fast;
 mod walk;
 
 use super::columns::FullCycle;
-use super::{Closure, Cycle, CycleEnergy, CycleSink, Reversal};
+use super::{Closure, Cycle, CycleEnergy, CycleSink, CycleSummary, HistoryEnergy, Reversal};
 use crate::error::HistoryError;
 use crate::kernel::numerics::DoubleDouble;
 use block::{BLOCK, BLOCK_MIN};
@@ -217,6 +217,21 @@ impl<T: Track> Engine<T> {
             full_count: 0,
             half_count: 0,
         })
+    }
+
+    /// The noise gate.
+    pub fn gate(&self) -> f64 {
+        self.gate
+    }
+
+    /// The index of the first sample.
+    pub fn origin(&self) -> u64 {
+        self.origin
+    }
+
+    /// The number of samples taken.
+    pub fn taken(&self) -> u64 {
+        self.taken - self.origin
     }
 
     /// The same engine for a history whose first sample has index `origin` (a chunk of a
@@ -470,7 +485,12 @@ pub(crate) fn bad_sample(index: u64, u: f64) -> HistoryError {
     if u.is_finite() {
         HistoryError::TooLarge { index, value: u }
     } else {
-        HistoryError::NotFinite { index, value: u }
+        crate::DataError::NotFinite {
+            what: "u",
+            index,
+            value: u,
+        }
+        .into()
     }
 }
 
@@ -481,6 +501,19 @@ pub(crate) struct Counts<T> {
     pub full: u64,
     pub half: u64,
     pub track: T,
+}
+
+impl<T> Counts<T> {
+    /// The counts as a summary, with the energy totals `energy` (when followed).
+    pub fn summary(&self, energy: Option<HistoryEnergy>) -> CycleSummary {
+        CycleSummary {
+            samples: self.samples,
+            reversals: self.reversals,
+            full_cycles: self.full,
+            half_cycles: self.half,
+            energy,
+        }
+    }
 }
 
 /// A cycle between reversals `a` and `b`, with range and mean computed as `rainflow` does.
