@@ -78,9 +78,6 @@ fn bad_numbers_in_every_list_flag() {
         position,
     } in list_flags()
     {
-        // A history (`cycles --values`) is judged as a series by the library, in the words
-        // `lugre.cycles` and the C ABI use for the same samples.
-        let series = head == ["cycles"];
         for (item, want) in bad {
             let text = list(item);
             rejects(

@@ -107,15 +107,7 @@ fn field(name: *const c_char) -> Result<Field, Failure> {
 
 /// The scenario called `name`.
 pub(crate) fn scenario_named(name: &str) -> Result<Scenario, Failure> {
-    Scenario::from_name(name, None, None).ok_or_else(|| {
-        fail(
-            LugreStatus::InvalidArgument,
-            format!(
-                "unknown scenario '{name}' (scenarios: {})",
-                Scenario::NAMES.join(", ")
-            ),
-        )
-    })
+    Ok(Scenario::named(name)?)
 }
 
 /// One of the 1995 experiments as the request's preset ("presliding", "breakaway",

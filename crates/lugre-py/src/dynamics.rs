@@ -185,12 +185,7 @@ fn scenario_of(name: &Bound<'_, PyAny>) -> PyResult<Scenario> {
             type_name(name)
         ))
     })?;
-    Scenario::from_name(&name, None, None).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "unknown scenario '{name}' (scenarios: {})",
-            Scenario::NAMES.join(", ")
-        ))
-    })
+    Scenario::named(&name).map_err(value_error)
 }
 
 /// `(Kp, Ki, Kv)`.

@@ -494,6 +494,8 @@ pub enum DynamicsError {
     NoDrive,
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoEnd { why: &'static str },
+    #[error("unknown scenario '{name}' (scenarios: {})", crate::dynamics::Scenario::NAMES.join(", "))]
+    UnknownScenario { name: String },
     #[error(transparent)]
     Model(#[from] ModelError),
 }

@@ -32,6 +32,17 @@ impl Scenario {
     /// Other spellings accepted for a name: `(alias, name)`.
     pub const ALIASES: [(&'static str, &'static str); 1] = [("pre-sliding", "presliding")];
 
+    /// The scenario called `name` (or one of its [`Self::ALIASES`]) with its default rate or
+    /// `w`.
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnknownScenario`] naming it and the scenarios there are.
+    pub fn named(name: &str) -> Result<Self, DynamicsError> {
+        Self::from_name(name, None, None).ok_or_else(|| DynamicsError::UnknownScenario {
+            name: name.to_string(),
+        })
+    }
+
     /// The scenario called `name` (`rate` for the break-away, default 10 N/s; `w` for the lag,
     /// default 10 rad/s).
     pub fn from_name(name: &str, rate: Option<f64>, w: Option<f64>) -> Option<Self> {

@@ -20,24 +20,18 @@ use lugre_io::Role;
 /// Rows of the table printed (all of them are in --json / --csv).
 const TABLE_HEAD: usize = 12;
 
-/// `--scenario`'s values: the core's names of the 1995 experiments, each with its description.
-fn scenario_parser() -> impl clap::builder::TypedValueParser<Value = Scenario> {
-    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
-    let values = Scenario::NAMES.into_iter().filter_map(|name| {
-        let sc = Scenario::from_name(name, None, None)?;
-        let aliases = Scenario::ALIASES
-            .iter()
-            .filter(move |(_, to)| *to == name)
-            .map(|(from, _)| *from);
-        Some(
-            PossibleValue::new(name)
-                .help(sc.description())
-                .aliases(aliases),
-        )
-    });
-    PossibleValuesParser::new(values.collect::<Vec<_>>()).try_map(|name: String| {
-        Scenario::from_name(&name, None, None).ok_or_else(|| format!("unknown scenario {name}"))
-    })
+/// `--scenario`'s help: the core's names of the 1995 experiments, each with its description
+/// (the name is checked by the core, which words an unknown one as every front end does).
+fn scenario_help() -> String {
+    let names: Vec<String> = Scenario::NAMES
+        .iter()
+        .filter_map(|n| Some(format!("{n}: {}", Scenario::named(n).ok()?.description())))
+        .collect();
+    format!(
+        "One of the 1995 experiments, a preset: Table I, a 1 kg mass, its drive and its end; every \
+flag given on top of it replaces that part (--pid 3,8,6 on pid keeps its set point). {}",
+        names.join("; ")
+    )
 }
 
 #[derive(Args, Debug)]
@@ -48,10 +42,8 @@ against x (SVG or PNG)")))]
 pub(crate) struct DynamicsArgs {
     #[command(flatten)]
     pub(crate) model: ModelArgs,
-    /// One of the 1995 experiments, a preset: Table I, a 1 kg mass, its drive and its end; every
-    /// flag given on top of it replaces that part (--pid 3,8,6 on pid keeps its set point).
-    #[arg(long, value_parser = scenario_parser(), help_heading = "System")]
-    pub(crate) scenario: Option<Scenario>,
+    #[arg(long, value_name = "NAME", help = scenario_help(), help_heading = "System")]
+    pub(crate) scenario: Option<String>,
     /// Mass M > 0 [kg] (a rotational system: the inertia [kg m^2]).
     #[arg(long, allow_hyphen_values = true, help_heading = "System")]
     pub(crate) mass: Option<f64>,
@@ -212,8 +204,8 @@ pub(crate) fn flag(field: Field) -> String {
 /// The flags as a core request: every flag given sets its field, over the scenario's.
 fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     let mut r = Request::new();
-    if let Some(sc) = args.scenario {
-        r = r.with_scenario(sc);
+    if let Some(name) = &args.scenario {
+        r = r.with_scenario(Scenario::named(name)?);
     }
     if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
