@@ -154,7 +154,14 @@ impl<'a, 'py> Columns<'a, 'py> {
         key: &'static str,
         dtype: &str,
     ) -> PyResult<Vec<T>> {
-        let item = self.item(key)?;
+        let mut item = self.item(key)?;
+        // A misaligned buffer (an array unpickled from a Dask worker can be) is copied into
+        // numpy's own aligned memory first: viewing it in place would be undefined behaviour.
+        if let Ok(u) = item.cast::<numpy::PyUntypedArray>() {
+            if !numpy::PyUntypedArrayMethods::is_aligned(u) {
+                item = item.call_method0("copy")?;
+            }
+        }
         let a: PyReadonlyArray1<T> = item.extract().map_err(|_| {
             PyTypeError::new_err(format!(
                 "{}: column '{key}' must be a 1-D numpy array of {dtype}, got {}",

@@ -211,7 +211,10 @@ impl Series<'_> {
 /// must not modify it during the call, as for numpy's own functions that release the GIL).
 pub fn series<'py>(obj: &Bound<'py, PyAny>, name: &str) -> PyResult<Series<'py>> {
     if let Ok(a) = obj.cast::<PyArray1<f64>>() {
-        if let Ok(view) = a.try_readonly() {
+        // A misaligned buffer (as an array unpickled from a Dask worker can be) is copied:
+        // reading it in place as `&[f64]` would be undefined behaviour.
+        let aligned = a.cast::<PyUntypedArray>().is_ok_and(|u| u.is_aligned());
+        if let Some(view) = aligned.then(|| a.try_readonly().ok()).flatten() {
             if view.as_slice().is_ok() {
                 return Ok(Series::Borrowed(view));
             }
