@@ -583,15 +583,12 @@ fn fit_csv_files_good_and_bad() {
         (
             "inf.csv",
             b"u,F\n0,0\n1,-inf\n".to_vec(),
-            "line 3: F = '-inf' is not a finite number".into(),
+            "line 3: F must be a finite number, got -inf".into(),
         ),
         (
             "huge-number.csv",
             format!("u,F\n0,0\n1,{huge_number}\n").into_bytes(),
-            format!(
-                "line 3: F = '1{}...' (401 characters) is not a finite number",
-                "0".repeat(31)
-            ),
+            "line 3: F must be a finite number, got inf".to_string(),
         ),
         (
             "huge-garbage.csv",

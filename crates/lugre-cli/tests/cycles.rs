@@ -430,7 +430,7 @@ fn bad_input_is_one_line_and_status_2() {
     let nan = p("nan.csv", b"u\n1\nnan\n");
     rejects(
         &["cycles", "--input", &nan],
-        "line 3: u = 'nan' is not a finite number",
+        "line 3: u must be a finite number, got NaN",
     );
     let inf = p("inf.csv", b"1\n-inf\n");
     rejects(&["cycles", "--input", &inf, "--histogram"], "line 2");

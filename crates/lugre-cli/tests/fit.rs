@@ -379,7 +379,7 @@ fn bad_input_is_one_line_and_status_2() {
     let inf = write("inf.csv", "u,F\n0,0\n1,inf\n");
     rejects(
         &["fit", "--input", &inf],
-        "line 3: F = 'inf' is not a finite number",
+        "line 3: F must be a finite number, got inf",
     );
     let header = write("header.csv", "a,b\n0,0\n");
     rejects(

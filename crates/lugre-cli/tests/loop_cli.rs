@@ -339,7 +339,7 @@ fn csv_errors_name_the_line() {
         ),
         (
             "u\n0\n1e400\n",
-            "line 3: u = '1e400' is not a finite number",
+            "line 3: u must be a finite number, got inf",
         ),
         ("u\n", "no data rows"),
         ("u\n5\n5\n", "at least 2 distinct values"),

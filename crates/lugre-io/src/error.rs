@@ -164,11 +164,13 @@ pub enum Error {
         /// The field as written, quoted and cut short.
         value: String,
     },
-    #[error("line {line}: {column} = {value} is not a finite number")]
+    /// The core's words for a value that is not finite (`u[1] must be a finite number, got
+    /// NaN`), at the file's line.
+    #[error("line {line}: {column} must be a finite number, got {value}", value = num(*.value))]
     NotFinite {
         line: u64,
         column: String,
-        value: String,
+        value: f64,
     },
     #[error("line {line}: {column} = {value} times the {option} factor {factor} is not a finite number", value = num(*.value), factor = num(*.factor))]
     ScaledNotFinite {

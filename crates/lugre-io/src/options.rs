@@ -160,7 +160,13 @@ impl ReadOptions {
             role: role.name().into(),
             reads: std::iter::once("t")
                 .chain(reads.iter().map(Role::name).filter(|r| *r != "t"))
-                .collect::<Vec<_>>()
+                .fold(Vec::new(), |mut seen, name| {
+                    // A role a command reads twice (a named column that is also `u`) once.
+                    if !seen.contains(&name) {
+                        seen.push(name);
+                    }
+                    seen
+                })
                 .join(", "),
         };
         if let Some((r, _)) = self.select.iter().find(|(r, _)| !known(r)) {

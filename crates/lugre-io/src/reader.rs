@@ -694,11 +694,11 @@ impl Parser {
         }
         let v = match field.parse::<f64>() {
             Ok(v) if v.is_finite() => v,
-            Ok(_) => {
+            Ok(value) => {
                 return Err(Error::NotFinite {
                     line,
                     column: column(),
-                    value: quoted(field),
+                    value,
                 })
             }
             Err(_) => {

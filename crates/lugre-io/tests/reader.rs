@@ -451,12 +451,12 @@ fn errors_name_the_line_the_column_and_the_value() {
         (
             "t,u\n0,nan\n",
             series(),
-            "line 2: u = 'nan' is not a finite number",
+            "line 2: u must be a finite number, got NaN",
         ),
         (
             "u,F\n0,-inf\n",
             record(),
-            "line 2: F = '-inf' is not a finite number",
+            "line 2: F must be a finite number, got -inf",
         ),
         (
             "t,u\n0,abc\n",

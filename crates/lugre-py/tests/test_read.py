@@ -77,7 +77,7 @@ def test_options_as_dicts_or_the_commands_text(tmp_path):
     ("# a\n# b\ntime,value\n0,1\n", {"roles": ["u"]}, "line 3: no column u"),
     ("t,u\r\n0,1\r\n1,abc\r\n", {}, "line 3: u = 'abc' is not a number"),
     ("t,u\r\n0,1\r\n0,2\r\n", {}, "line 3: times must be strictly increasing, t = 0 follows t = 0"),
-    ("t,u\n0,inf\n", {}, "line 2: u = 'inf' is not a finite number"),
+    ("t,u\n0,inf\n", {}, "line 2: u must be a finite number, got inf"),
     ("t,u\n", {}, "no data rows"),
     ("a,b\n0,1\n", {}, "line 1: no column u"),
 ])
