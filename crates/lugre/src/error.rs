@@ -494,8 +494,12 @@ pub enum DynamicsError {
     NoDrive,
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoEnd { why: &'static str },
-    #[error("unknown scenario '{name}' (scenarios: {})", crate::dynamics::Scenario::NAMES.join(", "))]
-    UnknownScenario { name: String },
+    #[error("unknown scenario '{name}' (scenarios: {})", .known.join(", "))]
+    UnknownScenario {
+        name: String,
+        /// The scenarios there are.
+        known: &'static [&'static str],
+    },
     #[error(transparent)]
     Model(#[from] ModelError),
 }

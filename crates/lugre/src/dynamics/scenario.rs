@@ -40,6 +40,7 @@ impl Scenario {
     pub fn named(name: &str) -> Result<Self, DynamicsError> {
         Self::from_name(name, None, None).ok_or_else(|| DynamicsError::UnknownScenario {
             name: name.to_string(),
+            known: &Self::NAMES,
         })
     }
 
