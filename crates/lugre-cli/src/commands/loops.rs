@@ -7,7 +7,8 @@ use lugre::{HysteresisLoop, Loop, LoopPoint, TheoremA};
 use std::io::Write;
 
 use crate::args::{
-    check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
+    check_files, ModelArgs, ModelChoice, Needed, OutputArgs, PeriodicInput, PeriodicInputArgs,
+    PlotArgs,
 };
 use crate::fmt::{exact, sig};
 use crate::hysteresis::{arc_points, kind_name};
@@ -155,7 +156,7 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
         outcome.write_json(model, JsonOut::new(stdout.lock()))?;
     } else {
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
-        outcome.print_table(&mut out, &model.describe())?;
+        outcome.print_table(&mut out, &model.describe(Needed::RateIndependent))?;
         if let Some(path) = &args.output.csv {
             writeln!(
                 out,
