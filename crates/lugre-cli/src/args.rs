@@ -5,6 +5,7 @@
 
 use anyhow::{bail, Result};
 use clap::{Arg, ArgMatches, Args, Command, ValueEnum};
+use lugre::error::NormalForceError;
 use lugre::fit::Family;
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
@@ -43,6 +44,17 @@ pub(crate) struct DataArgs {
     /// How the fields are separated (default: found from the first line that is not a comment).
     #[arg(long, value_enum, help_heading = "Data file")]
     pub(crate) delimiter: Option<DelimiterArg>,
+}
+
+/// The core's normal-force error for the file `path`, naming the row (1-based, as the reader
+/// counts the data rows).
+pub(crate) fn normal_force_error(path: &Path, e: NormalForceError) -> anyhow::Error {
+    match e {
+        NormalForceError::NotPositive { index, .. } => {
+            anyhow::anyhow!("{}: row {}: {e}", path.display(), index + 1)
+        }
+        e => anyhow::anyhow!("{}: {e}", path.display()),
+    }
 }
 
 /// `--interpolate`'s values: how samples are read between them.
@@ -459,7 +471,7 @@ impl ModelChoice {
     fn values(&self) -> Vec<(Parameter, f64)> {
         match &self.model {
             Model::LuGre(m) => m.params().named().to_vec(),
-            Model::Dahl(m) => vec![(Parameter::Rho, m.rho()), (Parameter::Fc, m.fc())],
+            Model::Dahl(m) => m.named().to_vec(),
         }
     }
 

@@ -1,12 +1,15 @@
 //! The model's flags and the model's line in every text output, against the core's table
 //! (`lugre::model::Parameter`): every parameter is a flag of every command that takes a model,
 //! under "Model", with its symbol, domain, unit, model and default in its help, and its value
-//! read back by name; every text output names the model and marks the defaults.
+//! read back by name; every text output names the model and marks the defaults. And the
+//! columns of cycles and loops (`lugre::Cycle::COLUMNS`, `lugre::LoopPoint::COLUMNS`) are those
+//! `--csv` and `--json` write.
 
 mod common;
 
 use common::{lugre, rejects};
 use lugre::model::Parameter;
+use lugre::{Cycle, LoopPoint};
 
 /// The commands that take the model's flags.
 const COMMANDS: [&str; 5] = ["loop", "cycles", "simulate", "fit", "dynamics"];
@@ -234,4 +237,64 @@ fn every_text_output_names_its_model() {
         "{text}"
     );
     assert!(text.contains(", Fs = 2, "), "{text}");
+}
+
+#[test]
+fn the_columns_of_cycles_and_loops_are_the_cores() {
+    let dir = std::env::temp_dir().join(format!("lugre-columns-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let history = dir.join("h.csv");
+    std::fs::write(&history, "u\n-2\n1\n-3\n5\n-1\n3\n-4\n4\n-2\n").unwrap();
+    let cycles_csv = dir.join("cycles.csv");
+    let loop_csv = dir.join("loop.csv");
+    let text = stdout(&[
+        "cycles",
+        "--input",
+        history.to_str().unwrap(),
+        "--preset",
+        "canudas1995",
+        "--csv",
+        cycles_csv.to_str().unwrap(),
+        "--json",
+    ]);
+    let csv = std::fs::read_to_string(&cycles_csv).unwrap();
+    assert_eq!(csv.lines().next(), Some(Cycle::COLUMNS.join(",").as_str()));
+    // Every row has a cell for every column; the full cycle (-1, 3) has all of them.
+    for row in csv.lines().skip(1) {
+        assert_eq!(row.split(',').count(), Cycle::COLUMNS.len(), "{row}");
+    }
+    assert!(
+        csv.lines()
+            .skip(1)
+            .any(|r| r.split(',').all(|c| !c.is_empty())),
+        "{csv}"
+    );
+    let j: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for c in j["cycles"].as_array().unwrap() {
+        let mut keys: Vec<&str> = c.as_object().unwrap().keys().map(|k| k.as_str()).collect();
+        let mut want = Cycle::COLUMNS.to_vec();
+        keys.sort_unstable();
+        want.sort_unstable();
+        assert_eq!(keys, want);
+    }
+    // In the columns' order in the text itself.
+    let first = &text[text.find("\"cycles\":[{").unwrap()..];
+    let at: Vec<usize> = Cycle::COLUMNS
+        .iter()
+        .map(|name| first.find(&format!("\"{name}\":")).unwrap())
+        .collect();
+    assert!(at.windows(2).all(|w| w[0] < w[1]), "{at:?}");
+    stdout(&[
+        "loop",
+        "--turning-points",
+        "0,1",
+        "--csv",
+        loop_csv.to_str().unwrap(),
+    ]);
+    let csv = std::fs::read_to_string(&loop_csv).unwrap();
+    assert_eq!(
+        csv.lines().next(),
+        Some(LoopPoint::COLUMNS.join(",").as_str())
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
 }

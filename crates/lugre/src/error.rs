@@ -159,6 +159,17 @@ pub enum DataError {
     TimesNotIncreasing { index: usize, prev: f64, value: f64 },
 }
 
+/// A normal force that cannot scale a model per newton ([`crate::model::normal`]); `index`
+/// is 0-based, each front end naming the sample its own way.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum NormalForceError {
+    #[error("the normal force N must be > 0, got {value}", value = num(*.value))]
+    NotPositive { index: usize, value: f64 },
+    #[error("{normal} normal forces for {samples} samples: one normal force per sample")]
+    Length { normal: usize, samples: usize },
+}
+
 /// An invalid input signal.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]

@@ -155,19 +155,6 @@ fn header_roles(path: &Path) -> Vec<String> {
     split.iter().map(|f| role(f)).collect()
 }
 
-/// Checks the normal force of every row of `path` (`> 0`), naming the first that is not.
-pub(crate) fn check_normal_force(path: &Path, n: &[f64]) -> Result<()> {
-    match n.iter().position(|&v| v.is_nan() || v <= 0.0) {
-        Some(i) => anyhow::bail!(
-            "{}: row {}: the normal force N must be > 0, got {}",
-            path.display(),
-            i + 1,
-            crate::fmt::sig(n[i], 10)
-        ),
-        None => Ok(()),
-    }
-}
-
 /// Reads every row of `path` (at least one).
 pub(crate) fn read_table(path: &Path, columns: Columns) -> Result<Table> {
     read_table_with(path, columns, ReadOptions::default())

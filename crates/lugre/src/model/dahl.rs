@@ -28,6 +28,20 @@ impl Dahl {
         self.fc
     }
 
+    /// The value of a Dahl parameter (`None` for the LuGre model's own).
+    pub fn get(&self, p: Parameter) -> Option<f64> {
+        match p {
+            Parameter::Rho => Some(self.rho),
+            Parameter::Fc => Some(self.fc),
+            _ => None,
+        }
+    }
+
+    /// The parameters with their names, in the order of [`Parameter::DAHL`].
+    pub fn named(&self) -> [(Parameter, f64); 2] {
+        Parameter::DAHL.map(|p| (p, self.get(p).unwrap_or(f64::NAN)))
+    }
+
     /// The equivalent LuGre model. `g` is the Stribeck curve with `Fs = Fc`, which is the
     /// constant `Fc` exactly (the exponential's coefficient is 0).
     pub fn to_lugre(&self) -> LuGre {
@@ -58,6 +72,8 @@ mod tests {
         let m = d.to_lugre();
         assert_eq!(m.sigma0(), 2.0);
         assert_eq!(m.sigma1(), 0.0);
+        assert_eq!(d.named(), [(Parameter::Rho, 2.5), (Parameter::Fc, 0.8)]);
+        assert_eq!(d.get(Parameter::Sigma1), None);
         for v in [-10.0, -1e-3, 0.0, 0.3, 7.0] {
             assert_eq!(m.g(v), 0.8);
             assert_eq!(m.f(v), 0.0);

@@ -24,13 +24,14 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::args::{check_files, ModelArgs, OutputArgs, PlotArgs};
+use crate::args::{check_files, normal_force_error, ModelArgs, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::csv::Columns;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
+use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 
 mod output;
@@ -188,9 +189,9 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     let velocity = velocity_record(args, path);
     let normal = normal_force(args);
     let mut options = args.data.options(if velocity {
-        &["v", "F", "N"]
+        &["v", "F", normal::COLUMN]
     } else {
-        &["u", "F", "N"]
+        &["u", "F", normal::COLUMN]
     })?;
     // A row without a force (empty or NaN) is an input-only sample of the full fit.
     options.optional = Some("f".into());
@@ -378,14 +379,13 @@ fn read_record(
 /// (never from the header alone: a file that records the load would otherwise change what
 /// the parameters mean).
 fn normal_force(args: &FitArgs) -> bool {
-    args.data.selects("N")
+    args.data.selects(normal::COLUMN)
 }
 
-/// `F / N` in place: the friction coefficient the model is fitted to (`N > 0` at every row).
+/// `F / N` in place: the friction coefficient the model is fitted to (the core's scaling; `N
+/// > 0` at every row, the first that is not named by its row).
 fn to_coefficient(f: &mut [f64], n: &[f64], path: &Path) -> Result<()> {
-    crate::io::csv::check_normal_force(path, n)?;
-    f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
-    Ok(())
+    normal::to_coefficient(f, n).map_err(|e| normal_force_error(path, e))
 }
 
 /// Whether the record is `t,v,F` (a velocity column by header, or `--columns v=NAME`).

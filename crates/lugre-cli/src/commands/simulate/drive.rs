@@ -2,11 +2,12 @@
 //! input flags.
 
 use anyhow::{anyhow, bail, Result};
+use lugre::model::normal;
 use lugre::simulate::{Drive, Request, SmoothSamples};
 use lugre::{PiecewiseLinear, Sine};
 
 use super::SimulateArgs;
-use crate::args::Interpolate;
+use crate::args::{normal_force_error, Interpolate};
 use crate::fmt::sig;
 use crate::numbers::parse_list;
 
@@ -48,7 +49,7 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
             sig(sine.phase(), 10),
             sig(sine.offset(), 10)
         );
-        if args.data.selects("N") {
+        if args.data.selects(normal::COLUMN) {
             bail!("--columns N=...: a normal force is read from the record (--input FILE)");
         }
         return Ok((Drive::Sine(sine), text, None));
@@ -56,7 +57,7 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
     if let Some(path) = &args.input.input {
         return sampled(args, path);
     }
-    if args.data.selects("N") {
+    if args.data.selects(normal::COLUMN) {
         bail!("--columns N=...: a normal force is read from the record (--input FILE)");
     }
     if given.is_empty() {
@@ -85,15 +86,15 @@ pub(super) fn build_drive(args: &SimulateArgs) -> Result<(Drive, String, Normal)
 /// A record from a file: displacement `t,u` (linear or cubic reading) or velocity `t,v`
 /// (integrated, cubic reading).
 fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String, Normal)> {
-    use crate::io::csv::{check_normal_force, read_table_with, Columns};
+    use crate::io::csv::{read_table_with, Columns};
     let velocity = args.data.selects("v") || crate::io::csv::is_velocity_record(path);
-    let (columns, role) = match (velocity, args.data.selects("N")) {
+    let (columns, role) = match (velocity, args.data.selects(normal::COLUMN)) {
         (true, false) => (Columns::Named("v"), "v"),
         (true, true) => (Columns::VelocityN, "v"),
         (false, false) => (Columns::Series, "u"),
         (false, true) => (Columns::SeriesN, "u"),
     };
-    let table = read_table_with(path, columns, args.data.options(&[role, "N"])?)?;
+    let table = read_table_with(path, columns, args.data.options(&[role, normal::COLUMN])?)?;
     let Some(t) = table.t else {
         bail!(
             "{}: simulate needs the samples' times: a column 't' (or --columns t=NAME)",
@@ -104,7 +105,7 @@ fn sampled(args: &SimulateArgs, path: &std::path::Path) -> Result<(Drive, String
     let values = columns.next().unwrap_or_default();
     let normal = match columns.next() {
         Some(n) => {
-            check_normal_force(path, &n)?;
+            normal::check(&n).map_err(|e| normal_force_error(path, e))?;
             Some((t.clone(), n))
         }
         None => None,
