@@ -44,5 +44,10 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DYNAMICS_FIELDS",
         lugre::dynamics::Field::ALL.map(|f| f.name()),
     )?;
+    // The core's tables: the models' parameters, the columns of cycles and sampled loops.
+    m.add("PARAMETERS", models::parameter_table(m.py())?)?;
+    m.add("CYCLE_COLUMNS", lugre::CycleColumns::NAMES)?;
+    m.add("LOOP_COLUMNS", lugre::LoopPoint::COLUMNS)?;
+    models::document(m)?;
     Ok(())
 }

@@ -33,8 +33,11 @@ the estimates with standard errors, 95 % intervals and correlations, and the fit
 """
 
 from ._lugre import (
+    CYCLE_COLUMNS,
     DYNAMICS_COLUMNS,
     DYNAMICS_FIELDS,
+    LOOP_COLUMNS,
+    PARAMETERS,
     ChunkPlan,
     ChunkRows,
     ChunkSummary,
@@ -60,8 +63,11 @@ from ._lugre import (
 )
 
 __all__ = [
+    "CYCLE_COLUMNS",
     "DYNAMICS_COLUMNS",
     "DYNAMICS_FIELDS",
+    "LOOP_COLUMNS",
+    "PARAMETERS",
     "ChunkPlan",
     "ChunkRows",
     "ChunkSummary",

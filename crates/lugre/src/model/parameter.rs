@@ -132,7 +132,7 @@ impl Parameter {
             Parameter::Fs => "stiction force",
             Parameter::Vs => "Stribeck velocity",
             Parameter::Beta => "Stribeck exponent",
-            Parameter::Rho => "stiffness over the Coulomb force, sigma0 / Fc",
+            Parameter::Rho => "stiffness over the Coulomb force (sigma0 / Fc)",
         }
     }
 
