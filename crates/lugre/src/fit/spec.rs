@@ -2,13 +2,13 @@
 //! the map from bounded parameters to the unconstrained variables the optimizer moves.
 
 use crate::error::FitError;
-use crate::model::{LuGreParams, Parameter};
+use crate::model::{Dahl, LuGreParams, Parameter};
 
 /// The LuGre parameters' names, in the order of [`LuGreParams`] ([`Parameter::LUGRE`]).
-pub const LUGRE_PARAMETERS: [&str; 7] = names(Parameter::LUGRE);
+pub const LUGRE_PARAMETERS: [&str; Parameter::LUGRE.len()] = names(Parameter::LUGRE);
 
 /// The Dahl parameters' names ([`Parameter::DAHL`]).
-pub const DAHL_PARAMETERS: [&str; 2] = names(Parameter::DAHL);
+pub const DAHL_PARAMETERS: [&str; Parameter::DAHL.len()] = names(Parameter::DAHL);
 
 const fn names<const N: usize>(ps: [Parameter; N]) -> [&'static str; N] {
     let mut out = [""; N];
@@ -298,15 +298,7 @@ pub(crate) fn lugre_params(family: Family, v: &[f64]) -> LuGreParams {
             }
             p
         }
-        Family::Dahl => LuGreParams {
-            sigma0: v[0] * v[1],
-            sigma1: 0.0,
-            sigma2: 0.0,
-            fc: v[1],
-            fs: v[1],
-            vs: 1.0,
-            beta: 1.0,
-        },
+        Family::Dahl => Dahl::lugre_params(v[0], v[1]),
     }
 }
 

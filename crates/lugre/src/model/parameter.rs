@@ -208,7 +208,7 @@ impl LuGreParams {
     }
 
     /// The parameters with their names, in the order of [`Parameter::LUGRE`].
-    pub fn named(&self) -> [(Parameter, f64); 7] {
+    pub fn named(&self) -> [(Parameter, f64); Parameter::LUGRE.len()] {
         Parameter::LUGRE.map(|p| (p, self.get(p).unwrap_or(f64::NAN)))
     }
 }
