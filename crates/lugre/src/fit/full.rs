@@ -41,7 +41,7 @@ use super::lm::Evaluator;
 use super::slow::{half_rise_rate, median};
 use super::spec::{lugre_params, Family, Resolved};
 use crate::kernel::relax::decay;
-use crate::model::LuGre;
+use crate::model::{LuGre, Parameter};
 use nalgebra::DMatrix;
 
 /// The data as the simulator sees it, and which derivatives to form.
@@ -161,6 +161,13 @@ impl<E: Evaluator> Evaluator for Rows<E> {
         true
     }
 }
+
+/// The derivatives below are written for the LuGre parameters by their index in
+/// [`Parameter::LUGRE`]: a parameter added to the table needs its own here.
+const _: () = assert!(
+    Parameter::LUGRE.len() == 7,
+    "the full fit's derivatives (Exact::evaluate) know 7 LuGre parameters: add the new one's"
+);
 
 impl Evaluator for Exact {
     fn evaluate(&mut self, values: &[f64], y: &mut [f64], jac: &mut DMatrix<f64>) -> bool {

@@ -319,15 +319,11 @@ impl FitSpec {
     /// Dahl `rho = 1`, `Fc = 1`. They are the paper's dimensionless values, not a
     /// measurement's: a parameter the fit holds must then be given ([`set`](Self::set)).
     pub fn new(family: Family) -> Self {
-        let p = LuGreParams::default();
-        match family {
-            Family::LuGre => Self::with_values(
-                Family::LuGre,
-                vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta],
-                false,
-            ),
-            Family::Dahl => Self::with_values(Family::Dahl, vec![1.0, 1.0], false),
-        }
+        let defaults = match family {
+            Family::LuGre => Parameter::LUGRE.map(Parameter::default_value).to_vec(),
+            Family::Dahl => Parameter::DAHL.map(Parameter::default_value).to_vec(),
+        };
+        Self::with_values(family, defaults, false)
     }
 
     fn with_values(family: Family, values: Vec<f64>, given: bool) -> Self {
