@@ -259,11 +259,11 @@ pub enum FitError {
     NoReversal { fit: &'static str },
     #[error("the force F is 0 at every sample: there is nothing to fit")]
     ZeroForce,
-    #[error("unknown parameter '{name}' for the {model} model (its parameters: {known})")]
+    #[error("unknown parameter '{name}' for the {model} model (its parameters: {known})", known = .known.join(", "))]
     UnknownParameter {
         name: String,
         model: &'static str,
-        known: &'static str,
+        known: &'static [&'static str],
     },
     #[error("{name} does not enter the slow loop: the rate-independent limit depends only on sigma0 and g(0) = Fs (Dahl: rho and Fc), so {name} cannot be identified from quasi-static data (use a full fit of rate-dependent data)")]
     NotInSlowLoop { name: &'static str },

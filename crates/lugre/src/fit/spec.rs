@@ -45,10 +45,11 @@ impl Family {
         }
     }
 
-    fn known(self) -> &'static str {
+    /// The parameters, in the order of [`Self::parameters`].
+    fn table(self) -> &'static [Parameter] {
         match self {
-            Family::LuGre => "sigma0, sigma1, sigma2, fc, fs, vs, beta",
-            Family::Dahl => "rho, fc",
+            Family::LuGre => &Parameter::LUGRE,
+            Family::Dahl => &Parameter::DAHL,
         }
     }
 
@@ -61,26 +62,47 @@ impl Family {
             .ok_or_else(|| FitError::UnknownParameter {
                 name: name.to_string(),
                 model: self.label(),
-                known: self.known(),
+                known: self.parameters(),
             })
     }
 
-    /// The two parameters the slow loop depends on: `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`).
+    /// The two parameters the slow loop depends on: `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`),
+    /// by their index in [`Self::parameters`] (the table's
+    /// [`Parameter::LUGRE_RATE_INDEPENDENT`]).
     pub(crate) fn slow_parameters(self) -> [usize; 2] {
         match self {
-            Family::LuGre => [0, 4],
-            Family::Dahl => [0, 1],
+            Family::LuGre => LUGRE_SLOW,
+            Family::Dahl => DAHL_SLOW,
         }
     }
 
-    /// The parameters a full fit frees unless told otherwise (`beta` stays fixed).
-    fn full_default(self) -> &'static [usize] {
-        match self {
-            Family::LuGre => &[0, 1, 2, 3, 4, 5],
-            Family::Dahl => &[0, 1],
-        }
+    /// Whether a full fit frees parameter `i` unless told otherwise: every one but `beta`,
+    /// which most records determine poorly.
+    fn full_default(self, i: usize) -> bool {
+        self.table()[i] != Parameter::Beta
     }
 }
+
+/// The index of `p` in `list` (at compile time: a parameter missing is a build error).
+const fn index_of(list: &[Parameter], p: Parameter) -> usize {
+    let mut i = 0;
+    while i < list.len() {
+        if list[i] as u8 == p as u8 {
+            return i;
+        }
+        i += 1;
+    }
+    panic!("a slow-loop parameter is not in the family's list")
+}
+
+const LUGRE_SLOW: [usize; 2] = [
+    index_of(&Parameter::LUGRE, Parameter::LUGRE_RATE_INDEPENDENT[0]),
+    index_of(&Parameter::LUGRE, Parameter::LUGRE_RATE_INDEPENDENT[1]),
+];
+const DAHL_SLOW: [usize; 2] = [
+    index_of(&Parameter::DAHL, Parameter::Rho),
+    index_of(&Parameter::DAHL, Parameter::Fc),
+];
 
 /// Which fit: the slow loop (rate-independent limit) or the exact simulation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -400,7 +422,7 @@ impl FitSpec {
             }
             let default = match kind {
                 FitKind::Slow => possible,
-                FitKind::Full => self.family.full_default().contains(&i),
+                FitKind::Full => self.family.full_default(i),
             };
             if (default || self.freed[i]) && !self.fixed[i] {
                 free.push(i);
@@ -471,10 +493,24 @@ fn example_value(name: &str) -> &'static str {
 mod tests {
 
     #[test]
-    fn known_lists_the_parameters() {
+    fn the_families_are_the_tables() {
         for f in [Family::LuGre, Family::Dahl] {
-            assert_eq!(f.known(), f.parameters().join(", "));
+            let names: Vec<&str> = f.table().iter().map(|p| p.name()).collect();
+            assert_eq!(names, f.parameters());
+            let e = f.index("mu").unwrap_err().to_string();
+            assert!(
+                e.ends_with(&format!("(its parameters: {})", names.join(", "))),
+                "{e}"
+            );
         }
+        let slow = Family::LuGre.slow_parameters().map(|i| Parameter::LUGRE[i]);
+        assert_eq!(slow, Parameter::LUGRE_RATE_INDEPENDENT);
+        let held: Vec<Parameter> = (0..Parameter::LUGRE.len())
+            .filter(|&i| !Family::LuGre.full_default(i))
+            .map(|i| Parameter::LUGRE[i])
+            .collect();
+        assert_eq!(held, [Parameter::Beta], "beta alone is held in a full fit");
+        assert_eq!(Family::Dahl.slow_parameters(), [0, 1]);
     }
 
     use super::*;
