@@ -18,14 +18,11 @@ pub const COLUMN: &str = "N";
 /// The quantity a model per newton describes: the friction coefficient `mu = F / N`.
 pub const COEFFICIENT: &str = "mu";
 
-/// Whether `p` scales with the force (its value per newton is `p / N`): `sigma0`, `sigma1`,
-/// `sigma2`, `Fc`, `Fs`; not `vs`, `beta` or the Dahl model's `rho` (the force of either model
-/// is linear in the others together).
-pub const fn scales(p: Parameter) -> bool {
-    matches!(
-        p,
-        Parameter::Sigma0 | Parameter::Sigma1 | Parameter::Sigma2 | Parameter::Fc | Parameter::Fs
-    )
+/// Whether `p` scales with the force (its value per newton is `p / N`): the parameters whose
+/// unit has the newton as a factor (`sigma0`, `sigma1`, `sigma2`, `Fc`, `Fs`), in which the
+/// force is linear together; not `vs`, `beta` or the Dahl model's `rho`.
+pub fn scales(p: Parameter) -> bool {
+    p.unit() == "N" || p.unit().starts_with("N ") || p.unit().starts_with("N/")
 }
 
 /// The name of `p` in a model per newton: `mu_c` for `Fc`, `mu_s` for `Fs` (the friction
@@ -145,9 +142,19 @@ mod tests {
             units(&Parameter::LUGRE),
             "mu_c, mu_s dimensionless; sigma0 in 1/m; sigma1, sigma2 in s/m"
         );
-        // Every parameter that scales has the newton in its unit, and loses it.
-        for p in Parameter::ALL.into_iter().filter(|&p| scales(p)) {
-            assert!(p.unit().starts_with('N'), "{p}");
+        // The force is linear in these together; each loses the newton of its unit.
+        let scaling: Vec<Parameter> = Parameter::ALL.into_iter().filter(|&p| scales(p)).collect();
+        assert_eq!(
+            scaling,
+            [
+                Parameter::Sigma0,
+                Parameter::Sigma1,
+                Parameter::Sigma2,
+                Parameter::Fc,
+                Parameter::Fs
+            ]
+        );
+        for p in scaling {
             assert!(!unit(p).contains('N'), "{p}");
         }
     }
