@@ -281,7 +281,8 @@ pub(crate) fn has_reversal(u: &[f64]) -> bool {
 }
 
 /// Start values of every LuGre (or Dahl) parameter from the data (module docs), before the
-/// linear solve for `sigma1`, `sigma2`. `current` supplies `beta` (and anything not estimated).
+/// linear solve for `sigma1`, `sigma2`. `current` supplies `beta` (and anything not estimated),
+/// one value per LuGre parameter.
 pub(crate) fn data_start(
     family: Family,
     ex: &Exact,
@@ -394,15 +395,21 @@ pub(crate) fn data_start(
         }
     }
     let dz_scale = v_max;
-    vec![
-        sigma0,
-        0.01 * f_scale / dz_scale,
-        sigma2,
-        fc,
-        fs,
-        vs,
-        current[6],
-    ]
+    // The estimated parameters; the others (`beta`) keep their current values.
+    let mut start = current.to_vec();
+    for (p, v) in [
+        (Parameter::Sigma0, sigma0),
+        (Parameter::Sigma1, 0.01 * f_scale / dz_scale),
+        (Parameter::Sigma2, sigma2),
+        (Parameter::Fc, fc),
+        (Parameter::Fs, fs),
+        (Parameter::Vs, vs),
+    ] {
+        if let Some(i) = Parameter::LUGRE.iter().position(|&q| q == p) {
+            start[i] = v;
+        }
+    }
+    start
 }
 
 /// `x > 0` (false for NaN).

@@ -328,7 +328,7 @@ impl FitSpec {
     /// The LuGre model with these values (for the fixed parameters; free ones start from the
     /// data).
     pub fn lugre(p: LuGreParams) -> Self {
-        let values = vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta];
+        let values = p.named().map(|(_, v)| v).to_vec();
         Self::with_values(Family::LuGre, values, true)
     }
 
