@@ -212,10 +212,20 @@ fn every_text_output_names_its_model() {
     std::fs::write(&path, "u\n0\n1\n-1\n2\n-2\n0\n").unwrap();
     let input = path.to_str().unwrap();
     let text = stdout(&["cycles", "--input", input, "--sigma0", "1e5", "--fs", "1.5"]);
-    assert!(
-        text.contains("\nLuGre: sigma0 = 100000, sigma1 = 1*, sigma2 = 0*, Fc = 1*, Fs = 1.5, vs = 1*, beta = 1* (* default); only sigma0 and Fs act on the rate-independent loop\n"),
-        "{text}"
+    // sigma0 and Fs as given, every other parameter of the table at its default, marked.
+    let values: Vec<String> = Parameter::LUGRE
+        .iter()
+        .map(|&p| match p {
+            Parameter::Sigma0 => "sigma0 = 100000".to_string(),
+            Parameter::Fs => "Fs = 1.5".to_string(),
+            p => format!("{} = {}*", p.symbol(), shown(p.default_value())),
+        })
+        .collect();
+    let want = format!(
+        "\nLuGre: {} (* default); only sigma0 and Fs act on the rate-independent loop\n",
+        values.join(", ")
     );
+    assert!(text.contains(&want), "wanted {want} in {text}");
     std::fs::remove_dir_all(&dir).unwrap();
     // dynamics: the scenario's model, or the one the flags name.
     let text = stdout(&["dynamics", "--scenario", "breakaway"]);
