@@ -1,5 +1,6 @@
 //! `lugre.LuGre` and `lugre.Dahl`: validated models and what is computed from them.
 
+use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -19,29 +20,24 @@ pub struct PyLuGre {
 
 #[pymethods]
 impl PyLuGre {
+    /// The keywords are the table's ([`keyword_values`]); Python's signature is set at import
+    /// ([`document`]).
     #[new]
-    #[pyo3(
-        signature = (*, sigma0=None, sigma1=None, sigma2=None, fc=None, fs=None, vs=None, beta=None),
-        text_signature = "(*, sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)"
-    )]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        sigma0: Option<&Bound<'_, PyAny>>,
-        sigma1: Option<&Bound<'_, PyAny>>,
-        sigma2: Option<&Bound<'_, PyAny>>,
-        fc: Option<&Bound<'_, PyAny>>,
-        fs: Option<&Bound<'_, PyAny>>,
-        vs: Option<&Bound<'_, PyAny>>,
-        beta: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Self> {
-        // In the order of `Parameter::LUGRE`; names and defaults from it.
-        let given = [sigma0, sigma1, sigma2, fc, fs, vs, beta];
+    #[pyo3(signature = (**parameters))]
+    fn new(parameters: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
         let mut p = lugre::LuGreParams::default();
-        for (q, value) in Parameter::LUGRE.into_iter().zip(given) {
-            p.set(q, real_or(value, q.name(), q.default_value())?);
+        for (q, value) in keyword_values("LuGre", &Parameter::LUGRE, parameters)? {
+            p.set(q, value);
         }
         Ok(Self {
             inner: lugre::LuGre::from_params(p).map_err(value_error)?,
+        })
+    }
+
+    /// A parameter of the table without a getter of its own.
+    fn __getattr__(&self, name: &str) -> PyResult<f64> {
+        parameter_attribute("LuGre", &Parameter::LUGRE, name, |p| {
+            self.inner.params().get(p)
         })
     }
 
@@ -221,16 +217,26 @@ pub struct PyDahl {
 
 #[pymethods]
 impl PyDahl {
+    /// The keywords are the table's, as [`PyLuGre`]'s.
     #[new]
-    #[pyo3(signature = (*, rho=None, fc=None), text_signature = "(*, rho=1.0, fc=1.0)")]
-    fn new(rho: Option<&Bound<'_, PyAny>>, fc: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        // Names and defaults from the table.
-        let value = |obj, p: Parameter| real_or(obj, p.name(), p.default_value());
-        let rho = value(rho, Parameter::Rho)?;
-        let fc = value(fc, Parameter::Fc)?;
+    #[pyo3(signature = (**parameters))]
+    fn new(parameters: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let values = keyword_values("Dahl", &Parameter::DAHL, parameters)?;
+        let value = |p: Parameter| {
+            values
+                .iter()
+                .find(|(q, _)| *q == p)
+                .map_or(p.default_value(), |&(_, v)| v)
+        };
         Ok(Self {
-            inner: lugre::Dahl::new(rho, fc).map_err(value_error)?,
+            inner: lugre::Dahl::new(value(Parameter::Rho), value(Parameter::Fc))
+                .map_err(value_error)?,
         })
+    }
+
+    /// A parameter of the table without a getter of its own.
+    fn __getattr__(&self, name: &str) -> PyResult<f64> {
+        parameter_attribute("Dahl", &Parameter::DAHL, name, |p| self.inner.get(p))
     }
 
     /// The Dahl parameter rho > 0.
@@ -405,15 +411,78 @@ fn keyword_lines(parameters: &[Parameter]) -> String {
         .join("\n")
 }
 
-/// The models' docstrings with their keywords from the core's table, set on the classes of
-/// module `m` at import.
+/// The value of every parameter of `table` from the keywords given to `class` (its default
+/// where not given), each a real number; a keyword not in the table is a `TypeError`, as Python
+/// says it.
+fn keyword_values(
+    class: &str,
+    table: &[Parameter],
+    given: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Vec<(Parameter, f64)>> {
+    if let Some(d) = given {
+        for key in d.keys() {
+            let name = key.str()?.to_string();
+            if !table.iter().any(|p| p.name() == name) {
+                let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
+                return Err(PyTypeError::new_err(format!(
+                    "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
+                    names.join(", ")
+                )));
+            }
+        }
+    }
+    table
+        .iter()
+        .map(|&p| {
+            let value = match given {
+                Some(d) => d.get_item(p.name())?,
+                None => None,
+            };
+            Ok((p, real_or(value.as_ref(), p.name(), p.default_value())?))
+        })
+        .collect()
+}
+
+/// The attribute `name` of a `class` object: the value of its parameter of that name (`get`),
+/// else Python's `AttributeError`.
+fn parameter_attribute(
+    class: &str,
+    table: &[Parameter],
+    name: &str,
+    get: impl Fn(Parameter) -> Option<f64>,
+) -> PyResult<f64> {
+    table
+        .iter()
+        .find(|p| p.name() == name)
+        .and_then(|&p| get(p))
+        .ok_or_else(|| {
+            PyAttributeError::new_err(format!("'{class}' object has no attribute '{name}'"))
+        })
+}
+
+/// The models' docstrings with their keywords from the core's table, and their signatures
+/// (`inspect.signature(lugre.LuGre)`: keyword-only, with the table's defaults), set on the
+/// classes of module `m` at import.
 pub(crate) fn document(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    for (class, doc, parameters) in [
+    let inspect = m.py().import("inspect")?;
+    let parameter = inspect.getattr("Parameter")?;
+    let keyword_only = parameter.getattr("KEYWORD_ONLY")?;
+    for (class, doc, table) in [
         ("LuGre", LUGRE_DOC, &Parameter::LUGRE[..]),
         ("Dahl", DAHL_DOC, &Parameter::DAHL[..]),
     ] {
-        let text = doc.replace("{keywords}", &keyword_lines(parameters));
-        m.getattr(class)?.setattr("__doc__", text)?;
+        let cls = m.getattr(class)?;
+        cls.setattr("__doc__", doc.replace("{keywords}", &keyword_lines(table)))?;
+        let parameters = table
+            .iter()
+            .map(|p| {
+                let default = PyDict::new(m.py());
+                default.set_item("default", p.default_value())?;
+                parameter.call((p.name(), &keyword_only), Some(&default))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let signature = inspect.getattr("Signature")?.call1((parameters,))?;
+        cls.setattr("__signature__", signature)?;
     }
     Ok(())
 }

@@ -110,3 +110,14 @@ def test_the_command_line_names_the_same_parameters(lugre_cli):
         j = lugre_cli(["loop", "--model", model.lower(), "--turning-points", "0,1", "--json"])
         got = {k: v for k, v in j["model"].items() if k != "kind"}
         assert got == {name: row["default"] for name, row in table.items()}, model
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_a_keyword_not_in_the_table_is_a_type_error_naming_the_table(model):
+    names = ", ".join(lugre.PARAMETERS[model])
+    with pytest.raises(TypeError, match=rf"^{model}\(\) got an unexpected keyword argument 'mu' \(its parameters: {names}\)$"):
+        MODELS[model](mu=1.0)
+    with pytest.raises(TypeError, match="positional"):
+        MODELS[model](1.0)
+    with pytest.raises(AttributeError, match=f"'{model}' object has no attribute 'mu'"):
+        MODELS[model]().mu
