@@ -4,14 +4,16 @@
 //! `--plot`).
 
 use anyhow::{bail, Result};
-use clap::{Args, ValueEnum};
+use clap::{Arg, ArgMatches, Args, Command, ValueEnum};
+use lugre::error::NormalForceError;
+use lugre::fit::Family;
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use lugre_io::{Delimiter, ReadOptions, Role, Spec};
 use std::path::{Path, PathBuf};
 
+use crate::fmt::sig;
 use crate::io::outputs::Files;
-
 use crate::numbers::{parse_list, Real};
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,6 +46,17 @@ pub(crate) struct DataArgs {
     /// How the fields are separated (default: found from the first line that is not a comment).
     #[arg(long, value_enum, help_heading = "Data file")]
     pub(crate) delimiter: Option<DelimiterArg>,
+}
+
+/// The core's normal-force error for the file `path`, naming the row (1-based, as the reader
+/// counts the data rows).
+pub(crate) fn normal_force_error(path: &Path, e: NormalForceError) -> anyhow::Error {
+    match e {
+        NormalForceError::NotPositive { index, .. } => {
+            anyhow::anyhow!("{}: row {}: {e}", path.display(), index + 1)
+        }
+        e => anyhow::anyhow!("{}: {e}", path.display()),
+    }
 }
 
 /// `--interpolate`'s values: how samples are read between them.
@@ -99,7 +112,8 @@ impl DataArgs {
     }
 }
 
-/// Which parameters a command needs named ([`ModelArgs::check_named`]).
+/// Which parameters a command needs named ([`ModelArgs::check_named`]) or uses
+/// ([`ModelChoice::describe`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Needed {
     /// Every parameter (a simulation of a physical system).
@@ -108,40 +122,160 @@ pub(crate) enum Needed {
     RateIndependent,
 }
 
+impl ModelKind {
+    /// The model's label in text and its parameters, from the core's table.
+    fn family(self) -> (&'static str, &'static [Parameter]) {
+        match self {
+            ModelKind::Lugre => (Family::LuGre.label(), &Parameter::LUGRE),
+            ModelKind::Dahl => (Family::Dahl.label(), &Parameter::DAHL),
+        }
+    }
+
+    /// The parameters of the model that act in a computation that uses `needed`.
+    fn acting(self, needed: Needed) -> &'static [Parameter] {
+        match (self, needed) {
+            (ModelKind::Lugre, Needed::RateIndependent) => &Parameter::LUGRE_RATE_INDEPENDENT,
+            (kind, _) => kind.family().1,
+        }
+    }
+}
+
+/// The model's flags: `--model`, one flag per parameter of the core's table
+/// ([`ParameterFlags`]) and `--preset`, under the heading "Model".
 #[derive(Args, Debug, Clone)]
 pub(crate) struct ModelArgs {
-    /// Model: LuGre (sigma0, sigma1, sigma2, Fc, Fs, vs, beta) or Dahl (rho, Fc).
-    #[arg(long, value_enum, default_value = "lugre", help_heading = "Model")]
+    #[arg(
+        long,
+        value_enum,
+        default_value = "lugre",
+        help_heading = MODEL_HEADING,
+        help = model_help()
+    )]
     pub(crate) model: ModelKind,
-    /// LuGre bristle stiffness sigma0 > 0 [N/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) sigma0: Option<f64>,
-    /// LuGre micro-damping sigma1 >= 0 [N s/m] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) sigma1: Option<f64>,
-    /// LuGre viscous coefficient sigma2 >= 0 [N s/m], f(v) = sigma2 v (default 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) sigma2: Option<f64>,
-    /// Coulomb force Fc > 0 [N] (LuGre and Dahl; default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) fc: Option<f64>,
-    /// LuGre stiction force Fs > 0 [N]; g(0) = Fs (default 2).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) fs: Option<f64>,
-    /// LuGre Stribeck velocity vs > 0 [m/s] (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) vs: Option<f64>,
-    /// LuGre Stribeck exponent beta > 0: g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta) (default 1).
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) beta: Option<f64>,
-    /// Dahl parameter rho > 0 [1/m] (default 1): w' = rho (u' - |u'| w), y = Fc w.
-    #[arg(long, allow_hyphen_values = true, value_parser = Real, help_heading = "Model")]
-    pub(crate) rho: Option<f64>,
-    /// LuGre defaults from a published parameter set (the flags above override them):
-    /// canudas1995 is Table I of Canudas de Wit et al. (1995): sigma0 = 1e5, sigma1 =
-    /// sqrt(1e5), sigma2 = 0.4, Fc = 1, Fs = 1.5, vs = 1e-3, beta = 2.
-    #[arg(long, value_enum, help_heading = "Model")]
+    // `--sigma0 ... --rho`, generated from the table.
+    #[command(flatten)]
+    pub(crate) values: ParameterFlags,
+    #[arg(long, value_enum, help_heading = MODEL_HEADING, help = preset_help())]
     pub(crate) preset: Option<Preset>,
+}
+
+/// The heading of the model's flags in `--help`.
+const MODEL_HEADING: &str = "Model";
+
+/// `--model`'s help: each model with its parameters (from the table) and equations.
+fn model_help() -> String {
+    let list = |kind: ModelKind| {
+        let (label, parameters) = kind.family();
+        let symbols: Vec<&str> = parameters.iter().map(|p| p.symbol()).collect();
+        format!("{label} ({})", symbols.join(", "))
+    };
+    format!(
+        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w",
+        list(ModelKind::Lugre),
+        list(ModelKind::Dahl)
+    )
+}
+
+/// `--preset`'s help: the preset's values, from the core.
+fn preset_help() -> String {
+    let values: Vec<String> = LuGreParams::canudas_de_wit_1995()
+        .named()
+        .iter()
+        .map(|(p, v)| format!("{} = {}", p.symbol(), sig(*v, 10)))
+        .collect();
+    format!(
+        "LuGre defaults from a published parameter set (the parameters' flags override them): canudas1995 is Table I of Canudas de Wit et al. (1995): {}",
+        values.join(", ")
+    )
+}
+
+/// The flags of the models' parameters (`--sigma0`, ..., `--rho`): one per parameter of the
+/// core's table ([`Parameter::ALL`]), named after it, its help (what it is, its domain, unit,
+/// model and default) written from it, and read back by name. A parameter added to the table
+/// is a flag here without a change.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ParameterFlags {
+    given: Vec<(Parameter, f64)>,
+}
+
+impl ParameterFlags {
+    /// The value given for `p`'s flag.
+    pub(crate) fn get(&self, p: Parameter) -> Option<f64> {
+        self.given.iter().find(|(q, _)| *q == p).map(|&(_, v)| v)
+    }
+
+    /// The flag of `p`: `--NAME VALUE`, any value starting with '-' taken as a number.
+    fn arg(p: Parameter) -> Arg {
+        Arg::new(p.name())
+            .long(p.name())
+            .value_name(p.name().to_uppercase())
+            .allow_hyphen_values(true)
+            .value_parser(Real)
+            .help(Self::help(p))
+            .help_heading(MODEL_HEADING)
+    }
+
+    /// `Bristle stiffness: sigma0 > 0 [N/m] (LuGre; default 1)`.
+    fn help(p: Parameter) -> String {
+        let models: Vec<&str> = [ModelKind::Lugre, ModelKind::Dahl]
+            .into_iter()
+            .map(ModelKind::family)
+            .filter(|(_, parameters)| parameters.contains(&p))
+            .map(|(label, _)| label)
+            .collect();
+        let unit = match p.unit() {
+            "1" => String::new(),
+            unit => format!(" [{unit}]"),
+        };
+        let description = p.description();
+        let mut first = description.chars();
+        let capitalized: String = first
+            .next()
+            .map(|c| c.to_ascii_uppercase())
+            .into_iter()
+            .chain(first)
+            .collect();
+        format!(
+            "{capitalized}: {} {}{unit} ({}; default {})",
+            p.symbol(),
+            p.domain().condition(),
+            models.join(" and "),
+            sig(p.default_value(), 10)
+        )
+    }
+}
+
+impl clap::FromArgMatches for ParameterFlags {
+    fn from_arg_matches(matches: &ArgMatches) -> Result<Self, clap::Error> {
+        let mut flags = Self::default();
+        flags.update_from_arg_matches(matches)?;
+        Ok(flags)
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &ArgMatches) -> Result<(), clap::Error> {
+        for p in Parameter::ALL {
+            let value = matches
+                .try_get_one::<f64>(p.name())
+                .map_err(|e| clap::Error::raw(clap::error::ErrorKind::ArgumentConflict, e))?;
+            if let Some(&v) = value {
+                self.given.retain(|(q, _)| *q != p);
+                self.given.push((p, v));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Args for ParameterFlags {
+    fn augment_args(cmd: Command) -> Command {
+        Parameter::ALL
+            .into_iter()
+            .fold(cmd, |cmd, p| cmd.arg(Self::arg(p)))
+    }
+
+    fn augment_args_for_update(cmd: Command) -> Command {
+        Self::augment_args(cmd)
+    }
 }
 
 /// A published LuGre parameter set.
@@ -150,37 +284,49 @@ pub(crate) enum Preset {
     Canudas1995,
 }
 
+impl Preset {
+    fn params(self) -> LuGreParams {
+        match self {
+            Preset::Canudas1995 => LuGreParams::canudas_de_wit_1995(),
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Preset::Canudas1995 => "canudas1995",
+        }
+    }
+}
+
 /// A validated model as chosen on the command line.
 #[derive(Debug, Clone)]
-pub(crate) enum ModelChoice {
+pub(crate) enum Model {
     LuGre(LuGre),
     Dahl(Dahl),
+}
+
+/// The model chosen on the command line, with where each value came from (for
+/// [`ModelChoice::describe`]).
+#[derive(Debug, Clone)]
+pub(crate) struct ModelChoice {
+    pub(crate) model: Model,
+    kind: ModelKind,
+    preset: Option<Preset>,
+    /// The parameters left at the table's default.
+    defaults: Vec<Parameter>,
 }
 
 impl ModelArgs {
     /// The value given for a parameter's flag (`--sigma0` for [`Parameter::Sigma0`], ...).
     pub(crate) fn given(&self, p: Parameter) -> Option<f64> {
-        match p {
-            Parameter::Sigma0 => self.sigma0,
-            Parameter::Sigma1 => self.sigma1,
-            Parameter::Sigma2 => self.sigma2,
-            Parameter::Fc => self.fc,
-            Parameter::Fs => self.fs,
-            Parameter::Vs => self.vs,
-            Parameter::Beta => self.beta,
-            Parameter::Rho => self.rho,
-            _ => None,
-        }
+        self.values.get(p)
     }
 
     /// Whether the flags name anything of a model (a preset, `--model` or a parameter).
     pub(crate) fn names_any(&self) -> bool {
         self.preset.is_some()
             || self.model != ModelKind::Lugre
-            || Parameter::LUGRE
-                .iter()
-                .chain(&[Parameter::Rho])
-                .any(|&p| self.given(p).is_some())
+            || Parameter::ALL.iter().any(|&p| self.given(p).is_some())
     }
 
     /// For a physical system: every parameter in `needed` of the chosen model has a value from
@@ -190,12 +336,9 @@ impl ModelArgs {
         if self.preset.is_some() {
             return Ok(());
         }
-        let parameters: &[Parameter] = match (self.model, needed) {
-            (ModelKind::Lugre, Needed::All) => &Parameter::LUGRE,
-            (ModelKind::Lugre, Needed::RateIndependent) => &Parameter::LUGRE_RATE_INDEPENDENT,
-            (ModelKind::Dahl, _) => &Parameter::DAHL,
-        };
-        let missing: Vec<String> = parameters
+        let missing: Vec<String> = self
+            .model
+            .acting(needed)
             .iter()
             .filter(|p| self.given(**p).is_none() && !p.default_is_absence())
             .map(|p| format!("--{}", p.name()))
@@ -214,101 +357,154 @@ impl ModelArgs {
         Ok(())
     }
 
-    /// The given value, else the preset's, else the parameter's default.
-    fn value(&self, p: Parameter) -> f64 {
-        let preset = match self.preset {
-            Some(Preset::Canudas1995) => LuGreParams::canudas_de_wit_1995().get(p),
-            None => None,
-        };
-        self.given(p).or(preset).unwrap_or(p.default_value())
+    /// The given value, else the preset's, else the parameter's default (`None`).
+    fn named_value(&self, p: Parameter) -> Option<f64> {
+        self.given(p)
+            .or_else(|| self.preset.and_then(|s| s.params().get(p)))
     }
 
     pub(crate) fn build(&self) -> Result<ModelChoice> {
-        match self.model {
-            ModelKind::Lugre => {
-                if self.rho.is_some() {
-                    bail!("--rho is the Dahl model's parameter (add --model dahl)");
+        let (_, parameters) = self.model.family();
+        let names: Vec<String> = parameters.iter().map(|p| format!("--{p}")).collect();
+        if self.model == ModelKind::Dahl && self.preset.is_some() {
+            bail!(
+                "--preset is a LuGre parameter set; the Dahl model takes {}",
+                names.join(" and ")
+            );
+        }
+        // A flag of a parameter the chosen model does not have.
+        if let Some(q) = Parameter::ALL
+            .into_iter()
+            .find(|q| !parameters.contains(q) && self.given(*q).is_some())
+        {
+            match self.model {
+                ModelKind::Lugre => {
+                    bail!("--{q} is the Dahl model's parameter (add --model dahl)")
                 }
-                let mut p = LuGreParams::default();
-                for q in Parameter::LUGRE {
-                    p.set(q, self.value(q));
-                }
-                Ok(ModelChoice::LuGre(LuGre::from_params(p)?))
-            }
-            ModelKind::Dahl => {
-                if self.preset.is_some() {
-                    bail!("--preset is a LuGre parameter set; the Dahl model takes --rho and --fc");
-                }
-                let lugre_only = Parameter::LUGRE
-                    .into_iter()
-                    .filter(|q| !Parameter::DAHL.contains(q));
-                if let Some(q) = lugre_only.into_iter().find(|&q| self.given(q).is_some()) {
-                    bail!(
-                        "--{} is a LuGre parameter; the Dahl model takes --rho and --fc",
-                        q.name()
-                    );
-                }
-                Ok(ModelChoice::Dahl(Dahl::new(
-                    self.value(Parameter::Rho),
-                    self.value(Parameter::Fc),
-                )?))
+                ModelKind::Dahl => bail!(
+                    "--{q} is a LuGre parameter; the Dahl model takes {}",
+                    names.join(" and ")
+                ),
             }
         }
+        let value = |p: Parameter| self.named_value(p).unwrap_or(p.default_value());
+        let model = match self.model {
+            ModelKind::Lugre => {
+                let mut p = LuGreParams::default();
+                for &q in parameters {
+                    p.set(q, value(q));
+                }
+                Model::LuGre(LuGre::from_params(p)?)
+            }
+            ModelKind::Dahl => Model::Dahl(Dahl::new(value(Parameter::Rho), value(Parameter::Fc))?),
+        };
+        Ok(ModelChoice {
+            model,
+            kind: self.model,
+            preset: self.preset,
+            defaults: parameters
+                .iter()
+                .copied()
+                .filter(|&p| self.named_value(p).is_none())
+                .collect(),
+        })
     }
 }
 
 impl ModelChoice {
     pub(crate) fn rate_independent(&self) -> RateIndependent {
-        match self {
-            ModelChoice::LuGre(m) => m.rate_independent(),
-            ModelChoice::Dahl(m) => m.rate_independent(),
+        match &self.model {
+            Model::LuGre(m) => m.rate_independent(),
+            Model::Dahl(m) => m.rate_independent(),
         }
     }
 
     /// The equivalent LuGre model (Dahl maps exactly).
     pub(crate) fn lugre(&self) -> LuGre {
-        match self {
-            ModelChoice::LuGre(m) => m.clone(),
-            ModelChoice::Dahl(m) => m.to_lugre(),
+        match &self.model {
+            Model::LuGre(m) => m.clone(),
+            Model::Dahl(m) => m.to_lugre(),
+        }
+    }
+
+    /// The model's parameters with their values, in the table's order.
+    fn values(&self) -> Vec<(Parameter, f64)> {
+        match &self.model {
+            Model::LuGre(m) => m.params().named().to_vec(),
+            Model::Dahl(m) => m.named().to_vec(),
         }
     }
 
     /// The model as a JSON object: `kind` and its parameters.
     pub(crate) fn to_json(&self) -> serde_json::Value {
-        match self {
-            ModelChoice::LuGre(m) => {
-                let mut j = serde_json::json!({ "kind": "lugre" });
-                for (q, value) in m.params().named() {
-                    j[q.name()] = value.into();
-                }
-                j
-            }
-            ModelChoice::Dahl(m) => serde_json::json!({
-                "kind": "dahl", "rho": m.rho(), "fc": m.fc(),
-            }),
+        let kind = match self.kind {
+            ModelKind::Lugre => "lugre",
+            ModelKind::Dahl => "dahl",
+        };
+        let mut j = serde_json::json!({ "kind": kind });
+        for (q, value) in self.values() {
+            j[q.name()] = value.into();
         }
+        j
     }
 
-    /// One line describing the model.
-    pub(crate) fn describe(&self) -> String {
-        use crate::fmt::sig;
-        match self {
-            ModelChoice::LuGre(m) => {
-                let p = m.params();
-                format!(
-                    "LuGre: sigma0 = {}, sigma1 = {}, sigma2 = {}, Fc = {}, Fs = {}, vs = {}, beta = {}",
-                    sig(p.sigma0, 10), sig(p.sigma1, 10), sig(p.sigma2, 10), sig(p.fc, 10),
-                    sig(p.fs, 10), sig(p.vs, 10), sig(p.beta, 10)
-                )
-            }
-            ModelChoice::Dahl(m) => format!(
-                "Dahl: rho = {}, Fc = {} (LuGre with sigma0 = rho Fc = {}, g = Fc)",
-                sig(m.rho(), 10),
-                sig(m.fc(), 10),
+    /// One line naming the model, its values with the defaults marked, and which of them act
+    /// in a computation that uses `needed` ([`model_line`]).
+    pub(crate) fn describe(&self, needed: Needed) -> String {
+        let (label, _) = self.kind.family();
+        let origin = self.preset.map(|p| format!("preset {}", p.name()));
+        let values: Vec<(Parameter, f64, bool)> = self
+            .values()
+            .into_iter()
+            .map(|(p, v)| (p, v, self.defaults.contains(&p)))
+            .collect();
+        let mut line = model_line(label, origin.as_deref(), &values, self.kind.acting(needed));
+        if let Model::Dahl(m) = &self.model {
+            line += &format!(
+                "; LuGre with sigma0 = rho Fc = {}, g = Fc",
                 sig(m.rho() * m.fc(), 10)
-            ),
+            );
         }
+        line
     }
+}
+
+/// The one line every text output names its model with: `LuGre: sigma0 = 6, sigma1 = 1*, ...,
+/// beta = 1* (* default)`, the label followed by where the values come from (`origin`, e.g. a
+/// preset), each value marked `*` where it is the table's default; where only `acting` of
+/// the parameters act (the rate-independent loop: `sigma0` and `Fs`), it says so.
+pub(crate) fn model_line(
+    label: &str,
+    origin: Option<&str>,
+    values: &[(Parameter, f64, bool)],
+    acting: &[Parameter],
+) -> String {
+    let items: Vec<String> = values
+        .iter()
+        .map(|&(p, v, default)| {
+            format!(
+                "{} = {}{}",
+                p.symbol(),
+                sig(v, 10),
+                if default { "*" } else { "" }
+            )
+        })
+        .collect();
+    let mut line = match origin {
+        Some(origin) => format!("{label} ({origin}): {}", items.join(", ")),
+        None => format!("{label}: {}", items.join(", ")),
+    };
+    if values.iter().any(|&(_, _, default)| default) {
+        line += " (* default)";
+    }
+    if values.iter().any(|(p, _, _)| !acting.contains(p)) {
+        let names: Vec<&str> = acting.iter().map(|p| p.symbol()).collect();
+        line += &format!(
+            "; only {} act on the rate-independent loop",
+            names.join(" and ")
+        );
+    }
+    line
 }
 
 /// Periodic input flags shared by `loop` and `simulate`: exactly one of them.

@@ -731,6 +731,12 @@ pub const LUGRE_FAMILY_LUGRE: i32 = 0;
 pub const LUGRE_FAMILY_DAHL: i32 = 1;
 /// The most parameters a family has (LuGre's seven): the length of the fit's arrays.
 pub const LUGRE_MAX_PARAMETERS: usize = 7;
+// A literal for the header; a model with more parameters in the core's table fails the build
+// here rather than a fit at run time.
+const _: () = assert!(
+    LUGRE_MAX_PARAMETERS >= Parameter::LUGRE.len() && LUGRE_MAX_PARAMETERS >= Parameter::DAHL.len(),
+    "LUGRE_MAX_PARAMETERS is below the number of a model's parameters in the core's table"
+);
 
 /// A C string argument (NULL: `None`), or a failure naming it.
 fn text<'a>(p: *const c_char, name: &str) -> Result<Option<std::borrow::Cow<'a, str>>, Failure> {

@@ -7,11 +7,12 @@
 
 use std::ffi::CString;
 
+use lugre::error::NormalForceError;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow, Family, FitError, FitKind, FitReport, FitSpec,
     FullOptions, CUBIC_READING_TOL,
 };
-use lugre::model::Parameter;
+use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
 use pyo3::exceptions::{PyRuntimeWarning, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -170,20 +171,12 @@ pub fn fit<'py>(
         None => None,
     };
     if let Some(n) = &normal {
-        if n.len() != f.len() {
-            return Err(PyValueError::new_err(format!(
-                "normal has {} values, f has {}: one normal force per sample",
-                n.len(),
-                f.len()
-            )));
-        }
-        if let Some(i) = n.iter().position(|&v| v.is_nan() || v <= 0.0) {
-            return Err(PyValueError::new_err(format!(
-                "normal[{i}] must be > 0, got {}",
-                float_repr(py, n[i])
-            )));
-        }
-        f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
+        normal_force::to_coefficient(&mut f, n).map_err(|e| match e {
+            NormalForceError::NotPositive { index, .. } => {
+                PyValueError::new_err(format!("normal[{index}]: {e}"))
+            }
+            e => PyValueError::new_err(format!("normal: {e}")),
+        })?;
     }
     let kind = match given(kind) {
         Some(k) => kind_arg(&k)?,
@@ -540,11 +533,13 @@ fn report_dict<'py>(
     f: &[f64],
     normal: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    // With a normal force, Fc and Fs are the coefficients mu_c and mu_s.
-    let key = |name: &'static str| match (normal, name) {
-        (true, "fc") => "mu_c",
-        (true, "fs") => "mu_s",
-        _ => name,
+    // With a normal force, the core's names per newton (Fc and Fs: mu_c and mu_s).
+    let key = |name: &'static str| {
+        if normal {
+            normal_force::name_of(name)
+        } else {
+            name
+        }
     };
     let parameters = PyDict::new(py);
     for e in &r.estimates {

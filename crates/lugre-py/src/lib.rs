@@ -46,5 +46,10 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
         lugre::dynamics::Field::ALL.map(|f| f.name()),
     )?;
     m.add_function(wrap_pyfunction!(read::read, m)?)?;
+    // The core's tables: the models' parameters, the columns of cycles and sampled loops.
+    m.add("PARAMETERS", models::parameter_table(m.py())?)?;
+    m.add("CYCLE_COLUMNS", lugre::CycleColumns::NAMES)?;
+    m.add("LOOP_COLUMNS", lugre::LoopPoint::COLUMNS)?;
+    models::document(m)?;
     Ok(())
 }

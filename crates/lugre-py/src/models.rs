@@ -1,31 +1,17 @@
 //! `lugre.LuGre` and `lugre.Dahl`: validated models and what is computed from them.
 
+use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
 use crate::convert::{float_repr, map_floats, real_or, value_error};
 use crate::loops::PyHysteresisLoop;
 use crate::simulate::{simulate, SimulateArgs};
+use lugre::error::num;
 use lugre::model::Parameter;
 
-/// The LuGre friction model (paper eq. 1) with the Stribeck curve and viscous friction.
-///
-///     x' = -sigma0 |u'| / g(u') x + u'
-///     F  =  sigma0 x + sigma1 x' + f(u')
-///     g(v) = fc + (fs - fc) exp(-|v / vs|^beta)       f(v) = sigma2 v
-///
-/// Keyword arguments; the defaults are the paper's Examples 2-3: sigma0 = 1 (bristle
-/// stiffness, > 0), sigma1 = 1 (micro-damping, >= 0), sigma2 = 0 (viscous coefficient, >= 0),
-/// fc = 1 (Coulomb force, > 0), fs = 2 (stiction force, > 0; g(0) = fs), vs = 1 (Stribeck
-/// velocity, > 0), beta = 1 (Stribeck exponent, > 0). An invalid value raises ValueError with
-/// the message the `lugre` command prints, e.g. "sigma0 must be > 0, got 0".
-///
-/// The hysteresis loop depends only on sigma0 and g(0) = fs (a = sigma0 / g(0)).
-///
-/// >>> import lugre
-/// >>> hl = lugre.LuGre(sigma0=6).loop_bimodal(0, 0.5, 1, 1.5)   # the paper's Example 4
-/// >>> hl.theorem_a.minor_loop
-/// (1.0, 2.0)
+/// The LuGre friction model (paper eq. 1); the docstring Python shows is [`LUGRE_DOC`] with
+/// the keywords from the core's table ([`document`]).
 #[pyclass(frozen, eq, module = "lugre", name = "LuGre")]
 #[derive(Clone, PartialEq)]
 pub struct PyLuGre {
@@ -34,29 +20,24 @@ pub struct PyLuGre {
 
 #[pymethods]
 impl PyLuGre {
+    /// The keywords are the table's ([`keyword_values`]); Python's signature is set at import
+    /// ([`document`]).
     #[new]
-    #[pyo3(
-        signature = (*, sigma0=None, sigma1=None, sigma2=None, fc=None, fs=None, vs=None, beta=None),
-        text_signature = "(*, sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)"
-    )]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        sigma0: Option<&Bound<'_, PyAny>>,
-        sigma1: Option<&Bound<'_, PyAny>>,
-        sigma2: Option<&Bound<'_, PyAny>>,
-        fc: Option<&Bound<'_, PyAny>>,
-        fs: Option<&Bound<'_, PyAny>>,
-        vs: Option<&Bound<'_, PyAny>>,
-        beta: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Self> {
-        // In the order of `Parameter::LUGRE`; names and defaults from it.
-        let given = [sigma0, sigma1, sigma2, fc, fs, vs, beta];
+    #[pyo3(signature = (**parameters))]
+    fn new(parameters: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
         let mut p = lugre::LuGreParams::default();
-        for (q, value) in Parameter::LUGRE.into_iter().zip(given) {
-            p.set(q, real_or(value, q.name(), q.default_value())?);
+        for (q, value) in keyword_values("LuGre", &Parameter::LUGRE, parameters)? {
+            p.set(q, value);
         }
         Ok(Self {
             inner: lugre::LuGre::from_params(p).map_err(value_error)?,
+        })
+    }
+
+    /// A parameter of the table without a getter of its own.
+    fn __getattr__(&self, name: &str) -> PyResult<f64> {
+        parameter_attribute("LuGre", &Parameter::LUGRE, name, |p| {
+            self.inner.params().get(p)
         })
     }
 
@@ -210,28 +191,12 @@ impl PyLuGre {
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {
-        let p = self.inner.params();
-        let f = |v| float_repr(py, v);
-        format!(
-            "LuGre(sigma0={}, sigma1={}, sigma2={}, fc={}, fs={}, vs={}, beta={})",
-            f(p.sigma0),
-            f(p.sigma1),
-            f(p.sigma2),
-            f(p.fc),
-            f(p.fs),
-            f(p.vs),
-            f(p.beta)
-        )
+        model_repr(py, "LuGre", &self.inner.params().named())
     }
 
     /// The model's parameters as a dict (keyword arguments of the constructor).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let p = self.inner.params();
-        let d = PyDict::new(py);
-        for (q, value) in p.named() {
-            d.set_item(q.name(), value)?;
-        }
-        Ok(d)
+        values_dict(py, &self.inner.params().named())
     }
 
     /// Pickling and copying: the constructor's keyword arguments.
@@ -243,11 +208,7 @@ impl PyLuGre {
     }
 }
 
-/// The Dahl friction model: w' = rho (u' - |u'| w), y = fc w.
-///
-/// It is the LuGre model with g = fc, sigma0 = rho fc, sigma1 = 0 and f = 0. Keyword
-/// arguments rho = 1 (> 0) and fc = 1 (> 0); an invalid value raises ValueError with the
-/// message the `lugre` command prints.
+/// The Dahl friction model; the docstring Python shows is [`DAHL_DOC`] ([`document`]).
 #[pyclass(frozen, eq, module = "lugre", name = "Dahl")]
 #[derive(Clone, PartialEq)]
 pub struct PyDahl {
@@ -256,14 +217,26 @@ pub struct PyDahl {
 
 #[pymethods]
 impl PyDahl {
+    /// The keywords are the table's, as [`PyLuGre`]'s.
     #[new]
-    #[pyo3(signature = (*, rho=None, fc=None), text_signature = "(*, rho=1.0, fc=1.0)")]
-    fn new(rho: Option<&Bound<'_, PyAny>>, fc: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let rho = real_or(rho, "rho", 1.0)?;
-        let fc = real_or(fc, "fc", 1.0)?;
+    #[pyo3(signature = (**parameters))]
+    fn new(parameters: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let values = keyword_values("Dahl", &Parameter::DAHL, parameters)?;
+        let value = |p: Parameter| {
+            values
+                .iter()
+                .find(|(q, _)| *q == p)
+                .map_or(p.default_value(), |&(_, v)| v)
+        };
         Ok(Self {
-            inner: lugre::Dahl::new(rho, fc).map_err(value_error)?,
+            inner: lugre::Dahl::new(value(Parameter::Rho), value(Parameter::Fc))
+                .map_err(value_error)?,
         })
+    }
+
+    /// A parameter of the table without a getter of its own.
+    fn __getattr__(&self, name: &str) -> PyResult<f64> {
+        parameter_attribute("Dahl", &Parameter::DAHL, name, |p| self.inner.get(p))
     }
 
     /// The Dahl parameter rho > 0.
@@ -365,19 +338,12 @@ impl PyDahl {
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {
-        format!(
-            "Dahl(rho={}, fc={})",
-            float_repr(py, self.inner.rho()),
-            float_repr(py, self.inner.fc())
-        )
+        model_repr(py, "Dahl", &self.inner.named())
     }
 
     /// The model's parameters as a dict (keyword arguments of the constructor).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        d.set_item("rho", self.inner.rho())?;
-        d.set_item("fc", self.inner.fc())?;
-        Ok(d)
+        values_dict(py, &self.inner.named())
     }
 
     /// Pickling and copying: the constructor's keyword arguments.
@@ -387,6 +353,177 @@ impl PyDahl {
     ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyDict>)> {
         Ok((PyTuple::empty(py), self.to_dict(py)?))
     }
+}
+
+/// `lugre.LuGre`'s docstring; `{keywords}` is replaced at import by one line per parameter
+/// from the core's table ([`keyword_lines`]).
+const LUGRE_DOC: &str =
+    "The LuGre friction model (paper eq. 1) with the Stribeck curve and viscous friction.
+
+    x' = -sigma0 |u'| / g(u') x + u'
+    F  =  sigma0 x + sigma1 x' + f(u')
+    g(v) = fc + (fs - fc) exp(-|v / vs|^beta)       f(v) = sigma2 v
+
+Keyword arguments (the defaults are the paper's Examples 2-3):
+
+{keywords}
+
+An invalid value raises ValueError with the message the `lugre` command prints, e.g.
+\"sigma0 must be > 0, got 0\".
+
+The hysteresis loop depends only on sigma0 and g(0) = fs (a = sigma0 / g(0)).
+
+>>> import lugre
+>>> hl = lugre.LuGre(sigma0=6).loop_bimodal(0, 0.5, 1, 1.5)   # the paper's Example 4
+>>> hl.theorem_a.minor_loop
+(1.0, 2.0)
+";
+
+/// `lugre.Dahl`'s docstring, `{keywords}` as in [`LUGRE_DOC`].
+const DAHL_DOC: &str = "The Dahl friction model: w' = rho (u' - |u'| w), y = fc w.
+
+It is the LuGre model with g = fc, sigma0 = rho fc, sigma1 = 0 and f = 0. Keyword arguments:
+
+{keywords}
+
+An invalid value raises ValueError with the message the `lugre` command prints.
+";
+
+/// One line per parameter of `parameters`: `    sigma0 = 1   bristle stiffness, > 0 [N/m]`.
+fn keyword_lines(parameters: &[Parameter]) -> String {
+    let width = parameters.iter().map(|p| p.name().len()).max().unwrap_or(0);
+    parameters
+        .iter()
+        .map(|p| {
+            let unit = match p.unit() {
+                "1" => String::new(),
+                unit => format!(" [{unit}]"),
+            };
+            format!(
+                "    {:<width$} = {:<4} {}, {}{unit}",
+                p.name(),
+                num(p.default_value()),
+                p.description(),
+                p.domain().condition(),
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The value of every parameter of `table` from the keywords given to `class` (its default
+/// where not given), each a real number; a keyword not in the table is a `TypeError`, as Python
+/// says it.
+fn keyword_values(
+    class: &str,
+    table: &[Parameter],
+    given: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Vec<(Parameter, f64)>> {
+    if let Some(d) = given {
+        for key in d.keys() {
+            let name = key.str()?.to_string();
+            if !table.iter().any(|p| p.name() == name) {
+                let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
+                return Err(PyTypeError::new_err(format!(
+                    "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
+                    names.join(", ")
+                )));
+            }
+        }
+    }
+    table
+        .iter()
+        .map(|&p| {
+            let value = match given {
+                Some(d) => d.get_item(p.name())?,
+                None => None,
+            };
+            Ok((p, real_or(value.as_ref(), p.name(), p.default_value())?))
+        })
+        .collect()
+}
+
+/// The attribute `name` of a `class` object: the value of its parameter of that name (`get`),
+/// else Python's `AttributeError`.
+fn parameter_attribute(
+    class: &str,
+    table: &[Parameter],
+    name: &str,
+    get: impl Fn(Parameter) -> Option<f64>,
+) -> PyResult<f64> {
+    table
+        .iter()
+        .find(|p| p.name() == name)
+        .and_then(|&p| get(p))
+        .ok_or_else(|| {
+            PyAttributeError::new_err(format!("'{class}' object has no attribute '{name}'"))
+        })
+}
+
+/// The models' docstrings with their keywords from the core's table, and their signatures
+/// (`inspect.signature(lugre.LuGre)`: keyword-only, with the table's defaults), set on the
+/// classes of module `m` at import.
+pub(crate) fn document(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let inspect = m.py().import("inspect")?;
+    let parameter = inspect.getattr("Parameter")?;
+    let keyword_only = parameter.getattr("KEYWORD_ONLY")?;
+    for (class, doc, table) in [
+        ("LuGre", LUGRE_DOC, &Parameter::LUGRE[..]),
+        ("Dahl", DAHL_DOC, &Parameter::DAHL[..]),
+    ] {
+        let cls = m.getattr(class)?;
+        cls.setattr("__doc__", doc.replace("{keywords}", &keyword_lines(table)))?;
+        let parameters = table
+            .iter()
+            .map(|p| {
+                let default = PyDict::new(m.py());
+                default.set_item("default", p.default_value())?;
+                parameter.call((p.name(), &keyword_only), Some(&default))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let signature = inspect.getattr("Signature")?.call1((parameters,))?;
+        cls.setattr("__signature__", signature)?;
+    }
+    Ok(())
+}
+
+/// `lugre.PARAMETERS`: the core's table by model, `{"LuGre": {"sigma0": {"symbol": ...,
+/// "description": ..., "unit": ..., "default": ..., "domain": "> 0"}, ...}, "Dahl": {...}}`,
+/// each model's parameters in the order of its keywords.
+pub(crate) fn parameter_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let table = PyDict::new(py);
+    for (model, parameters) in [("LuGre", &Parameter::LUGRE[..]), ("Dahl", &Parameter::DAHL)] {
+        let by_name = PyDict::new(py);
+        for p in parameters {
+            let row = PyDict::new(py);
+            row.set_item("symbol", p.symbol())?;
+            row.set_item("description", p.description())?;
+            row.set_item("unit", p.unit())?;
+            row.set_item("default", p.default_value())?;
+            row.set_item("domain", p.domain().condition())?;
+            by_name.set_item(p.name(), row)?;
+        }
+        table.set_item(model, by_name)?;
+    }
+    Ok(table)
+}
+
+/// `Name(p1=v1, p2=v2, ...)` with Python's float reprs, in the table's order.
+fn model_repr(py: Python<'_>, name: &str, values: &[(Parameter, f64)]) -> String {
+    let items: Vec<String> = values
+        .iter()
+        .map(|&(p, v)| format!("{}={}", p.name(), float_repr(py, v)))
+        .collect();
+    format!("{name}({})", items.join(", "))
+}
+
+/// The parameters as a dict, the constructor's keyword arguments.
+fn values_dict<'py>(py: Python<'py>, values: &[(Parameter, f64)]) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for &(p, v) in values {
+        d.set_item(p.name(), v)?;
+    }
+    Ok(d)
 }
 
 /// The LuGre model of a `lugre.LuGre` or `lugre.Dahl` object (Dahl: its equivalent LuGre).

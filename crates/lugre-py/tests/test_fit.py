@@ -497,7 +497,7 @@ def test_a_normal_force_gives_friction_coefficients(example4):
     assert set(p) == {"sigma0", "mu_s"}
     for a, b in ((p["sigma0"]["value"] * 5, q["sigma0"]["value"]), (p["mu_s"]["value"] * 5, q["fs"]["value"])):
         assert abs(a - b) <= 1e-6 * b, (a, b)
-    with pytest.raises(ValueError, match=r"normal\[2\] must be > 0, got 0.0"):
+    with pytest.raises(ValueError, match=r"normal\[2\]: the normal force N must be > 0, got 0$"):
         lugre.fit(u, f, normal=np.where(np.arange(len(f)) == 2, 0.0, 1.0))
     with pytest.raises(ValueError, match="one normal force per sample"):
         lugre.fit(u, f, normal=np.ones(3))

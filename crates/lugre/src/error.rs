@@ -174,6 +174,17 @@ pub enum DataError {
     },
 }
 
+/// A normal force that cannot scale a model per newton ([`crate::model::normal`]); `index`
+/// is 0-based, each front end naming the sample its own way.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum NormalForceError {
+    #[error("the normal force N must be > 0, got {value}", value = num(*.value))]
+    NotPositive { index: usize, value: f64 },
+    #[error("{normal} normal forces for {samples} samples: one normal force per sample")]
+    Length { normal: usize, samples: usize },
+}
+
 /// An invalid input signal.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -282,11 +293,11 @@ pub enum FitError {
     NoReversal { fit: &'static str },
     #[error("the force F is 0 at every sample: there is nothing to fit")]
     ZeroForce,
-    #[error("unknown parameter '{name}' for the {model} model (its parameters: {known})")]
+    #[error("unknown parameter '{name}' for the {model} model (its parameters: {known})", known = .known.join(", "))]
     UnknownParameter {
         name: String,
         model: &'static str,
-        known: &'static str,
+        known: &'static [&'static str],
     },
     #[error("{name} does not enter the slow loop: the rate-independent limit depends only on sigma0 and g(0) = Fs (Dahl: rho and Fc), so {name} cannot be identified from quasi-static data (use a full fit of rate-dependent data)")]
     NotInSlowLoop { name: &'static str },

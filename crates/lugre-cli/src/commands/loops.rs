@@ -7,7 +7,8 @@ use lugre::{HysteresisLoop, Loop, LoopPoint, TheoremA};
 use std::io::Write;
 
 use crate::args::{
-    check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
+    check_files, ModelArgs, ModelChoice, Needed, OutputArgs, PeriodicInput, PeriodicInputArgs,
+    PlotArgs,
 };
 use crate::fmt::{exact, sig};
 use crate::hysteresis::{arc_points, kind_name};
@@ -25,10 +26,13 @@ const DEFAULT_CSV_SAMPLES: usize = 1001;
 /// The most points `--samples` may ask for (24 bytes each in memory, more as text).
 const MAX_SAMPLES: usize = 10_000_000;
 
-/// The help of `--csv` for this command.
-const CSV_HELP: &str =
-    "Write the sampled curve (columns rho,u,y) to this CSV file (1001 samples unless \
-    --samples or --at is given)";
+/// The help of `--csv` for this command (the columns are the core's).
+fn csv_help() -> String {
+    format!(
+        "Write the sampled curve (columns {}) to this CSV file ({DEFAULT_CSV_SAMPLES} samples unless --samples or --at is given)",
+        LoopPoint::COLUMNS.join(",")
+    )
+}
 /// The help of `--plot` for this command.
 const PLOT_HELP: &str =
     "Draw the loop in the (u, y°) plane, the minor loops solid with their start \
@@ -36,7 +40,7 @@ const PLOT_HELP: &str =
 
 #[derive(Args, Debug)]
 #[command(
-    mut_arg("csv", |a| a.help(CSV_HELP)),
+    mut_arg("csv", |a| a.help(csv_help())),
     mut_arg("plot", |a| a.help(PLOT_HELP))
 )]
 pub(crate) struct LoopArgs {
@@ -155,11 +159,12 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
         outcome.write_json(model, JsonOut::new(stdout.lock()))?;
     } else {
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
-        outcome.print_table(&mut out, &model.describe())?;
+        outcome.print_table(&mut out, &model.describe(Needed::RateIndependent))?;
         if let Some(path) = &args.output.csv {
             writeln!(
                 out,
-                "\nWrote the sampled curve (rho,u,y) to {}",
+                "\nWrote the sampled curve ({}) to {}",
+                LoopPoint::COLUMNS.join(","),
                 path.display()
             )?;
         }
@@ -198,9 +203,10 @@ impl Outcome {
                 &sampled
             }
         };
-        writeln!(w, "rho,u,y")?;
+        writeln!(w, "{}", LoopPoint::COLUMNS.join(","))?;
         for p in points {
-            writeln!(w, "{},{},{}", exact(p.rho), exact(p.u), exact(p.y))?;
+            let [rho, u, y] = p.values().map(exact);
+            writeln!(w, "{rho},{u},{y}")?;
         }
         Ok(())
     }

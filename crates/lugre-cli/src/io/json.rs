@@ -50,12 +50,23 @@ impl<W: Write> JsonOut<W> {
         self.num(x)
     }
 
-    /// `{"rho":..,"u":..,"y":..}`.
+    /// The key `name` of an object's member: `{"name":` for the first (`first`), else
+    /// `,"name":` (`name` needs no escaping: the core's column names).
+    #[inline]
+    pub(crate) fn key(&mut self, first: bool, name: &str) {
+        self.buf
+            .extend_from_slice(if first { b"{\"" } else { b",\"" });
+        self.buf.extend_from_slice(name.as_bytes());
+        self.buf.extend_from_slice(b"\":");
+    }
+
+    /// `{"rho":..,"u":..,"y":..}` ([`LoopPoint::COLUMNS`]).
     #[inline]
     pub(crate) fn point(&mut self, p: &LoopPoint) -> io::Result<()> {
-        self.field("{\"rho\":", p.rho)?;
-        self.field(",\"u\":", p.u)?;
-        self.field(",\"y\":", p.y)?;
+        for (k, (name, x)) in LoopPoint::COLUMNS.iter().zip(p.values()).enumerate() {
+            self.key(k == 0, name);
+            self.num(x)?;
+        }
         self.buf.push(b'}');
         self.maybe_flush()
     }

@@ -46,8 +46,11 @@ import warnings as _warnings
 
 from . import chunk
 from ._lugre import (
+    CYCLE_COLUMNS,
     DYNAMICS_COLUMNS,
     DYNAMICS_FIELDS,
+    LOOP_COLUMNS,
+    PARAMETERS,
     Curve,
     Dahl,
     HysteresisLoop,
@@ -63,9 +66,12 @@ from ._lugre import (
 from ._read import Columns, read
 
 __all__ = [
+    "CYCLE_COLUMNS",
     "DYNAMICS_COLUMNS",
     "DYNAMICS_FIELDS",
     "Columns",
+    "LOOP_COLUMNS",
+    "PARAMETERS",
     "Curve",
     "CyclesResult",
     "Dahl",

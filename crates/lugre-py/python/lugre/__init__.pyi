@@ -419,6 +419,11 @@ class FrictionLoop(TypedDict):
 
 DYNAMICS_COLUMNS: Tuple[str, ...]
 DYNAMICS_FIELDS: Tuple[str, ...]
+# The core's tables: each model's parameters by name (symbol, description, unit, default,
+# domain), in the order of its keywords; the columns of cycles and of a sampled loop.
+PARAMETERS: Dict[str, Dict[str, Dict[str, Any]]]
+CYCLE_COLUMNS: Tuple[str, ...]
+LOOP_COLUMNS: Tuple[str, ...]
 
 
 class DynamicsResult(Dict[str, Any]):

@@ -53,8 +53,10 @@ from . import fit as _single_fit
 
 __all__ = ["count", "cycles", "cycles_many", "fit_many"]
 
-_COLUMNS = ["range", "mean", "count", "start", "end", "closure", "closure_position"]
-_ENERGY = ["work", "stored_energy_change", "dissipation", "closure_gap"]
+# The core's cycle columns (lugre.CYCLE_COLUMNS): the count's and the closure's, then the four
+# energies over the arc.
+_COLUMNS = list(_lugre.CYCLE_COLUMNS[:-4])
+_ENERGY = list(_lugre.CYCLE_COLUMNS[-4:])
 # Samples at a chunk's end over which its end state is first guessed.
 _TAIL = 1 << 14
 

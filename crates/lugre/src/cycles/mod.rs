@@ -78,11 +78,13 @@ mod columns;
 mod energy;
 mod engine;
 mod histogram;
+mod row;
 #[cfg(test)]
 mod tests;
 
 pub use columns::CycleColumns;
 pub use histogram::Histogram;
+pub use row::Cell;
 
 /// The largest `|u|` a sample may have: ranges and means of any two samples stay finite.
 pub const MAX_SAMPLE: f64 = engine::MAX_ABS;

@@ -41,7 +41,7 @@ use super::lm::Evaluator;
 use super::slow::{half_rise_rate, median};
 use super::spec::{lugre_params, Family, Resolved};
 use crate::kernel::relax::decay;
-use crate::model::LuGre;
+use crate::model::{LuGre, Parameter};
 use nalgebra::DMatrix;
 
 /// The data as the simulator sees it, and which derivatives to form.
@@ -162,6 +162,13 @@ impl<E: Evaluator> Evaluator for Rows<E> {
     }
 }
 
+/// The derivatives below are written for the LuGre parameters by their index in
+/// [`Parameter::LUGRE`]: a parameter added to the table needs its own here.
+const _: () = assert!(
+    Parameter::LUGRE.len() == 7,
+    "the full fit's derivatives (Exact::evaluate) know 7 LuGre parameters: add the new one's"
+);
+
 impl Evaluator for Exact {
     fn evaluate(&mut self, values: &[f64], y: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
         let p = lugre_params(self.family, values);
@@ -274,7 +281,8 @@ pub(crate) fn has_reversal(u: &[f64]) -> bool {
 }
 
 /// Start values of every LuGre (or Dahl) parameter from the data (module docs), before the
-/// linear solve for `sigma1`, `sigma2`. `current` supplies `beta` (and anything not estimated).
+/// linear solve for `sigma1`, `sigma2`. `current` supplies `beta` (and anything not estimated),
+/// one value per LuGre parameter.
 pub(crate) fn data_start(
     family: Family,
     ex: &Exact,
@@ -387,15 +395,21 @@ pub(crate) fn data_start(
         }
     }
     let dz_scale = v_max;
-    vec![
-        sigma0,
-        0.01 * f_scale / dz_scale,
-        sigma2,
-        fc,
-        fs,
-        vs,
-        current[6],
-    ]
+    // The estimated parameters; the others (`beta`) keep their current values.
+    let mut start = current.to_vec();
+    for (p, v) in [
+        (Parameter::Sigma0, sigma0),
+        (Parameter::Sigma1, 0.01 * f_scale / dz_scale),
+        (Parameter::Sigma2, sigma2),
+        (Parameter::Fc, fc),
+        (Parameter::Fs, fs),
+        (Parameter::Vs, vs),
+    ] {
+        if let Some(i) = Parameter::LUGRE.iter().position(|&q| q == p) {
+            start[i] = v;
+        }
+    }
+    start
 }
 
 /// `x > 0` (false for NaN).

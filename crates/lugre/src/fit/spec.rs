@@ -2,13 +2,13 @@
 //! the map from bounded parameters to the unconstrained variables the optimizer moves.
 
 use crate::error::FitError;
-use crate::model::{LuGreParams, Parameter};
+use crate::model::{Dahl, LuGreParams, Parameter};
 
 /// The LuGre parameters' names, in the order of [`LuGreParams`] ([`Parameter::LUGRE`]).
-pub(crate) const LUGRE_PARAMETERS: [&str; 7] = names(Parameter::LUGRE);
+pub(crate) const LUGRE_PARAMETERS: [&str; Parameter::LUGRE.len()] = names(Parameter::LUGRE);
 
 /// The Dahl parameters' names ([`Parameter::DAHL`]).
-pub(crate) const DAHL_PARAMETERS: [&str; 2] = names(Parameter::DAHL);
+pub(crate) const DAHL_PARAMETERS: [&str; Parameter::DAHL.len()] = names(Parameter::DAHL);
 
 const fn names<const N: usize>(ps: [Parameter; N]) -> [&'static str; N] {
     let mut out = [""; N];
@@ -45,10 +45,11 @@ impl Family {
         }
     }
 
-    fn known(self) -> &'static str {
+    /// The parameters, in the order of [`Self::parameters`].
+    fn table(self) -> &'static [Parameter] {
         match self {
-            Family::LuGre => "sigma0, sigma1, sigma2, fc, fs, vs, beta",
-            Family::Dahl => "rho, fc",
+            Family::LuGre => &Parameter::LUGRE,
+            Family::Dahl => &Parameter::DAHL,
         }
     }
 
@@ -61,26 +62,47 @@ impl Family {
             .ok_or_else(|| FitError::UnknownParameter {
                 name: name.to_string(),
                 model: self.label(),
-                known: self.known(),
+                known: self.parameters(),
             })
     }
 
-    /// The two parameters the slow loop depends on: `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`).
+    /// The two parameters the slow loop depends on: `sigma0` and `g(0) = Fs` (Dahl: `rho`, `Fc`),
+    /// by their index in [`Self::parameters`] (the table's
+    /// [`Parameter::LUGRE_RATE_INDEPENDENT`]).
     pub(crate) fn slow_parameters(self) -> [usize; 2] {
         match self {
-            Family::LuGre => [0, 4],
-            Family::Dahl => [0, 1],
+            Family::LuGre => LUGRE_SLOW,
+            Family::Dahl => DAHL_SLOW,
         }
     }
 
-    /// The parameters a full fit frees unless told otherwise (`beta` stays fixed).
-    fn full_default(self) -> &'static [usize] {
-        match self {
-            Family::LuGre => &[0, 1, 2, 3, 4, 5],
-            Family::Dahl => &[0, 1],
-        }
+    /// Whether a full fit frees parameter `i` unless told otherwise: every one but `beta`,
+    /// which most records determine poorly.
+    fn full_default(self, i: usize) -> bool {
+        self.table()[i] != Parameter::Beta
     }
 }
+
+/// The index of `p` in `list` (at compile time: a parameter missing is a build error).
+const fn index_of(list: &[Parameter], p: Parameter) -> usize {
+    let mut i = 0;
+    while i < list.len() {
+        if list[i] as u8 == p as u8 {
+            return i;
+        }
+        i += 1;
+    }
+    panic!("a slow-loop parameter is not in the family's list")
+}
+
+const LUGRE_SLOW: [usize; 2] = [
+    index_of(&Parameter::LUGRE, Parameter::LUGRE_RATE_INDEPENDENT[0]),
+    index_of(&Parameter::LUGRE, Parameter::LUGRE_RATE_INDEPENDENT[1]),
+];
+const DAHL_SLOW: [usize; 2] = [
+    index_of(&Parameter::DAHL, Parameter::Rho),
+    index_of(&Parameter::DAHL, Parameter::Fc),
+];
 
 /// Which fit: the slow loop (rate-independent limit) or the exact simulation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -298,15 +320,7 @@ pub(crate) fn lugre_params(family: Family, v: &[f64]) -> LuGreParams {
             }
             p
         }
-        Family::Dahl => LuGreParams {
-            sigma0: v[0] * v[1],
-            sigma1: 0.0,
-            sigma2: 0.0,
-            fc: v[1],
-            fs: v[1],
-            vs: 1.0,
-            beta: 1.0,
-        },
+        Family::Dahl => Dahl::lugre_params(v[0], v[1]),
     }
 }
 
@@ -314,7 +328,7 @@ impl FitSpec {
     /// The LuGre model with these values (for the fixed parameters; free ones start from the
     /// data).
     pub fn lugre(p: LuGreParams) -> Self {
-        let values = vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta];
+        let values = p.named().map(|(_, v)| v).to_vec();
         Self::with_values(Family::LuGre, values, true)
     }
 
@@ -327,15 +341,11 @@ impl FitSpec {
     /// Dahl `rho = 1`, `Fc = 1`. They are the paper's dimensionless values, not a
     /// measurement's: a parameter the fit holds must then be given ([`set`](Self::set)).
     pub fn new(family: Family) -> Self {
-        let p = LuGreParams::default();
-        match family {
-            Family::LuGre => Self::with_values(
-                Family::LuGre,
-                vec![p.sigma0, p.sigma1, p.sigma2, p.fc, p.fs, p.vs, p.beta],
-                false,
-            ),
-            Family::Dahl => Self::with_values(Family::Dahl, vec![1.0, 1.0], false),
-        }
+        let defaults = match family {
+            Family::LuGre => Parameter::LUGRE.map(Parameter::default_value).to_vec(),
+            Family::Dahl => Parameter::DAHL.map(Parameter::default_value).to_vec(),
+        };
+        Self::with_values(family, defaults, false)
     }
 
     fn with_values(family: Family, values: Vec<f64>, given: bool) -> Self {
@@ -412,7 +422,7 @@ impl FitSpec {
             }
             let default = match kind {
                 FitKind::Slow => possible,
-                FitKind::Full => self.family.full_default().contains(&i),
+                FitKind::Full => self.family.full_default(i),
             };
             if (default || self.freed[i]) && !self.fixed[i] {
                 free.push(i);
@@ -483,10 +493,24 @@ fn example_value(name: &str) -> &'static str {
 mod tests {
 
     #[test]
-    fn known_lists_the_parameters() {
+    fn the_families_are_the_tables() {
         for f in [Family::LuGre, Family::Dahl] {
-            assert_eq!(f.known(), f.parameters().join(", "));
+            let names: Vec<&str> = f.table().iter().map(|p| p.name()).collect();
+            assert_eq!(names, f.parameters());
+            let e = f.index("mu").unwrap_err().to_string();
+            assert!(
+                e.ends_with(&format!("(its parameters: {})", names.join(", "))),
+                "{e}"
+            );
         }
+        let slow = Family::LuGre.slow_parameters().map(|i| Parameter::LUGRE[i]);
+        assert_eq!(slow, Parameter::LUGRE_RATE_INDEPENDENT);
+        let held: Vec<Parameter> = (0..Parameter::LUGRE.len())
+            .filter(|&i| !Family::LuGre.full_default(i))
+            .map(|i| Parameter::LUGRE[i])
+            .collect();
+        assert_eq!(held, [Parameter::Beta], "beta alone is held in a full fit");
+        assert_eq!(Family::Dahl.slow_parameters(), [0, 1]);
     }
 
     use super::*;

@@ -69,6 +69,17 @@ pub struct LoopPoint {
     pub y: f64,
 }
 
+impl LoopPoint {
+    /// The columns of a sampled loop, in order: `lugre loop --csv`, the MEX gateway's curve,
+    /// Python's `HysteresisLoop.sample` (`rho, u, y = hl.sample(n)`).
+    pub const COLUMNS: [&'static str; 3] = ["rho", "u", "y"];
+
+    /// The point's values in the order of [`Self::COLUMNS`].
+    pub fn values(&self) -> [f64; 3] {
+        [self.rho, self.u, self.y]
+    }
+}
+
 /// The periodic steady state `y°` in the rate-independent limit, for one model and input.
 #[derive(Debug, Clone)]
 pub struct HysteresisLoop {

@@ -28,19 +28,37 @@ impl Dahl {
         self.fc
     }
 
+    /// The value of a Dahl parameter (`None` for the LuGre model's own).
+    pub fn get(&self, p: Parameter) -> Option<f64> {
+        match p {
+            Parameter::Rho => Some(self.rho),
+            Parameter::Fc => Some(self.fc),
+            _ => None,
+        }
+    }
+
+    /// The parameters with their names, in the order of [`Parameter::DAHL`].
+    pub fn named(&self) -> [(Parameter, f64); Parameter::DAHL.len()] {
+        Parameter::DAHL.map(|p| (p, self.get(p).unwrap_or(f64::NAN)))
+    }
+
     /// The equivalent LuGre model. `g` is the Stribeck curve with `Fs = Fc`, which is the
     /// constant `Fc` exactly (the exponential's coefficient is 0).
     pub fn to_lugre(&self) -> LuGre {
-        LuGre::from_params(LuGreParams {
-            sigma0: self.rho * self.fc,
-            sigma1: 0.0,
-            sigma2: 0.0,
-            fc: self.fc,
-            fs: self.fc,
-            vs: 1.0,
-            beta: 1.0,
-        })
-        .expect("validated in new()")
+        LuGre::from_params(Self::lugre_params(self.rho, self.fc)).expect("validated in new()")
+    }
+
+    /// The parameters of the LuGre model equivalent to the Dahl model `(rho, fc)`, unchecked:
+    /// `sigma0 = rho Fc`, `g = Fc` (`Fs = Fc`), `sigma1 = sigma2 = 0`; the others at their
+    /// defaults, where they do not act (`vs`, `beta` shape `g - Fc = 0`).
+    pub(crate) fn lugre_params(rho: f64, fc: f64) -> LuGreParams {
+        let mut p = LuGreParams::default();
+        p.set(Parameter::Sigma0, rho * fc);
+        p.set(Parameter::Sigma1, 0.0);
+        p.set(Parameter::Sigma2, 0.0);
+        p.set(Parameter::Fc, fc);
+        p.set(Parameter::Fs, fc);
+        p
     }
 
     pub fn rate_independent(&self) -> RateIndependent {
@@ -58,6 +76,8 @@ mod tests {
         let m = d.to_lugre();
         assert_eq!(m.sigma0(), 2.0);
         assert_eq!(m.sigma1(), 0.0);
+        assert_eq!(d.named(), [(Parameter::Rho, 2.5), (Parameter::Fc, 0.8)]);
+        assert_eq!(d.get(Parameter::Sigma1), None);
         for v in [-10.0, -1e-3, 0.0, 0.3, 7.0] {
             assert_eq!(m.g(v), 0.8);
             assert_eq!(m.f(v), 0.0);

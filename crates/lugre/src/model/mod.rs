@@ -14,6 +14,7 @@
 mod dahl;
 mod functions;
 mod lugre;
+pub mod normal;
 mod parameter;
 
 pub use dahl::Dahl;

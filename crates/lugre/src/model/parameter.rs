@@ -62,6 +62,18 @@ impl Parameter {
     /// The Dahl parameters.
     pub const DAHL: [Parameter; 2] = [Parameter::Rho, Parameter::Fc];
 
+    /// Every parameter of every model, each once: the LuGre parameters, then the Dahl
+    /// model's own (`rho`). The order of the command line's flags.
+    pub const ALL: [Parameter; Parameter::LUGRE.len() + 1] = {
+        let mut all = [Parameter::Rho; Parameter::LUGRE.len() + 1];
+        let mut i = 0;
+        while i < Parameter::LUGRE.len() {
+            all[i] = Parameter::LUGRE[i];
+            i += 1;
+        }
+        all
+    };
+
     /// The LuGre parameters of the rate-independent loop (eqs. 6-10: only `sigma0` and
     /// `g(0) = Fs` matter there).
     pub const LUGRE_RATE_INDEPENDENT: [Parameter; 2] = [Parameter::Sigma0, Parameter::Fs];
@@ -84,11 +96,18 @@ impl Parameter {
     /// The parameter called `name` (case-insensitive, surrounding blanks ignored).
     pub fn from_name(name: &str) -> Option<Parameter> {
         let name = name.trim();
-        Self::LUGRE
-            .iter()
-            .chain(&[Parameter::Rho])
-            .copied()
+        Self::ALL
+            .into_iter()
             .find(|p| p.name().eq_ignore_ascii_case(name))
+    }
+
+    /// The symbol the paper and the text outputs write: `Fc`, `Fs`, else the name.
+    pub const fn symbol(self) -> &'static str {
+        match self {
+            Parameter::Fc => "Fc",
+            Parameter::Fs => "Fs",
+            _ => self.name(),
+        }
     }
 
     /// The unit with displacements in metres and forces in newtons.
@@ -113,7 +132,7 @@ impl Parameter {
             Parameter::Fs => "stiction force",
             Parameter::Vs => "Stribeck velocity",
             Parameter::Beta => "Stribeck exponent",
-            Parameter::Rho => "Dahl stiffness over the Coulomb force, sigma0 / Fc",
+            Parameter::Rho => "stiffness over the Coulomb force (sigma0 / Fc)",
         }
     }
 
@@ -135,6 +154,7 @@ impl Parameter {
         matches!(self, Parameter::Sigma2)
     }
 
+    /// What values the parameter may take.
     pub const fn domain(self) -> Domain {
         match self {
             Parameter::Sigma1 | Parameter::Sigma2 => Domain::NonNegative,
@@ -188,7 +208,7 @@ impl LuGreParams {
     }
 
     /// The parameters with their names, in the order of [`Parameter::LUGRE`].
-    pub fn named(&self) -> [(Parameter, f64); 7] {
+    pub fn named(&self) -> [(Parameter, f64); Parameter::LUGRE.len()] {
         Parameter::LUGRE.map(|p| (p, self.get(p).unwrap_or(f64::NAN)))
     }
 }
@@ -205,6 +225,14 @@ mod tests {
             assert_eq!(d.get(p), Some(p.default_value()), "{p}");
         }
         assert_eq!(Parameter::from_name(" Rho "), Some(Parameter::Rho));
+        // ALL holds every parameter of both models, each once.
+        for p in Parameter::LUGRE.iter().chain(&Parameter::DAHL) {
+            assert!(Parameter::ALL.contains(p), "{p}");
+        }
+        for (i, p) in Parameter::ALL.iter().enumerate() {
+            assert!(!Parameter::ALL[..i].contains(p), "{p}");
+            assert!(Parameter::LUGRE.contains(p) || Parameter::DAHL.contains(p));
+        }
         assert_eq!(Parameter::from_name("mu"), None);
         assert!(Parameter::Sigma1.check(0.0).is_ok());
         assert_eq!(

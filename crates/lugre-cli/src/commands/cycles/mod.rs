@@ -47,12 +47,17 @@ const SPOOL_IN_MEMORY: usize = 8 << 20;
 const DEFAULT_BINS: usize = 10;
 const MAX_BINS: usize = 1000;
 
-/// The help of `--csv` for this command.
-const CSV_HELP: &str = "Write the cycles to this CSV file, one row per cycle";
+/// The help of `--csv` for this command (the columns are the core's).
+fn csv_help() -> String {
+    format!(
+        "Write the cycles to this CSV file, one row per cycle: {} (empty where a half cycle has no closure or there is no model)",
+        lugre::Cycle::COLUMNS.join(",")
+    )
+}
 
 #[derive(Args, Debug)]
 #[command(
-    mut_arg("csv", |a| a.help(CSV_HELP))
+    mut_arg("csv", |a| a.help(csv_help()))
 )]
 pub(crate) struct CyclesArgs {
     /// The history from a data file: its column u (u, x, position or displacement; no header:

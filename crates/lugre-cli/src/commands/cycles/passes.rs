@@ -2,6 +2,7 @@
 //! (for JSON) and the span (for the histogram); the second writes the cycles as they close.
 
 use anyhow::Result;
+use lugre::cycles::Cell;
 use lugre::{Cycle, CycleSink, CycleSummary, Histogram, Reversal};
 use std::io::{self, Write};
 
@@ -9,8 +10,6 @@ use super::report::Report;
 use super::MAX_TABLE_ROWS;
 use crate::fmt::exact;
 use crate::io::json::JsonOut;
-
-const CSV_HEADER: &str = "range,mean,count,start,end,closure,closure_position,work,stored_energy_change,dissipation,closure_gap,y_start,y_closure\n";
 
 /// Receives the first pass: reversals (to JSON), the span, and the first I/O error.
 pub(super) struct FirstPass<W: Write> {
@@ -103,7 +102,7 @@ impl<'a, 'b> SecondPass<'a, 'b> {
             error: None,
         };
         if let Some(w) = pass.csv.as_mut() {
-            if let Err(e) = w.write_all(CSV_HEADER.as_bytes()) {
+            if let Err(e) = writeln!(w, "{}", Cycle::COLUMNS.join(",")) {
                 pass.error = Some(e.into());
             }
         }
@@ -127,59 +126,34 @@ impl<'a, 'b> SecondPass<'a, 'b> {
         }
     }
 
+    /// Cycle `c` to JSON (an object keyed by [`Cycle::COLUMNS`], `null` where a cell is
+    /// missing) and CSV (a row of them, empty where missing).
     fn write(&mut self, c: &Cycle) -> Result<()> {
+        let row = c.row();
         if let Some(j) = self.json.as_mut() {
-            j.raw(if self.cycles == 0 { "{" } else { ",{" })?;
-            j.field("\"range\":", c.range)?;
-            j.field(",\"mean\":", c.mean)?;
-            j.field(",\"count\":", c.count)?;
-            j.raw(",\"start\":")?;
-            j.int(c.start as usize)?;
-            j.raw(",\"end\":")?;
-            j.int(c.end as usize)?;
-            j.raw(",\"closure\":")?;
-            match c.closure {
-                Some(cl) => {
-                    j.int(cl.index as usize)?;
-                    j.field(",\"closure_position\":", cl.position)?;
-                }
-                None => j.raw("null,\"closure_position\":null")?,
+            if self.cycles > 0 {
+                j.raw(",")?;
             }
-            match c.energy {
-                Some(e) => {
-                    j.field(",\"work\":", e.arc.work)?;
-                    j.field(",\"stored_energy_change\":", e.arc.stored_energy_change)?;
-                    j.field(",\"dissipation\":", e.arc.dissipation)?;
-                    j.field(",\"closure_gap\":", e.arc.closure_gap)?;
-                    j.field(",\"y_start\":", e.y_start)?;
-                    j.field(",\"y_closure\":", e.y_closure)?;
+            for (k, (name, cell)) in Cycle::COLUMNS.iter().zip(row).enumerate() {
+                j.key(k == 0, name);
+                match cell {
+                    Cell::Number(x) => j.num(x)?,
+                    Cell::Index(i) => j.int(i as usize)?,
+                    Cell::Missing => j.raw("null")?,
                 }
-                None => j.raw(
-                    ",\"work\":null,\"stored_energy_change\":null,\"dissipation\":null,\"closure_gap\":null,\"y_start\":null,\"y_closure\":null",
-                )?,
             }
             j.raw("}")?;
         }
         if let Some(w) = self.csv.as_mut() {
-            let opt = |x: Option<f64>| x.map(exact).unwrap_or_default();
-            let e = c.energy;
-            writeln!(
-                w,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{}",
-                exact(c.range),
-                exact(c.mean),
-                exact(c.count),
-                c.start,
-                c.end,
-                c.closure.map(|cl| cl.index.to_string()).unwrap_or_default(),
-                opt(c.closure.map(|cl| cl.position)),
-                opt(e.map(|e| e.arc.work)),
-                opt(e.map(|e| e.arc.stored_energy_change)),
-                opt(e.map(|e| e.arc.dissipation)),
-                opt(e.map(|e| e.arc.closure_gap)),
-                opt(e.map(|e| e.y_start)),
-                opt(e.map(|e| e.y_closure)),
-            )?;
+            for (k, cell) in row.into_iter().enumerate() {
+                let sep = if k == 0 { "" } else { "," };
+                match cell {
+                    Cell::Number(x) => write!(w, "{sep}{}", exact(x))?,
+                    Cell::Index(i) => write!(w, "{sep}{i}")?,
+                    Cell::Missing => w.write_all(sep.as_bytes())?,
+                }
+            }
+            writeln!(w)?;
         }
         Ok(())
     }

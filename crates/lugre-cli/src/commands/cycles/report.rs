@@ -7,6 +7,7 @@ use std::io::Write;
 
 use super::source::Source;
 use super::Energy;
+use crate::args::Needed;
 use crate::fmt::sig;
 use crate::io::json::JsonOut;
 
@@ -132,7 +133,7 @@ impl Report {
         )?;
         if let Some(e) = energy {
             let ri = e.model.rate_independent();
-            writeln!(out, "{}", e.model.describe())?;
+            writeln!(out, "{}", e.model.describe(Needed::RateIndependent))?;
             writeln!(
                 out,
                 "g(0) = {}   a = sigma0/g(0) = {}   y*(0) = sigma0 x0 = {}",

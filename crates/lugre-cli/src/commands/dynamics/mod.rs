@@ -5,10 +5,12 @@
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use lugre::dynamics::{EventKind, Field, FrictionLoop, Motion, Outcome, Plan, Request, Scenario};
+use lugre::fit::Family;
+use lugre::model::Parameter;
 use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
-use crate::args::{ModelArgs, Needed, OutputArgs, PlotArgs};
+use crate::args::{model_line, ModelArgs, Needed, OutputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::csv::NumberRows;
@@ -300,6 +302,27 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
     Ok(Some(model))
 }
 
+/// The model of the run in one line: the one the flags name, else the scenario's (Table I).
+fn model_text(m: &ModelArgs, r: &Plan) -> Result<String> {
+    if m.names_any() {
+        return Ok(m.build()?.describe(Needed::All));
+    }
+    let values: Vec<_> = r
+        .system
+        .model()
+        .params()
+        .named()
+        .iter()
+        .map(|&(p, v)| (p, v, false))
+        .collect();
+    Ok(model_line(
+        Family::LuGre.label(),
+        Some("the scenario's, Table I"),
+        &values,
+        &Parameter::LUGRE,
+    ))
+}
+
 /// The times and forces of the `--input` file.
 fn read_force(args: &DynamicsArgs, path: &std::path::Path) -> Result<(Vec<f64>, Vec<f64>)> {
     // The times and the force F (force, friction, y), other columns ignored.
@@ -352,6 +375,7 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
     }
     let mut w = std::io::BufWriter::new(stdout.lock());
     writeln!(w, "{}", r.description)?;
+    writeln!(w, "{}", model_text(&args.model, r)?)?;
     writeln!(
         w,
         "mass {} kg, run 0..{} s, rtol {}; {} steps ({} rejected), {} events",

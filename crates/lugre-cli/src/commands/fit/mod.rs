@@ -24,7 +24,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::args::{check_files, ModelArgs, OutputArgs, PlotArgs};
+use crate::args::{check_files, normal_force_error, ModelArgs, OutputArgs, PlotArgs};
+use lugre::model::normal;
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
@@ -189,7 +190,8 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     // A velocity record is always read as a smooth motion (as `lugre simulate` reads it).
     let mut record = read_record(args, path)?;
     if let Some(n) = &record.normal {
-        to_coefficient(&mut record.f, n);
+        // The core's scaling (the reader checked N > 0 at every line already).
+        normal::to_coefficient(&mut record.f, n).map_err(|e| normal_force_error(path, e))?;
     }
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
         if kind == FitKind::Slow {
@@ -367,12 +369,6 @@ fn read_record(args: &FitArgs, path: &Path) -> Result<Record> {
         velocity: Some(motion),
         normal,
     })
-}
-
-/// `F / N` in place: the friction coefficient the model is fitted to (the reader checked
-/// `N > 0` at every row).
-fn to_coefficient(f: &mut [f64], n: &[f64]) {
-    f.iter_mut().zip(n).for_each(|(f, n)| *f /= n);
 }
 
 /// A spinner on stderr for the full fit (see [`Progress`]), redrawn at most 20 times a second.

@@ -3,6 +3,7 @@
 
 use anyhow::Result;
 use lugre::fit::{Family, FitKind, FitReport};
+use lugre::model::{normal, Parameter};
 use std::io::Write;
 use std::path::Path;
 
@@ -23,7 +24,11 @@ pub(super) fn write_csv(
 ) -> Result<()> {
     let mut rows = NumberRows::new();
     // With a normal force, the fit's quantity is the friction coefficient mu = F / N.
-    let f_name = if record.normal.is_some() { "mu" } else { "F" };
+    let f_name = if record.normal.is_some() {
+        normal::COEFFICIENT
+    } else {
+        "F"
+    };
     match &record.t {
         Some(_) => writeln!(w, "t,u,{f_name},fit,residual")?,
         None => writeln!(w, "u,{f_name},fit,residual")?,
@@ -141,24 +146,24 @@ fn residual_figure(record: &Record, res: &[f64]) -> Figure {
 }
 
 /// The name shown for a parameter (`fs` is `g(0)` in a slow LuGre fit), and with a normal
-/// force (`normal`) the friction coefficients `mu_c = Fc / N`, `mu_s = Fs / N`.
-fn label(report: &FitReport, name: &str, normal: bool) -> String {
+/// force (`normal`) the core's names per newton (the friction coefficients `mu_c`, `mu_s`).
+fn label(report: &FitReport, name: &'static str, normal: bool) -> String {
     let g0 = report.kind == FitKind::Slow && report.family == Family::LuGre && name == "fs";
-    match (normal, name) {
-        (true, "fs") if g0 => "mu_s = g(0)/N".into(),
-        (true, "fs") => "mu_s".into(),
-        (true, "fc") => "mu_c".into(),
-        _ if g0 => "fs = g(0)".into(),
-        _ => name.into(),
+    match (normal, g0) {
+        (true, true) => format!("{} = g(0)/N", normal::name_of(name)),
+        (true, false) => normal::name_of(name).into(),
+        (false, true) => "fs = g(0)".into(),
+        (false, false) => name.into(),
     }
 }
 
-/// The key of a parameter in the JSON document (`mu_c`, `mu_s` with a normal force).
-fn key(name: &str, normal: bool) -> &str {
-    match (normal, name) {
-        (true, "fs") => "mu_s",
-        (true, "fc") => "mu_c",
-        _ => name,
+/// The key of a parameter in the JSON document (the core's names per newton with a normal
+/// force).
+fn key(name: &'static str, normal: bool) -> &'static str {
+    if normal {
+        normal::name_of(name)
+    } else {
+        name
     }
 }
 
@@ -188,9 +193,15 @@ pub(super) fn print_table(
         }
     )?;
     if normal {
+        let parameters = match r.family {
+            Family::LuGre => &Parameter::LUGRE[..],
+            Family::Dahl => &Parameter::DAHL[..],
+        };
         writeln!(
             w,
-            "fitted to the friction coefficient mu = F / N: mu_c, mu_s dimensionless; sigma0 in 1/m, sigma1 and sigma2 in s/m (per newton of N)"
+            "fitted to the friction coefficient {mu} = F / N: {} (per newton of N)",
+            normal::units(parameters),
+            mu = normal::COEFFICIENT
         )?;
     }
     writeln!(w)?;

@@ -10,6 +10,7 @@
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
 use indicatif::ProgressBar;
+use lugre::model::normal;
 use lugre::simulate::{self, Output};
 use lugre::{Gamma, LuGre, SimulateError, Tolerance, Trajectory};
 use std::io::Write;
@@ -149,25 +150,10 @@ pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
     let request = parse(args)?;
     let mut out = compute(&request)?;
     if let Some((t, n)) = &request.normal {
-        times_normal_force(&mut out, t, n);
+        // mu to the force: y times N(t), linear between the record's samples.
+        normal::to_force(t, n, &out.t, &mut out.y);
     }
     report(args, &request, &out)
-}
-
-/// `y` times the normal force, linear between the record's samples (held beyond them).
-fn times_normal_force(out: &mut Trajectory, t: &[f64], n: &[f64]) {
-    for (y, &ti) in out.y.iter_mut().zip(&out.t) {
-        let k = t.partition_point(|&x| x <= ti);
-        let nk = match k {
-            0 => n[0],
-            k if k == t.len() => n[k - 1],
-            k => {
-                let w = (ti - t[k - 1]) / (t[k] - t[k - 1]);
-                n[k - 1] + w * (n[k] - n[k - 1])
-            }
-        };
-        *y *= nk;
-    }
 }
 
 fn parse(args: &SimulateArgs) -> Result<Request> {

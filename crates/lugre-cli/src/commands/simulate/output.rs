@@ -5,6 +5,7 @@ use lugre::Trajectory;
 use std::io::Write;
 
 use super::Request;
+use crate::args::Needed;
 use crate::fmt::sig;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
@@ -141,9 +142,15 @@ pub(super) fn print_table(w: &mut impl Write, r: &Request, out: &Trajectory) -> 
 
 /// The model, the input, gamma, the periods, x0 and (for a sine) the tolerance.
 fn print_summary(w: &mut impl Write, r: &Request) -> Result<()> {
-    writeln!(w, "{}", r.choice.describe())?;
-    writeln!(w, "Input: {}", r.input)?;
     let s = &r.simulation;
+    // At gamma = inf the response is y*, which sigma0 and g(0) alone shape.
+    let needed = if s.gamma().is_infinite() {
+        Needed::RateIndependent
+    } else {
+        Needed::All
+    };
+    writeln!(w, "{}", r.choice.describe(needed))?;
+    writeln!(w, "Input: {}", r.input)?;
     let what = if s.gamma().is_infinite() {
         "gamma = inf: the rate-independent limit y*_u (eq. 6)".to_string()
     } else {
