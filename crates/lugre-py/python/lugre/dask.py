@@ -47,6 +47,7 @@ except ImportError as e:  # pragma: no cover - the message is the point
     ) from e
 
 from ._read import read as _read
+from . import _lugre
 from . import chunk as _chunk
 from . import cycles as _single_cycles
 from . import fit as _single_fit
