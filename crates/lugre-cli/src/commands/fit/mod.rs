@@ -25,12 +25,12 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::args::{check_files, normal_force_error, ModelArgs, OutputArgs, PlotArgs};
-use lugre::model::normal;
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Whole};
+use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
 
