@@ -1,5 +1,6 @@
 //! The C entry points called as C would: results, error codes, messages, and bad input.
 
+use lugre::model::Parameter;
 use lugre_c::*;
 use std::ffi::CStr;
 use std::ptr;
@@ -269,7 +270,10 @@ fn parameters_by_name() {
     );
     assert_eq!(
         last_error(),
-        "unknown parameter 'rho' (parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"
+        format!(
+            "unknown parameter 'rho' (parameters: {})",
+            lugre::fit::LUGRE_PARAMETERS.join(", ")
+        )
     );
     let mut name = ptr::null();
     let names = |family: i32, count: usize| -> Vec<String> {
@@ -365,8 +369,13 @@ fn the_slow_fit_is_the_cores() {
     let core = lugre::fit_slow(&spec, &u, &f).unwrap();
     let s0 = core.estimate("sigma0").unwrap();
     let fs = core.estimate("fs").unwrap();
-    assert_eq!((r.family, r.parameters), (LUGRE_FAMILY_LUGRE, 7));
-    assert_eq!(r.fitted[..r.parameters], [1, 0, 0, 0, 1, 0, 0]);
+    assert_eq!(
+        (r.family, r.parameters),
+        (LUGRE_FAMILY_LUGRE, Parameter::LUGRE.len())
+    );
+    // The slow fit's: sigma0 and fs.
+    let slow = Parameter::LUGRE.map(|p| i32::from(Parameter::LUGRE_RATE_INDEPENDENT.contains(&p)));
+    assert_eq!(r.fitted[..r.parameters], slow);
     assert_eq!((r.value[0], r.std_error[0]), (s0.value, s0.stderr));
     assert_eq!((r.value[4], r.std_error[4]), (fs.value, fs.stderr));
     assert_eq!([r.ci95_lo[0], r.ci95_hi[0]], s0.ci95);
@@ -527,7 +536,10 @@ fn the_full_fit_is_the_cores() {
         .unwrap();
     let options = lugre::fit::FullOptions::default().with_starts(2);
     let core = lugre::fit_full(&spec, &t, &u, &f, options).unwrap();
-    assert_eq!(r.fitted[..r.parameters], [1, 1, 0, 1, 1, 1, 0]);
+    // Every parameter but the two fixed.
+    let full =
+        Parameter::LUGRE.map(|p| i32::from(![Parameter::Sigma2, Parameter::Beta].contains(&p)));
+    assert_eq!(r.fitted[..r.parameters], full);
     for (i, name) in ["sigma0", "sigma1", "fc", "fs", "vs"].iter().enumerate() {
         let j = [0, 1, 3, 4, 5][i];
         let e = core.estimate(name).unwrap();
