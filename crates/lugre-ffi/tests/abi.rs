@@ -288,19 +288,18 @@ fn parameters_by_name() {
             })
             .collect()
     };
-    let core = |ps: &[lugre::model::Parameter]| -> Vec<String> {
-        ps.iter().map(|p| p.name().to_string()).collect()
-    };
+    let core =
+        |ps: &[Parameter]| -> Vec<String> { ps.iter().map(|p| p.name().to_string()).collect() };
     assert_eq!(
-        names(LUGRE_FAMILY_LUGRE, 7),
-        core(&lugre::model::Parameter::LUGRE)
+        names(LUGRE_FAMILY_LUGRE, Parameter::LUGRE.len()),
+        core(&Parameter::LUGRE)
     );
     assert_eq!(
-        names(LUGRE_FAMILY_DAHL, 2),
-        core(&lugre::model::Parameter::DAHL)
+        names(LUGRE_FAMILY_DAHL, Parameter::DAHL.len()),
+        core(&Parameter::DAHL)
     );
     assert_eq!(
-        lugre_parameter_name(LUGRE_FAMILY_DAHL, 2, &mut name),
+        lugre_parameter_name(LUGRE_FAMILY_DAHL, Parameter::DAHL.len(), &mut name),
         LugreStatus::InvalidArgument
     );
     assert_eq!(last_error(), "index must be below 2, got 2");
