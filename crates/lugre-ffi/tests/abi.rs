@@ -1,5 +1,6 @@
 //! The C entry points called as C would: results, error codes, messages, and bad input.
 
+use lugre::model::Parameter;
 use lugre_c::*;
 use std::ffi::CStr;
 use std::ptr;
@@ -287,7 +288,10 @@ fn parameters_by_name() {
     );
     assert_eq!(
         last_error(),
-        "unknown parameter 'rho' for the LuGre model (its parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"
+        format!(
+            "unknown parameter 'rho' for the LuGre model (its parameters: {})",
+            lugre::fit::Family::LuGre.parameters().join(", ")
+        )
     );
     let mut name = ptr::null();
     let names = |family: i32, count: usize| -> Vec<String> {
@@ -302,19 +306,18 @@ fn parameters_by_name() {
             })
             .collect()
     };
-    let core = |ps: &[lugre::model::Parameter]| -> Vec<String> {
-        ps.iter().map(|p| p.name().to_string()).collect()
-    };
+    let core =
+        |ps: &[Parameter]| -> Vec<String> { ps.iter().map(|p| p.name().to_string()).collect() };
     assert_eq!(
-        names(LUGRE_FAMILY_LUGRE, 7),
-        core(&lugre::model::Parameter::LUGRE)
+        names(LUGRE_FAMILY_LUGRE, Parameter::LUGRE.len()),
+        core(&Parameter::LUGRE)
     );
     assert_eq!(
-        names(LUGRE_FAMILY_DAHL, 2),
-        core(&lugre::model::Parameter::DAHL)
+        names(LUGRE_FAMILY_DAHL, Parameter::DAHL.len()),
+        core(&Parameter::DAHL)
     );
     assert_eq!(
-        lugre_parameter_name(LUGRE_FAMILY_DAHL, 2, &mut name),
+        lugre_parameter_name(LUGRE_FAMILY_DAHL, Parameter::DAHL.len(), &mut name),
         LugreStatus::InvalidArgument
     );
     assert_eq!(last_error(), "index must be below 2, got 2");
@@ -345,12 +348,12 @@ fn zero_result() -> LugreFitResult {
     LugreFitResult {
         family: -1,
         parameters: 0,
-        value: [0.0; 7],
-        fitted: [0; 7],
-        std_error: [0.0; 7],
-        ci95_lo: [0.0; 7],
-        ci95_hi: [0.0; 7],
-        at_bound: [0; 7],
+        value: [0.0; LUGRE_MAX_PARAMETERS],
+        fitted: [0; LUGRE_MAX_PARAMETERS],
+        std_error: [0.0; LUGRE_MAX_PARAMETERS],
+        ci95_lo: [0.0; LUGRE_MAX_PARAMETERS],
+        ci95_hi: [0.0; LUGRE_MAX_PARAMETERS],
+        at_bound: [0; LUGRE_MAX_PARAMETERS],
         rms: 0.0,
         samples: 0,
         dof: 0,
@@ -383,8 +386,13 @@ fn the_slow_fit_is_the_cores() {
     let core = lugre::fit_slow(&spec, &u, &f).unwrap();
     let s0 = core.estimate("sigma0").unwrap();
     let fs = core.estimate("fs").unwrap();
-    assert_eq!((r.family, r.parameters), (LUGRE_FAMILY_LUGRE, 7));
-    assert_eq!(r.fitted, [1, 0, 0, 0, 1, 0, 0]);
+    assert_eq!(
+        (r.family, r.parameters),
+        (LUGRE_FAMILY_LUGRE, Parameter::LUGRE.len())
+    );
+    // The slow fit's: sigma0 and fs.
+    let slow = Parameter::LUGRE.map(|p| i32::from(Parameter::LUGRE_RATE_INDEPENDENT.contains(&p)));
+    assert_eq!(r.fitted[..r.parameters], slow);
     assert_eq!((r.value[0], r.std_error[0]), (s0.value, s0.stderr));
     assert_eq!((r.value[4], r.std_error[4]), (fs.value, fs.stderr));
     assert_eq!([r.ci95_lo[0], r.ci95_hi[0]], s0.ci95);
@@ -430,8 +438,8 @@ fn the_slow_fit_is_the_cores() {
         LugreStatus::Ok
     );
     assert_eq!(
-        (r.family, r.parameters, r.fitted),
-        (LUGRE_FAMILY_DAHL, 2, [1, 0, 0, 0, 0, 0, 0])
+        (r.family, &r.fitted[..r.parameters]),
+        (LUGRE_FAMILY_DAHL, &[1, 0][..])
     );
     assert_eq!(r.value[1], 2.0);
     let spec = lugre::FitSpec::dahl(1.0, 2.0).fix("fc").unwrap();
@@ -545,7 +553,10 @@ fn the_full_fit_is_the_cores() {
         .unwrap();
     let options = lugre::fit::FullOptions::default().with_starts(2);
     let core = lugre::fit_full(&spec, &t, &u, &f, options).unwrap();
-    assert_eq!(r.fitted, [1, 1, 0, 1, 1, 1, 0]);
+    // Every parameter but the two fixed.
+    let full =
+        Parameter::LUGRE.map(|p| i32::from(![Parameter::Sigma2, Parameter::Beta].contains(&p)));
+    assert_eq!(r.fitted[..r.parameters], full);
     for (i, name) in ["sigma0", "sigma1", "fc", "fs", "vs"].iter().enumerate() {
         let j = [0, 1, 3, 4, 5][i];
         let e = core.estimate(name).unwrap();

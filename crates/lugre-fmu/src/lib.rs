@@ -84,6 +84,16 @@ pub mod vr {
     pub const PARAMETERS: u32 = 10;
 }
 
+// The parameters' value references end before each model's own begin (z0): a parameter added
+// to the core's table needs the model's own moved up, in the code and the XML.
+const _: () = {
+    let end = vr::PARAMETERS + Parameter::LUGRE.len() as u32;
+    assert!(
+        end <= friction::vr::Z0 && end <= mass::vr::Z0,
+        "the friction parameters' value references run into the models' own (z0)"
+    );
+};
+
 /// The friction parameter at value reference `r`.
 fn parameter(r: u32) -> Option<Parameter> {
     let i = r.checked_sub(vr::PARAMETERS)?;

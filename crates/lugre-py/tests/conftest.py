@@ -16,12 +16,18 @@ def assert_gil_released():
     def check(call):
         done = threading.Event()
         duration = []
+        failed = []
 
         def work():
             t0 = time.perf_counter()
-            call()
-            duration.append(time.perf_counter() - t0)
-            done.set()
+            try:
+                call()
+            except BaseException as e:  # raised below, in the test's thread
+                failed.append(e)
+            finally:
+                # Set even when the call raises: the loop below would wait forever.
+                duration.append(time.perf_counter() - t0)
+                done.set()
 
         ticks = []
         th = threading.Thread(target=work)
@@ -30,6 +36,8 @@ def assert_gil_released():
             ticks.append(time.perf_counter())
             time.sleep(0.001)
         th.join()
+        if failed:
+            raise failed[0]
         gaps = np.diff(ticks) if len(ticks) > 1 else np.array([duration[0]])
         assert len(ticks) >= 5, (len(ticks), duration)
         assert gaps.max() < 0.6 * duration[0], (gaps.max(), duration[0])

@@ -18,11 +18,13 @@ def test_paper_defaults():
     assert (m.g0, m.a) == (2.0, 0.5)
     d = lugre.Dahl()
     assert (d.rho, d.fc, d.sigma0, d.g0, d.a) == (1.0, 1.0, 1.0, 1.0, 1.0)
-    assert m.to_dict() == dict(sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)
+    # The paper's values, first among the table's parameters (test_tables checks all of them).
+    paper = dict(sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)
+    assert list(m.to_dict().items())[: len(paper)] == list(paper.items())
 
 
 def test_signatures_show_the_defaults():
-    assert str(inspect.signature(lugre.LuGre)) == "(*, sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)"
+    assert str(inspect.signature(lugre.LuGre)).startswith("(*, sigma0=1.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0")
     assert str(inspect.signature(lugre.Dahl)) == "(*, rho=1.0, fc=1.0)"
     assert "turning_points" in str(inspect.signature(lugre.LuGre.loop))
     assert "n=1001" in str(inspect.signature(lugre.HysteresisLoop.sample))
@@ -30,7 +32,7 @@ def test_signatures_show_the_defaults():
 
 def test_reprs():
     m = lugre.LuGre(sigma0=6)
-    assert repr(m) == "LuGre(sigma0=6.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0)"
+    assert repr(m).startswith("LuGre(sigma0=6.0, sigma1=1.0, sigma2=0.0, fc=1.0, fs=2.0, vs=1.0, beta=1.0")
     assert eval(repr(m), {"LuGre": lugre.LuGre}) == m
     assert repr(lugre.Dahl(rho=2.5)) == "Dahl(rho=2.5, fc=1.0)"
     hl = m.loop_bimodal(0, 0.5, 1, 1.5)

@@ -99,10 +99,8 @@ def test_slow_fit_recovers_the_papers_example_4(example4):
     assert 1.96 < r["t_quantile"] < 1.962
     # Every parameter of the fitted model, the others at the paper's values.
     v = r["values"]
-    assert v == dict(
-        sigma0=r["parameters"]["sigma0"]["value"], sigma1=1.0, sigma2=0.0, fc=1.0,
-        fs=r["parameters"]["fs"]["value"], vs=1.0, beta=1.0,
-    )
+    defaults = {name: row["default"] for name, row in lugre.PARAMETERS["LuGre"].items()}
+    assert v == {**defaults, "sigma0": r["parameters"]["sigma0"]["value"], "fs": r["parameters"]["fs"]["value"]}
     hl = lugre.LuGre(**v).loop_bimodal(0, 0.5, 1, 1.5)
     np.testing.assert_allclose(r["fitted"], hl.y_at(rho), rtol=0, atol=1e-12)
 
@@ -276,14 +274,17 @@ def test_sigma1_from_quasi_static_data_is_unidentifiable(quasi_static):
     assert str(e.value).startswith("sigma1 does not enter the slow loop")
 
 
+# The LuGre parameters as the messages list them (the core's table).
+_LUGRE = ", ".join(lugre.PARAMETERS["LuGre"])
+
 # (keyword arguments on the Example 4 record, the message)
 REQUEST_ERRORS = [
     (
         dict(fix=["sigma9"]),
-        "fix: unknown parameter 'sigma9' for the LuGre model (its parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)",
+        f"fix: unknown parameter 'sigma9' for the LuGre model (its parameters: {_LUGRE})",
     ),
     (dict(model="dahl", free=["sigma0"]), "free: unknown parameter 'sigma0' for the Dahl model (its parameters: rho, fc)"),
-    (dict(start={"x": 1}), "start: unknown parameter 'x' for the LuGre model (its parameters: sigma0, sigma1, sigma2, fc, fs, vs, beta)"),
+    (dict(start={"x": 1}), f"start: unknown parameter 'x' for the LuGre model (its parameters: {_LUGRE})"),
     (dict(fix="fs", free="fs"), "fs is both fixed and freed"),
     (dict(fix=["sigma0", "fs"]), "nothing to fit: every parameter of the slow fit is fixed"),
     (dict(free="beta"), "beta does not enter the slow loop: the rate-independent limit depends only on sigma0 and g(0) = Fs (Dahl: rho and Fc), so beta cannot be identified from quasi-static data (use a full fit of rate-dependent data)"),
