@@ -436,86 +436,20 @@ impl Request {
             .clone();
         let mass = r.mass.as_ref().map_or(Self::DEFAULT_MASS, |m| m.value);
         let mut system = System::new(model, mass)?;
-        let mut description = Vec::new();
-        if let Some(sc) = r.scenario {
-            description.push(sc.description().to_string());
-        }
-        let mut rate = None;
-        if let Some(force) = &r.force {
-            let (profile, what) = match &force.value {
-                Force::Ramp(slope) => {
-                    rate = Some(*slope);
-                    (
-                        Profile::ramp(0.0, *slope)?,
-                        format!("force ramp F = {} t N", crate::error::num(*slope)),
-                    )
-                }
-                Force::Profile(p) => (
-                    p.clone(),
-                    match &r.input_label {
-                        Some(label) => format!("applied force from {label}"),
-                        None => "applied force profile".to_string(),
-                    },
-                ),
-            };
-            system = system.with_force(profile);
-            if force.by.is_some() {
-                description.push(what);
-            }
-        }
-        let mut pull = None;
-        if let Some(k) = &r.spring {
-            let end = r.end.as_ref().ok_or(DynamicsError::Needs {
-                field: Field::Spring,
-                needs: &[Field::Pull, Field::End],
-                why: "where its free end goes",
-            })?;
-            let end = match &end.value {
-                End::Pull(v) => {
-                    pull = Some(*v);
-                    Profile::ramp(0.0, *v)?
-                }
-                End::Profile(p) => p.clone(),
-            };
-            system = system.with_spring(k.value, end)?;
-            if k.by.is_some() {
-                description.push(format!("spring k = {} N/m", crate::error::num(k.value)));
-            }
-            if let Some(v) = pull {
-                system = system.with_velocity_watch(v)?;
-            }
-        }
+        // The scenario's line, then one per field the user gave.
+        let mut description: Vec<String> = r
+            .scenario
+            .iter()
+            .map(|sc| sc.description().to_string())
+            .collect();
+        let rate;
+        (system, rate) = r.add_force(system, &mut description)?;
+        let pull;
+        (system, pull) = r.add_spring(system, &mut description)?;
         if let Some(c) = &r.damping {
             system = system.with_damping(c.value)?;
         }
-        if let Some(g) = &r.pid {
-            let setpoint = match &r.setpoint {
-                Some(s) => s.value.clone(),
-                None => Steps::constant(0.0)?,
-            };
-            let [kp, ki, kv] = g.value;
-            system = system.with_pid(Pid {
-                kp,
-                ki,
-                kv,
-                setpoint,
-            })?;
-            if g.by.is_some() || r.setpoint.as_ref().is_some_and(|s| s.by.is_some()) {
-                let xd = match &r.setpoint {
-                    Some(s) if s.value.steps().is_empty() => {
-                        format!("{} m", crate::error::num(s.value.value(0.0)))
-                    }
-                    Some(_) => "steps".to_string(),
-                    None => "0 m".to_string(),
-                };
-                description.push(format!(
-                    "PID Kp = {}, Ki = {}, Kv = {}, xd = {xd}",
-                    crate::error::num(kp),
-                    crate::error::num(ki),
-                    crate::error::num(kv)
-                ));
-            }
-        }
+        system = r.add_pid(system, &mut description)?;
         if let Some(v) = &r.velocity {
             system = system.with_velocity(v.value.clone())?;
             if v.by.is_some() {
@@ -531,30 +465,130 @@ impl Request {
             description.push(format!("replaced: {replaced}"));
         }
         let t_end = r.end_of_run()?;
-        let times = match &r.output {
-            Some(Given {
-                value: Output::Times(t),
-                ..
-            }) => t.clone(),
-            Some(Given {
-                value: Output::Samples(n),
-                ..
-            }) => crate::simulate::uniform_times(0.0, t_end, 1, (*n - 1) as usize),
-            None => {
-                crate::simulate::uniform_times(0.0, t_end, 1, (Self::DEFAULT_SAMPLES - 1) as usize)
-            }
-        };
         let tol = Tolerances::new(r.rtol.unwrap_or(Tolerances::DEFAULT_RTOL), r.atol)?;
         Ok(Plan {
             system,
             description: description.join("; "),
             t_end,
-            times,
+            times: r.output_times(t_end),
             tol,
             rate,
             pull,
             loops: r.loops.unwrap_or(false),
         })
+    }
+
+    /// The applied force, if any, on `system` (its line in `description` when the user gave
+    /// it), and the ramp's rate.
+    fn add_force(
+        &self,
+        system: System,
+        description: &mut Vec<String>,
+    ) -> Result<(System, Option<f64>), DynamicsError> {
+        let Some(force) = &self.force else {
+            return Ok((system, None));
+        };
+        let (profile, what, rate) = match &force.value {
+            Force::Ramp(slope) => (
+                Profile::ramp(0.0, *slope)?,
+                format!("force ramp F = {} t N", crate::error::num(*slope)),
+                Some(*slope),
+            ),
+            Force::Profile(p) => (
+                p.clone(),
+                match &self.input_label {
+                    Some(label) => format!("applied force from {label}"),
+                    None => "applied force profile".to_string(),
+                },
+                None,
+            ),
+        };
+        if force.by.is_some() {
+            description.push(what);
+        }
+        Ok((system.with_force(profile), rate))
+    }
+
+    /// The spring and its free end's motion, if any, on `system`, and the pull speed.
+    fn add_spring(
+        &self,
+        mut system: System,
+        description: &mut Vec<String>,
+    ) -> Result<(System, Option<f64>), DynamicsError> {
+        let Some(k) = &self.spring else {
+            return Ok((system, None));
+        };
+        let end = self.end.as_ref().ok_or(DynamicsError::Needs {
+            field: Field::Spring,
+            needs: &[Field::Pull, Field::End],
+            why: "where its free end goes",
+        })?;
+        let (end, pull) = match &end.value {
+            End::Pull(v) => (Profile::ramp(0.0, *v)?, Some(*v)),
+            End::Profile(p) => (p.clone(), None),
+        };
+        system = system.with_spring(k.value, end)?;
+        if k.by.is_some() {
+            description.push(format!("spring k = {} N/m", crate::error::num(k.value)));
+        }
+        if let Some(v) = pull {
+            system = system.with_velocity_watch(v)?;
+        }
+        Ok((system, pull))
+    }
+
+    /// The PID position controller, if any, on `system`.
+    fn add_pid(
+        &self,
+        system: System,
+        description: &mut Vec<String>,
+    ) -> Result<System, DynamicsError> {
+        let Some(g) = &self.pid else {
+            return Ok(system);
+        };
+        let setpoint = match &self.setpoint {
+            Some(s) => s.value.clone(),
+            None => Steps::constant(0.0)?,
+        };
+        let [kp, ki, kv] = g.value;
+        if g.by.is_some() || self.setpoint.as_ref().is_some_and(|s| s.by.is_some()) {
+            let xd = match &self.setpoint {
+                Some(s) if s.value.steps().is_empty() => {
+                    format!("{} m", crate::error::num(s.value.value(0.0)))
+                }
+                Some(_) => "steps".to_string(),
+                None => "0 m".to_string(),
+            };
+            description.push(format!(
+                "PID Kp = {}, Ki = {}, Kv = {}, xd = {xd}",
+                crate::error::num(kp),
+                crate::error::num(ki),
+                crate::error::num(kv)
+            ));
+        }
+        system.with_pid(Pid {
+            kp,
+            ki,
+            kv,
+            setpoint,
+        })
+    }
+
+    /// The output times: those given, else `samples` (or the default count) evenly spaced
+    /// over `[0, t_end]`.
+    fn output_times(&self, t_end: f64) -> Vec<f64> {
+        let samples = match &self.output {
+            Some(Given {
+                value: Output::Times(t),
+                ..
+            }) => return t.clone(),
+            Some(Given {
+                value: Output::Samples(n),
+                ..
+            }) => *n,
+            None => Self::DEFAULT_SAMPLES,
+        };
+        crate::simulate::uniform_times(0.0, t_end, 1, (samples - 1) as usize)
     }
 
     /// The fields that cannot hold together, each error naming both.
