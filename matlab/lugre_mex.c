@@ -158,6 +158,23 @@ static LugreParams params_of(const mxArray *arg) {
     return p;
 }
 
+/* The core's named-model rule (lugre_params_check_named): forces and energies of a measured
+ * history or a physical system come from a model the struct names (every parameter `needed`
+ * uses, or a preset), never from the dimensionless defaults alone. */
+static LugreStatus named(const mxArray *arg, int needed) {
+    const mxArray *s = options_struct(arg, "params", "struct('sigma0', 1e5, 'fc', 1)");
+    if (s != NULL && mxGetField(s, 0, "preset") != NULL) return LUGRE_STATUS_OK;
+    int count = s == NULL ? 0 : mxGetNumberOfFields(s);
+    size_t size = 1;
+    for (int k = 0; k < count; k++) size += strlen(mxGetFieldNameByNumber(s, k)) + 1;
+    char *given = (char *)mxCalloc(size, 1);
+    for (int k = 0; k < count; k++) {
+        if (k > 0) strcat(given, ",");
+        strcat(given, mxGetFieldNameByNumber(s, k));
+    }
+    return lugre_params_check_named(needed, given);
+}
+
 static mxArray *column(const double *v, size_t n) {
     mxArray *a = mxCreateDoubleMatrix(n, 1, mxREAL);
     if (n > 0) memcpy(mxGetPr(a), v, n * sizeof(double));
@@ -268,7 +285,14 @@ static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
     const double *u = vector(prhs[0], "u", &n);
     double gate = nrhs > 1 && !mxIsEmpty(prhs[1]) ? scalar(prhs[1], "gate") : 0.0;
     double x0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "x0") : 0.0;
-    LugreModel *m = nrhs > 2 && !mxIsEmpty(prhs[2]) ? model_of(prhs[2]) : NULL;
+    LugreModel *m = NULL;
+    if (nrhs > 2 && !mxIsEmpty(prhs[2])) {
+        /* The values are checked first (model_of), then that the model is named. */
+        m = model_of(prhs[2]);
+        LugreStatus st = named(prhs[2], LUGRE_NEEDED_RATE_INDEPENDENT);
+        if (st != LUGRE_STATUS_OK) lugre_model_free(m);
+        check(st);
+    }
     LugreCycles *cy = NULL;
     LugreStatus st = lugre_cycles_new(u, n, gate, m, x0, &cy);
     lugre_model_free(m);
@@ -405,7 +429,12 @@ static mxArray *dynamics_request(const mxArray *s) {
         }
     }
     LugreParams p;
-    if (model != NULL) p = params_of(model);
+    if (model != NULL) {
+        /* The values are checked first (a model made and dropped), then that it is named. */
+        lugre_model_free(model_of(model));
+        p = params_of(model);
+        check(named(model, LUGRE_NEEDED_ALL));
+    }
     /* Every value is converted: from here on only the C ABI can fail. */
     LugreDynamics *d = NULL;
     LugreModel *m = NULL;

@@ -48,7 +48,7 @@ function failures = test_lugre()
 
   % Rainflow cycles with energies, as `lugre cycles --json`.
   h = [-2 1 -3 5 -1 3 -4 4 -2];
-  c = lugre_cycles(h, 0, struct('sigma0', 6));
+  c = lugre_cycles(h, 0, struct('sigma0', 6, 'fs', 2));
   j = between(cli('cycles --values -2,1,-3,5,-1,3,-4,4,-2 --energy --sigma0 6 --fs 2 --json'), ...
               '"cycles":', '"samples":');
   failures += expect(isequal(c.range, numbers(j, 'range')), 'cycles: ranges');
@@ -59,7 +59,7 @@ function failures = test_lugre()
   failures += expect(isequal(abs(h(c.start) - h(c.end))', c.range), 'cycles: h(start), h(end) span the range');
   full = c.count == 1;
   failures += expect(isequal(c.work(full), numbers(j, 'work')), 'cycles: work of the full cycle');
-  failures += expect(isequal(lugre_cycles(int8(h), int16(0), struct('sigma0', int64(6))), c), ...
+  failures += expect(isequal(lugre_cycles(int8(h), int16(0), struct('sigma0', int64(6), 'fs', 2)), c), ...
                      'cycles: int8 history, int16 gate, int64 field');
   failures += expect(isequal(lugre_cycles(logical([0 1 0 1 1 0])), lugre_cycles([0 1 0 1 1 0])), ...
                      'cycles: a logical history');
@@ -125,6 +125,7 @@ function failures = test_lugre()
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'pid', [1 2])), 'pid takes 3 numbers, got 2');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'gamma', 1)), 'unknown field ''gamma''');
   failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) must be a finite number, got inf');
+  failures += raises(@() lugre_cycles([0 1 0], 0, struct('fs', 1.5)), 'the model is only partly named: give sigma0 too, or preset ''canudas1995''');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 
   % The fit, as `lugre fit --json` on the same samples (written with 17 digits: the same

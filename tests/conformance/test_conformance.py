@@ -183,26 +183,15 @@ def cli(case):
 # ---- Python
 
 
-TABLE1 = {}
-
-
-def table1():
-    """Table I as the CLI's preset gives it (Python has no presets: the values are passed)."""
-    if not TABLE1:
-        r = subprocess.run([exe(), "loop", "--preset", "canudas1995", "--turning-points", "0,1", "--json"],
-                           capture_output=True, text=True, check=True)
-        TABLE1.update({k: v for k, v in json.loads(r.stdout)["model"].items() if k != "kind"})
-    return TABLE1
-
-
 def model_of(m):
     if m is None:
         return None
     m = dict(m)
     if m.pop("family", None) == "dahl":
         return lugre.Dahl(**{k: number(v) for k, v in m.items()})
-    values = dict(table1()) if m.pop("preset", None) == "canudas1995" else {}
-    values.update({k: number(v) for k, v in m.items()})
+    values = {k: number(v) for k, v in m.items() if k != "preset"}
+    if "preset" in m:
+        return lugre.LuGre.preset(m["preset"], **values)
     return lugre.LuGre(**values)
 
 

@@ -3,10 +3,11 @@
 //! `--bimodal`, `--input`), each with what it builds, and the outputs (`--json`, `--csv`,
 //! `--plot`).
 
-use anyhow::{bail, Result};
+use anyhow::{anyhow, bail, Result};
 use clap::{Arg, ArgMatches, Args, Command, ValueEnum};
 use lugre::error::NormalForceError;
 use lugre::fit::Family;
+use lugre::model::named::{self, Needed};
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use lugre_io::{Delimiter, ReadOptions, Role, Spec};
@@ -112,30 +113,12 @@ impl DataArgs {
     }
 }
 
-/// Which parameters a command needs named ([`ModelArgs::check_named`]) or uses
-/// ([`ModelChoice::describe`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Needed {
-    /// Every parameter (a simulation of a physical system).
-    All,
-    /// Those of the rate-independent loop (energies along `y*`).
-    RateIndependent,
-}
-
 impl ModelKind {
     /// The model's label in text and its parameters, from the core's table.
     fn family(self) -> (&'static str, &'static [Parameter]) {
         match self {
             ModelKind::Lugre => (Family::LuGre.label(), &Parameter::LUGRE),
             ModelKind::Dahl => (Family::Dahl.label(), &Parameter::DAHL),
-        }
-    }
-
-    /// The parameters of the model that act in a computation that uses `needed`.
-    fn acting(self, needed: Needed) -> &'static [Parameter] {
-        match (self, needed) {
-            (ModelKind::Lugre, Needed::RateIndependent) => &Parameter::LUGRE_RATE_INDEPENDENT,
-            (kind, _) => kind.family().1,
         }
     }
 }
@@ -278,23 +261,26 @@ impl Args for ParameterFlags {
     }
 }
 
-/// A published LuGre parameter set.
+/// A published LuGre parameter set: the core's [`lugre::model::Preset`], by its name.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Preset {
     Canudas1995,
 }
 
 impl Preset {
-    fn params(self) -> LuGreParams {
+    /// The core's preset (one name for every front end: a test checks the flag's values).
+    fn core(self) -> lugre::model::Preset {
         match self {
-            Preset::Canudas1995 => LuGreParams::canudas_de_wit_1995(),
+            Preset::Canudas1995 => lugre::model::Preset::Canudas1995,
         }
     }
 
+    fn params(self) -> LuGreParams {
+        self.core().params()
+    }
+
     fn name(self) -> &'static str {
-        match self {
-            Preset::Canudas1995 => "canudas1995",
-        }
+        self.core().name()
     }
 }
 
@@ -336,25 +322,8 @@ impl ModelArgs {
         if self.preset.is_some() {
             return Ok(());
         }
-        let missing: Vec<String> = self
-            .model
-            .acting(needed)
-            .iter()
-            .filter(|p| self.given(**p).is_none() && !p.default_is_absence())
-            .map(|p| format!("--{}", p.name()))
-            .collect();
-        if !missing.is_empty() {
-            let preset = if self.model == ModelKind::Lugre {
-                ", or --preset canudas1995"
-            } else {
-                ""
-            };
-            bail!(
-                "the model is only partly named: give {} too{preset} (forces and energies of a measured or physical system are not computed from the dimensionless defaults)",
-                missing.join(", ")
-            );
-        }
-        Ok(())
+        named::check_named(self.model.family().1, needed, |p| self.given(p).is_some())
+            .map_err(|e| anyhow!(e.render(|p| format!("--{}", p.name()), "--preset canudas1995")))
     }
 
     /// The given value, else the preset's, else the parameter's default (`None`).
@@ -458,7 +427,12 @@ impl ModelChoice {
             .into_iter()
             .map(|(p, v)| (p, v, self.defaults.contains(&p)))
             .collect();
-        let mut line = model_line(label, origin.as_deref(), &values, self.kind.acting(needed));
+        let mut line = model_line(
+            label,
+            origin.as_deref(),
+            &values,
+            named::acting(self.kind.family().1, needed),
+        );
         if let Model::Dahl(m) = &self.model {
             line += &format!(
                 "; LuGre with sigma0 = rho Fc = {}, g = Fc",
@@ -646,4 +620,23 @@ pub(crate) struct PlotArgs {
         help_heading = "Output"
     )]
     pub(crate) path: Option<PathBuf>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_preset_flag_takes_the_cores_names() {
+        let flag: Vec<String> = Preset::value_variants()
+            .iter()
+            .filter_map(|p| p.to_possible_value())
+            .map(|v| v.get_name().to_string())
+            .collect();
+        let core: Vec<&str> = lugre::model::Preset::ALL.iter().map(|p| p.name()).collect();
+        assert_eq!(flag, core);
+        for p in Preset::value_variants() {
+            assert_eq!(p.to_possible_value().unwrap().get_name(), p.name());
+        }
+    }
 }

@@ -73,8 +73,9 @@ fn number(flag: &str, position: usize, item: &str) -> Result<f64> {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Real;
 
-/// The value parser of a flag that takes a whole number of at least `.0` (`--samples`,
-/// `--bins`): `--samples must be a whole number >= 2, got -1`.
+/// The value parser of a flag that takes a whole number of at least `.0` (`--bins`):
+/// `--bins must be a whole number >= 1, got -1`. With `0` it checks the syntax only and the
+/// core judges the count (`--samples`: `HysteresisLoop::try_sample`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Whole(pub usize);
 
@@ -112,9 +113,12 @@ impl TypedValueParser for Whole {
                     Ok(n) => format!("got {n}"),
                     Err(_) => got(&text),
                 };
+                let floor = match self.0 {
+                    0 => String::new(),
+                    min => format!(" >= {min}"),
+                };
                 Err(invalid(format!(
-                    "{flag} must be a whole number >= {}, {got}",
-                    self.0
+                    "{flag} must be a whole number{floor}, {got}"
                 )))
             }
         }
@@ -205,6 +209,7 @@ mod tests {
             (2, "-1", "--samples must be a whole number >= 2, got -1"),
             (2, "1", "--samples must be a whole number >= 2, got 1"),
             (1, "2.5", "--samples must be a whole number >= 1, got '2.5'"),
+            (0, "-1", "--samples must be a whole number, got -1"),
             (1, "--json", "got the flag '--json' (the value is missing)"),
         ] {
             let e = whole(min, text).unwrap_err();

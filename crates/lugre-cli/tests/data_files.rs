@@ -7,7 +7,8 @@
 //! is ignored; `y`, the model's output, is the force `F`) into `fit` (the slow fit: it needs no
 //! times), `loop --input` and `cycles`; `simulate --csv` (`t,u,z,dz,y`) into `simulate
 //! --input`, `fit` and `cycles`; `dynamics --csv` (`t,x,v,z,friction,drive`: `x` the
-//! displacement, `friction` the force) into `simulate --input` and `cycles`.
+//! displacement, `friction` the force) into `simulate --input` and `cycles`, and into
+//! `dynamics --input` (`drive` the force applied).
 
 mod common;
 use common::{accepts, accepts_json, f, rejects, TempDir};
@@ -101,6 +102,46 @@ fn a_dynamics_run_is_a_record() {
         "--json",
     ]);
     assert_eq!(s["t"].as_array().unwrap().len(), x.len());
+}
+
+/// A `dynamics --csv` file drives `dynamics --input` with its `drive` column, the force applied:
+/// the same run again (its `friction` column, also a force by name, is the result, not the
+/// drive, unless `--columns F=friction` says so).
+#[test]
+fn a_dynamics_run_drives_the_dynamics_again() {
+    let dir = TempDir::new("data-files-dynamics-again");
+    let (first, second) = (dir.join("first.csv"), dir.join("second.csv"));
+    accepts(&[
+        "dynamics",
+        "--scenario",
+        "breakaway",
+        "--samples",
+        "6",
+        "--csv",
+        &first,
+    ]);
+    let times: Vec<String> = column(&first, "t").iter().map(|t| t.to_string()).collect();
+    let times = times.join(",");
+    let again = |extra: &[&str], out: &str| {
+        let args = [
+            &["dynamics", "--preset", "canudas1995", "--input", &first][..],
+            &["--times", &times, "--csv", out][..],
+            extra,
+        ]
+        .concat();
+        accepts(&args);
+    };
+    again(&[], &second);
+    assert_eq!(column(&second, "drive"), column(&first, "drive"));
+    for (a, b) in column(&first, "friction")
+        .iter()
+        .zip(column(&second, "friction"))
+    {
+        assert!((a - b).abs() <= 1e-6 * (1.0 + a.abs()), "{a} vs {b}");
+    }
+    let third = dir.join("third.csv");
+    again(&["--columns", "F=friction"], &third);
+    assert_eq!(column(&third, "drive"), column(&first, "friction"));
 }
 
 /// `dynamics --input` with the usual names and units, tab-separated (it said "no column 'F'"):

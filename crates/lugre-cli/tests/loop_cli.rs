@@ -304,7 +304,7 @@ fn bad_inputs_are_one_line_and_status_2() {
     );
     rejects(
         &["loop", "--turning-points", "0,1", "--samples", "1"],
-        "--samples must be a whole number >= 2, got 1",
+        "--samples must be at least 2 (both ends of the period), got 1",
     );
     rejects(
         &["loop", "--input", "/nonexistent/x.csv"],

@@ -18,6 +18,12 @@
 // The most parameters a family has (LuGre's seven): the length of the fit's arrays.
 #define LUGRE_MAX_PARAMETERS 7
 
+// [`lugre_params_check_named`]: every parameter is used (a simulation of a physical system).
+#define LUGRE_NEEDED_ALL 0
+
+// [`lugre_params_check_named`]: those of the rate-independent loop (energies along `y*`).
+#define LUGRE_NEEDED_RATE_INDEPENDENT 1
+
 // The outcome of a call.
 typedef enum LugreStatus {
   LUGRE_STATUS_OK = 0,
@@ -341,6 +347,15 @@ enum LugreStatus lugre_parameter_name(int32_t family, size_t index, const char *
 // Sets the LuGre parameter called `name` (case-insensitive, as the CLI's flags) to `value`
 // (checked when a model is made of the parameters, by [`lugre_model_new`]).
 enum LugreStatus lugre_params_set(struct LugreParams *params, const char *name, double value);
+
+// The core's named-model rule for a front end that sets LuGre parameters one by one by name
+// (as the MEX gateway's struct fields): `given` lists the names set, separated by commas
+// (NULL or "": none). Fails (`LUGRE_STATUS_INVALID_ARGUMENT`) when a parameter that `needed`
+// (`LUGRE_NEEDED_ALL` or `LUGRE_NEEDED_RATE_INDEPENDENT`) uses was not given and its default
+// is not an absence (forces and energies of a measured or physical system are not computed
+// from the dimensionless defaults). A preset (`lugre_params_canudas1995`) names every
+// parameter: do not call this then.
+enum LugreStatus lugre_params_check_named(int32_t needed, const char *given);
 
 // The default options: no model (LuGre), nothing fixed or freed, `x0 = 0`, the default
 // number of starts.

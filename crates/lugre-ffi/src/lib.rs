@@ -40,6 +40,7 @@ pub use dynamics::{
 };
 
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
+use lugre::model::named::{check_named, Needed};
 use lugre::model::Parameter;
 use lugre::simulate::FrictionElement;
 use lugre::{
@@ -491,23 +492,9 @@ pub extern "C" fn lugre_loop_sample(
 ) -> LugreStatus {
     guard(|| {
         let hl = &handle(hl, "loop")?.hl;
-        if n < 2 {
-            return Err(fail(
-                LugreStatus::InvalidArgument,
-                format!("n must be at least 2 (both ends of the period), got {n}"),
-            ));
-        }
-        // The points are made before anything is written: refuse a count memory cannot hold
-        // rather than abort the host.
-        let mut room: Vec<lugre::LoopPoint> = Vec::new();
-        room.try_reserve_exact(n).map_err(|_| {
-            fail(
-                LugreStatus::InvalidArgument,
-                format!("n = {n} points do not fit in memory"),
-            )
-        })?;
-        drop(room);
-        let points = hl.sample(n);
+        let points = hl
+            .try_sample(n)
+            .map_err(|e| fail(LugreStatus::InvalidArgument, e.render("n")))?;
         let column = |f: fn(&lugre::LoopPoint) -> f64| points.iter().map(f).collect::<Vec<_>>();
         output(rho, &column(|p| p.rho));
         output(u, &column(|p| p.u));
@@ -823,6 +810,45 @@ pub extern "C" fn lugre_params_set(
         core.set(q, value);
         *p = core.into();
         Ok(())
+    })
+}
+
+/// [`lugre_params_check_named`]: every parameter is used (a simulation of a physical system).
+pub const LUGRE_NEEDED_ALL: i32 = 0;
+/// [`lugre_params_check_named`]: those of the rate-independent loop (energies along `y*`).
+pub const LUGRE_NEEDED_RATE_INDEPENDENT: i32 = 1;
+
+/// The core's named-model rule for a front end that sets LuGre parameters one by one by name
+/// (as the MEX gateway's struct fields): `given` lists the names set, separated by commas
+/// (NULL or "": none). Fails (`LUGRE_STATUS_INVALID_ARGUMENT`) when a parameter that `needed`
+/// (`LUGRE_NEEDED_ALL` or `LUGRE_NEEDED_RATE_INDEPENDENT`) uses was not given and its default
+/// is not an absence (forces and energies of a measured or physical system are not computed
+/// from the dimensionless defaults). A preset (`lugre_params_canudas1995`) names every
+/// parameter: do not call this then.
+#[no_mangle]
+pub extern "C" fn lugre_params_check_named(needed: i32, given: *const c_char) -> LugreStatus {
+    guard(|| {
+        let needed = match needed {
+            LUGRE_NEEDED_ALL => Needed::All,
+            LUGRE_NEEDED_RATE_INDEPENDENT => Needed::RateIndependent,
+            _ => {
+                return Err(fail(
+                    LugreStatus::InvalidArgument,
+                    format!("needed must be LUGRE_NEEDED_ALL ({LUGRE_NEEDED_ALL}) or LUGRE_NEEDED_RATE_INDEPENDENT ({LUGRE_NEEDED_RATE_INDEPENDENT}), got {needed}"),
+                ))
+            }
+        };
+        let given = text(given, "given")?.unwrap_or_default();
+        let mut named = Vec::new();
+        for name in given.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+            named.push(Parameter::LUGRE[Family::LuGre.index(name)?]);
+        }
+        check_named(&Parameter::LUGRE, needed, |p| named.contains(&p)).map_err(|e| {
+            fail(
+                LugreStatus::InvalidArgument,
+                e.render(|p| p.name().to_string(), "preset 'canudas1995'"),
+            )
+        })
     })
 }
 

@@ -270,15 +270,8 @@ impl PyHysteresisLoop {
             Some(n) if !n.is_none() => count(n, "n")?,
             _ => 1001,
         };
-        if n < 2 {
-            return Err(PyValueError::new_err(format!(
-                "n must be at least 2 (both ends of the period), got {n}"
-            )));
-        }
-        let n = usize::try_from(n)
-            .map_err(|_| PyValueError::new_err(format!("n is too large, got {n}")))?;
-        // Fail with MemoryError, not an abort, when the result cannot be held.
-        drop(try_vec::<lugre::LoopPoint>(n)?);
+        let n = usize::try_from(n).unwrap_or(usize::MAX);
+        lugre::loops::check_samples(n).map_err(|e| PyValueError::new_err(e.render("n")))?;
         let mut rho = try_vec(n)?;
         let mut u = try_vec(n)?;
         let mut y = try_vec(n)?;

@@ -34,6 +34,28 @@ impl PyLuGre {
         })
     }
 
+    /// A published parameter set by name, e.g. LuGre.preset("canudas1995") (Table I of Canudas
+    /// de Wit et al. 1995, as the CLI's --preset), with any keyword parameter overriding the
+    /// preset's value: LuGre.preset("canudas1995", fs=2.0).
+    #[staticmethod]
+    #[pyo3(signature = (name, **parameters))]
+    fn preset(name: &str, parameters: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let mut p = lugre::model::Preset::named(name)
+            .map_err(value_error)?
+            .params();
+        check_keywords("LuGre.preset", &Parameter::LUGRE, parameters)?;
+        if let Some(d) = parameters {
+            for q in Parameter::LUGRE {
+                if let Some(v) = d.get_item(q.name())? {
+                    p.set(q, real_or(Some(&v), q.name(), q.default_value())?);
+                }
+            }
+        }
+        Ok(Self {
+            inner: lugre::LuGre::from_params(p).map_err(value_error)?,
+        })
+    }
+
     /// A parameter of the table without a getter of its own.
     fn __getattr__(&self, name: &str) -> PyResult<f64> {
         parameter_attribute("LuGre", &Parameter::LUGRE, name, |p| {
@@ -419,18 +441,7 @@ fn keyword_values(
     table: &[Parameter],
     given: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Vec<(Parameter, f64)>> {
-    if let Some(d) = given {
-        for key in d.keys() {
-            let name = key.str()?.to_string();
-            if !table.iter().any(|p| p.name() == name) {
-                let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
-                return Err(PyTypeError::new_err(format!(
-                    "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
-                    names.join(", ")
-                )));
-            }
-        }
-    }
+    check_keywords(class, table, given)?;
     table
         .iter()
         .map(|&p| {
@@ -441,6 +452,26 @@ fn keyword_values(
             Ok((p, real_or(value.as_ref(), p.name(), p.default_value())?))
         })
         .collect()
+}
+
+/// Every keyword in `given` is a parameter of `table`, else Python's `TypeError` naming it.
+fn check_keywords(
+    class: &str,
+    table: &[Parameter],
+    given: Option<&Bound<'_, PyDict>>,
+) -> PyResult<()> {
+    let Some(d) = given else { return Ok(()) };
+    for key in d.keys() {
+        let name = key.str()?.to_string();
+        if !table.iter().any(|p| p.name() == name) {
+            let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
+            return Err(PyTypeError::new_err(format!(
+                "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
+                names.join(", ")
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The attribute `name` of a `class` object: the value of its parameter of that name (`get`),

@@ -8,6 +8,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 import lugre
 
@@ -273,3 +274,19 @@ def test_the_fit_result_stub_has_every_key():
     rho, u, y = lugre.LuGre(sigma0=6).loop([0, 1, 0.5, 1.5]).sample(401)
     r = lugre.fit(u, y + 1e-3 * np.sin(np.arange(len(u))))
     assert set(r) == stub
+
+
+def test_presets_are_the_cores():
+    m = lugre.LuGre.preset("canudas1995")
+    # Table I of Canudas de Wit et al. (1995), as the CLI's --preset canudas1995.
+    assert (m.sigma0, m.sigma1, m.sigma2, m.fc, m.fs, m.vs, m.beta) == (
+        1e5, 1e5 ** 0.5, 0.4, 1.0, 1.5, 1e-3, 2.0)
+    o = lugre.LuGre.preset("canudas1995", fs=2)
+    assert o.fs == 2.0 and o.sigma0 == 1e5
+    with pytest.raises(ValueError) as e:
+        lugre.LuGre.preset("canudas1996")
+    assert str(e.value) == "unknown preset 'canudas1996' (presets: canudas1995)"
+    with pytest.raises(TypeError, match="unexpected keyword argument 'rho'"):
+        lugre.LuGre.preset("canudas1995", rho=1)
+    with pytest.raises(ValueError, match="fs"):
+        lugre.LuGre.preset("canudas1995", fs=-1)

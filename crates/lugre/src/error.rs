@@ -122,6 +122,12 @@ impl std::fmt::Display for Field {
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ModelError {
+    #[error("unknown preset '{name}' (presets: {})", .known.join(", "))]
+    UnknownPreset {
+        name: String,
+        /// The presets there are.
+        known: &'static [&'static str],
+    },
     #[error("{name} must be a finite number, got {value}", value = num(*.value))]
     NotFinite { name: &'static str, value: f64 },
     #[error("{name} must be > 0, got {value}", value = num(*.value))]
@@ -215,6 +221,33 @@ pub enum LoopError {
     Overflow { what: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
+}
+
+/// A count of loop samples out of range ([`crate::HysteresisLoop::try_sample`]). Each front end
+/// names the count its own way (`--samples`, `n`): [`SamplesError::render`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[non_exhaustive]
+pub enum SamplesError {
+    /// Fewer than two points: a period has two ends.
+    #[error("{}", self.render("n"))]
+    TooFew { n: u64 },
+    /// More points than [`crate::loops::MAX_SAMPLES`].
+    #[error("{}", self.render("n"))]
+    TooMany { n: u64, limit: u64 },
+}
+
+impl SamplesError {
+    /// The message with the count called `name`.
+    pub fn render(&self, name: &str) -> String {
+        match self {
+            SamplesError::TooFew { n } => {
+                format!("{name} must be at least 2 (both ends of the period), got {n}")
+            }
+            SamplesError::TooMany { n, limit } => {
+                format!("{name} must be at most {limit} (memory for the points), got {n}")
+            }
+        }
+    }
 }
 
 /// An invalid measured history or counting option ([`crate::cycles`]).
@@ -701,6 +734,8 @@ pub enum Error {
     Input(#[from] InputError),
     #[error(transparent)]
     Loop(#[from] LoopError),
+    #[error(transparent)]
+    Samples(#[from] SamplesError),
     #[error(transparent)]
     History(#[from] HistoryError),
     #[error(transparent)]

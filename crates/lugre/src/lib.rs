@@ -59,7 +59,7 @@ pub use cycles::{
 };
 pub use error::{
     DataError, DynamicsError, Error, FitError, HistoryError, InputError, LoopError, ModelError,
-    SimulateError,
+    SamplesError, SimulateError,
 };
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use input::{Bimodal, TurningPoints};

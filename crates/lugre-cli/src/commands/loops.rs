@@ -1,14 +1,14 @@
 //! `lugre loop`: the hysteresis loop y° (eqs. 8-10), Theorem A for bimodal inputs, every minor
 //! loop with its energies, as a table, JSON or CSV.
 
-use anyhow::{bail, Result};
+use anyhow::{anyhow, bail, Result};
 use clap::Args;
+use lugre::model::named::Needed;
 use lugre::{HysteresisLoop, Loop, LoopPoint, TheoremA};
 use std::io::Write;
 
 use crate::args::{
-    check_files, ModelArgs, ModelChoice, Needed, OutputArgs, PeriodicInput, PeriodicInputArgs,
-    PlotArgs,
+    check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
 };
 use crate::fmt::{exact, sig};
 use crate::hysteresis::{arc_points, kind_name};
@@ -22,9 +22,6 @@ const MAX_TABLE_ROWS: usize = 40;
 
 /// Samples written by `--csv` when neither `--samples` nor `--at` is given.
 const DEFAULT_CSV_SAMPLES: usize = 1001;
-
-/// The most points `--samples` may ask for (24 bytes each in memory, more as text).
-const MAX_SAMPLES: usize = 10_000_000;
 
 /// The help of `--csv` for this command (the columns are the core's).
 fn csv_help() -> String {
@@ -61,7 +58,7 @@ pub(crate) struct LoopArgs {
         long,
         value_name = "N",
         allow_hyphen_values = true,
-        value_parser = Whole(2),
+        value_parser = Whole(0),
         help_heading = "Output"
     )]
     pub(crate) samples: Option<usize>,
@@ -104,9 +101,7 @@ fn parse(args: &LoopArgs) -> Result<Request> {
         None => None,
     };
     if let Some(n) = args.samples {
-        if n > MAX_SAMPLES {
-            bail!("--samples must be at most {MAX_SAMPLES}, got {n}");
-        }
+        lugre::loops::check_samples(n).map_err(|e| anyhow!(e.render("--samples")))?;
     }
     Ok(Request {
         model,

@@ -35,6 +35,16 @@ static void versions_and_parameters(void) {
     const char *name = NULL;
     OK(lugre_parameter_name(LUGRE_FAMILY_DAHL, 0, &name));
     CHECK(name != NULL && strcmp(name, "rho") == 0);
+    /* The named-model rule: energies need sigma0 and fs; a simulation every parameter whose
+     * default is not an absence. */
+    OK(lugre_params_check_named(LUGRE_NEEDED_RATE_INDEPENDENT, "fs, SIGMA0"));
+    CHECK(lugre_params_check_named(LUGRE_NEEDED_RATE_INDEPENDENT, "fs") ==
+          LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strstr(lugre_last_error(), "give sigma0 too, or preset 'canudas1995'") != NULL);
+    CHECK(lugre_params_check_named(LUGRE_NEEDED_ALL, NULL) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(lugre_params_check_named(2, "") == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(lugre_params_check_named(LUGRE_NEEDED_ALL, "sigma0,kappa") ==
+          LUGRE_STATUS_INVALID_ARGUMENT);
 }
 
 static void loops(const LugreModel *m) {

@@ -135,7 +135,10 @@ pub struct Motion {
 impl Motion {
     /// The names of the sampled columns, in the order of the CSV files, the JSON and the
     /// Python result: `t, x, v, z, friction, drive`.
-    pub const COLUMNS: [&'static str; 6] = ["t", "x", "v", "z", "friction", "drive"];
+    pub const COLUMNS: [&'static str; 6] = ["t", "x", "v", "z", "friction", Self::DRIVE];
+
+    /// The column of the force applied to the mass (a file with it drives a next run).
+    pub const DRIVE: &'static str = "drive";
 
     /// The sampled columns, in the order of [`Self::COLUMNS`].
     pub fn columns(&self) -> [&[f64]; 6] {

@@ -53,13 +53,33 @@ pub use records::{Loop, LoopKind};
 pub use table::LoopTable;
 pub use theorem_a::TheoremA;
 
-use crate::error::{InputError, LoopError};
+use crate::error::{InputError, LoopError, SamplesError};
 use crate::input::TurningPoints;
 use crate::kernel::numerics::{h, one_minus_exp, phi};
 use crate::kernel::piece::advance;
 use crate::memory::column;
 use crate::model::RateIndependent;
 use engine::{canonical_start, Period};
+
+/// The most points a loop is sampled at on request (24 bytes each in memory, more as text).
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// Checks a requested number of loop samples: `2 <= n <= MAX_SAMPLES`.
+///
+/// # Errors
+/// [`SamplesError`] naming `n`.
+pub fn check_samples(n: usize) -> Result<(), SamplesError> {
+    if n < 2 {
+        return Err(SamplesError::TooFew { n: n as u64 });
+    }
+    if n > MAX_SAMPLES {
+        return Err(SamplesError::TooMany {
+            n: n as u64,
+            limit: MAX_SAMPLES as u64,
+        });
+    }
+    Ok(())
+}
 
 /// A point of the loop: the normalized variable, the input and the output there.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -348,7 +368,18 @@ impl HysteresisLoop {
         }
     }
 
-    /// `n >= 2` points evenly spaced over one period, both ends included (`rho = 0` and `P`).
+    /// `n` points evenly spaced over one period, both ends included (`rho = 0` and `P`), with
+    /// `n` checked first: every front end asks through here, so they refuse the same counts.
+    ///
+    /// # Errors
+    /// [`SamplesError::TooFew`] for `n < 2`, [`SamplesError::TooMany`] above [`MAX_SAMPLES`].
+    pub fn try_sample(&self, n: usize) -> Result<Vec<LoopPoint>, SamplesError> {
+        check_samples(n)?;
+        Ok(self.sample(n))
+    }
+
+    /// `n >= 2` points evenly spaced over one period, both ends included (`rho = 0` and `P`);
+    /// `n < 2` gives the two ends.
     pub fn sample(&self, n: usize) -> Vec<LoopPoint> {
         let n = n.max(2);
         let p = self.period();

@@ -53,6 +53,59 @@ impl LuGreParams {
     }
 }
 
+/// A published LuGre parameter set, by the name every front end uses (`--preset canudas1995`,
+/// `LuGre.preset("canudas1995")`, `struct('preset', 'canudas1995')`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Preset {
+    /// Table I of Canudas de Wit et al. (1995): [`LuGreParams::canudas_de_wit_1995`].
+    Canudas1995,
+}
+
+impl Preset {
+    /// Every preset, in the order help texts list them.
+    pub const ALL: [Preset; 1] = [Preset::Canudas1995];
+
+    /// The preset's name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Preset::Canudas1995 => "canudas1995",
+        }
+    }
+
+    /// The preset's values.
+    pub fn params(self) -> LuGreParams {
+        match self {
+            Preset::Canudas1995 => LuGreParams::canudas_de_wit_1995(),
+        }
+    }
+
+    /// The preset called `name` (exactly, as listed).
+    ///
+    /// # Errors
+    /// [`ModelError::UnknownPreset`] naming `name` and the presets there are.
+    pub fn named(name: &str) -> Result<Self, ModelError> {
+        Self::ALL
+            .into_iter()
+            .find(|p| p.name() == name)
+            .ok_or_else(|| ModelError::UnknownPreset {
+                name: name.to_string(),
+                known: &PRESET_NAMES,
+            })
+    }
+}
+
+/// [`Preset::ALL`]'s names.
+const PRESET_NAMES: [&str; Preset::ALL.len()] = {
+    let mut out = [""; Preset::ALL.len()];
+    let mut i = 0;
+    while i < out.len() {
+        out[i] = Preset::ALL[i].name();
+        i += 1;
+    }
+    out
+};
+
 /// A LuGre model with macro-damping `g` and viscous term `f`.
 ///
 /// `LuGre` (the default type parameters) is the Stribeck/viscous model of the paper; any

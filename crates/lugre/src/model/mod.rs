@@ -14,12 +14,13 @@
 mod dahl;
 mod functions;
 mod lugre;
+pub mod named;
 pub mod normal;
 mod parameter;
 
 pub use dahl::Dahl;
 pub use functions::{Stribeck, VelocityFn, Viscous};
-pub use lugre::{LuGre, LuGreParams};
+pub use lugre::{LuGre, LuGreParams, Preset};
 pub use parameter::{Domain, Parameter};
 
 use crate::error::ModelError;

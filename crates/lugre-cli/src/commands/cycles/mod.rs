@@ -21,11 +21,12 @@ use lugre::{CycleCounter, CycleSink, CycleSummary, Histogram};
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use crate::args::{check_files, ModelArgs, ModelChoice, Needed, OutputArgs};
+use crate::args::{check_files, ModelArgs, ModelChoice, OutputArgs};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::spool::Spool;
 use crate::numbers::{parse_series, Real, Whole};
+use lugre::model::named::Needed;
 
 mod passes;
 mod report;

@@ -7,9 +7,9 @@ use std::io::Write;
 
 use super::source::Source;
 use super::Energy;
-use crate::args::Needed;
 use crate::fmt::sig;
 use crate::io::json::JsonOut;
+use lugre::model::named::Needed;
 
 /// What the second pass leaves for the report.
 pub(super) struct Report {

@@ -10,13 +10,14 @@ use lugre::model::Parameter;
 use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
-use crate::args::{model_line, ModelArgs, Needed, OutputArgs, PlotArgs};
+use crate::args::{model_line, ModelArgs, OutputArgs, PlotArgs};
 use crate::fmt::{quoted, sig};
 use crate::io::atomic::write_atomic;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, parse_number};
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+use lugre::model::named::Needed;
 use lugre_io::Role;
 
 /// Rows of the table printed (all of them are in --json / --csv).
@@ -325,12 +326,26 @@ fn model_text(m: &ModelArgs, r: &Plan) -> Result<String> {
 
 /// The times and forces of the `--input` file.
 fn read_force(args: &DynamicsArgs, path: &std::path::Path) -> Result<(Vec<f64>, Vec<f64>)> {
-    // The times and the force F (force, friction, y), other columns ignored.
-    let options = args.data.options(&[Role::F])?;
+    // The times and the force F (force, friction, y), other columns ignored. A file that
+    // `lugre dynamics --csv` wrote holds the applied force as `drive` and the friction as
+    // `friction`: its drive is the force applied (unless `--columns F=...` says otherwise).
+    let mut options = args.data.options(&[Role::F])?;
+    if !options.selects(&Role::F) && has_drive_column(path, options.clone()) {
+        options = options.select(Role::F, lugre_io::Selector::Name(Motion::DRIVE.into()))?;
+    }
     let spec = lugre_io::Spec::new([Role::F]).require_time();
     let mut table = lugre_io::read_file(path, &spec, options)?;
     let (t, f) = (table.take(&Role::T), table.take(&Role::F));
     Ok((t.unwrap_or_default(), f.unwrap_or_default()))
+}
+
+/// Whether the file's header has the column `lugre dynamics --csv` writes the applied force to
+/// (a header the reader cannot read is the real read's to report).
+fn has_drive_column(path: &std::path::Path, options: lugre_io::ReadOptions) -> bool {
+    lugre_io::Reader::open(path, options).is_ok_and(|r| {
+        r.header()
+            .is_some_and(|h| h.iter().any(|f| f.name.eq_ignore_ascii_case(Motion::DRIVE)))
+    })
 }
 
 /// The numbers of a list flag.

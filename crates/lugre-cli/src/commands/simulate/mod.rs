@@ -196,7 +196,7 @@ fn parse(args: &SimulateArgs) -> Result<Request> {
         (None, None) => Output::Default,
     };
     let simulation = simulation.with_output(output)?;
-    simulation.check_work()?;
+    simulation.check_work().map_err(flagged)?;
     Ok(Request {
         choice,
         model,
@@ -222,9 +222,20 @@ fn compute(r: &Request) -> Result<Trajectory> {
         // Only the output times are checked as data by the run itself.
         SimulateError::Data(_) => anyhow!("--times: {e}"),
         SimulateError::NotClosed { .. } => anyhow!("--periods: {e}"),
-        _ => anyhow!("{e}"),
+        _ => flagged(e),
     })?;
     Ok(out)
+}
+
+/// The core's message, with the count it names first (`periods must be at most ...`) spelled
+/// as the flag that sets it (`--periods must be at most ...`, Python's `periods=`).
+fn flagged(e: SimulateError) -> anyhow::Error {
+    match e {
+        SimulateError::TooManyPeriods { .. } | SimulateError::TooMuchWork { .. } => {
+            anyhow!("--{e}")
+        }
+        e => anyhow!("{e}"),
+    }
 }
 
 fn show_progress(progress: &mut Progress, fraction: f64) {

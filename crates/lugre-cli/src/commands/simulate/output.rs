@@ -5,11 +5,11 @@ use lugre::Trajectory;
 use std::io::Write;
 
 use super::Request;
-use crate::args::Needed;
 use crate::fmt::sig;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+use lugre::model::named::Needed;
 use lugre::simulate::Drive;
 
 /// Rows of the table printed before the rest is summarised (all of it is in --json / --csv).
