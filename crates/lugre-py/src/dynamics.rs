@@ -70,39 +70,33 @@ pub fn dynamics<'py>(
     if let Some(m) = given(model) {
         r = r.with_model(lugre_of(&m)?);
     }
-    let number = |o: &Bound<'py, PyAny>, f: Field| real(o, f.name());
-    if let Some(m) = given(mass) {
-        r = r
-            .with_mass(number(&m, Field::Mass)?)
-            .map_err(request_error)?;
+    // One number each, through the core's own translation (as the C ABI's and MATLAB's).
+    let scalars = [
+        (Field::Mass, mass),
+        (Field::Damping, damping),
+        (Field::ForceRate, force_rate),
+        (Field::Spring, spring),
+        (Field::Pull, pull),
+        (Field::TEnd, t_end),
+        (Field::Rtol, rtol),
+        (Field::Atol, atol),
+    ];
+    for (field, value) in scalars {
+        if let Some(x) = given(value) {
+            let x = real(&x, field.name())?;
+            r = r.with_numbers(field, &[x]).map_err(request_error)?;
+        }
     }
-    if let Some(c) = given(damping) {
-        r = r
-            .with_damping(number(&c, Field::Damping)?)
-            .map_err(request_error)?;
-    }
-    if let Some(rate) = given(force_rate) {
-        r = r
-            .with_force_rate(number(&rate, Field::ForceRate)?)
-            .map_err(request_error)?;
-    }
-    if let Some(f) = given(force) {
-        let (t, v) = pair(&f, Field::Force.name())?;
-        r = r.with_force(t, v).map_err(request_error)?;
-    }
-    if let Some(k) = given(spring) {
-        r = r
-            .with_spring(number(&k, Field::Spring)?)
-            .map_err(request_error)?;
-    }
-    if let Some(v) = given(pull) {
-        r = r
-            .with_pull(number(&v, Field::Pull)?)
-            .map_err(request_error)?;
-    }
-    if let Some(e) = given(end) {
-        let (t, y) = pair(&e, Field::End.name())?;
-        r = r.with_end(t, y).map_err(request_error)?;
+    // Points (t, value) each.
+    for (field, value) in [
+        (Field::Force, force),
+        (Field::End, end),
+        (Field::Velocity, velocity),
+    ] {
+        if let Some(points) = given(value) {
+            let (t, v) = pair(&points, field.name())?;
+            r = r.with_points(field, t, v).map_err(request_error)?;
+        }
     }
     // Numbers go to the core as given: it counts them (`pid takes 3 numbers, got 2`).
     if let Some(g) = given(pid) {
@@ -110,50 +104,14 @@ pub fn dynamics<'py>(
         r = r.with_numbers(Field::Pid, &g).map_err(request_error)?;
     }
     if let Some(s) = given(setpoint) {
-        r = match (real(&s, Field::Setpoint.name()), numbers_only(&s)) {
-            (Ok(x), _) => r.with_setpoint(x),
-            // A flat list of numbers is not (t, xd) steps: counted as a set point's numbers.
-            (_, Some(xs)) => r.with_numbers(Field::Setpoint, &xs),
-            _ => {
-                let (t, x) = pair(&s, Field::Setpoint.name())?;
-                r.with_setpoint_steps(t, x)
-            }
-        }
-        .map_err(request_error)?;
-    }
-    if let Some(v) = given(velocity) {
-        let (t, v) = pair(&v, Field::Velocity.name())?;
-        r = r.with_velocity(t, v).map_err(request_error)?;
-    }
-    if let Some(t) = given(t_end) {
-        r = r
-            .with_t_end(number(&t, Field::TEnd)?)
-            .map_err(request_error)?;
+        r = with_setpoint(r, &s)?;
     }
     if let Some(t) = given(times) {
         let t = floats(&t, "times")?.one_dimensional("times", &t)?;
         r = r.with_times(t).map_err(request_error)?;
     }
     if let Some(n) = given(samples) {
-        r = match count(&n, Field::Samples.name()) {
-            Ok(n) => r.with_samples(n),
-            // A negative count: the core's words for what a count must be (as the CLI's).
-            Err(e) => match n.extract::<i64>() {
-                Ok(v) if v < 0 => r.with_numbers(Field::Samples, &[v as f64]),
-                _ => return Err(e),
-            },
-        }
-        .map_err(request_error)?;
-    }
-    if let Some(x) = given(rtol) {
-        r = r
-            .with_rtol(number(&x, Field::Rtol)?)
-            .map_err(request_error)?;
-    }
-    if let Some(x) = given(atol) {
-        r = r
-            .with_atol(number(&x, Field::Atol)?)
-            .map_err(request_error)?;
+        r = with_samples(r, &n)?;
     }
     if let Some(l) = given(loops) {
         let on = l.extract::<bool>().map_err(|_| {
@@ -167,6 +125,34 @@ pub fn dynamics<'py>(
     let plan = r.build().map_err(request_error)?;
     let outcome = py.detach(|| plan.run()).map_err(value_error)?;
     result(py, &plan, outcome)
+}
+
+/// `setpoint=`: a number, a flat list of numbers (counted by the core: one is expected), or
+/// steps `(t, xd)`.
+fn with_setpoint(r: Request, s: &Bound<'_, PyAny>) -> PyResult<Request> {
+    match (real(s, Field::Setpoint.name()), numbers_only(s)) {
+        (Ok(x), _) => r.with_setpoint(x),
+        // A flat list of numbers is not (t, xd) steps: counted as a set point's numbers.
+        (_, Some(xs)) => r.with_numbers(Field::Setpoint, &xs),
+        _ => {
+            let (t, x) = pair(s, Field::Setpoint.name())?;
+            r.with_setpoint_steps(t, x)
+        }
+    }
+    .map_err(request_error)
+}
+
+/// `samples=`: a count; a negative one gets the core's words for what a count must be (as
+/// the CLI's).
+fn with_samples(r: Request, n: &Bound<'_, PyAny>) -> PyResult<Request> {
+    match count(n, Field::Samples.name()) {
+        Ok(n) => r.with_samples(n),
+        Err(e) => match n.extract::<i64>() {
+            Ok(v) if v < 0 => r.with_numbers(Field::Samples, &[v as f64]),
+            _ => return Err(e),
+        },
+    }
+    .map_err(request_error)
 }
 
 /// A request's error with its fields spelled as keywords (a measured force is `force` here).

@@ -73,6 +73,60 @@ pub fn simulate<'py>(
     model: &lugre::LuGre,
     args: SimulateArgs<'_, 'py>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let request = request(&args)?;
+    // The core's bounds first, then the memory there is before the core allocates (a failed
+    // allocation there would abort the interpreter).
+    request.check_work().map_err(value_error)?;
+    match request.rows() {
+        Some(n) => drop(try_vec::<[f64; 6]>(n)?),
+        None => {
+            return Err(pyo3::exceptions::PyMemoryError::new_err(
+                "the requested output has more samples than can be held",
+            ))
+        }
+    }
+    let simulator = request.simulator(model).map_err(value_error)?;
+    let trajectory = py
+        .detach(|| request.run_on(&simulator, None))
+        .map_err(value_error)?;
+    let d = PyDict::new(py);
+    let lugre::Trajectory { t, u, z, dz, y } = trajectory;
+    d.set_item("t", vec_out(py, t))?;
+    d.set_item("u", vec_out(py, u))?;
+    d.set_item("z", vec_out(py, z))?;
+    d.set_item("dz", vec_out(py, dz))?;
+    d.set_item("y", vec_out(py, y))?;
+    Ok(d)
+}
+
+/// The core's request from the keywords: each one given replaces the core's default
+/// ([`Request::new`]).
+fn request(args: &SimulateArgs<'_, '_>) -> PyResult<Request> {
+    let mut r = Request::new(drive(args)?);
+    if let Some(g) = given(args.gamma) {
+        r = r.with_gamma(lugre::Gamma::new(real(g, "gamma")?).map_err(value_error)?);
+    }
+    if let Some(p) = given(args.periods) {
+        let periods = count(p, "periods")?;
+        let periods = u32::try_from(periods).map_err(|_| {
+            PyValueError::new_err(format!(
+                "periods must be at most {}, got {periods}",
+                u32::MAX
+            ))
+        })?;
+        r = r.with_periods(periods).map_err(value_error)?;
+    }
+    if let Some(x) = given(args.x0) {
+        r = r.with_x0(real(x, "x0")?);
+    }
+    if let Some(t) = given(args.tol) {
+        r = r.with_tolerance(lugre::Tolerance::new(real(t, "tol")?).map_err(value_error)?);
+    }
+    r.with_output(output(args)?).map_err(value_error)
+}
+
+/// The one input the keywords give: `turning_points` (at `speed`), `t, u` or `sine`.
+fn drive(args: &SimulateArgs<'_, '_>) -> PyResult<Drive> {
     let mut inputs = Vec::new();
     if given(args.turning_points).is_some() {
         inputs.push("turning_points");
@@ -97,19 +151,8 @@ pub fn simulate<'py>(
             )))
         }
     }
-
     let input = if let Some(tp) = given(args.turning_points) {
-        let values = one_dimensional(tp, "turning_points")?;
-        let tp = lugre::TurningPoints::new(&values)
-            .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
-        let speed = match given(args.speed) {
-            Some(v) => real(v, "speed")?,
-            None => Request::DEFAULT_SPEED,
-        };
-        Drive::TurningPoints(
-            lugre::PiecewiseLinear::from_turning_points(&tp, speed)
-                .map_err(|e| PyValueError::new_err(format!("speed: {e}")))?,
-        )
+        turning_points(tp, given(args.speed))?
     } else if given(args.speed).is_some() {
         return Err(PyValueError::new_err(
             "speed is the turning points' speed: the other inputs carry their own times",
@@ -117,55 +160,58 @@ pub fn simulate<'py>(
     } else if let Some(sine) = given(args.sine) {
         Drive::Sine(sine_arg(sine)?)
     } else {
-        let (Some(t), Some(u)) = (given(args.t), given(args.u)) else {
-            return Err(PyValueError::new_err(
-                "a sampled input needs both t and u (arrays of equal length)",
-            ));
-        };
-        let t = one_dimensional(t, "t")?;
-        let u = one_dimensional(u, "u")?;
-        let cubic = cubic_arg(given(args.interpolate))?;
-        if cubic {
-            // The chord tolerance of the subdivision: `tol`, as `lugre simulate --tol`.
-            let tol = match given(args.tol) {
-                Some(x) => real(x, "tol")?,
-                None => lugre::Tolerance::DEFAULT.value(),
-            };
-            Drive::Smooth(lugre::simulate::SmoothSamples::pchip(t, u, tol).map_err(value_error)?)
-        } else {
-            Drive::Samples(lugre::PiecewiseLinear::new(t, u).map_err(value_error)?)
-        }
+        sampled(args)?
     };
     if given(args.interpolate).is_some() && !matches!(input, Drive::Samples(_) | Drive::Smooth(_)) {
         return Err(PyValueError::new_err(
             "interpolate applies to sampled inputs (t, u)",
         ));
     }
+    Ok(input)
+}
 
-    let gamma = match given(args.gamma) {
-        Some(g) => real(g, "gamma")?,
-        None => 1.0,
+/// Turning points at `speed` (the core's default speed if not given).
+fn turning_points(tp: &Bound<'_, PyAny>, speed: Option<&Bound<'_, PyAny>>) -> PyResult<Drive> {
+    let values = one_dimensional(tp, "turning_points")?;
+    let tp = lugre::TurningPoints::new(&values)
+        .map_err(|e| PyValueError::new_err(format!("turning_points: {e}")))?;
+    let speed = match speed {
+        Some(v) => real(v, "speed")?,
+        None => Request::DEFAULT_SPEED,
     };
-    let gamma = lugre::Gamma::new(gamma).map_err(value_error)?;
-    let periods = match given(args.periods) {
-        Some(p) => count(p, "periods")?,
-        None => 1,
+    Ok(Drive::TurningPoints(
+        lugre::PiecewiseLinear::from_turning_points(&tp, speed)
+            .map_err(|e| PyValueError::new_err(format!("speed: {e}")))?,
+    ))
+}
+
+/// Samples `t, u`, read linearly or as a smooth motion (`interpolate="cubic"`).
+fn sampled(args: &SimulateArgs<'_, '_>) -> PyResult<Drive> {
+    let (Some(t), Some(u)) = (given(args.t), given(args.u)) else {
+        return Err(PyValueError::new_err(
+            "a sampled input needs both t and u (arrays of equal length)",
+        ));
     };
-    let periods = u32::try_from(periods).map_err(|_| {
-        PyValueError::new_err(format!(
-            "periods must be at most {}, got {periods}",
-            u32::MAX
-        ))
-    })?;
-    let x0 = match given(args.x0) {
-        Some(x) => real(x, "x0")?,
-        None => 0.0,
-    };
+    let t = one_dimensional(t, "t")?;
+    let u = one_dimensional(u, "u")?;
+    if !cubic_arg(given(args.interpolate))? {
+        return Ok(Drive::Samples(
+            lugre::PiecewiseLinear::new(t, u).map_err(value_error)?,
+        ));
+    }
+    // The chord tolerance of the subdivision: `tol`, as `lugre simulate --tol`.
     let tol = match given(args.tol) {
-        Some(t) => lugre::Tolerance::new(real(t, "tol")?).map_err(value_error)?,
-        None => lugre::Tolerance::DEFAULT,
+        Some(x) => real(x, "tol")?,
+        None => lugre::Tolerance::DEFAULT.value(),
     };
-    let output = match (given(args.times), given(args.samples_per_period)) {
+    Ok(Drive::Smooth(
+        lugre::simulate::SmoothSamples::pchip(t, u, tol).map_err(value_error)?,
+    ))
+}
+
+/// Where to sample: `times` (or "knots"), `samples_per_period`, or the core's default.
+fn output(args: &SimulateArgs<'_, '_>) -> PyResult<Output> {
+    Ok(match (given(args.times), given(args.samples_per_period)) {
         (Some(_), Some(_)) => {
             return Err(PyValueError::new_err(
                 "give times or samples_per_period, not both",
@@ -187,42 +233,7 @@ pub fn simulate<'py>(
             })?)
         }
         (None, None) => Output::Default,
-    };
-    let request = Request::new(input)
-        .with_gamma(gamma)
-        .with_periods(periods)
-        .map_err(value_error)?
-        .with_x0(x0)
-        .with_tolerance(tol)
-        .with_output(output)
-        .map_err(value_error)?;
-
-    // The core's bounds first, then the memory there is before the core allocates (a failed
-    // allocation there would abort the interpreter).
-    request.check_work().map_err(value_error)?;
-    let samples = request.rows();
-    match samples {
-        Some(n) => drop(try_vec::<[f64; 6]>(n)?),
-        None => {
-            return Err(pyo3::exceptions::PyMemoryError::new_err(
-                "the requested output has more samples than can be held",
-            ))
-        }
-    }
-
-    let simulator = request.simulator(model).map_err(value_error)?;
-    let trajectory = py
-        .detach(|| request.run_on(&simulator, None))
-        .map_err(value_error)?;
-
-    let d = PyDict::new(py);
-    let lugre::Trajectory { t, u, z, dz, y } = trajectory;
-    d.set_item("t", vec_out(py, t))?;
-    d.set_item("u", vec_out(py, u))?;
-    d.set_item("z", vec_out(py, z))?;
-    d.set_item("dz", vec_out(py, dz))?;
-    d.set_item("y", vec_out(py, y))?;
-    Ok(d)
+    })
 }
 
 /// `interpolate`: "linear" (default, `false`) or "cubic" (`true`).
