@@ -391,6 +391,18 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
     let mut w = std::io::BufWriter::new(stdout.lock());
     writeln!(w, "{}", r.description)?;
     writeln!(w, "{}", model_text(&args.model, r)?)?;
+    write_summary(&mut w, r, o)?;
+    if r.loops {
+        write_loops(&mut w, &o.loops)?;
+    }
+    write_table(&mut w, m)?;
+    w.flush()?;
+    Ok(())
+}
+
+/// The run in a few lines: its cost, the break-away, the slip onsets, the energy balance.
+fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<()> {
+    let m = &o.motion;
     writeln!(
         w,
         "mass {} kg, run 0..{} s, rtol {}; {} steps ({} rejected), {} events",
@@ -411,21 +423,7 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
         )?;
     }
     if let Some(v) = r.pull {
-        let onsets: Vec<f64> = o.slip_onsets();
-        writeln!(
-            w,
-            "slip onsets (v rising through {} m/s, the spring force's peaks): {}",
-            sig(v, 6),
-            onsets
-                .iter()
-                .map(|t| sig(*t, 10))
-                .collect::<Vec<_>>()
-                .join(", ")
-        )?;
-        if onsets.len() >= 2 {
-            let periods: Vec<String> = onsets.windows(2).map(|p| sig(p[1] - p[0], 10)).collect();
-            writeln!(w, "period: {} s", periods.join(", "))?;
-        }
+        write_slip_onsets(w, v, &o.slip_onsets())?;
     }
     let e = m.energy;
     writeln!(
@@ -442,14 +440,31 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
         .iter()
         .filter(|e| e.kind == EventKind::VelocityZero)
         .count();
-    writeln!(w, "velocity sign changes: {reversals}")?;
-    if r.loops {
-        write_loops(&mut w, &o.loops)?;
-    }
+    writeln!(w, "velocity sign changes: {reversals}")
+}
+
+/// The slip onsets of a pulled spring (pulled at `v`) and the periods between them.
+fn write_slip_onsets(w: &mut impl Write, v: f64, onsets: &[f64]) -> std::io::Result<()> {
+    let times: Vec<String> = onsets.iter().map(|t| sig(*t, 10)).collect();
     writeln!(
         w,
-        "\n{:>12} {:>16} {:>14} {:>14} {:>12} {:>12}",
-        "t", "x", "v", "z", "friction", "drive"
+        "slip onsets (v rising through {} m/s, the spring force's peaks): {}",
+        sig(v, 6),
+        times.join(", ")
+    )?;
+    if onsets.len() >= 2 {
+        let periods: Vec<String> = onsets.windows(2).map(|p| sig(p[1] - p[0], 10)).collect();
+        writeln!(w, "period: {} s", periods.join(", "))?;
+    }
+    Ok(())
+}
+
+/// About [`TABLE_HEAD`] rows of the motion, the last always among them.
+fn write_table(w: &mut impl Write, m: &Motion) -> std::io::Result<()> {
+    let [t, x, v, z, friction, drive] = Motion::COLUMNS;
+    writeln!(
+        w,
+        "\n{t:>12} {x:>16} {v:>14} {z:>14} {friction:>12} {drive:>12}"
     )?;
     let n = m.t.len();
     let step = (n / TABLE_HEAD).max(1);
@@ -470,9 +485,7 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
             sig(m.drive[i], 7)
         )?;
     }
-    writeln!(w, "({n} samples; all of them with --json or --csv)")?;
-    w.flush()?;
-    Ok(())
+    writeln!(w, "({n} samples; all of them with --json or --csv)")
 }
 
 fn write_json<W: Write>(mut j: JsonOut<W>, r: &Plan, o: &Outcome) -> std::io::Result<()> {
