@@ -346,6 +346,25 @@ pub enum FitError {
     Model(#[from] ModelError),
     #[error(transparent)]
     Simulate(#[from] SimulateError),
+    #[error("the {fit} fit identifies the LuGre model (its Stribeck curve and bristles); the {family} model has neither: use the LuGre model")]
+    NotForFamily {
+        fit: &'static str,
+        family: &'static str,
+    },
+    #[error("{name} does not enter the steady-state friction F_ss(v) = g(v) sgn(v) + sigma2 v, so constant-velocity runs cannot determine it (sigma0 and sigma1 come from a presliding test)")]
+    NotInSteadyState { name: &'static str },
+    #[error("the steady-state point {index} has velocity {value}: each point needs a finite, nonzero velocity (the curve jumps at v = 0)", value = num(*.value))]
+    BadSteadyVelocity { index: usize, value: f64 },
+    #[error("the steady-state point {index} has force {value}: each point needs a finite force", value = num(*.value))]
+    BadSteadyForce { index: usize, value: f64 },
+    #[error("the steady-state point {index} has standard error {value}: it must be a finite number > 0", value = num(*.value))]
+    BadSteadyError { index: usize, value: f64 },
+    #[error("{plateaus} constant-velocity points for {parameters} free parameter(s): the Stribeck fit needs at least {needed}; add runs at more velocities or fix parameters")]
+    TooFewPlateaus {
+        plateaus: usize,
+        parameters: usize,
+        needed: usize,
+    },
 }
 
 /// An invalid simulation request, or a result that cannot be represented.

@@ -83,10 +83,12 @@ mod lm;
 mod slow;
 mod spec;
 mod stats;
+mod stribeck;
 
 pub use crate::error::{FitError, Unidentified, Why};
 pub use lm::FitProgress;
 pub use spec::{Bounds, Family, FitKind, FitSpec};
+pub use stribeck::{fit_stribeck, steady_force, SteadyPoint};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
@@ -565,10 +567,9 @@ fn report(
             }
         })
         .collect();
-    let relevant: Vec<usize> = match kind {
-        FitKind::Slow => resolved.family.slow_parameters().to_vec(),
-        FitKind::Full => (0..resolved.family.parameters().len()).collect(),
-    };
+    let relevant: Vec<usize> = (0..resolved.family.parameters().len())
+        .filter(|&i| kind.uses(resolved.family, i))
+        .collect();
     let fixed = relevant
         .into_iter()
         .filter(|i| !resolved.free.contains(i))

@@ -34,6 +34,7 @@ use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
 
+mod lab;
 mod output;
 mod spec;
 
@@ -46,6 +47,13 @@ pub(crate) enum FitChoice {
     Slow,
     /// The exact simulation of rate-dependent data: sigma0, sigma1, sigma2, Fc, Fs, vs.
     Full,
+    /// The steady-state friction of constant-velocity runs: Fc, Fs, vs, sigma2.
+    Stribeck,
+    /// A presliding test (small reversals below break-away): sigma0, sigma1.
+    Presliding,
+    /// The Stribeck and presliding fits in turn (--stribeck FILE --presliding FILE), then a
+    /// full fit of --input FILE, if given, started from them.
+    Staged,
 }
 
 /// The help of `--csv` for this command.
@@ -159,7 +167,26 @@ struct Request<'a> {
     cubic: bool,
 }
 
+impl FitChoice {
+    /// The core's kind of fit.
+    fn kind(self) -> FitKind {
+        match self {
+            FitChoice::Slow => FitKind::Slow,
+            FitChoice::Full => FitKind::Full,
+            FitChoice::Stribeck => FitKind::Stribeck,
+            FitChoice::Presliding => FitKind::Presliding,
+            FitChoice::Staged => FitKind::Staged,
+        }
+    }
+}
+
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    if matches!(
+        args.fit,
+        FitChoice::Stribeck | FitChoice::Presliding | FitChoice::Staged
+    ) {
+        return lab::run(args);
+    }
     check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let report = compute(&request)?;
@@ -171,10 +198,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         bail!("no data: give --input FILE.csv (columns u,F or t,u,F)");
     };
     let spec = build_spec(args)?;
-    let kind = match args.fit {
-        FitChoice::Slow => FitKind::Slow,
-        FitChoice::Full => FitKind::Full,
-    };
+    let kind = args.fit.kind();
     if kind == FitKind::Slow {
         if args.x0.is_some() {
             bail!("--x0 applies to the full fit (add --fit full)");
@@ -210,7 +234,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     }
     let full = match kind {
         FitKind::Slow => None,
-        FitKind::Full => {
+        _ => {
             // Checked here, in its turn; `compute` takes the times again.
             record.times_for_full_fit(path)?;
             let x0 = match &args.x0 {
@@ -286,13 +310,7 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     if let Some(plot) = &args.plot.path {
         figure(record, report, &residuals).save(plot)?;
     }
-    if !report.converged {
-        let _ = writeln!(
-            std::io::stderr(),
-            "lugre: warning: the fit did not converge ({}); the best point found is reported",
-            report.termination
-        );
-    }
+    warn_unconverged(report);
     let stdout = std::io::stdout();
     if args.output.json {
         write_json(JsonOut::new(stdout.lock()), report, r.path, normal)?;
@@ -317,6 +335,18 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
         out.flush()?;
     }
     Ok(())
+}
+
+/// Warns on stderr of a fit that ran out of evaluations (its best point is reported).
+fn warn_unconverged(report: &FitReport) {
+    if !report.converged {
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: warning: the {} fit did not converge ({}); the best point found is reported",
+            report.kind.label(),
+            report.termination
+        );
+    }
 }
 
 /// Reads the record: `u,F` or `t,u,F` (the columns of those roles in any header, others

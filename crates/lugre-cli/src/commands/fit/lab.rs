@@ -1,0 +1,184 @@
+//! `lugre fit --fit stribeck|presliding|staged`: the lab's experiments (`lugre::fit`).
+//!
+//! * `--fit stribeck --input FILE`: `Fc, Fs, vs, sigma2` (`--free beta` adds `beta`) from the
+//!   steady-state friction of constant-velocity runs: a table `v,F` (one row a run: its
+//!   velocity and steady force; a header `v,F`, or two columns in that order);
+//! * the report gives each parameter with its 95 % interval; `--csv` writes the points with the
+//!   fitted curve and `--plot` draws friction against velocity.
+
+use anyhow::{anyhow, bail, Result};
+use lugre::fit::{fit_stribeck, FitError, FitReport, FitSpec, SteadyPoint};
+use std::io::Write;
+use std::path::Path;
+
+use super::spec::{build_spec, explain};
+use super::{FitArgs, FitChoice};
+use crate::args::Interpolate;
+use crate::io::atomic::write_atomic;
+use crate::io::csv::NumberRows;
+use crate::io::outputs::Files;
+use lugre_io::{Reader, Role, Rows, Spec};
+
+mod steady_plot;
+
+/// The constant-velocity data: the points fitted.
+pub(super) struct Steady {
+    pub(super) points: Vec<SteadyPoint>,
+}
+
+pub(super) fn run(args: &FitArgs) -> Result<()> {
+    Files::new()
+        .input("--input", args.input.as_deref())
+        .output("--csv", args.output.csv.as_deref())
+        .output("--plot", args.plot.path.as_deref())
+        .check()?;
+    refuse_flags(args)?;
+    if let Some(plot) = &args.plot.path {
+        crate::plot::check_path(plot)?;
+    }
+    let spec = build_spec(args)?;
+    match args.fit {
+        FitChoice::Stribeck => {
+            let path = input(args, "the constant-velocity runs: a table v,F")?;
+            let steady = read_steady(args, path)?;
+            let report = stribeck(&spec, &steady, path)?;
+            report_stribeck(args, path, &spec, &steady, &report)
+        }
+        other => bail!("--fit {other:?} is not available yet"),
+    }
+}
+
+/// `--input`, which the fit needs (`what`: what it holds).
+fn input<'a>(args: &'a FitArgs, what: &str) -> Result<&'a Path> {
+    args.input
+        .as_deref()
+        .ok_or_else(|| anyhow!("no data: give --input FILE.csv ({what})"))
+}
+
+/// Flags of the other fits.
+fn refuse_flags(args: &FitArgs) -> Result<()> {
+    let fit = args.fit.kind().label();
+    if args.x0.is_some() {
+        bail!("--x0 applies to the full fit, not to --fit {fit}");
+    }
+    if args.starts.is_some() {
+        bail!("--starts applies to the full fit, not to --fit {fit}");
+    }
+    if args.interpolate == Interpolate::Cubic {
+        bail!("--interpolate cubic applies to the full fit, not to --fit {fit}");
+    }
+    if args.data.selects(Role::N) {
+        bail!("--columns N=...: the normal force is read by the slow and full fits only, not by --fit {fit}");
+    }
+    Ok(())
+}
+
+/// The steady-state points of a table `v,F` (header `v`, or two columns without a header).
+fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
+    let options = args.data.options(&[Role::V, Role::F])?;
+    let reader = Reader::open(path, options)?;
+    let spec = Spec::new([Role::V, Role::F]);
+    let mut table = reader
+        .rows(&spec)
+        .and_then(Rows::collect_table)
+        .map_err(|e| e.in_file(path))?;
+    let (v, f) = (
+        table.take(&Role::V).unwrap_or_default(),
+        table.take(&Role::F).unwrap_or_default(),
+    );
+    let points = v
+        .into_iter()
+        .zip(f)
+        .map(|(v, f)| SteadyPoint { v, f, stderr: None })
+        .collect();
+    Ok(Steady { points })
+}
+
+/// The Stribeck fit, its errors in terms of the file and the flags.
+fn stribeck(spec: &FitSpec, steady: &Steady, path: &Path) -> Result<FitReport> {
+    fit_stribeck(spec, &steady.points).map_err(|e| match e {
+        FitError::TooFewPlateaus { .. }
+        | FitError::BadSteadyVelocity { .. }
+        | FitError::BadSteadyForce { .. } => anyhow!("{}: {e}", path.display()),
+        other => explain(other),
+    })
+}
+
+fn report_stribeck(
+    args: &FitArgs,
+    path: &Path,
+    spec: &FitSpec,
+    steady: &Steady,
+    r: &FitReport,
+) -> Result<()> {
+    if let Some(csv) = &args.output.csv {
+        write_atomic(csv, |w| write_steady_csv(w, steady, r))?;
+    }
+    if let Some(plot) = &args.plot.path {
+        steady_plot::figure(steady, r, spec).save(plot)?;
+    }
+    super::warn_unconverged(r);
+    let stdout = std::io::stdout();
+    if args.output.json {
+        let mut doc = super::output::json_value(r, path, false)?;
+        doc["points"] = points_json(steady, r);
+        let mut out = stdout.lock();
+        serde_json::to_writer(&mut out, &doc)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    super::output::print_table(&mut out, r, path, false)?;
+    if let Some(csv) = &args.output.csv {
+        writeln!(
+            out,
+            "\nWrote the points and the fitted curve (v,F,stderr,fit,residual) to {}",
+            csv.display()
+        )?;
+    }
+    if let Some(plot) = &args.plot.path {
+        writeln!(
+            out,
+            "Drew friction against velocity, the points and the fitted curve, to {}",
+            plot.display()
+        )?;
+    }
+    out.flush()?;
+    Ok(())
+}
+
+/// `[{"v", "F", "stderr", "fit"}, ...]` (`stderr` null without one).
+fn points_json(steady: &Steady, r: &FitReport) -> serde_json::Value {
+    steady
+        .points
+        .iter()
+        .zip(&r.fitted)
+        .map(|(p, fit)| {
+            serde_json::json!({
+                "v": p.v,
+                "F": p.f,
+                "stderr": p.stderr,
+                "fit": fit,
+            })
+        })
+        .collect()
+}
+
+fn write_steady_csv(w: &mut dyn Write, steady: &Steady, r: &FitReport) -> Result<()> {
+    let mut rows = NumberRows::new();
+    writeln!(w, "v,F,stderr,fit,residual")?;
+    for (p, &fit) in steady.points.iter().zip(&r.fitted) {
+        match p.stderr {
+            Some(e) => rows.write(w, &[p.v, p.f, e, fit, p.f - fit])?,
+            None => {
+                let mut text = Vec::new();
+                rows.write(&mut text, &[p.v, p.f])?;
+                let head = String::from_utf8_lossy(&text);
+                let mut tail = Vec::new();
+                rows.write(&mut tail, &[fit, p.f - fit])?;
+                write!(w, "{},,{}", head.trim_end(), String::from_utf8_lossy(&tail))?;
+            }
+        }
+    }
+    Ok(())
+}

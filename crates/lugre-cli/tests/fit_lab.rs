@@ -1,0 +1,131 @@
+//! `lugre fit --fit stribeck|presliding|staged` run as a user would: the real binary on the
+//! example data of `examples/data/` (written by `examples/data/make_lab_experiments.py`, an
+//! independent generator: scipy's Radau at rtol 1e-10 on the LuGre model with the parameters
+//! of Canudas de Wit et al. (1995)), its stdout, stderr, files and exit status.
+
+use std::path::PathBuf;
+
+mod common;
+use common::{accepts, accepts_json, f, rejects, TempDir};
+
+/// The truth of the example data (the preset `canudas1995`).
+const TRUTH: [(&str, f64); 7] = [
+    ("sigma0", 1e5),
+    ("sigma1", 316.227_766_016_837_94),
+    ("sigma2", 0.4),
+    ("fc", 1.0),
+    ("fs", 1.5),
+    ("vs", 1e-3),
+    ("beta", 2.0),
+];
+
+fn data(name: &str) -> String {
+    let p: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "..",
+        "..",
+        "examples",
+        "data",
+        name,
+    ]
+    .iter()
+    .collect();
+    p.to_str().expect("UTF-8 path").to_string()
+}
+
+fn truth(name: &str) -> f64 {
+    TRUTH
+        .iter()
+        .find(|(n, _)| *n == name)
+        .expect("a parameter")
+        .1
+}
+
+/// Each named estimate within `rel` of the truth, and its 95 % interval covering the truth.
+#[track_caller]
+fn recovers(doc: &serde_json::Value, names: &[&str], rel: f64) {
+    for &name in names {
+        let p = &doc["parameters"][name];
+        let (value, lo, hi) = (f(&p["value"]), f(&p["ci95"][0]), f(&p["ci95"][1]));
+        let want = truth(name);
+        assert!(
+            ((value - want) / want).abs() < rel,
+            "{name}: {value} vs {want}"
+        );
+        assert!(
+            lo <= want && want <= hi,
+            "{name}: [{lo}, {hi}] misses {want}"
+        );
+    }
+}
+
+#[test]
+fn stribeck_from_a_table_recovers_the_curve() {
+    let table = data("lab-stribeck-table.csv");
+    let doc = accepts_json(&[
+        "fit", "--fit", "stribeck", "--input", &table, "--beta", "2", "--json",
+    ]);
+    assert_eq!(doc["fit"], "stribeck");
+    recovers(&doc, &["fc", "fs", "vs", "sigma2"], 0.02);
+    assert_eq!(doc["points"].as_array().map(Vec::len), Some(48));
+    assert_eq!(f(&doc["fixed"]["beta"]), 2.0);
+    // The table: each parameter with its interval.
+    let text = accepts(&["fit", "--fit", "stribeck", "--input", &table, "--beta", "2"]);
+    assert!(text.contains("Stribeck fit"), "{text}");
+    assert!(text.contains("95 % confidence interval"), "{text}");
+}
+
+#[test]
+fn stribeck_writes_its_points_and_figure() {
+    let dir = TempDir::new("fit-lab-files");
+    let (csv, svg, png) = (dir.join("p.csv"), dir.join("s.svg"), dir.join("s.png"));
+    let table = data("lab-stribeck-table.csv");
+    for plot in [&svg, &png] {
+        accepts(&[
+            "fit", "--fit", "stribeck", "--input", &table, "--beta", "2", "--csv", &csv, "--plot",
+            plot,
+        ]);
+    }
+    let text = std::fs::read_to_string(&csv).expect("the CSV");
+    assert!(text.starts_with("v,F,stderr,fit,residual\n"), "{text}");
+    assert_eq!(text.lines().count(), 49);
+    assert!(std::fs::read_to_string(&svg)
+        .expect("svg")
+        .contains("log10 |v|"));
+    assert!(std::fs::read(&png).expect("png").starts_with(b"\x89PNG"));
+}
+
+#[test]
+fn stribeck_bad_input_is_one_line() {
+    let dir = TempDir::new("fit-lab-bad");
+    let few = dir.file("few.csv", "v,F\n0.001,1.2\n-0.001,-1.2\n0.01,1.01\n");
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &few, "--beta", "2"],
+        "3 constant-velocity points for 4 free parameter(s): the Stribeck fit needs at least 5",
+    );
+    let zero = dir.file(
+        "zero.csv",
+        "v,F\n0,1.2\n-0.001,-1.2\n0.01,1.01\n0.1,1.05\n1,1.4\n",
+    );
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &zero, "--beta", "2"],
+        "velocity 0",
+    );
+    let table = data("lab-stribeck-table.csv");
+    rejects(
+        &[
+            "fit", "--fit", "stribeck", "--input", &table, "--beta", "2", "--free", "sigma0",
+        ],
+        "sigma0 does not enter the steady-state friction",
+    );
+    rejects(
+        &[
+            "fit", "--fit", "stribeck", "--input", &table, "--beta", "2", "--x0", "0",
+        ],
+        "--x0 applies to the full fit",
+    );
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &table],
+        "beta is held in the stribeck fit but has no value",
+    );
+}
