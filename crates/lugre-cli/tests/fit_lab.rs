@@ -129,3 +129,70 @@ fn stribeck_bad_input_is_one_line() {
         "beta is held in the stribeck fit but has no value",
     );
 }
+
+#[test]
+fn stribeck_from_a_record_finds_the_runs() {
+    let record = data("lab-stribeck.csv");
+    let doc = accepts_json(&[
+        "fit", "--fit", "stribeck", "--input", &record, "--beta", "2", "--json",
+    ]);
+    recovers(&doc, &["fc", "fs", "vs", "sigma2"], 0.02);
+    let runs = doc["plateaus"]["runs"].as_array().expect("the runs");
+    assert_eq!(runs.len(), 48, "24 speeds, both signs");
+    // The slowest run's transient (about 1 s of its 3 s) is dropped.
+    assert!(f(&runs[0]["t_start"]) > 0.5, "{}", runs[0]);
+    for r in runs {
+        assert!(f(&r["samples"]) >= 10.0, "{r}");
+    }
+}
+
+#[test]
+fn records_without_usable_runs_are_one_line() {
+    let dir = TempDir::new("fit-lab-records");
+    // A sine: the velocity never stays constant (near its extremes, for a few samples: the
+    // line says the runs are too short, or that there are none).
+    let mut sine = String::from("t,u,F\n");
+    for i in 0..400 {
+        let t = f64::from(i) * 0.01;
+        sine.push_str(&format!(
+            "{t},{},{}\n",
+            (3.0 * t).sin() * 1e-3,
+            (3.0 * t).cos()
+        ));
+    }
+    let sine = dir.file("sine.csv", sine);
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &sine, "--beta", "2"],
+        "constant-velocity run",
+    );
+    // Runs of 6 samples.
+    let short = runs(6, 0.0);
+    let short = dir.file("short.csv", short);
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &short, "--beta", "2"],
+        "the constant-velocity runs are too short",
+    );
+    // Noise of 3 N on a 1 N force.
+    let noisy = runs(50, 3.0);
+    let noisy = dir.file("noisy.csv", noisy);
+    rejects(
+        &["fit", "--fit", "stribeck", "--input", &noisy, "--beta", "2"],
+        "the noise is larger than the signal",
+    );
+}
+
+/// A record `t,u,F` of runs at +-1, 2, 4 mm/s, `per_run` samples each at 100 Hz, with a force
+/// of sgn(v) N plus a deterministic wiggle of amplitude `wiggle`.
+fn runs(per_run: usize, wiggle: f64) -> String {
+    let mut text = String::from("t,u,F\n");
+    let (mut u, mut k) = (0.0, 0);
+    for v in [1e-3f64, -1e-3, 2e-3, -2e-3, 4e-3, -4e-3] {
+        for _ in 0..per_run {
+            let w = wiggle * (f64::from(k) * 2.399).sin();
+            text.push_str(&format!("{},{u},{}\n", f64::from(k) * 0.01, v.signum() + w));
+            u += v * 0.01;
+            k += 1;
+        }
+    }
+    text
+}

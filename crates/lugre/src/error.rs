@@ -365,6 +365,16 @@ pub enum FitError {
         parameters: usize,
         needed: usize,
     },
+    #[error("the record has no constant-velocity run: the velocity never stays constant (within its noise) over {min_run} samples or more in its {samples} samples; record runs at constant velocities, or give a table v,F of their steady forces")]
+    NoPlateau { samples: usize, min_run: usize },
+    #[error("the constant-velocity runs are too short: the longest has {longest} samples and each needs at least {needed} once its transient is dropped; sample faster or run each velocity longer")]
+    TooFewPlateauSamples { longest: usize, needed: usize },
+    #[error("the noise is larger than the signal: {what} varies by {noise} (standard deviation) against a level of {signal}; average more samples or reduce the noise", noise = num(*.noise), signal = num(*.signal))]
+    NoiseAboveSignal {
+        what: &'static str,
+        noise: f64,
+        signal: f64,
+    },
 }
 
 /// An invalid simulation request, or a result that cannot be represented.

@@ -7,13 +7,16 @@
 //!   fitted curve and `--plot` draws friction against velocity.
 
 use anyhow::{anyhow, bail, Result};
-use lugre::fit::{fit_stribeck, FitError, FitReport, FitSpec, SteadyPoint};
+use lugre::fit::{
+    find_plateaus, fit_stribeck, FitError, FitReport, FitSpec, Motion, Plateaus, SteadyPoint,
+};
 use std::io::Write;
 use std::path::Path;
 
 use super::spec::{build_spec, explain};
 use super::{FitArgs, FitChoice};
 use crate::args::Interpolate;
+use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::csv::NumberRows;
 use crate::io::outputs::Files;
@@ -24,6 +27,8 @@ mod steady_plot;
 /// The constant-velocity data: the points fitted.
 pub(super) struct Steady {
     pub(super) points: Vec<SteadyPoint>,
+    /// The plateaus found in a record, and its times.
+    pub(super) plateaus: Option<(Plateaus, Vec<f64>)>,
 }
 
 pub(super) fn run(args: &FitArgs) -> Result<()> {
@@ -39,7 +44,10 @@ pub(super) fn run(args: &FitArgs) -> Result<()> {
     let spec = build_spec(args)?;
     match args.fit {
         FitChoice::Stribeck => {
-            let path = input(args, "the constant-velocity runs: a table v,F")?;
+            let path = input(
+                args,
+                "constant-velocity runs: a record t,u,F or a table v,F",
+            )?;
             let steady = read_steady(args, path)?;
             let report = stribeck(&spec, &steady, path)?;
             report_stribeck(args, path, &spec, &steady, &report)
@@ -73,25 +81,52 @@ fn refuse_flags(args: &FitArgs) -> Result<()> {
     Ok(())
 }
 
-/// The steady-state points of a table `v,F` (header `v`, or two columns without a header).
+/// The steady-state points: of a table `v,F` (a header with `v` and no `t`, or two columns
+/// without a header), or found in a record `t,u,F` / `t,v,F` (a header with `t`, or three
+/// columns without one) by [`find_plateaus`].
 fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
-    let options = args.data.options(&[Role::V, Role::F])?;
-    let reader = Reader::open(path, options)?;
-    let spec = Spec::new([Role::V, Role::F]);
+    let options = args.data.options(&[Role::U, Role::V, Role::F])?;
+    let reader = Reader::open(path, options.clone())?;
+    let timed = if reader.header().is_some() || options.selects_any() {
+        reader.header_has(&Role::T) || options.selects(&Role::T)
+    } else {
+        reader.width() >= 3
+    };
+    let motion = if timed { reader.motion() } else { Role::V };
+    let mut spec = Spec::new([motion.clone(), Role::F]);
+    if timed {
+        spec = spec.require_time();
+    }
     let mut table = reader
         .rows(&spec)
         .and_then(Rows::collect_table)
         .map_err(|e| e.in_file(path))?;
-    let (v, f) = (
-        table.take(&Role::V).unwrap_or_default(),
+    let (x, f) = (
+        table.take(&motion).unwrap_or_default(),
         table.take(&Role::F).unwrap_or_default(),
     );
-    let points = v
-        .into_iter()
-        .zip(f)
-        .map(|(v, f)| SteadyPoint { v, f, stderr: None })
-        .collect();
-    Ok(Steady { points })
+    if !timed {
+        let points = x
+            .into_iter()
+            .zip(f)
+            .map(|(v, f)| SteadyPoint { v, f, stderr: None })
+            .collect();
+        return Ok(Steady {
+            points,
+            plateaus: None,
+        });
+    }
+    let t = table.take(&Role::T).unwrap_or_default();
+    let kind = if motion == Role::V {
+        Motion::Velocity
+    } else {
+        Motion::Displacement
+    };
+    let found = find_plateaus(&t, &x, &f, kind).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    Ok(Steady {
+        points: found.points(),
+        plateaus: Some((found, t)),
+    })
 }
 
 /// The Stribeck fit, its errors in terms of the file and the flags.
@@ -99,6 +134,7 @@ fn stribeck(spec: &FitSpec, steady: &Steady, path: &Path) -> Result<FitReport> {
     fit_stribeck(spec, &steady.points).map_err(|e| match e {
         FitError::TooFewPlateaus { .. }
         | FitError::BadSteadyVelocity { .. }
+        | FitError::BadSteadyError { .. }
         | FitError::BadSteadyForce { .. } => anyhow!("{}: {e}", path.display()),
         other => explain(other),
     })
@@ -122,12 +158,28 @@ fn report_stribeck(
     if args.output.json {
         let mut doc = super::output::json_value(r, path, false)?;
         doc["points"] = points_json(steady, r);
+        if let Some((found, t)) = &steady.plateaus {
+            doc["plateaus"] = plateaus_json(found, t);
+        }
         let mut out = stdout.lock();
         serde_json::to_writer(&mut out, &doc)?;
         writeln!(out)?;
         return Ok(());
     }
     let mut out = std::io::BufWriter::new(stdout.lock());
+    if let Some((found, _)) = &steady.plateaus {
+        writeln!(
+            out,
+            "{} constant-velocity runs found in {}{} (velocity noise {}); each point is the mean force over the run's steady part, weighted by its standard error",
+            found.plateaus.len(),
+            path.display(),
+            match found.skipped {
+                0 => String::new(),
+                n => format!(", {n} more skipped: their transient filled them"),
+            },
+            sig(found.velocity_noise, 3)
+        )?;
+    }
     super::output::print_table(&mut out, r, path, false)?;
     if let Some(csv) = &args.output.csv {
         writeln!(
@@ -162,6 +214,31 @@ fn points_json(steady: &Steady, r: &FitReport) -> serde_json::Value {
             })
         })
         .collect()
+}
+
+/// `{"runs", "skipped", "velocity_noise", "runs": [{"v", "F", "stderr", "sd", "samples",
+/// "t_start", "t_end"}]}`: the steady part of each run.
+fn plateaus_json(found: &Plateaus, t: &[f64]) -> serde_json::Value {
+    let runs: Vec<serde_json::Value> = found
+        .plateaus
+        .iter()
+        .map(|p| {
+            serde_json::json!({
+                "v": p.v,
+                "F": p.f,
+                "stderr": p.stderr,
+                "sd": p.f_sd,
+                "samples": p.steady.1 - p.steady.0,
+                "t_start": t[p.steady.0],
+                "t_end": t[p.steady.1 - 1],
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "skipped": found.skipped,
+        "velocity_noise": found.velocity_noise,
+        "runs": runs,
+    })
 }
 
 fn write_steady_csv(w: &mut dyn Write, steady: &Steady, r: &FitReport) -> Result<()> {
