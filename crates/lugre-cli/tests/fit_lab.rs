@@ -196,3 +196,39 @@ fn runs(per_run: usize, wiggle: f64) -> String {
     }
     text
 }
+
+/// The Stribeck curve of the example data, held in the presliding fit.
+const CURVE: [&str; 10] = [
+    "--fc", "1", "--fs", "1.5", "--vs", "1e-3", "--beta", "2", "--sigma2", "0.4",
+];
+
+#[test]
+fn presliding_recovers_sigma0_and_sigma1() {
+    let test = data("lab-presliding.csv");
+    let mut args = vec!["fit", "--fit", "presliding", "--input", &test, "--json"];
+    args.extend(CURVE);
+    let doc = accepts_json(&args);
+    assert_eq!(doc["fit"], "presliding");
+    recovers(&doc, &["sigma0", "sigma1"], 0.02);
+    assert_eq!(f(&doc["fixed"]["fs"]), 1.5);
+}
+
+#[test]
+fn presliding_bad_input_is_one_line() {
+    // The constant-velocity record slides.
+    let record = data("lab-stribeck.csv");
+    let mut args = vec!["fit", "--fit", "presliding", "--input", &record];
+    args.extend(CURVE);
+    rejects(&args, "the presliding test breaks away");
+    // The Stribeck curve must be given (or come from the Stribeck fit: --fit staged).
+    let test = data("lab-presliding.csv");
+    rejects(
+        &["fit", "--fit", "presliding", "--input", &test],
+        "is held in the presliding fit but has no value",
+    );
+    let dir = TempDir::new("fit-lab-presliding");
+    let untimed = dir.file("u.csv", "u,F\n0,0\n1e-6,0.1\n0,0\n-1e-6,-0.1\n");
+    let mut args = vec!["fit", "--fit", "presliding", "--input", &untimed];
+    args.extend(CURVE);
+    rejects(&args, "needs the samples' times");
+}

@@ -375,6 +375,10 @@ pub enum FitError {
         noise: f64,
         signal: f64,
     },
+    #[error("the presliding test breaks away: its force reaches {peak} (within three noise deviations of {limit}, 0.9 Fs with Fs = {fs}); test with smaller displacements, well below break-away", peak = num(*.peak), limit = num(*.limit), fs = num(*.fs))]
+    BreaksAway { peak: f64, limit: f64, fs: f64 },
+    #[error("the presliding test slides: it travels {travel} between two reversals, where its stiffness would pass twice Fs after {limit}; test with smaller displacements, well below break-away", travel = num(*.travel), limit = num(*.limit))]
+    Slides { travel: f64, limit: f64 },
 }
 
 /// An invalid simulation request, or a result that cannot be represented.

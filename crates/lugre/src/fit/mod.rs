@@ -81,6 +81,7 @@
 mod full;
 mod lm;
 mod plateaus;
+mod presliding;
 mod slow;
 mod spec;
 mod stats;
@@ -89,6 +90,7 @@ mod stribeck;
 pub use crate::error::{FitError, Unidentified, Why};
 pub use lm::FitProgress;
 pub use plateaus::{find_plateaus, Motion, Plateau, Plateaus, MIN_RUN, MIN_STEADY};
+pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
 pub use stribeck::{fit_stribeck, steady_force, SteadyPoint};
 

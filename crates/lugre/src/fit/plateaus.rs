@@ -122,7 +122,7 @@ pub fn find_plateaus(
             v
         }
     };
-    let noise = velocity_noise(&v);
+    let noise = difference_noise(&v);
     let mut plateaus = Vec::new();
     let (mut skipped, mut longest) = (0, 0);
     for (a, b) in runs(&v, noise) {
@@ -162,13 +162,17 @@ pub fn find_plateaus(
     })
 }
 
-/// (P1): the velocity's noise from its second differences (a smooth change of velocity
-/// hardly shows in them; white noise of deviation `s` gives them deviation `sqrt(6) s`).
-fn velocity_noise(v: &[f64]) -> f64 {
-    let mut d: Vec<f64> = v
+/// (P1): the noise of a series from its second differences (a smooth change hardly shows in
+/// them; white noise of deviation `s` gives them deviation `sqrt(6) s`), robustly (the median
+/// absolute value, scaled to a deviation).
+pub(crate) fn difference_noise(x: &[f64]) -> f64 {
+    let mut d: Vec<f64> = x
         .windows(3)
         .map(|w| (w[2] - 2.0 * w[1] + w[0]).abs())
         .collect();
+    if d.is_empty() {
+        return 0.0;
+    }
     d.sort_by(f64::total_cmp);
     1.4826 * d[d.len() / 2] / 6f64.sqrt()
 }

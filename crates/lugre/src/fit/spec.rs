@@ -444,6 +444,31 @@ impl FitSpec {
         Ok(self.values[self.family.index(name)?])
     }
 
+    /// This spec with every parameter but those of `free` held (at its value), and the
+    /// starts `(index, value)` given to those the user gave none.
+    pub(crate) fn holding_all_but(&self, free: &[usize], starts: &[(usize, f64)]) -> FitSpec {
+        let mut out = self.clone();
+        for i in 0..out.values.len() {
+            if free.contains(&i) {
+                out.fixed[i] = false;
+                out.freed[i] = true;
+            } else {
+                out.fixed[i] = true;
+                out.freed[i] = false;
+                // Held at its value (a default here is one the fit never uses: checked by
+                // the caller's resolve).
+                out.value_given[i] = true;
+            }
+        }
+        for &(i, v) in starts {
+            if free.contains(&i) && !self.start_given[i] && v.is_finite() && v > 0.0 {
+                out.values[i] = v;
+                out.start_given[i] = true;
+            }
+        }
+        out
+    }
+
     /// The free parameters of a fit of this kind, checked.
     pub(crate) fn resolve(&self, kind: FitKind) -> Result<Resolved, FitError> {
         let names = self.family.parameters();

@@ -8,13 +8,14 @@
 
 use anyhow::{anyhow, bail, Result};
 use lugre::fit::{
-    find_plateaus, fit_stribeck, FitError, FitReport, FitSpec, Motion, Plateaus, SteadyPoint,
+    find_plateaus, fit_presliding, fit_stribeck, FitError, FitReport, FitSpec, Motion, Plateaus,
+    SteadyPoint,
 };
 use std::io::Write;
 use std::path::Path;
 
 use super::spec::{build_spec, explain};
-use super::{FitArgs, FitChoice};
+use super::{FitArgs, FitChoice, Record};
 use crate::args::Interpolate;
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
@@ -52,7 +53,45 @@ pub(super) fn run(args: &FitArgs) -> Result<()> {
             let report = stribeck(&spec, &steady, path)?;
             report_stribeck(args, path, &spec, &steady, &report)
         }
+        FitChoice::Presliding => {
+            let path = input(args, "a presliding test: t,u,F")?;
+            let (t, record) = read_timed(args, path)?;
+            let report =
+                fit_presliding(&spec, &t, &record.u, &record.f).map_err(|e| in_file(e, path))?;
+            super::report_fit(args, path, &record, &report)
+        }
         other => bail!("--fit {other:?} is not available yet"),
+    }
+}
+
+/// A record `t,u,F` (or `t,v,F`) with its times, which the presliding and full fits need.
+fn read_timed(args: &FitArgs, path: &Path) -> Result<(Vec<f64>, Record)> {
+    let record = super::read_record(args, path)?;
+    let Some(t) = record.t.clone() else {
+        bail!(
+            "{}: the {} fit needs the samples' times: columns t,u,F (this file has u,F)",
+            path.display(),
+            args.fit.kind().label()
+        );
+    };
+    if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
+        bail!("{}: row {} has no force", path.display(), i + 1);
+    }
+    Ok((t, record))
+}
+
+/// A core error about the data, prefixed with the file; others explained with the flags.
+fn in_file(e: FitError, path: &Path) -> anyhow::Error {
+    match e {
+        FitError::TooFewSamples { .. }
+        | FitError::NoReversal { .. }
+        | FitError::ZeroForce
+        | FitError::LengthMismatch { .. }
+        | FitError::Data(_)
+        | FitError::BreaksAway { .. }
+        | FitError::Slides { .. }
+        | FitError::NoiseAboveSignal { .. } => anyhow!("{}: {e}", path.display()),
+        other => explain(other),
     }
 }
 

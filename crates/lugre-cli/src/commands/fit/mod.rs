@@ -190,7 +190,7 @@ pub(crate) fn run(args: &FitArgs) -> Result<()> {
     check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let report = compute(&request)?;
-    report_fit(args, &request, &report)
+    report_fit(args, request.path, &request.record, &report)
 }
 
 fn parse(args: &FitArgs) -> Result<Request<'_>> {
@@ -300,8 +300,7 @@ fn compute(r: &Request) -> Result<FitReport> {
 
 /// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
 /// the JSON document or the table.
-fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
-    let record = &r.record;
+fn report_fit(args: &FitArgs, path: &Path, record: &Record, report: &FitReport) -> Result<()> {
     let normal = record.normal.is_some();
     let residuals = report.residuals(&record.f);
     if let Some(csv) = &args.output.csv {
@@ -313,10 +312,10 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     warn_unconverged(report);
     let stdout = std::io::stdout();
     if args.output.json {
-        write_json(JsonOut::new(stdout.lock()), report, r.path, normal)?;
+        write_json(JsonOut::new(stdout.lock()), report, path, normal)?;
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
-        print_table(&mut out, report, r.path, normal)?;
+        print_table(&mut out, report, path, normal)?;
         if let Some(csv) = &args.output.csv {
             writeln!(
                 out,

@@ -64,10 +64,7 @@ pub(super) fn write_csv(
 /// Two panels: the data with the fit in the (u, F) plane, and the residuals against t (or the
 /// sample).
 pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
-    let what = match report.kind {
-        FitKind::Slow => "slow-loop fit",
-        _ => "full fit",
-    };
+    let what = format!("{} fit", report.kind.label());
     let data: Vec<(f64, f64)> = record
         .u
         .iter()
