@@ -232,3 +232,80 @@ fn presliding_bad_input_is_one_line() {
     args.extend(CURVE);
     rejects(&args, "needs the samples' times");
 }
+
+#[test]
+fn staged_runs_the_three_experiments() {
+    let (stribeck, presliding) = (data("lab-stribeck.csv"), data("lab-presliding.csv"));
+    let base = [
+        "fit",
+        "--fit",
+        "staged",
+        "--stribeck",
+        &stribeck,
+        "--presliding",
+        &presliding,
+        "--beta",
+        "2",
+        "--json",
+    ];
+    let doc = accepts_json(&base);
+    assert_eq!(doc["fit"], "staged");
+    recovers(
+        &doc,
+        &["sigma0", "sigma1", "fc", "fs", "vs", "sigma2"],
+        0.02,
+    );
+    assert_eq!(doc["parameters"]["sigma0"]["stage"], "presliding");
+    assert_eq!(doc["parameters"]["fs"]["stage"], "stribeck");
+    // With the final full fit: the record cannot determine sigma2 (its speeds are low), which
+    // stays the Stribeck stage's.
+    let sine = data("lab-sine.csv");
+    let doc = accepts_json(&[&base[..], &["--input", &sine]].concat());
+    assert_eq!(doc["parameters"]["fs"]["stage"], "full");
+    assert_eq!(doc["parameters"]["sigma2"]["stage"], "stribeck");
+    for name in ["sigma0", "sigma1", "fc", "fs", "vs"] {
+        let value = f(&doc["parameters"][name]["value"]);
+        assert!(
+            ((value - truth(name)) / truth(name)).abs() < 0.02,
+            "{name}: {value}"
+        );
+    }
+    rejects(
+        &[
+            "fit",
+            "--fit",
+            "staged",
+            "--stribeck",
+            &stribeck,
+            "--beta",
+            "2",
+        ],
+        "--fit staged needs --stribeck FILE",
+    );
+    rejects(
+        &[
+            "fit",
+            "--fit",
+            "staged",
+            "--stribeck",
+            &presliding,
+            "--presliding",
+            &presliding,
+            "--beta",
+            "2",
+        ],
+        "lab-presliding.csv: the constant-velocity runs are too short",
+    );
+    rejects(
+        &[
+            "fit",
+            "--fit",
+            "full",
+            "--stribeck",
+            &stribeck,
+            "--input",
+            &sine,
+        ],
+        "--stribeck gives a record of the staged fit",
+    );
+}

@@ -379,6 +379,11 @@ pub enum FitError {
     BreaksAway { peak: f64, limit: f64, fs: f64 },
     #[error("the presliding test slides: it travels {travel} between two reversals, where its stiffness would pass twice Fs after {limit}; test with smaller displacements, well below break-away", travel = num(*.travel), limit = num(*.limit))]
     Slides { travel: f64, limit: f64 },
+    #[error("{stage} stage: {error}")]
+    InStage {
+        stage: &'static str,
+        error: Box<FitError>,
+    },
 }
 
 /// An invalid simulation request, or a result that cannot be represented.

@@ -84,6 +84,7 @@ mod plateaus;
 mod presliding;
 mod slow;
 mod spec;
+mod staged;
 mod stats;
 mod stribeck;
 
@@ -92,6 +93,7 @@ pub use lm::FitProgress;
 pub use plateaus::{find_plateaus, Motion, Plateau, Plateaus, MIN_RUN, MIN_STEADY};
 pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
+pub use staged::{fit_staged, StagedReport};
 pub use stribeck::{fit_stribeck, steady_force, SteadyPoint};
 
 use crate::input::{check_finite, check_increasing};

@@ -1,10 +1,18 @@
 //! `lugre fit --fit stribeck|presliding|staged`: the lab's experiments (`lugre::fit`).
 //!
 //! * `--fit stribeck --input FILE`: `Fc, Fs, vs, sigma2` (`--free beta` adds `beta`) from the
-//!   steady-state friction of constant-velocity runs: a table `v,F` (one row a run: its
-//!   velocity and steady force; a header `v,F`, or two columns in that order);
-//! * the report gives each parameter with its 95 % interval; `--csv` writes the points with the
-//!   fitted curve and `--plot` draws friction against velocity.
+//!   steady-state friction of constant-velocity runs: a record `t,u,F` (or `t,v,F`) whose
+//!   runs are found without help (a header with `t`, or three columns), or a table `v,F` (one
+//!   row a run: its velocity and steady force; a header `v,F`, or two columns); `--csv` writes
+//!   the points with the fitted curve and `--plot` draws friction against velocity;
+//! * `--fit presliding --input FILE`: `sigma0`, `sigma1` from a presliding test `t,u,F`, the
+//!   Stribeck curve held at the model flags' values (`--fc --fs --vs --beta --sigma2`);
+//! * `--fit staged --stribeck FILE --presliding FILE [--input FILE]`: the two in turn, the
+//!   second holding the first's curve, then, with `--input`, a full fit of that rate-dependent
+//!   record `t,u,F` started from them. The data flags (`--columns`, `--scale`, `--delimiter`)
+//!   apply to every file.
+//!
+//! Each parameter is reported with its 95 % interval and the stage that determined it.
 
 use anyhow::{anyhow, bail, Result};
 use lugre::fit::{
@@ -23,6 +31,7 @@ use crate::io::csv::NumberRows;
 use crate::io::outputs::Files;
 use lugre_io::{Reader, Role, Rows, Spec};
 
+mod staged;
 mod steady_plot;
 
 /// The constant-velocity data: the points fitted.
@@ -35,6 +44,8 @@ pub(super) struct Steady {
 pub(super) fn run(args: &FitArgs) -> Result<()> {
     Files::new()
         .input("--input", args.input.as_deref())
+        .input("--stribeck", args.stribeck.as_deref())
+        .input("--presliding", args.presliding.as_deref())
         .output("--csv", args.output.csv.as_deref())
         .output("--plot", args.plot.path.as_deref())
         .check()?;
@@ -60,12 +71,12 @@ pub(super) fn run(args: &FitArgs) -> Result<()> {
                 fit_presliding(&spec, &t, &record.u, &record.f).map_err(|e| in_file(e, path))?;
             super::report_fit(args, path, &record, &report)
         }
-        other => bail!("--fit {other:?} is not available yet"),
+        _ => staged::run(args, &spec),
     }
 }
 
 /// A record `t,u,F` (or `t,v,F`) with its times, which the presliding and full fits need.
-fn read_timed(args: &FitArgs, path: &Path) -> Result<(Vec<f64>, Record)> {
+pub(super) fn read_timed(args: &FitArgs, path: &Path) -> Result<(Vec<f64>, Record)> {
     let record = super::read_record(args, path)?;
     let Some(t) = record.t.clone() else {
         bail!(
@@ -81,7 +92,7 @@ fn read_timed(args: &FitArgs, path: &Path) -> Result<(Vec<f64>, Record)> {
 }
 
 /// A core error about the data, prefixed with the file; others explained with the flags.
-fn in_file(e: FitError, path: &Path) -> anyhow::Error {
+pub(super) fn in_file(e: FitError, path: &Path) -> anyhow::Error {
     match e {
         FitError::TooFewSamples { .. }
         | FitError::NoReversal { .. }
@@ -123,7 +134,7 @@ fn refuse_flags(args: &FitArgs) -> Result<()> {
 /// The steady-state points: of a table `v,F` (a header with `v` and no `t`, or two columns
 /// without a header), or found in a record `t,u,F` / `t,v,F` (a header with `t`, or three
 /// columns without one) by [`find_plateaus`].
-fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
+pub(super) fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
     let options = args.data.options(&[Role::U, Role::V, Role::F])?;
     let reader = Reader::open(path, options.clone())?;
     let timed = if reader.header().is_some() || options.selects_any() {
@@ -169,7 +180,7 @@ fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
 }
 
 /// The Stribeck fit, its errors in terms of the file and the flags.
-fn stribeck(spec: &FitSpec, steady: &Steady, path: &Path) -> Result<FitReport> {
+pub(super) fn stribeck(spec: &FitSpec, steady: &Steady, path: &Path) -> Result<FitReport> {
     fit_stribeck(spec, &steady.points).map_err(|e| match e {
         FitError::TooFewPlateaus { .. }
         | FitError::BadSteadyVelocity { .. }
@@ -239,7 +250,7 @@ fn report_stribeck(
 }
 
 /// `[{"v", "F", "stderr", "fit"}, ...]` (`stderr` null without one).
-fn points_json(steady: &Steady, r: &FitReport) -> serde_json::Value {
+pub(super) fn points_json(steady: &Steady, r: &FitReport) -> serde_json::Value {
     steady
         .points
         .iter()
@@ -280,7 +291,7 @@ fn plateaus_json(found: &Plateaus, t: &[f64]) -> serde_json::Value {
     })
 }
 
-fn write_steady_csv(w: &mut dyn Write, steady: &Steady, r: &FitReport) -> Result<()> {
+pub(super) fn write_steady_csv(w: &mut dyn Write, steady: &Steady, r: &FitReport) -> Result<()> {
     let mut rows = NumberRows::new();
     writeln!(w, "v,F,stderr,fit,residual")?;
     for (p, &fit) in steady.points.iter().zip(&r.fitted) {

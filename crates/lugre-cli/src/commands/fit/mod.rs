@@ -91,6 +91,14 @@ pub(crate) struct FitArgs {
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
     pub(crate) fit: FitChoice,
+    /// Staged fit: the constant-velocity runs of the Stribeck stage (a record t,u,F or a
+    /// table v,F, as --fit stribeck reads --input).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Fit")]
+    pub(crate) stribeck: Option<PathBuf>,
+    /// Staged fit: the presliding test t,u,F of the presliding stage (as --fit presliding reads
+    /// --input).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Fit")]
+    pub(crate) presliding: Option<PathBuf>,
     /// Parameters held, each at a value given with it or by its model flag (e.g.
     /// --fix sigma2=0.05,fs=1.5, or --fix sigma2 --sigma2 0.05).
     #[arg(long, value_name = "NAME[=VALUE],...", help_heading = "Fit")]
@@ -181,6 +189,19 @@ impl FitChoice {
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    if args.fit != FitChoice::Staged {
+        for (flag, given) in [
+            ("--stribeck", args.stribeck.is_some()),
+            ("--presliding", args.presliding.is_some()),
+        ] {
+            if given {
+                bail!(
+                    "{flag} gives a record of the staged fit (--fit staged); --fit {} reads --input",
+                    args.fit.kind().label()
+                );
+            }
+        }
+    }
     if matches!(
         args.fit,
         FitChoice::Stribeck | FitChoice::Presliding | FitChoice::Staged

@@ -230,14 +230,7 @@ pub(super) fn print_table(
             if e.at_bound { "  (at its bound)" } else { "" }
         )?;
     }
-    if !r.fixed.is_empty() {
-        let fixed: Vec<String> = r
-            .fixed
-            .iter()
-            .map(|(n, v)| format!("{} = {}", label(r, n, normal), sig(*v, 10)))
-            .collect();
-        writeln!(w, "fixed: {}", fixed.join(", "))?;
-    }
+    write_fixed(w, r.fixed.iter().map(|(n, v)| (label(r, n, normal), *v)))?;
     writeln!(w)?;
     writeln!(
         w,
@@ -253,6 +246,20 @@ pub(super) fn print_table(
     )?;
     if r.estimates.len() > 1 {
         print_correlation(w, r, normal)?;
+    }
+    Ok(())
+}
+
+/// The line `fixed: name = value, ...` (nothing without held parameters).
+pub(super) fn write_fixed(
+    w: &mut impl Write,
+    fixed: impl Iterator<Item = (String, f64)>,
+) -> Result<()> {
+    let fixed: Vec<String> = fixed
+        .map(|(n, v)| format!("{n} = {}", sig(v, 10)))
+        .collect();
+    if !fixed.is_empty() {
+        writeln!(w, "fixed: {}", fixed.join(", "))?;
     }
     Ok(())
 }
