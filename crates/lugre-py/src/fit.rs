@@ -213,7 +213,7 @@ pub fn fit<'py>(
             }
             None
         }
-        FitKind::Full => {
+        _ => {
             if t.is_none() {
                 return Err(PyValueError::new_err(
                     "a full fit needs the samples' times: give t (strictly increasing, one per sample)",

@@ -379,6 +379,44 @@ pub enum FitError {
     Model(#[from] ModelError),
     #[error(transparent)]
     Simulate(#[from] SimulateError),
+    #[error("the {fit} fit identifies the LuGre model (its Stribeck curve and bristles); the {family} model has neither: use the LuGre model")]
+    NotForFamily {
+        fit: &'static str,
+        family: &'static str,
+    },
+    #[error("{name} does not enter the steady-state friction F_ss(v) = g(v) sgn(v) + sigma2 v, so constant-velocity runs cannot determine it (sigma0 and sigma1 come from a presliding test)")]
+    NotInSteadyState { name: &'static str },
+    #[error("the steady-state point {index} has velocity {value}: each point needs a finite, nonzero velocity (the curve jumps at v = 0)", value = num(*.value))]
+    BadSteadyVelocity { index: usize, value: f64 },
+    #[error("the steady-state point {index} has force {value}: each point needs a finite force", value = num(*.value))]
+    BadSteadyForce { index: usize, value: f64 },
+    #[error("the steady-state point {index} has standard error {value}: it must be a finite number > 0", value = num(*.value))]
+    BadSteadyError { index: usize, value: f64 },
+    #[error("{plateaus} constant-velocity points for {parameters} free parameter(s): the Stribeck fit needs at least {needed}; add runs at more velocities or fix parameters")]
+    TooFewPlateaus {
+        plateaus: usize,
+        parameters: usize,
+        needed: usize,
+    },
+    #[error("the record has no constant-velocity run: the velocity never stays constant (within its noise) over {min_run} samples or more in its {samples} samples; record runs at constant velocities, or give a table v,F of their steady forces")]
+    NoPlateau { samples: usize, min_run: usize },
+    #[error("the constant-velocity runs are too short: the longest has {longest} samples and each needs at least {needed} once its transient is dropped; sample faster or run each velocity longer")]
+    TooFewPlateauSamples { longest: usize, needed: usize },
+    #[error("the noise is larger than the signal: {what} varies by {noise} (standard deviation) against a level of {signal}; average more samples or reduce the noise", noise = num(*.noise), signal = num(*.signal))]
+    NoiseAboveSignal {
+        what: &'static str,
+        noise: f64,
+        signal: f64,
+    },
+    #[error("the presliding test breaks away: its force reaches {peak} (within three noise deviations of {limit}, 0.9 Fs with Fs = {fs}); test with smaller displacements, well below break-away", peak = num(*.peak), limit = num(*.limit), fs = num(*.fs))]
+    BreaksAway { peak: f64, limit: f64, fs: f64 },
+    #[error("the presliding test slides: it travels {travel} between two reversals, where its stiffness would pass twice Fs after {limit}; test with smaller displacements, well below break-away", travel = num(*.travel), limit = num(*.limit))]
+    Slides { travel: f64, limit: f64 },
+    #[error("{stage} stage: {error}")]
+    InStage {
+        stage: &'static str,
+        error: Box<FitError>,
+    },
 }
 
 /// An invalid simulation request, or a result that cannot be represented.

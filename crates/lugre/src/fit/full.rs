@@ -254,7 +254,7 @@ impl Evaluator for Exact {
 
 /// The record cut at its reversals: `(start, end)` sample indices of each monotone segment
 /// (consecutive segments share their reversal sample).
-fn segments(u: &[f64]) -> Vec<(usize, usize)> {
+pub(crate) fn segments(u: &[f64]) -> Vec<(usize, usize)> {
     let n = u.len();
     let mut bounds = vec![0];
     let mut run_start = 0;

@@ -80,13 +80,21 @@
 
 mod full;
 mod lm;
+mod plateaus;
+mod presliding;
 mod slow;
 mod spec;
+mod staged;
 mod stats;
+mod stribeck;
 
 pub use crate::error::{FitError, Unidentified, Why};
 pub use lm::FitProgress;
+pub use plateaus::{find_plateaus, Motion, Plateau, Plateaus, MIN_RUN, MIN_STEADY};
+pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
+pub use staged::{fit_staged, StagedReport};
+pub use stribeck::{fit_stribeck, steady_force, SteadyPoint};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
@@ -565,10 +573,9 @@ fn report(
             }
         })
         .collect();
-    let relevant: Vec<usize> = match kind {
-        FitKind::Slow => resolved.family.slow_parameters().to_vec(),
-        FitKind::Full => (0..resolved.family.parameters().len()).collect(),
-    };
+    let relevant: Vec<usize> = (0..resolved.family.parameters().len())
+        .filter(|&i| kind.uses(resolved.family, i))
+        .collect();
     let fixed = relevant
         .into_iter()
         .filter(|i| !resolved.free.contains(i))

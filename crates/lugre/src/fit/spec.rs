@@ -84,7 +84,7 @@ impl Family {
 }
 
 /// The index of `p` in `list` (at compile time: a parameter missing is a build error).
-const fn index_of(list: &[Parameter], p: Parameter) -> usize {
+pub(crate) const fn index_of(list: &[Parameter], p: Parameter) -> usize {
     let mut i = 0;
     while i < list.len() {
         if list[i] as u8 == p as u8 {
@@ -92,7 +92,7 @@ const fn index_of(list: &[Parameter], p: Parameter) -> usize {
         }
         i += 1;
     }
-    panic!("a slow-loop parameter is not in the family's list")
+    panic!("a parameter is not in the family's list")
 }
 
 const LUGRE_SLOW: [usize; 2] = [
@@ -104,11 +104,20 @@ const DAHL_SLOW: [usize; 2] = [
     index_of(&Parameter::DAHL, Parameter::Fc),
 ];
 
-/// Which fit: the slow loop (rate-independent limit) or the exact simulation.
+/// Which fit: the slow loop (rate-independent limit), the exact simulation, or one of the
+/// lab's experiments (the steady-state Stribeck curve, the presliding test, the three in
+/// turn).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FitKind {
     Slow,
     Full,
+    /// `Fc, Fs, vs, sigma2` (and `beta` if freed) from constant-velocity runs
+    /// ([`super::fit_stribeck`]).
+    Stribeck,
+    /// `sigma0, sigma1` from a presliding test.
+    Presliding,
+    /// The Stribeck and presliding fits in turn, then optionally a full fit.
+    Staged,
 }
 
 impl FitKind {
@@ -116,9 +125,39 @@ impl FitKind {
         match self {
             FitKind::Slow => "slow",
             FitKind::Full => "full",
+            FitKind::Stribeck => "stribeck",
+            FitKind::Presliding => "presliding",
+            FitKind::Staged => "staged",
+        }
+    }
+
+    /// Whether the fit's model uses parameter `i` of `family` (the steady-state curve (T1) has
+    /// no `sigma0`, `sigma1`; the slow loop only its two).
+    pub(crate) fn uses(self, family: Family, i: usize) -> bool {
+        match self {
+            FitKind::Slow => family.slow_parameters().contains(&i),
+            FitKind::Stribeck => !LUGRE_DYNAMIC.contains(&i),
+            FitKind::Full | FitKind::Presliding | FitKind::Staged => true,
+        }
+    }
+
+    /// Whether the fit frees parameter `i` of `family` unless told otherwise.
+    fn frees(self, family: Family, i: usize) -> bool {
+        match self {
+            FitKind::Slow => self.uses(family, i),
+            FitKind::Stribeck => self.uses(family, i) && family.full_default(i),
+            FitKind::Presliding => LUGRE_DYNAMIC.contains(&i),
+            FitKind::Full | FitKind::Staged => family.full_default(i),
         }
     }
 }
+
+/// The parameters of the bristles' dynamics, `sigma0` and `sigma1`: absent from the
+/// steady-state curve, and what a presliding test determines.
+const LUGRE_DYNAMIC: [usize; 2] = [
+    index_of(&Parameter::LUGRE, Parameter::Sigma0),
+    index_of(&Parameter::LUGRE, Parameter::Sigma1),
+];
 
 /// Bounds `0 <= lo < hi <= inf` on a parameter. Every parameter of the models is positive, so
 /// the default is `(0, inf)`.
@@ -405,26 +444,57 @@ impl FitSpec {
         Ok(self.values[self.family.index(name)?])
     }
 
+    /// This spec with every parameter but those of `free` held (at its value), and the
+    /// starts `(index, value)` given to those the user gave none.
+    pub(crate) fn holding_all_but(&self, free: &[usize], starts: &[(usize, f64)]) -> FitSpec {
+        let mut out = self.clone();
+        for i in 0..out.values.len() {
+            if free.contains(&i) {
+                out.fixed[i] = false;
+                out.freed[i] = true;
+            } else {
+                out.fixed[i] = true;
+                out.freed[i] = false;
+                // Held at its value (a default here is one the fit never uses: checked by
+                // the caller's resolve).
+                out.value_given[i] = true;
+            }
+        }
+        for &(i, v) in starts {
+            if free.contains(&i) && !self.start_given[i] && v.is_finite() && v > 0.0 {
+                out.values[i] = v;
+                out.start_given[i] = true;
+            }
+        }
+        out
+    }
+
     /// The free parameters of a fit of this kind, checked.
     pub(crate) fn resolve(&self, kind: FitKind) -> Result<Resolved, FitError> {
         let names = self.family.parameters();
+        if self.family == Family::Dahl
+            && matches!(
+                kind,
+                FitKind::Stribeck | FitKind::Presliding | FitKind::Staged
+            )
+        {
+            return Err(FitError::NotForFamily {
+                fit: kind.label(),
+                family: self.family.label(),
+            });
+        }
         let mut free = Vec::new();
         for (i, &name) in names.iter().enumerate() {
             if self.fixed[i] && self.freed[i] {
                 return Err(FitError::FixedAndFree { name });
             }
-            let possible = match kind {
-                FitKind::Slow => self.family.slow_parameters().contains(&i),
-                FitKind::Full => true,
-            };
-            if self.freed[i] && !possible {
-                return Err(FitError::NotInSlowLoop { name: names[i] });
+            if self.freed[i] && !kind.uses(self.family, i) {
+                return Err(match kind {
+                    FitKind::Stribeck => FitError::NotInSteadyState { name },
+                    _ => FitError::NotInSlowLoop { name },
+                });
             }
-            let default = match kind {
-                FitKind::Slow => possible,
-                FitKind::Full => self.family.full_default(i),
-            };
-            if (default || self.freed[i]) && !self.fixed[i] {
+            if (kind.frees(self.family, i) || self.freed[i]) && !self.fixed[i] {
                 free.push(i);
             }
         }
@@ -434,11 +504,7 @@ impl FitSpec {
         // A parameter the model of this fit uses, held, must have a value from the user: the
         // family's defaults are the paper's dimensionless values.
         for (i, &name) in names.iter().enumerate() {
-            let used = match kind {
-                FitKind::Slow => self.family.slow_parameters().contains(&i),
-                FitKind::Full => true,
-            };
-            if used && !free.contains(&i) && !self.value_given[i] {
+            if kind.uses(self.family, i) && !free.contains(&i) && !self.value_given[i] {
                 return Err(FitError::NotGiven {
                     name,
                     fit: kind.label(),

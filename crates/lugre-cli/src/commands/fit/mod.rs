@@ -34,6 +34,7 @@ use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
 
+mod lab;
 mod output;
 mod spec;
 
@@ -46,6 +47,13 @@ pub(crate) enum FitChoice {
     Slow,
     /// The exact simulation of rate-dependent data: sigma0, sigma1, sigma2, Fc, Fs, vs.
     Full,
+    /// The steady-state friction of constant-velocity runs: Fc, Fs, vs, sigma2.
+    Stribeck,
+    /// A presliding test (small reversals below break-away): sigma0, sigma1.
+    Presliding,
+    /// The Stribeck and presliding fits in turn (--stribeck FILE --presliding FILE), then a
+    /// full fit of --input FILE, if given, started from them.
+    Staged,
 }
 
 /// The help of `--csv` for this command.
@@ -83,6 +91,14 @@ pub(crate) struct FitArgs {
     /// (rate-dependent t,u,F data, exact simulation).
     #[arg(long, value_enum, default_value = "slow", help_heading = "Fit")]
     pub(crate) fit: FitChoice,
+    /// Staged fit: the constant-velocity runs of the Stribeck stage (a record t,u,F or a
+    /// table v,F, as --fit stribeck reads --input).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Fit")]
+    pub(crate) stribeck: Option<PathBuf>,
+    /// Staged fit: the presliding test t,u,F of the presliding stage (as --fit presliding reads
+    /// --input).
+    #[arg(long, value_name = "FILE.csv", help_heading = "Fit")]
+    pub(crate) presliding: Option<PathBuf>,
     /// Parameters held, each at a value given with it or by its model flag (e.g.
     /// --fix sigma2=0.05,fs=1.5, or --fix sigma2 --sigma2 0.05).
     #[arg(long, value_name = "NAME[=VALUE],...", help_heading = "Fit")]
@@ -159,11 +175,43 @@ struct Request<'a> {
     cubic: bool,
 }
 
+impl FitChoice {
+    /// The core's kind of fit.
+    fn kind(self) -> FitKind {
+        match self {
+            FitChoice::Slow => FitKind::Slow,
+            FitChoice::Full => FitKind::Full,
+            FitChoice::Stribeck => FitKind::Stribeck,
+            FitChoice::Presliding => FitKind::Presliding,
+            FitChoice::Staged => FitKind::Staged,
+        }
+    }
+}
+
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    if args.fit != FitChoice::Staged {
+        for (flag, given) in [
+            ("--stribeck", args.stribeck.is_some()),
+            ("--presliding", args.presliding.is_some()),
+        ] {
+            if given {
+                bail!(
+                    "{flag} gives a record of the staged fit (--fit staged); --fit {} reads --input",
+                    args.fit.kind().label()
+                );
+            }
+        }
+    }
+    if matches!(
+        args.fit,
+        FitChoice::Stribeck | FitChoice::Presliding | FitChoice::Staged
+    ) {
+        return lab::run(args);
+    }
     check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let request = parse(args)?;
     let report = compute(&request)?;
-    report_fit(args, &request, &report)
+    report_fit(args, request.path, &request.record, &report)
 }
 
 fn parse(args: &FitArgs) -> Result<Request<'_>> {
@@ -171,10 +219,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         bail!("no data: give --input FILE.csv (columns u,F or t,u,F)");
     };
     let spec = build_spec(args)?;
-    let kind = match args.fit {
-        FitChoice::Slow => FitKind::Slow,
-        FitChoice::Full => FitKind::Full,
-    };
+    let kind = args.fit.kind();
     if kind == FitKind::Slow {
         if args.x0.is_some() {
             bail!("--x0 applies to the full fit (add --fit full)");
@@ -210,7 +255,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
     }
     let full = match kind {
         FitKind::Slow => None,
-        FitKind::Full => {
+        _ => {
             // Checked here, in its turn; `compute` takes the times again.
             record.times_for_full_fit(path)?;
             let x0 = match &args.x0 {
@@ -276,8 +321,7 @@ fn compute(r: &Request) -> Result<FitReport> {
 
 /// Writes the CSV and the figure asked for, warns of a fit that did not converge, then prints
 /// the JSON document or the table.
-fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
-    let record = &r.record;
+fn report_fit(args: &FitArgs, path: &Path, record: &Record, report: &FitReport) -> Result<()> {
     let normal = record.normal.is_some();
     let residuals = report.residuals(&record.f);
     if let Some(csv) = &args.output.csv {
@@ -286,19 +330,13 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
     if let Some(plot) = &args.plot.path {
         figure(record, report, &residuals).save(plot)?;
     }
-    if !report.converged {
-        let _ = writeln!(
-            std::io::stderr(),
-            "lugre: warning: the fit did not converge ({}); the best point found is reported",
-            report.termination
-        );
-    }
+    warn_unconverged(report);
     let stdout = std::io::stdout();
     if args.output.json {
-        write_json(JsonOut::new(stdout.lock()), report, r.path, normal)?;
+        write_json(JsonOut::new(stdout.lock()), report, path, normal)?;
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
-        print_table(&mut out, report, r.path, normal)?;
+        print_table(&mut out, report, path, normal)?;
         if let Some(csv) = &args.output.csv {
             writeln!(
                 out,
@@ -317,6 +355,18 @@ fn report_fit(args: &FitArgs, r: &Request, report: &FitReport) -> Result<()> {
         out.flush()?;
     }
     Ok(())
+}
+
+/// Warns on stderr of a fit that ran out of evaluations (its best point is reported).
+fn warn_unconverged(report: &FitReport) {
+    if !report.converged {
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: warning: the {} fit did not converge ({}); the best point found is reported",
+            report.kind.label(),
+            report.termination
+        );
+    }
 }
 
 /// Reads the record: `u,F` or `t,u,F` (the columns of those roles in any header, others

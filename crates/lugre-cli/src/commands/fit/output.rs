@@ -64,10 +64,7 @@ pub(super) fn write_csv(
 /// Two panels: the data with the fit in the (u, F) plane, and the residuals against t (or the
 /// sample).
 pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
-    let what = match report.kind {
-        FitKind::Slow => "slow-loop fit",
-        FitKind::Full => "full fit",
-    };
+    let what = format!("{} fit", report.kind.label());
     let data: Vec<(f64, f64)> = record
         .u
         .iter()
@@ -175,7 +172,13 @@ pub(super) fn print_table(
 ) -> Result<()> {
     let what = match r.kind {
         FitKind::Slow => "slow-loop fit (the hysteresis loop y°, eqs. 8-10)".to_string(),
-        FitKind::Full => format!(
+        FitKind::Stribeck => {
+            "Stribeck fit (the steady-state curve F_ss(v) = g(v) sgn(v) + sigma2 v)".to_string()
+        }
+        FitKind::Presliding => {
+            "presliding fit (exact simulation of eq. 1, Stribeck curve held)".to_string()
+        }
+        FitKind::Full | FitKind::Staged => format!(
             "full fit (exact simulation of eq. 1, {} start{})",
             r.starts,
             if r.starts == 1 { "" } else { "s" }
@@ -183,9 +186,14 @@ pub(super) fn print_table(
     };
     writeln!(
         w,
-        "{} {what} to {} samples from {}{}",
+        "{} {what} to {} {} from {}{}",
         r.family.label(),
         r.samples,
+        if r.kind == FitKind::Stribeck {
+            "constant-velocity points"
+        } else {
+            "samples"
+        },
         path.display(),
         match r.turning_points {
             Some(n) => format!(" ({n} turning points)"),
@@ -222,14 +230,7 @@ pub(super) fn print_table(
             if e.at_bound { "  (at its bound)" } else { "" }
         )?;
     }
-    if !r.fixed.is_empty() {
-        let fixed: Vec<String> = r
-            .fixed
-            .iter()
-            .map(|(n, v)| format!("{} = {}", label(r, n, normal), sig(*v, 10)))
-            .collect();
-        writeln!(w, "fixed: {}", fixed.join(", "))?;
-    }
+    write_fixed(w, r.fixed.iter().map(|(n, v)| (label(r, n, normal), *v)))?;
     writeln!(w)?;
     writeln!(
         w,
@@ -245,6 +246,20 @@ pub(super) fn print_table(
     )?;
     if r.estimates.len() > 1 {
         print_correlation(w, r, normal)?;
+    }
+    Ok(())
+}
+
+/// The line `fixed: name = value, ...` (nothing without held parameters).
+pub(super) fn write_fixed(
+    w: &mut impl Write,
+    fixed: impl Iterator<Item = (String, f64)>,
+) -> Result<()> {
+    let fixed: Vec<String> = fixed
+        .map(|(n, v)| format!("{n} = {}", sig(v, 10)))
+        .collect();
+    if !fixed.is_empty() {
+        writeln!(w, "fixed: {}", fixed.join(", "))?;
     }
     Ok(())
 }
@@ -307,10 +322,7 @@ pub(super) fn write_json<W: Write>(
     j.raw(&format!(
         ",\"model\":{},\"fit\":{}",
         quote(&r.family.label().to_ascii_lowercase()),
-        quote(match r.kind {
-            FitKind::Slow => "slow",
-            FitKind::Full => "full",
-        })
+        quote(r.kind.label())
     ))?;
     j.raw(",\"fixed\":{")?;
     for (k, (n, v)) in r.fixed.iter().enumerate() {
@@ -340,6 +352,13 @@ pub(super) fn write_json<W: Write>(
     j.raw(&quote(&path.display().to_string()))?;
     j.raw("}\n")?;
     j.finish()
+}
+
+/// The JSON document of [`write_json`] as a value, for the lab's fits to add their keys to.
+pub(super) fn json_value(r: &FitReport, path: &Path, normal: bool) -> Result<serde_json::Value> {
+    let mut text = Vec::new();
+    write_json(JsonOut::new(&mut text), r, path, normal)?;
+    Ok(serde_json::from_slice(&text)?)
 }
 
 /// `s` as a JSON string.
