@@ -59,9 +59,65 @@ impl Figure {
         builder
     }
 
+    /// The figure with its log axes' coordinates replaced by their base-10 logarithms (drawn
+    /// on linear axes whose tick labels show `10^v`); points with a coordinate <= 0 on a log
+    /// axis are left out, splitting a curve there.
+    fn in_log_space(&self) -> Figure {
+        let (lx, ly) = (self.log_x, self.log_y);
+        let f = |v: f64, log: bool| if log { v.log10() } else { v };
+        let keep = |&(x, y): &(f64, f64)| (!lx || x > 0.0) && (!ly || y > 0.0);
+        let map = |(x, y): (f64, f64)| (f(x, lx), f(y, ly));
+        let mut out = self.clone();
+        out.curves = self
+            .curves
+            .iter()
+            .flat_map(|c| {
+                c.points
+                    .split(|p| !keep(p))
+                    .filter(|run| !run.is_empty())
+                    .enumerate()
+                    .map(move |(i, run)| {
+                        let mut piece = c.clone();
+                        piece.points = run.iter().copied().map(map).collect();
+                        // One legend entry per curve, on its first piece.
+                        if i > 0 {
+                            piece.label = None;
+                        }
+                        piece
+                    })
+            })
+            .collect();
+        out.markers.retain(|m| keep(&m.at));
+        out.markers.iter_mut().for_each(|m| m.at = map(m.at));
+        out.notes.retain(|n| keep(&n.at));
+        out.notes.iter_mut().for_each(|n| n.at = map(n.at));
+        let range = |r: Option<(f64, f64)>, log: bool| match r {
+            Some((lo, hi)) if log && lo > 0.0 && hi > lo => Some((lo.log10(), hi.log10())),
+            Some(_) if log => None,
+            r => r,
+        };
+        out.x_range = range(self.x_range, lx);
+        out.y_range = range(self.y_range, ly);
+        out
+    }
+
     /// Draws the figure on `area` (the whole image, or one panel of it), every size in pixels
     /// multiplied by `s` (PNGs are drawn at twice their size and scaled down: anti-aliasing).
     fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>, s: f64) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        if (self.log_x || self.log_y) && !self.curves.iter().all(|c| c.points.is_empty()) {
+            let mut linear = self.in_log_space();
+            // Drawn on linear axes; the flags now only choose the tick labels.
+            linear.curves.retain(|c| !c.points.is_empty());
+            return linear.draw_linear(area, s);
+        }
+        self.draw_linear(area, s)
+    }
+
+    /// [`Self::draw`] in the figure's own coordinates (a log axis's already in decades).
+    fn draw_linear<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>, s: f64) -> Result<()>
     where
         DB::ErrorType: 'static,
     {
@@ -122,8 +178,8 @@ impl Figure {
         (y0, y1): (f64, f64),
         s: f64,
     ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-        let x_tick = |v: &f64| tick_label(*v, x1 - x0);
-        let y_tick = |v: &f64| tick_label(*v, y1 - y0);
+        let x_tick = |v: &f64| axis_label(*v, x1 - x0, self.log_x);
+        let y_tick = |v: &f64| axis_label(*v, y1 - y0, self.log_y);
         chart
             .configure_mesh()
             .x_label_formatter(&x_tick)
@@ -275,6 +331,17 @@ fn tick_label(v: f64, span: f64) -> String {
     crate::fmt::sig(r, 6)
 }
 
+/// A tick label: [`tick_label`] on a linear axis; on a log axis (whose coordinate `v` is
+/// `log10` of the value) the value `10^v`, to three digits (`1e-05`, `3.16e-05`).
+fn axis_label(v: f64, span: f64, log: bool) -> String {
+    if !log {
+        return tick_label(v, span);
+    }
+    // Whole decades exactly (the ticks are computed in floating point: -4.999999999).
+    let r = (v * 1e6).round() / 1e6;
+    crate::fmt::sig(10f64.powf(r), 3)
+}
+
 /// `width` pixels at scale `s`.
 pub(super) fn scaled(width: u32, s: f64) -> u32 {
     (f64::from(width) * s).round().max(1.0) as u32
@@ -347,5 +414,29 @@ mod tests {
         assert_eq!(tick_label(2.0, 4.0), "2");
         assert_eq!(tick_label(-0.25, 1.0), "-0.25");
         assert_eq!(tick_label(1500.0, 3000.0), "1500");
+    }
+
+    #[test]
+    fn log_axes_label_the_values_and_leave_out_what_they_cannot_show() {
+        assert_eq!(
+            axis_label(-5.0000000001, 4.0, true),
+            crate::fmt::sig(1e-5, 3)
+        );
+        assert_eq!(axis_label(2.0, 4.0, true), "100");
+        assert_eq!(axis_label(2.0, 4.0, false), "2");
+        let c = super::super::Curve::new(
+            vec![(1.0, 1.0), (10.0, 0.0), (100.0, 100.0), (1000.0, 1000.0)],
+            super::super::LineStyle::Solid,
+            super::super::BLACK,
+        )
+        .label("y");
+        let mut f = Figure::new("x", "y").curve(c).log_x();
+        f.log_y = true;
+        let f = f.in_log_space();
+        // The point with y = 0 splits the curve; one legend entry stays.
+        assert_eq!(f.curves.len(), 2);
+        assert_eq!(f.curves[0].points, [(0.0, 0.0)]);
+        assert_eq!(f.curves[1].points, [(2.0, 2.0), (3.0, 3.0)]);
+        assert_eq!(f.curves[1].label, None);
     }
 }

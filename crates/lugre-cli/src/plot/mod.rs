@@ -129,6 +129,10 @@ pub(crate) struct Figure {
     pub(crate) y_range: Option<(f64, f64)>,
     /// Pixels of the PNG (the SVG uses the same units).
     pub(crate) size: (u32, u32),
+    /// Logarithmic axes (decades evenly spaced; points with a coordinate <= 0 on a log axis
+    /// are not drawn).
+    pub(crate) log_x: bool,
+    pub(crate) log_y: bool,
 }
 
 impl Figure {
@@ -143,7 +147,15 @@ impl Figure {
             x_range: None,
             y_range: None,
             size: (1000, 700),
+            log_x: false,
+            log_y: false,
         }
+    }
+
+    /// A logarithmic x axis.
+    pub(crate) fn log_x(mut self) -> Self {
+        self.log_x = true;
+        self
     }
 
     pub(crate) fn title(mut self, title: impl Into<String>) -> Self {

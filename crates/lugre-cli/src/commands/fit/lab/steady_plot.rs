@@ -1,6 +1,6 @@
 //! The Stribeck fit's figure: friction against velocity, both signs, the points with their
 //! error bars (two standard errors each way) and the fitted steady-state curve; beside it the
-//! same against `log10 |v|`, where the Stribeck drop below `vs` shows.
+//! same against `|v|` on a log axis, where the Stribeck drop below `vs` shows.
 
 use lugre::fit::{steady_force, FitReport, FitSpec};
 
@@ -27,7 +27,7 @@ pub(super) fn figure(steady: &Steady, r: &FitReport, spec: &FitSpec) -> Panels {
             .map(|&a| {
                 let f = steady_force(&p, sign * a);
                 if log {
-                    (a.log10(), sign * f)
+                    (a, sign * f)
                 } else {
                     (sign * a, f)
                 }
@@ -42,10 +42,9 @@ pub(super) fn figure(steady: &Steady, r: &FitReport, spec: &FitSpec) -> Panels {
         sig(p.sigma2, 4)
     );
     let mut linear = Figure::new("velocity v", "steady friction force F").title(title);
-    let mut log = Figure::new("log10 |v|", "sgn(v) F").title(format!(
-        "against log10 |v| (residual RMS {})",
-        sig(r.rms, 3)
-    ));
+    let mut log = Figure::new("speed |v|", "sgn(v) F")
+        .title(format!("against |v| (residual RMS {})", sig(r.rms, 3)))
+        .log_x();
     for sign in [1.0, -1.0] {
         let lin = Curve::new(branch(sign, false), LineStyle::Solid, RED);
         linear = linear.curve(if sign > 0.0 { lin.label("fit") } else { lin });
@@ -64,7 +63,7 @@ pub(super) fn figure(steady: &Steady, r: &FitReport, spec: &FitSpec) -> Panels {
     }
     for (k, q) in points.iter().enumerate() {
         let bar = 2.0 * q.stderr.unwrap_or(0.0);
-        let (x_log, y_log) = (q.v.abs().log10(), q.f * q.v.signum());
+        let (x_log, y_log) = (q.v.abs(), q.f * q.v.signum());
         let color = if q.v > 0.0 { BLUE } else { BLACK };
         if bar > 0.0 {
             linear = linear.curve(
