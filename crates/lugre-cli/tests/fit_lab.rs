@@ -91,7 +91,7 @@ fn stribeck_writes_its_points_and_figure() {
     assert_eq!(text.lines().count(), 49);
     assert!(std::fs::read_to_string(&svg)
         .expect("svg")
-        .contains("log10 |v|"));
+        .contains("speed |v|"));
     assert!(std::fs::read(&png).expect("png").starts_with(b"\x89PNG"));
 }
 
