@@ -84,12 +84,14 @@ fn parse_range(what: &'static str, text: &str) -> Result<Vec<f64>, SweepError> {
     if count == 1 {
         return Ok(vec![start]);
     }
-    let ratio = (stop / start).ln();
+    // As numpy's logspace: 10 to evenly spaced exponents, so that decades land on powers of
+    // ten exactly (1e-7:1e-3:5 gives 1e-5, not 1.0000000000000004e-5).
+    let (lo, hi) = (start.log10(), stop.log10());
     Ok((0..count)
         .map(|i| match i {
             0 => start,
             i if i == count - 1 => stop,
-            i => start * (ratio * (i as f64 / (count - 1) as f64)).exp(),
+            i => 10f64.powf(lo + (hi - lo) * (i as f64 / (count - 1) as f64)),
         })
         .collect())
 }
