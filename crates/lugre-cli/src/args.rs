@@ -7,7 +7,9 @@ use anyhow::{anyhow, bail, Result};
 use clap::{Arg, ArgMatches, Args, Command, ValueEnum};
 use lugre::error::NormalForceError;
 use lugre::fit::Family;
-use lugre::model::named::{self, Needed};
+use lugre::model::named;
+/// Which parameters a command uses (the core's, for the commands that import it from here).
+pub(crate) use lugre::model::named::Needed;
 use lugre::model::Parameter;
 use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use lugre_io::{Delimiter, ReadOptions, Role, Spec};

@@ -4,7 +4,7 @@
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use crate::commands::{cycles, dynamics, fit, loops, paper, simulate};
+use crate::commands::{cycles, dynamics, fit, loops, paper, simulate, sweep};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -31,6 +31,11 @@ enum Command {
     /// The response y_gamma of eq. 5 (gamma = 1: eq. 1; gamma = inf: y*_u, eq. 6) to a periodic
     /// input, sampled data or a sine: exact for piecewise-linear inputs at any stiffness.
     Simulate(simulate::SimulateArgs),
+    /// The periodic steady state under sines over a grid of amplitudes and frequencies:
+    /// energy dissipated per cycle, peak force, equivalent stiffness and damping, describing
+    /// function (gain and phase), and the loops; exact fixed point of the period map, in
+    /// parallel.
+    Sweep(sweep::SweepArgs),
     /// Parameter identification from a measured record: sigma0 and g(0) from a slow loop
     /// (--fit slow, columns u,F), or the full LuGre set from rate-dependent data (--fit full,
     /// columns t,u,F), with standard errors and 95 % confidence intervals.
@@ -52,6 +57,7 @@ impl Cli {
             Command::Loop(args) => loops::run(&args),
             Command::Cycles(args) => cycles::run(&args),
             Command::Simulate(args) => simulate::run(&args),
+            Command::Sweep(args) => sweep::run(&args),
             Command::Fit(args) => fit::run(&args),
             Command::Dynamics(args) => dynamics::run(&args),
             Command::Paper(args) => paper::run(&args),

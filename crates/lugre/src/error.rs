@@ -505,6 +505,51 @@ pub enum SimulateError {
     Input(#[from] InputError),
 }
 
+/// An invalid sweep request ([`crate::sweep`]), or a point that cannot be computed.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum SweepError {
+    #[error("{what} must be a finite number > 0, got {value}", value = num(*.value))]
+    NotPositive { what: &'static str, value: f64 },
+    #[error("the offset must be a finite number, got {value}", value = num(*.value))]
+    BadOffset { value: f64 },
+    #[error("the {what} list is empty (give numbers separated by commas, or START:STOP:COUNT)")]
+    EmptyList { what: &'static str },
+    #[error("{what}: item {position} is '{item}', which is not a number")]
+    NotANumber {
+        what: &'static str,
+        position: usize,
+        item: String,
+    },
+    #[error("{what}: a range is START:STOP:COUNT (log spacing) with START and STOP finite and > 0 and COUNT a whole number from 1 to {most}, got '{text}'")]
+    BadRange {
+        what: &'static str,
+        text: String,
+        most: usize,
+    },
+    #[error("the loop samples must be 0 (no loop) or at least 2, got {value}")]
+    BadLoopSamples { value: usize },
+    #[error("the grid of {points} points ({amplitudes} amplitudes x {frequencies} frequencies) with {samples} loop samples each needs about {megabytes} MB, more than the limit of {limit_mb} MB: ask for fewer points or loop samples", megabytes = .bytes / 1_000_000, limit_mb = .limit / 1_000_000)]
+    TooLarge {
+        amplitudes: usize,
+        frequencies: usize,
+        points: u64,
+        samples: usize,
+        bytes: u64,
+        limit: u64,
+    },
+    #[error("the input is not periodic: it ends at u = {last}, not where it starts (u = {first})", first = num(*.first), last = num(*.last))]
+    NotPeriodic { first: f64, last: f64 },
+    #[error("at amplitude {amplitude}, frequency {frequency}: {source}", amplitude = num(*.amplitude), frequency = num(*.frequency))]
+    AtPoint {
+        amplitude: f64,
+        frequency: f64,
+        source: SimulateError,
+    },
+    #[error(transparent)]
+    Simulate(#[from] SimulateError),
+}
+
 /// An invalid closed-loop system or request, or a run that cannot be completed
 /// ([`crate::dynamics`]).
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -782,6 +827,8 @@ pub enum Error {
     Fit(#[from] FitError),
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
+    #[error(transparent)]
+    Sweep(#[from] SweepError),
 }
 
 #[cfg(test)]

@@ -30,14 +30,16 @@
 //! | [`loops`] | the periodic input (§3-4): [`HysteresisLoop`] — `y°` by **the recursion** with exponents `<= 0` and the periodic value `y°(0)` (eq. 10); **the pairing** of every loop (rainflow with the tie rule, one pass, `loops/engine.rs`); **the energies** of each loop; [`LoopTable`] (columns) and [`Loop`] (records); **Theorem A** ([`TheoremA`]) | `new()` computes everything once; accessors borrow |
 //! | [`cycles`] | measured histories: streaming rainflow (ASTM E1049), closures, energies along `y*` | push-based counters into a [`CycleSink`]; one-call [`count_cycles`] |
 //! | [`simulate`] | **simulation** at finite rates (eq. 5): exact for piecewise-linear inputs, adaptive Radau IIA for sines, the paper's Example 1 | a [`Simulator`] run into a [`Trajectory`] |
+//! | [`sweep`] | **periodic steady states** under sines (and periodic piecewise-linear inputs): the fixed point of the affine period map, energy per cycle, peak force, equivalent stiffness and damping, describing function; grids of amplitudes and frequencies on all cores | a [`sweep::Request`] (the front ends' one set of defaults and checks) run into a [`sweep::Sweep`] of [`sweep::Point`]s |
 //! | [`dynamics`] | a mass driven by forces, a spring and a PID controller with LuGre friction (Canudas de Wit et al. 1995): a dedicated Radau IIA with located sign changes of the velocity | a [`dynamics::Request`] (every front end's one set of defaults and checks; the 1995 experiments as presets) built into a validated [`dynamics::System`] and solved into a [`dynamics::Motion`] |
 //! | [`fit`] | **fitting**: identification from the slow loop or the full record, with standard errors and identifiability checks | [`fit_slow`]/[`fit_full`] from a [`FitSpec`] |
 //! | [`error`] | every error enum (a leaf); messages name the offending value | `thiserror`, `#[non_exhaustive]` |
 //!
 //! Dependencies run one way: `kernel` and `error` import nothing of the crate; `model`,
 //! `input` build on them; the engines `loops`, `cycles`, `simulate`, `dynamics` and `fit` do
-//! not import each other, except `fit`, which uses `loops` and `simulate`, and `dynamics`, whose
-//! friction loops use `cycles`, `loops` and `simulate` (checked by `tests/layout.rs`).
+//! not import each other, except `fit`, which uses `loops` and `simulate`, `dynamics`, whose
+//! friction loops use `cycles`, `loops` and `simulate`, and `sweep`, which integrates with
+//! `simulate`'s solvers (checked by `tests/layout.rs`).
 
 pub mod cycles;
 pub mod dynamics;
@@ -52,6 +54,7 @@ pub mod loops;
 mod memory;
 pub mod model;
 pub mod simulate;
+pub mod sweep;
 
 pub use cycles::{
     count_cycles, count_cycles_with_energy, Closure, Cycle, CycleColumns, CycleCounter,
@@ -59,7 +62,7 @@ pub use cycles::{
 };
 pub use error::{
     DataError, DynamicsError, Error, FitError, HistoryError, InputError, LoopError, ModelError,
-    SamplesError, SimulateError,
+    SamplesError, SimulateError, SweepError,
 };
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use input::{Bimodal, TurningPoints};

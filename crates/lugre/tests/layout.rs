@@ -5,7 +5,8 @@
 //! * the engines — `loops`, `cycles`, `simulate`, `fit`, `dynamics` — do not import each other, except
 //!   `fit`, which builds on `loops` (the slow loop) and `simulate` (the full fit), and `dynamics`,
 //!   whose friction-displacement loops are the rainflow cycles (`cycles`) of a run beside the
-//!   rate-independent loop (`loops`), sampled at `simulate`'s evenly spaced times;
+//!   rate-independent loop (`loops`), sampled at `simulate`'s evenly spaced times, and
+//!   `sweep`, whose periodic orbits are integrated by `simulate`'s solvers;
 //! * no two modules import each other, directly or through others.
 
 use lugre_test_support::layout::{cycles, module_graph, Graph};
@@ -27,8 +28,9 @@ fn violations(g: &Graph) -> Vec<String> {
             Some(_) => {}
         }
     }
-    let engines = ["loops", "cycles", "simulate", "fit", "dynamics"];
+    let engines = ["loops", "cycles", "simulate", "fit", "dynamics", "sweep"];
     let allowed = [
+        ("sweep", "simulate"),
         ("fit", "loops"),
         ("fit", "simulate"),
         ("dynamics", "loops"),

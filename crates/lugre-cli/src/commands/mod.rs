@@ -8,3 +8,4 @@ pub(crate) mod fit;
 pub(crate) mod loops;
 pub(crate) mod paper;
 pub(crate) mod simulate;
+pub(crate) mod sweep;

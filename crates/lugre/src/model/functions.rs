@@ -7,6 +7,18 @@ use crate::error::ModelError;
 /// A function of the sliding velocity, `g(v)` or `f(v)`.
 pub trait VelocityFn {
     fn eval(&self, v: f64) -> f64;
+
+    /// Whether `eval(-v) = eval(v)` for every `v` (the Stribeck curve). A model whose `g` is
+    /// even and `f` odd answers a symmetric input symmetrically, which halves the work of its
+    /// periodic orbit ([`crate::sweep`]). `false` (the default) only forgoes that.
+    fn is_even(&self) -> bool {
+        false
+    }
+
+    /// Whether `eval(-v) = -eval(v)` for every `v` (viscous friction); see [`Self::is_even`].
+    fn is_odd(&self) -> bool {
+        false
+    }
 }
 
 impl<F: Fn(f64) -> f64> VelocityFn for F {
@@ -70,6 +82,10 @@ impl Stribeck {
 }
 
 impl VelocityFn for Stribeck {
+    fn is_even(&self) -> bool {
+        true
+    }
+
     #[inline]
     fn eval(&self, v: f64) -> f64 {
         let r = (v * self.inv_vs).abs();
@@ -116,6 +132,10 @@ impl Viscous {
 }
 
 impl VelocityFn for Viscous {
+    fn is_odd(&self) -> bool {
+        true
+    }
+
     #[inline]
     fn eval(&self, v: f64) -> f64 {
         self.sigma2 * v

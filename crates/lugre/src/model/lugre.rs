@@ -170,6 +170,13 @@ impl<G: VelocityFn, F: VelocityFn> LuGre<G, F> {
         self.f.eval(v)
     }
 
+    /// Whether `g` is even and `f` odd (the Stribeck/viscous model; user functions say so
+    /// through [`VelocityFn::is_even`] and [`VelocityFn::is_odd`]): the response to `-u` is
+    /// then `-F`.
+    pub fn is_symmetric(&self) -> bool {
+        self.g.is_even() && self.f.is_odd()
+    }
+
     /// The part of the model the hysteresis loop depends on (`sigma0`, `g(0)`).
     pub fn rate_independent(&self) -> RateIndependent {
         RateIndependent::new(self.sigma0, self.g0).expect("validated in new()")

@@ -54,31 +54,76 @@ const EXPONENT: f64 = 0.2;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 5.0;
 
-/// One Radau IIA step of `h` from `(t, z)`.
+/// One Radau IIA step: the coefficients `(r_i, q_i)` at the stage times `t + c_i h` and the
+/// stage values `Z_i` (`Z_3` is the step's result: the method is stiffly accurate).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Stages {
+    pub r: [f64; 3],
+    pub q: [f64; 3],
+    pub z: [f64; 3],
+}
+
+/// The stage system of a step of `h` with coefficients `r` and `q` at the stages:
+/// `(I + h A diag(r)) Z = z 1 + h A q`, returned as the matrix and `h A q`. It is linear in
+/// the start `z`, which is what makes the period map of [`crate::sweep`] affine step by step.
 #[inline]
-fn radau_step<O: LinearOde>(ode: &O, t: f64, z: f64, h: f64) -> f64 {
-    let mut r = [0.0; 3];
-    let mut q = [0.0; 3];
-    for i in 0..3 {
-        (r[i], q[i]) = ode.coefficients(t + C[i] * h);
-    }
-    // (I + h A diag(r)) Z = z 1 + h A q
+pub(crate) fn stage_system(h: f64, r: &[f64; 3], q: &[f64; 3]) -> ([[f64; 3]; 3], [f64; 3]) {
     let mut m = [[0.0; 3]; 3];
-    let mut b = [z; 3];
+    let mut b = [0.0; 3];
     for i in 0..3 {
         for j in 0..3 {
             m[i][j] = h * A[i][j] * r[j] + if i == j { 1.0 } else { 0.0 };
             b[i] += h * A[i][j] * q[j];
         }
     }
-    solve3(m, b)[2]
+    (m, b)
+}
+
+/// One Radau IIA step of `h` from `(t, z)`, with its stages.
+#[inline]
+pub(crate) fn radau_stages<O: LinearOde>(ode: &O, t: f64, z: f64, h: f64) -> Stages {
+    let mut r = [0.0; 3];
+    let mut q = [0.0; 3];
+    for i in 0..3 {
+        (r[i], q[i]) = ode.coefficients(t + C[i] * h);
+    }
+    let (m, haq) = stage_system(h, &r, &q);
+    Stages {
+        r,
+        q,
+        z: solve3(m, haq.map(|x| z + x)),
+    }
+}
+
+/// The Radau quadrature `h sum b_j rate(t_j, Z_j, r_j, q_j)` of a step (`b` the last row of
+/// `A`), and the largest `|rate|` at its stages.
+#[inline]
+fn quadrature<R: Fn(f64, f64, f64, f64) -> f64>(
+    rate: &R,
+    t: f64,
+    h: f64,
+    s: &Stages,
+) -> (f64, f64) {
+    let (mut sum, mut big) = (0.0, 0.0f64);
+    for j in 0..3 {
+        let x = rate(t + C[j] * h, s.z[j], s.r[j], s.q[j]);
+        sum += A[2][j] * x;
+        big = big.max(x.abs());
+    }
+    (h * sum, big)
+}
+
+/// One Radau IIA step of `h` from `(t, z)`.
+#[inline]
+pub(crate) fn radau_step<O: LinearOde>(ode: &O, t: f64, z: f64, h: f64) -> f64 {
+    radau_stages(ode, t, z, h).z[2]
 }
 
 /// `m x = b` by Gaussian elimination with partial pivoting. A zero pivot gives a non-finite
 /// result, which the step control rejects.
 #[allow(clippy::needless_range_loop)] // indices as in the textbook algorithm
 #[inline]
-fn solve3(mut m: [[f64; 3]; 3], mut b: [f64; 3]) -> [f64; 3] {
+pub(crate) fn solve3(mut m: [[f64; 3]; 3], mut b: [f64; 3]) -> [f64; 3] {
     for col in 0..3 {
         let mut p = col;
         for row in col + 1..3 {
@@ -148,6 +193,40 @@ impl Integrator {
         z0: f64,
         t1: f64,
     ) -> Result<f64, SimulateError> {
+        self.advance_observed(
+            ode,
+            t0,
+            z0,
+            t1,
+            (&|_, _, _, _| 0.0, 1.0),
+            &mut |_, _, _, _| {},
+        )
+    }
+
+    /// [`Self::advance`], showing every step kept to `on_step(t, h, z, stages)`: its start
+    /// `(t, z)`, its length and its stages, in order, covering `[t0, t1]` without gap (the
+    /// two half steps of each accepted step of the step-doubling control).
+    ///
+    /// The step control also holds the Radau quadrature of `rate(t, z, r, q)` on the stages
+    /// (the integral a caller sums from the steps shown) to the tolerance, relative to the
+    /// larger of the largest `|rate|` on the step and `rate_scale` (the integrand's typical
+    /// size, below which it is compared absolutely): where `z` barely moves (a stiff,
+    /// quasi-static stretch) the steps stay short enough for the integrand (`rate = 0`: `z`
+    /// alone).
+    pub(crate) fn advance_observed<O, R, S>(
+        &mut self,
+        ode: &O,
+        t0: f64,
+        z0: f64,
+        t1: f64,
+        (rate, rate_scale): (&R, f64),
+        on_step: &mut S,
+    ) -> Result<f64, SimulateError>
+    where
+        O: LinearOde,
+        R: Fn(f64, f64, f64, f64) -> f64,
+        S: FnMut(f64, f64, f64, &Stages),
+    {
         let (mut t, mut z) = (t0, z0);
         if t1 <= t0 {
             return Ok(z0);
@@ -165,16 +244,32 @@ impl Integrator {
                     // What is left is an ulp or two of t (two stops that differ by rounding):
                     // one step over it errs by O(h^2), far below any tolerance.
                     self.accepted += 1;
-                    return Ok(radau_step(ode, t, z, h));
+                    let s = radau_stages(ode, t, z, h);
+                    on_step(t, h, z, &s);
+                    return Ok(s.z[2]);
                 }
                 return Err(SimulateError::StepUnderflow { t, tol: self.tol });
             }
-            let full = radau_step(ode, t, z, h);
-            let half = radau_step(ode, t, z, t_mid - t);
-            let two = radau_step(ode, t_mid, half, t_end - t_mid);
-            let err = (two - full).abs() / (self.tol * self.scale.max(z.abs()).max(two.abs()));
+            let full = radau_stages(ode, t, z, h);
+            let half = radau_stages(ode, t, z, t_mid - t);
+            let second = radau_stages(ode, t_mid, half.z[2], t_end - t_mid);
+            let two = second.z[2];
+            let err_z =
+                (two - full.z[2]).abs() / (self.tol * self.scale.max(z.abs()).max(two.abs()));
+            let (q_full, big) = quadrature(rate, t, h, &full);
+            let (q_1, big_1) = quadrature(rate, t, t_mid - t, &half);
+            let (q_2, big_2) = quadrature(rate, t_mid, t_end - t_mid, &second);
+            let q_diff = (q_1 + q_2 - q_full).abs();
+            let err_q = if q_diff == 0.0 {
+                0.0
+            } else {
+                q_diff / (self.tol * h * big.max(big_1).max(big_2).max(rate_scale))
+            };
+            let err = err_z.max(err_q);
             if err <= 1.0 {
                 self.accepted += 1;
+                on_step(t, t_mid - t, z, &half);
+                on_step(t_mid, t_end - t_mid, half.z[2], &second);
                 t = t_end;
                 z = two;
                 let grow = if err == 0.0 {

@@ -50,6 +50,16 @@ pub struct Simulator<'m, G = Stribeck, F = Viscous> {
     sigma1_over_gamma: f64,
 }
 
+/// What [`Simulator::walk_segment`] gives.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SegmentWalk {
+    pub z_end: f64,
+    pub exponent: f64,
+    pub work: f64,
+    pub y_start: f64,
+    pub y_end: f64,
+}
+
 /// Eq. 5's coefficients on one segment of a piecewise-linear input.
 #[derive(Debug, Clone, Copy)]
 struct Segment {
@@ -159,6 +169,34 @@ impl<'m, G: VelocityFn, F: VelocityFn> Simulator<'m, G, F> {
         let seg = self.segment(du, dt);
         let z = relax_toward(z, seg.c, seg.z_inf);
         self.sample(&seg, t_end, u_end, z)
+    }
+
+    /// One segment of a piecewise-linear input walked exactly from state `z` (the input
+    /// moving by `du` over `dt > 0`): the state at its end, the decay exponent
+    /// `c = sigma0 |du| / g(v / gamma)` (the segment's share of `R` in the sweep's eq. S2), the
+    /// work `integral y u' dt` over it, and the output just after its start and just before its
+    /// end. The work is `sigma0 du zbar + (sigma1 / gamma) v (z_end - z) + f du`, with the mean
+    /// state `zbar = z_inf + (z - z_inf) phi(c)`: `integral z' dt = z_end - z` exactly, so the
+    /// stiff `k z` term never appears.
+    pub(crate) fn walk_segment(&self, z: f64, du: f64, dt: f64) -> SegmentWalk {
+        let seg = self.segment(du, dt);
+        let (e, one_minus_e) = crate::kernel::relax::decay(seg.c);
+        let z_end = z * e + seg.z_inf * one_minus_e;
+        let phi = if seg.c > 0.0 {
+            one_minus_e / seg.c
+        } else {
+            1.0
+        };
+        let zbar = seg.z_inf + (z - seg.z_inf) * phi;
+        let work =
+            self.sigma0 * du * zbar + self.sigma1_over_gamma * seg.v * (z_end - z) + seg.f * du;
+        SegmentWalk {
+            z_end,
+            exponent: seg.c,
+            work,
+            y_start: self.sample(&seg, 0.0, 0.0, z).y,
+            y_end: self.sample(&seg, 0.0, 0.0, z_end).y,
+        }
     }
 
     /// The response to a smooth motion at its samples (the cubic reading,
