@@ -1,6 +1,7 @@
 //! What to fit: the model family, which parameters are free, their start values and bounds, and
 //! the map from bounded parameters to the unconstrained variables the optimizer moves.
 
+use super::full;
 use crate::error::FitError;
 use crate::model::{Dahl, LuGreParams, Parameter};
 
@@ -76,15 +77,21 @@ impl Family {
         }
     }
 
-    /// Whether a full fit frees parameter `i` unless told otherwise: every one but `beta`,
-    /// which most records determine poorly.
+    /// Whether a full fit frees parameter `i` unless told otherwise: the table says so
+    /// ([`Parameter::fit_frees_by_default`]: all but `beta`) and the fit has its derivative.
     fn full_default(self, i: usize) -> bool {
-        self.table()[i] != Parameter::Beta
+        let p = self.table()[i];
+        p.fit_frees_by_default() && full::differentiates(p)
+    }
+
+    /// Whether a full fit can fit parameter `i` (it has its derivative).
+    fn in_full_fit(self, i: usize) -> bool {
+        full::differentiates(self.table()[i])
     }
 }
 
 /// The index of `p` in `list` (at compile time: a parameter missing is a build error).
-const fn index_of(list: &[Parameter], p: Parameter) -> usize {
+pub(crate) const fn index_of(list: &[Parameter], p: Parameter) -> usize {
     let mut i = 0;
     while i < list.len() {
         if list[i] as u8 == p as u8 {
@@ -92,7 +99,7 @@ const fn index_of(list: &[Parameter], p: Parameter) -> usize {
         }
         i += 1;
     }
-    panic!("a slow-loop parameter is not in the family's list")
+    panic!("a parameter is not in the family's list")
 }
 
 const LUGRE_SLOW: [usize; 2] = [
@@ -420,6 +427,9 @@ impl FitSpec {
             if self.freed[i] && !possible {
                 return Err(FitError::NotInSlowLoop { name: names[i] });
             }
+            if self.freed[i] && kind == FitKind::Full && !self.family.in_full_fit(i) {
+                return Err(FitError::NotInFullFit { name: names[i] });
+            }
             let default = match kind {
                 FitKind::Slow => possible,
                 FitKind::Full => self.family.full_default(i),
@@ -438,7 +448,13 @@ impl FitSpec {
                 FitKind::Slow => self.family.slow_parameters().contains(&i),
                 FitKind::Full => true,
             };
-            if used && !free.contains(&i) && !self.value_given[i] {
+            // A parameter the fit cannot fit, left alone, keeps a default that means "absent"
+            // (Parameter::default_is_absence): the model without it.
+            let absent = kind == FitKind::Full
+                && !self.fixed[i]
+                && !self.family.in_full_fit(i)
+                && self.family.table()[i].default_is_absence();
+            if used && !free.contains(&i) && !self.value_given[i] && !absent {
                 return Err(FitError::NotGiven {
                     name,
                     fit: kind.label(),
@@ -505,11 +521,11 @@ mod tests {
         }
         let slow = Family::LuGre.slow_parameters().map(|i| Parameter::LUGRE[i]);
         assert_eq!(slow, Parameter::LUGRE_RATE_INDEPENDENT);
-        let held: Vec<Parameter> = (0..Parameter::LUGRE.len())
-            .filter(|&i| !Family::LuGre.full_default(i))
-            .map(|i| Parameter::LUGRE[i])
-            .collect();
-        assert_eq!(held, [Parameter::Beta], "beta alone is held in a full fit");
+        // A full fit holds beta (and any parameter it has no derivative for), frees the rest.
+        for (i, p) in Parameter::LUGRE.into_iter().enumerate() {
+            let want = p != Parameter::Beta && full::differentiates(p);
+            assert_eq!(Family::LuGre.full_default(i), want, "{p}");
+        }
         assert_eq!(Family::Dahl.slow_parameters(), [0, 1]);
     }
 
@@ -557,16 +573,26 @@ mod tests {
                 example: "2, the usual Stribeck exponent"
             }
         );
+        // The free parameters by name, whatever their places in the table.
+        let free = |s: &FitSpec, kind| -> Vec<&str> {
+            let names = s.family().parameters();
+            s.resolve(kind)
+                .unwrap()
+                .free
+                .iter()
+                .map(|&i| names[i])
+                .collect()
+        };
         let s = FitSpec::lugre(LuGreParams::default());
-        assert_eq!(s.resolve(FitKind::Slow).unwrap().free, vec![0, 4]);
+        assert_eq!(free(&s, FitKind::Slow), ["sigma0", "fs"]);
         assert_eq!(
-            s.resolve(FitKind::Full).unwrap().free,
-            vec![0, 1, 2, 3, 4, 5]
+            free(&s, FitKind::Full),
+            ["sigma0", "sigma1", "sigma2", "fc", "fs", "vs"]
         );
         let s = s.fix("sigma2").unwrap().free("beta").unwrap();
         assert_eq!(
-            s.resolve(FitKind::Full).unwrap().free,
-            vec![0, 1, 3, 4, 5, 6]
+            free(&s, FitKind::Full),
+            ["sigma0", "sigma1", "fc", "fs", "vs", "beta"]
         );
         assert_eq!(
             s.resolve(FitKind::Slow).unwrap_err(),
