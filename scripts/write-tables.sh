@@ -9,7 +9,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export LUGRE_BLESS=1
-cargo test --quiet -p lugre-ffi --test header
+# One thread: the header is written by one test and read by the other.
+cargo test --quiet -p lugre-ffi --test header -- --test-threads=1
 cargo test --quiet -p lugre-fmu --lib the_parameters_are_written_from_the_table
 "${PYTHON:-python3}" -m pytest -p no:cacheprovider -q crates/lugre-py/tests/test_tables.py \
     -k the_stubs_parameters_are_written_from_the_table
