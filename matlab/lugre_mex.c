@@ -549,23 +549,24 @@ static char *names_option(const mxArray *a, const char *name) {
     return out;
 }
 
-/* The fit's model: options.params (a parameter struct; Dahl: rho and fc) as a handle, or NULL. */
+/* The fit's model: options.params (a parameter struct; Dahl: rho and fc) as a handle, or NULL.
+ * A Dahl struct's fields are given to the C ABI by name (the core's table: an unknown field is
+ * its error, the parameters not given take the table's defaults). */
 static LugreModel *fit_model(const mxArray *params, int dahl) {
     if (params == NULL || mxIsEmpty(params)) return NULL;
     if (!dahl) return model_of(params);
     const mxArray *s = options_struct(params, "options.params", "struct('rho', 2, 'fc', 1)");
-    double v[2] = {1.0, 1.0};
-    static const char *dahl_names[] = {"rho", "fc"};
-    for (int k = 0; k < mxGetNumberOfFields(s); k++) {
-        const char *name = mxGetFieldNameByNumber(s, k);
-        int i = strcmp(name, "rho") == 0 ? 0 : strcmp(name, "fc") == 0 ? 1 : -1;
-        if (i < 0) mexErrMsgIdAndTxt(ERROR_ID, "unknown Dahl parameter '%s' (parameters: rho, fc)", name);
+    int count = mxGetNumberOfFields(s);
+    const char **names = (const char **)mxCalloc(count > 0 ? count : 1, sizeof(char *));
+    double *values = doubles(count);
+    for (int k = 0; k < count; k++) {
+        names[k] = mxGetFieldNameByNumber(s, k);
         char field[80];
-        snprintf(field, sizeof field, "options.params.%s", dahl_names[i]);
-        v[i] = scalar(mxGetFieldByNumber(s, 0, k), field);
+        snprintf(field, sizeof field, "options.params.%s", names[k]);
+        values[k] = scalar(mxGetFieldByNumber(s, 0, k), field);
     }
     LugreModel *m = NULL;
-    check(lugre_model_new_dahl(v[0], v[1], &m));
+    check(lugre_model_new_named(LUGRE_FAMILY_DAHL, (size_t)count, names, values, &m));
     return m;
 }
 

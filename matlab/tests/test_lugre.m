@@ -151,6 +151,13 @@ function failures = test_lugre()
   failures += raises(@() lugre_fit(u, f, struct('fix', {{'fs', 3}})), 'options.fix{2} must be a name');
   g = f; g(4) = NaN;
   failures += raises(@() lugre_fit(u, g), 'f(4) must be a finite number, got NaN');
+  % A Dahl fit with Fc held at a given value (the parameters by name through the C ABI).
+  fr = lugre_fit(u, f, struct('model', 'dahl', 'params', struct('fc', 2), 'fix', 'fc'));
+  j = cli(['fit --input ' record({'u', 'F'}, [u f]) ' --model dahl --fc 2 --fix fc --json']);
+  failures += expect(isequal(fr.names, {'rho'}) && isequal(fr.value, numbers(j, 'value')), ...
+                     'fit: the Dahl fit''s estimate, Fc held by name');
+  failures += raises(@() lugre_fit(u, f, struct('model', 'dahl', 'params', struct('sigma0', 1))), ...
+                     'unknown parameter ''sigma0'' for the Dahl model (its parameters: rho, fc)');
   % The full fit of the paper's model swept at three speeds, sigma2 and beta held.
   t = 0; x = -6;
   for speed = [0.1 1 10]

@@ -21,7 +21,9 @@ from fmpy.fmi3 import FMU3Slave  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target")) / "fmu" / "lugre-friction.fmu"
-VR = dict(x=1, v=2, F=3, z=4, sigma0=10, sigma1=11, sigma2=12, fc=13, fs=14, vs=15, beta=16, z0=17)
+# The value references by name, as the model description gives them (the parameters' follow
+# the core's table).
+VR = {v.name: v.valueReference for v in read_model_description(str(FMU)).modelVariables} if FMU.exists() else {}
 
 # A piecewise-linear displacement (m) on the Table I scale, with a hold and a reversal.
 T = np.array([0.0, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2])

@@ -43,7 +43,7 @@ fn main() {
         black_box(columns.len());
     });
 
-    let c_params: LugreParams = params.into();
+    let c_params: LugreParams = params;
     let mut m = ptr::null_mut();
     assert_eq!(lugre_model_new(&c_params, &mut m), LugreStatus::Ok);
     let (mut z, mut f) = (vec![0.0; N], vec![0.0; N]);

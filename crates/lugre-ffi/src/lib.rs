@@ -63,61 +63,18 @@ pub enum LugreStatus {
     Panic = 4,
 }
 
-/// The parameters of a LuGre model (SI units; see [`lugre_params_default`]), in the core's
-/// order ([`Parameter::LUGRE`]); [`lugre_params_set`] sets one by name.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LugreParams {
-    /// bristle stiffness (> 0), unit N/m
-    pub sigma0: f64,
-    /// micro-damping (>= 0), unit N s/m
-    pub sigma1: f64,
-    /// viscous coefficient (>= 0), unit N s/m
-    pub sigma2: f64,
-    /// Coulomb force (> 0), unit N
-    pub fc: f64,
-    /// stiction force (> 0), unit N
-    pub fs: f64,
-    /// Stribeck velocity (> 0), unit m/s
-    pub vs: f64,
-    /// Stribeck exponent (> 0), unit 1
-    pub beta: f64,
-}
+/// The parameters of a LuGre model (SI units; see [`lugre_params_default`]): the core's
+/// [`LuGreParams`], a `#[repr(C)]` struct of the table's parameters ([`Parameter::LUGRE`]) in
+/// its order. The header's `typedef struct LugreParams` is written from the table by
+/// `tests/header.rs`; [`lugre_params_set`] sets a field by name.
+pub use lugre::LuGreParams as LugreParams;
 
-/// The CLI's defaults (as [`lugre_params_default`]).
-impl Default for LugreParams {
-    fn default() -> Self {
-        LuGreParams::default().into()
-    }
-}
-
-impl From<LugreParams> for LuGreParams {
-    fn from(p: LugreParams) -> Self {
-        Self {
-            sigma0: p.sigma0,
-            sigma1: p.sigma1,
-            sigma2: p.sigma2,
-            fc: p.fc,
-            fs: p.fs,
-            vs: p.vs,
-            beta: p.beta,
-        }
-    }
-}
-
-impl From<LuGreParams> for LugreParams {
-    fn from(p: LuGreParams) -> Self {
-        Self {
-            sigma0: p.sigma0,
-            sigma1: p.sigma1,
-            sigma2: p.sigma2,
-            fc: p.fc,
-            fs: p.fs,
-            vs: p.vs,
-            beta: p.beta,
-        }
-    }
-}
+// The header declares the struct as `double`s only, one per parameter of the table.
+const _: () = assert!(
+    std::mem::size_of::<LugreParams>() == Parameter::LUGRE.len() * std::mem::size_of::<f64>()
+        && std::mem::align_of::<LugreParams>() == std::mem::align_of::<f64>(),
+    "LuGreParams is not the table's parameters as doubles"
+);
 
 /// A validated friction model (LuGre, or Dahl as the LuGre model it equals).
 pub struct LugreModel {
@@ -310,7 +267,7 @@ pub extern "C" fn lugre_params_default(out: *mut LugreParams) -> LugreStatus {
 pub extern "C" fn lugre_params_canudas1995(out: *mut LugreParams) -> LugreStatus {
     guard(|| {
         let p = handle_mut(out, "out")?;
-        *p = LuGreParams::canudas_de_wit_1995().into();
+        *p = LuGreParams::canudas_de_wit_1995();
         Ok(())
     })
 }
@@ -322,7 +279,7 @@ pub extern "C" fn lugre_model_new(
     out: *mut *mut LugreModel,
 ) -> LugreStatus {
     guard(|| {
-        let model = LuGre::from_params((*handle(params, "params")?).into())?;
+        let model = LuGre::from_params(*handle(params, "params")?)?;
         set_out(out, LugreModel { model, dahl: None })
     })
 }
@@ -343,6 +300,64 @@ pub extern "C" fn lugre_model_new_dahl(
                 dahl: Some(dahl),
             },
         )
+    })
+}
+
+/// A model of `family` (`LUGRE_FAMILY_LUGRE` or `LUGRE_FAMILY_DAHL`) from `count` parameters
+/// given by name (`names[i]` is `values[i]`; case-insensitive, each once), the others at the
+/// core's defaults ([`lugre_parameter_name`] lists a family's names): the way to make a model
+/// of either family without knowing its parameters in advance (the MEX gateway's Dahl models).
+#[no_mangle]
+pub extern "C" fn lugre_model_new_named(
+    family: i32,
+    count: usize,
+    names: *const *const c_char,
+    values: *const f64,
+    out: *mut *mut LugreModel,
+) -> LugreStatus {
+    guard(|| {
+        let table = family_parameters(family)?;
+        let mut given: Vec<Option<f64>> = vec![None; table.len()];
+        let vs = self::values(values, count, "values")?;
+        if count > 0 && names.is_null() {
+            return Err(fail(LugreStatus::NullPointer, "names is NULL"));
+        }
+        for (i, &v) in vs.iter().enumerate() {
+            // SAFETY: the caller guarantees `count` readable pointers at `names` (not NULL).
+            let p = unsafe { *names.add(i) };
+            let item = format!("names[{i}]");
+            let name = text(p, &item)?
+                .ok_or_else(|| fail(LugreStatus::NullPointer, format!("{item} is NULL")))?;
+            // The fit's lookup: its message is the CLI's and Python's for an unknown name.
+            let k = family_of(family).index(&name)?;
+            if given[k].replace(v).is_some() {
+                return Err(fail(
+                    LugreStatus::InvalidArgument,
+                    format!("{item} gives {} a second time", table[k]),
+                ));
+            }
+        }
+        let value = |p: Parameter| {
+            let k = table.iter().position(|&q| q == p);
+            k.and_then(|k| given[k]).unwrap_or(p.default_value())
+        };
+        let model = if family == LUGRE_FAMILY_DAHL {
+            let dahl = Dahl::new(value(Parameter::Rho), value(Parameter::Fc))?;
+            LugreModel {
+                model: dahl.to_lugre(),
+                dahl: Some(dahl),
+            }
+        } else {
+            let mut p = LuGreParams::default();
+            for &q in table {
+                p.set(q, value(q));
+            }
+            LugreModel {
+                model: LuGre::from_params(p)?,
+                dahl: None,
+            }
+        };
+        set_out(out, model)
     })
 }
 
@@ -716,14 +731,13 @@ pub extern "C" fn lugre_dynamics_scenario(
 pub const LUGRE_FAMILY_LUGRE: i32 = 0;
 /// The Dahl family.
 pub const LUGRE_FAMILY_DAHL: i32 = 1;
-/// The most parameters a family has (LuGre's seven): the length of the fit's arrays.
-pub const LUGRE_MAX_PARAMETERS: usize = 7;
-// A literal for the header; a model with more parameters in the core's table fails the build
-// here rather than a fit at run time.
-const _: () = assert!(
-    LUGRE_MAX_PARAMETERS >= Parameter::LUGRE.len() && LUGRE_MAX_PARAMETERS >= Parameter::DAHL.len(),
-    "LUGRE_MAX_PARAMETERS is below the number of a model's parameters in the core's table"
-);
+/// The most parameters a family has in the core's table (LuGre's): the length of the fit's
+/// arrays. The header's `#define` is written from the table by `tests/header.rs`.
+pub const LUGRE_MAX_PARAMETERS: usize = if Parameter::LUGRE.len() > Parameter::DAHL.len() {
+    Parameter::LUGRE.len()
+} else {
+    Parameter::DAHL.len()
+};
 
 /// A C string argument (NULL: `None`), or a failure naming it.
 fn text<'a>(p: *const c_char, name: &str) -> Result<Option<std::borrow::Cow<'a, str>>, Failure> {
@@ -752,6 +766,15 @@ fn family_parameters(family: i32) -> Result<&'static [Parameter], Failure> {
                 "family must be LUGRE_FAMILY_LUGRE ({LUGRE_FAMILY_LUGRE}) or LUGRE_FAMILY_DAHL ({LUGRE_FAMILY_DAHL}), got {family}"
             ),
         )),
+    }
+}
+
+/// The core's family of a checked family number.
+fn family_of(family: i32) -> Family {
+    if family == LUGRE_FAMILY_DAHL {
+        Family::Dahl
+    } else {
+        Family::LuGre
     }
 }
 
@@ -806,9 +829,7 @@ pub extern "C" fn lugre_params_set(
             text(name, "name")?.ok_or_else(|| fail(LugreStatus::NullPointer, "name is NULL"))?;
         // The fit's lookup: its message is the CLI's and Python's for an unknown name.
         let q = Parameter::LUGRE[Family::LuGre.index(&given)?];
-        let mut core: LuGreParams = (*p).into();
-        core.set(q, value);
-        *p = core.into();
+        p.set(q, value);
         Ok(())
     })
 }

@@ -1,11 +1,45 @@
-//! The checked-in header `include/lugre.h` is what cbindgen makes of `src/lib.rs` today.
-//! `LUGRE_BLESS=1 cargo test -p lugre-ffi --test header` rewrites it.
+//! The checked-in header `include/lugre.h` is what cbindgen makes of `src/lib.rs` today, with
+//! the parameters written from the core's table ([`lugre::model::Parameter`]): the struct
+//! `LugreParams` (the core's `#[repr(C)]` `LuGreParams`, which cbindgen does not see) and
+//! `LUGRE_MAX_PARAMETERS` (a constant computed from the table, which cbindgen cannot write).
+//! A parameter added to the table is in the header after
+//! `LUGRE_BLESS=1 cargo test -p lugre-ffi --test header`, which rewrites it.
+
+use lugre::model::Parameter;
+
+/// The comment of a parameter's field: the core's description, domain and unit.
+fn field_comment(p: Parameter) -> String {
+    format!(
+        "{} ({}), unit {}",
+        p.description(),
+        p.domain().condition(),
+        p.unit()
+    )
+}
+
+/// The header's part that comes from the core's table.
+fn from_the_table() -> String {
+    let max = lugre_c::LUGRE_MAX_PARAMETERS;
+    let mut out = format!(
+        "// The most parameters a family has (LuGre's {}): the length of the fit's arrays.\n\
+         #define LUGRE_MAX_PARAMETERS {max}\n\n\
+         // The parameters of a LuGre model (SI units; see lugre_params_default), in the order of\n\
+         // the core's table (lugre_parameter_name); lugre_params_set sets one by name.\n\
+         typedef struct LugreParams {{\n",
+        Parameter::LUGRE.len()
+    );
+    for p in Parameter::LUGRE {
+        out += &format!("  // {}\n  double {};\n", field_comment(p), p.name());
+    }
+    out + "} LugreParams;"
+}
 
 #[test]
 fn the_checked_in_header_is_up_to_date() {
     let dir = env!("CARGO_MANIFEST_DIR");
-    let config =
+    let mut config =
         cbindgen::Config::from_file(format!("{dir}/cbindgen.toml")).expect("cbindgen.toml");
+    config.after_includes = Some(format!("\n{}", from_the_table()));
     let mut made = Vec::new();
     cbindgen::Builder::new()
         .with_crate(dir)
@@ -49,17 +83,9 @@ fn params_fields(header: &str) -> Vec<(String, String)> {
 fn the_parameter_struct_is_the_cores_table() {
     let dir = env!("CARGO_MANIFEST_DIR");
     let header = std::fs::read_to_string(format!("{dir}/include/lugre.h")).unwrap();
-    let want: Vec<(String, String)> = lugre::model::Parameter::LUGRE
+    let want: Vec<(String, String)> = Parameter::LUGRE
         .iter()
-        .map(|p| {
-            let comment = format!(
-                "{} ({}), unit {}",
-                p.description(),
-                p.domain().condition(),
-                p.unit()
-            );
-            (p.name().to_string(), comment)
-        })
+        .map(|&p| (p.name().to_string(), field_comment(p)))
         .collect();
     assert_eq!(params_fields(&header), want);
 }

@@ -15,8 +15,9 @@ pub mod vr {
     pub const F: u32 = 3;
     pub const Z: u32 = 4;
     pub const DER_Z: u32 = 5;
-    /// The initial bristle deflection `z(0)` (as the mass FMU's).
-    pub const Z0: u32 = 17;
+    /// The initial bristle deflection `z(0)` (as the mass FMU's): the model's own parameters
+    /// from [`crate::vr::OWN`] on, after the room left for the table's.
+    pub const Z0: u32 = crate::vr::OWN;
 }
 
 /// One instance of the friction FMU.

@@ -35,12 +35,14 @@ pub mod vr {
     pub const DER_X: u32 = 7;
     pub const DER_V: u32 = 8;
     pub const DER_Z: u32 = 9;
-    pub const Z0: u32 = 17;
-    pub const M: u32 = 18;
+    /// The model's own parameters from [`crate::vr::OWN`] on, after the room left for the
+    /// table's.
+    pub const Z0: u32 = crate::vr::OWN;
+    pub const M: u32 = crate::vr::OWN + 1;
     /// The initial position `x(0)`.
-    pub const X0: u32 = 19;
+    pub const X0: u32 = crate::vr::OWN + 2;
     /// The initial velocity `v(0)`.
-    pub const V0: u32 = 20;
+    pub const V0: u32 = crate::vr::OWN + 3;
 }
 
 /// One instance of the mass FMU.

@@ -57,7 +57,7 @@ fn drifts(xml: &str, unit: &dyn Unit) -> Vec<String> {
             out.extend(differ(format!("{p}"), None, "a variable".into()));
             continue;
         };
-        let want_vr = vr::PARAMETERS + u32::try_from(i).expect("7 parameters");
+        let want_vr = vr::PARAMETERS + u32::try_from(i).expect("a few parameters");
         out.extend(differ(
             format!("{p}'s reference"),
             v.get("valueReference"),
@@ -94,9 +94,79 @@ fn drifts(xml: &str, unit: &dyn Unit) -> Vec<String> {
     out
 }
 
+fn path(file: &str) -> String {
+    format!("{}/fmu/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
 fn read(file: &str) -> String {
-    let path = format!("{}/fmu/{file}", env!("CARGO_MANIFEST_DIR"));
-    std::fs::read_to_string(path).expect("the model description")
+    std::fs::read_to_string(path(file)).expect("the model description")
+}
+
+/// The marker lines the table's variables stand between in each model description.
+const BEGIN: &str = "<!-- The friction parameters, written from the core's table";
+const END: &str = "<!-- end of the parameters from the core's table -->";
+
+/// The variable of parameter `i` of the table, as the XML writes it.
+fn variable(i: usize, p: Parameter) -> String {
+    let start = LuGreParams::canudas_de_wit_1995()
+        .get(p)
+        .expect("a LuGre parameter");
+    let r = vr::PARAMETERS + u32::try_from(i).expect("a few parameters");
+    format!(
+        r#"<Float64 name="{p}" valueReference="{r}" causality="parameter" variability="fixed" start="{start}" unit="{}" description="{}"/>"#,
+        fmi_unit(p),
+        description(p)
+    )
+}
+
+/// `xml` with the lines between the markers written from the core's table.
+fn with_the_table(xml: &str) -> String {
+    let lines: Vec<&str> = xml.split('\n').collect();
+    let begin = lines.iter().position(|l| l.trim_start().starts_with(BEGIN));
+    let end = lines.iter().position(|l| l.trim() == END);
+    let (Some(begin), Some(end)) = (begin, end) else {
+        panic!("the model description has no markers for the table's parameters");
+    };
+    let indent = &lines[begin][..lines[begin].len() - lines[begin].trim_start().len()];
+    let mut out: Vec<String> = lines[..=begin].iter().map(|l| l.to_string()).collect();
+    for (i, p) in Parameter::LUGRE.into_iter().enumerate() {
+        out.push(format!("{indent}{}", variable(i, p)));
+    }
+    out.extend(lines[end..].iter().map(|l| l.to_string()));
+    out.join("\n")
+}
+
+/// The units the model description defines (`<Unit name="..."`).
+fn defined_units(xml: &str) -> Vec<&str> {
+    xml.split("<Unit name=\"")
+        .skip(1)
+        .filter_map(|rest| rest.split('"').next())
+        .collect()
+}
+
+/// The parameters' variables are written from the core's table (`LUGRE_BLESS=1` rewrites the
+/// files), each with a unit the description defines.
+#[test]
+fn the_parameters_are_written_from_the_table() {
+    for file in ["lugre-friction.xml", "lugre-mass.xml"] {
+        let xml = read(file);
+        let want = with_the_table(&xml);
+        if std::env::var_os("LUGRE_BLESS").is_some() && want != xml {
+            std::fs::write(path(file), &want).expect("write the model description");
+        }
+        assert!(
+            read(file) == want,
+            "fmu/{file} is not the core's table: run LUGRE_BLESS=1 cargo test -p lugre-fmu"
+        );
+        let units = defined_units(&xml);
+        for p in Parameter::LUGRE {
+            assert!(
+                units.contains(&fmi_unit(p).as_str()),
+                "fmu/{file}: {p}'s unit {} has no <Unit> in <UnitDefinitions>",
+                fmi_unit(p)
+            );
+        }
+    }
 }
 
 #[test]
@@ -121,7 +191,7 @@ fn a_drift_is_seen() {
         "{found:?}"
     );
     assert!(found[1].starts_with("fs's description"), "{found:?}");
-    assert!(found[2].starts_with("reference 17"), "{found:?}");
+    assert!(found[2].starts_with("reference 100"), "{found:?}");
     assert_eq!(fmi_unit(Parameter::Sigma1), "N.s/m");
 }
 

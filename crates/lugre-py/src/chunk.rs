@@ -5,6 +5,7 @@
 use lugre::cycles::chunk::{
     self, ArcSpan, ChunkEnergy, ChunkSummary, ClosureQuery, OpenCycle, RowKey, StateBounds,
 };
+use lugre::cycles::ColumnMut;
 use lugre::{Closure, Cycle, CycleColumns};
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -209,28 +210,24 @@ impl<'a, 'py> Columns<'a, 'py> {
 
 /// The cycle table columns of `c` (those of `lugre.cycles`, closures included).
 fn table<'py>(py: Python<'py>, c: CycleColumns) -> PyResult<Bound<'py, PyDict>> {
-    let energy = c.keeps_energy();
-    cycle_table(py, c, energy)
+    cycle_table(py, c)
 }
 
 /// The cycle table in the dict `d` (the argument `what`): the columns of `lugre.cycles`,
 /// closures included, with energies when "work" is there; all of one length.
 fn columns_of(d: &Bound<'_, PyDict>, what: &'static str) -> PyResult<CycleColumns> {
     let mut t = Columns::new(d, what);
-    let mut c = CycleColumns::new().with_reversals(false);
-    c.range = t.f64s("range")?;
-    c.mean = t.f64s("mean")?;
-    c.count = t.f64s("count")?;
-    c.start = t.i64s("start")?;
-    c.end = t.i64s("end")?;
-    c.closure = t.i64s("closure")?;
-    c.closure_position = t.f64s("closure_position")?;
-    if t.has("work")? {
-        c = c.with_energy(true);
-        c.work = t.f64s("work")?;
-        c.stored_energy_change = t.f64s("stored_energy_change")?;
-        c.dissipation = t.f64s("dissipation")?;
-        c.closure_gap = t.f64s("closure_gap")?;
+    // With energies when the first energy column is there (the core's names throughout).
+    let energy = t.has(CycleColumns::NAMES[7])?;
+    let mut c = CycleColumns::new()
+        .with_reversals(false)
+        .with_energy(energy);
+    for name in c.kept_names() {
+        match c.column_mut(name) {
+            Some(ColumnMut::Real(v)) => *v = t.f64s(name)?,
+            Some(ColumnMut::Index(v)) => *v = t.i64s(name)?,
+            None => {}
+        }
     }
     Ok(c)
 }
@@ -274,9 +271,10 @@ pub fn chunk_merge<'py>(
     let (s, open) = chunk::merge(&left.0, &right.0).map_err(value_error)?;
     let d = PyDict::new(py);
     let col = |f: fn(&OpenCycle) -> f64| open.iter().map(f).collect::<Vec<f64>>();
-    d.set_item("range", vec_out(py, col(|o| o.cycle.range)))?;
-    d.set_item("mean", vec_out(py, col(|o| o.cycle.mean)))?;
-    d.set_item("count", vec_out(py, col(|o| o.cycle.count)))?;
+    let [range, mean, count, start, end, ..] = CycleColumns::NAMES;
+    d.set_item(range, vec_out(py, col(|o| o.cycle.range)))?;
+    d.set_item(mean, vec_out(py, col(|o| o.cycle.mean)))?;
+    d.set_item(count, vec_out(py, col(|o| o.cycle.count)))?;
     d.set_item("u_start", vec_out(py, col(|o| o.u_start)))?;
     d.set_item("u_end", vec_out(py, col(|o| o.u_end)))?;
     let idx = |f: fn(&OpenCycle) -> u64| {
@@ -285,16 +283,17 @@ pub fn chunk_merge<'py>(
             .collect::<Vec<i64>>()
             .into_pyarray(py)
     };
-    d.set_item("start", idx(|o| o.cycle.start))?;
-    d.set_item("end", idx(|o| o.cycle.end))?;
+    d.set_item(start, idx(|o| o.cycle.start))?;
+    d.set_item(end, idx(|o| o.cycle.end))?;
     Ok((PyChunkSummary(s), d))
 }
 
 fn open_of(d: &Bound<'_, PyDict>) -> PyResult<Vec<OpenCycle>> {
     let mut t = Columns::new(d, "open");
-    let (range, mean, count) = (t.f64s("range")?, t.f64s("mean")?, t.f64s("count")?);
+    let [range, mean, count, start, end, ..] = CycleColumns::NAMES;
+    let (range, mean, count) = (t.f64s(range)?, t.f64s(mean)?, t.f64s(count)?);
     let (u_start, u_end) = (t.f64s("u_start")?, t.f64s("u_end")?);
-    let (start, end) = (t.indices("start")?, t.indices("end")?);
+    let (start, end) = (t.indices(start)?, t.indices(end)?);
     Ok((0..range.len())
         .map(|k| OpenCycle {
             cycle: Cycle {

@@ -1,6 +1,7 @@
 //! `lugre.cycles`: reversals, ASTM E1049 rainflow cycles, loop closure and energies of a
 //! measured history (core `lugre::cycles`), as columns of numpy arrays.
 
+use lugre::cycles::ColumnMut;
 use lugre::CycleColumns;
 use numpy::IntoPyArray;
 use pyo3::exceptions::PyTypeError;
@@ -75,7 +76,7 @@ pub fn cycles<'py>(
     let (columns, summary) = py
         .detach(|| count(u, gate, model, x0, keep_reversals, keep_closures))
         .map_err(value_error)?;
-    let result = to_dict(py, columns, &summary, model.is_some())?;
+    let result = to_dict(py, columns, &summary)?;
     py.import("lugre")?
         .getattr("CyclesResult")?
         .call1((result,))
@@ -122,7 +123,6 @@ fn to_dict<'py>(
     py: Python<'py>,
     mut c: CycleColumns,
     s: &lugre::CycleSummary,
-    with_energy: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let out = PyDict::new(py);
     if c.keeps_reversals() {
@@ -135,7 +135,7 @@ fn to_dict<'py>(
         out.set_item("reversals", py.None())?;
     }
 
-    let cycles = cycle_table(py, c, with_energy)?;
+    let cycles = cycle_table(py, c)?;
     out.set_item("cycles", cycles)?;
 
     let summary = summary_dict(py, s)?;
@@ -168,28 +168,21 @@ pub(crate) fn summary_dict<'py>(
     Ok(summary)
 }
 
-/// The cycle table of [`cycles`]: one numpy array per column kept.
+/// The cycle table of [`cycles`]: one numpy array per column kept, by the core's names
+/// ([`CycleColumns::kept_names`]), each column moved, not copied.
 pub(crate) fn cycle_table<'py>(
     py: Python<'py>,
-    c: CycleColumns,
-    with_energy: bool,
+    mut c: CycleColumns,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let keep_closures = c.keeps_closures();
     let cycles = PyDict::new(py);
-    cycles.set_item("range", vec_out(py, c.range))?;
-    cycles.set_item("mean", vec_out(py, c.mean))?;
-    cycles.set_item("count", vec_out(py, c.count))?;
-    cycles.set_item("start", c.start.into_pyarray(py))?;
-    cycles.set_item("end", c.end.into_pyarray(py))?;
-    if keep_closures {
-        cycles.set_item("closure", c.closure.into_pyarray(py))?;
-        cycles.set_item("closure_position", vec_out(py, c.closure_position))?;
-    }
-    if with_energy {
-        cycles.set_item("work", vec_out(py, c.work))?;
-        cycles.set_item("stored_energy_change", vec_out(py, c.stored_energy_change))?;
-        cycles.set_item("dissipation", vec_out(py, c.dissipation))?;
-        cycles.set_item("closure_gap", vec_out(py, c.closure_gap))?;
+    for name in c.kept_names() {
+        match c.column_mut(name) {
+            Some(ColumnMut::Real(v)) => cycles.set_item(name, vec_out(py, std::mem::take(v)))?,
+            Some(ColumnMut::Index(v)) => {
+                cycles.set_item(name, std::mem::take(v).into_pyarray(py))?
+            }
+            None => {}
+        }
     }
     Ok(cycles)
 }

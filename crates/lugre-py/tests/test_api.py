@@ -3,6 +3,7 @@
 
 import copy
 import inspect
+import pathlib
 import pickle
 import subprocess
 import sys
@@ -170,7 +171,10 @@ def _stub_tree(module):
     import importlib.resources
 
     name = "__init__.pyi" if module is lugre else module.__name__.rsplit(".", 1)[1] + ".pyi"
-    return ast.parse(importlib.resources.files("lugre").joinpath(name).read_text())
+    # The source tree's stub where there is one (the installed one is its copy at the build).
+    source = pathlib.Path(__file__).resolve().parents[1] / "python" / "lugre" / name
+    stub = source if source.exists() else importlib.resources.files("lugre").joinpath(name)
+    return ast.parse(stub.read_text())
 
 
 def _stub_parameters(node, drop_self=False):

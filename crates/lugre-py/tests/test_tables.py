@@ -7,6 +7,8 @@ added to the core's table and not to one of these fails here, naming it."""
 import ast
 import importlib.resources
 import inspect
+import os
+import pathlib
 
 import numpy as np
 import pytest
@@ -14,10 +16,15 @@ import pytest
 import lugre
 
 MODELS = {"LuGre": lugre.LuGre, "Dahl": lugre.Dahl}
+STUB = pathlib.Path(__file__).resolve().parents[1] / "python" / "lugre" / "__init__.pyi"
+BEGIN = "    # The keywords and properties of the core's table (lugre.PARAMETERS), written from it:"
+END = "    # end of the table's parameters"
 
 
 def _stub_class(name):
-    tree = ast.parse(importlib.resources.files("lugre").joinpath("__init__.pyi").read_text())
+    # The source tree's stub where there is one (the installed one is its copy at the build).
+    stub = STUB if STUB.exists() else importlib.resources.files("lugre").joinpath("__init__.pyi")
+    tree = ast.parse(stub.read_text())
     for node in tree.body:
         if isinstance(node, ast.ClassDef) and node.name == name:
             return node
@@ -34,6 +41,50 @@ def test_the_keywords_are_the_tables(model):
         assert p.default == table[p.name]["default"], p
     # Each keyword's default is the value a bare constructor takes.
     assert MODELS[model]().to_dict() == {name: row["default"] for name, row in table.items()}
+
+
+def _stub_block(table):
+    """The stub's lines of a model's parameters, written from its table."""
+    lines = ["    def __init__(", "        self,", "        *,"]
+    lines += [f"        {name}: _Real = {row['default']!r}," for name, row in table.items()]
+    lines.append("    ) -> None: ...")
+    for name in table:
+        lines += ["    @property", f"    def {name}(self) -> float: ..."]
+    return lines
+
+
+def _with_the_table(text):
+    """The stub with each model's parameter lines (between the markers, in the order of the
+    classes) written from lugre.PARAMETERS."""
+    lines = text.split("\n")
+    out, model = [], None
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith("class "):
+            model = line[len("class "):].split(":")[0].split("(")[0]
+        out.append(line)
+        if line.startswith(BEGIN):
+            out.append(lines[i + 1])  # the marker's second line
+            out += _stub_block(lugre.PARAMETERS[model])
+            i = next(k for k in range(i, len(lines)) if lines[k] == END)
+            continue
+        i += 1
+    return "\n".join(out)
+
+
+def test_the_stubs_parameters_are_written_from_the_table():
+    """The source stub's parameter lines are lugre.PARAMETERS' (LUGRE_BLESS=1 rewrites them; the
+    installed stub is the source's at the last build)."""
+    if not STUB.exists():
+        pytest.skip(f"no source tree at {STUB}")
+    text = STUB.read_text()
+    want = _with_the_table(text)
+    if os.environ.get("LUGRE_BLESS") and want != text:
+        STUB.write_text(want)
+        text = want
+    assert text == want, f"{STUB} is not lugre.PARAMETERS: run LUGRE_BLESS=1 pytest {__file__}"
+    assert text.count(BEGIN) == len(MODELS), "a model without its marked parameter lines"
 
 
 @pytest.mark.parametrize("model", MODELS)

@@ -334,6 +334,10 @@ pub enum FitError {
     },
     #[error("{name} does not enter the slow loop: the rate-independent limit depends only on sigma0 and g(0) = Fs (Dahl: rho and Fc), so {name} cannot be identified from quasi-static data (use a full fit of rate-dependent data)")]
     NotInSlowLoop { name: &'static str },
+    #[error(
+        "{name} cannot be fitted by the full fit (it has no derivative for it): give its value"
+    )]
+    NotInFullFit { name: &'static str },
     #[error("{name} is both fixed and freed")]
     FixedAndFree { name: &'static str },
     #[error("nothing to fit: every parameter of the {fit} fit is fixed")]

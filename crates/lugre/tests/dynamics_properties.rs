@@ -75,6 +75,8 @@ proptest! {
         drive in drive(),
         t_end in 0.2..3.0f64,
     ) {
+        // Any parameter the table has besides these at its default.
+        #[allow(clippy::needless_update)]
         let p = LuGreParams {
             sigma0,
             sigma1: 2.0 * zeta * (sigma0 * mass).sqrt(),
@@ -83,6 +85,7 @@ proptest! {
             fs: fc * ratio,
             vs,
             beta: 2.0,
+            ..LuGreParams::default()
         };
         let model = LuGre::from_params(p).unwrap();
         let system = System::new(model, mass).unwrap();

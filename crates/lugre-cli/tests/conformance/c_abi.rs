@@ -55,8 +55,21 @@ fn model(m: Option<&Value>) -> Result<Model, Failure> {
     let m = m.map_or(&empty, |v| v.as_object().expect("model is an object"));
     let mut out = ptr::null_mut();
     if m.get("family").and_then(Value::as_str) == Some("dahl") {
-        let get = |k: &str| m.get(k).map_or(1.0, number);
-        status(lugre_model_new_dahl(get("rho"), get("fc"), &mut out))?;
+        // By name, the others at the core's defaults (as the MEX gateway makes Dahl models).
+        let given: Vec<(std::ffi::CString, f64)> = m
+            .iter()
+            .filter(|(k, _)| *k != "family")
+            .map(|(k, v)| (std::ffi::CString::new(k.as_str()).unwrap(), number(v)))
+            .collect();
+        let names: Vec<*const std::ffi::c_char> = given.iter().map(|(k, _)| k.as_ptr()).collect();
+        let values: Vec<f64> = given.iter().map(|&(_, v)| v).collect();
+        status(lugre_model_new_named(
+            LUGRE_FAMILY_DAHL,
+            names.len(),
+            names.as_ptr(),
+            values.as_ptr(),
+            &mut out,
+        ))?;
         return Ok(Model(out));
     }
     let mut p = LugreParams::default();

@@ -45,6 +45,18 @@ static void versions_and_parameters(void) {
     CHECK(lugre_params_check_named(2, "") == LUGRE_STATUS_INVALID_ARGUMENT);
     CHECK(lugre_params_check_named(LUGRE_NEEDED_ALL, "sigma0,kappa") ==
           LUGRE_STATUS_INVALID_ARGUMENT);
+    const char *names[] = {"fc", name};
+    const double values[] = {0.5, 2.0};
+    LugreModel *dahl = NULL;
+    OK(lugre_model_new_named(LUGRE_FAMILY_DAHL, 2, names, values, &dahl));
+    const double u[] = {0, 1};
+    LugreLoop *hl = NULL;
+    OK(lugre_loop_new(dahl, u, 2, &hl));
+    double work = 0, period = 0;
+    OK(lugre_loop_summary(hl, &work, &period));
+    CHECK(work > 0 && work < 4 * 0.5); /* below 2 Fc per unit of travel and back */
+    lugre_loop_free(hl);
+    lugre_model_free(dahl);
 }
 
 static void loops(const LugreModel *m) {

@@ -34,6 +34,8 @@ _Floats = npt.NDArray[np.float64]
 class LuGre:
     """The LuGre friction model (paper eq. 1) with the Stribeck curve and viscous friction."""
 
+    # The keywords and properties of the core's table (lugre.PARAMETERS), written from it:
+    # LUGRE_BLESS=1 python -m pytest crates/lugre-py/tests/test_tables.py rewrites them.
     def __init__(
         self,
         *,
@@ -62,6 +64,7 @@ class LuGre:
     def vs(self) -> float: ...
     @property
     def beta(self) -> float: ...
+    # end of the table's parameters
     @property
     def g0(self) -> float: ...
     @property
@@ -97,11 +100,19 @@ class LuGre:
 class Dahl:
     """The Dahl friction model: w' = rho (u' - |u'| w), y = fc w."""
 
-    def __init__(self, *, rho: _Real = 1.0, fc: _Real = 1.0) -> None: ...
+    # The keywords and properties of the core's table (lugre.PARAMETERS), written from it:
+    # LUGRE_BLESS=1 python -m pytest crates/lugre-py/tests/test_tables.py rewrites them.
+    def __init__(
+        self,
+        *,
+        rho: _Real = 1.0,
+        fc: _Real = 1.0,
+    ) -> None: ...
     @property
     def rho(self) -> float: ...
     @property
     def fc(self) -> float: ...
+    # end of the table's parameters
     @property
     def sigma0(self) -> float: ...
     @property

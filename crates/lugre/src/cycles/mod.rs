@@ -84,7 +84,7 @@ mod tests;
 
 pub use columns::CycleColumns;
 pub use histogram::Histogram;
-pub use row::Cell;
+pub use row::{Cell, ColumnMut};
 
 /// The largest `|u|` a sample may have: ranges and means of any two samples stay finite.
 pub const MAX_SAMPLE: f64 = engine::MAX_ABS;

@@ -88,6 +88,49 @@ impl CycleColumns {
     };
 }
 
+/// A cycle column by name ([`CycleColumns::column_mut`]): numbers or sample indices.
+#[derive(Debug)]
+pub enum ColumnMut<'a> {
+    Real(&'a mut Vec<f64>),
+    Index(&'a mut Vec<i64>),
+}
+
+impl CycleColumns {
+    /// The column called `name` (one of [`Self::NAMES`], the field of that name), for a front
+    /// end that reads or writes the columns by the core's names.
+    pub fn column_mut(&mut self, name: &str) -> Option<ColumnMut<'_>> {
+        use ColumnMut::{Index, Real};
+        // By place in NAMES: the names are written once, there.
+        Some(match Self::NAMES.iter().position(|&n| n == name)? {
+            0 => Real(&mut self.range),
+            1 => Real(&mut self.mean),
+            2 => Real(&mut self.count),
+            3 => Index(&mut self.start),
+            4 => Index(&mut self.end),
+            5 => Index(&mut self.closure),
+            6 => Real(&mut self.closure_position),
+            7 => Real(&mut self.work),
+            8 => Real(&mut self.stored_energy_change),
+            9 => Real(&mut self.dissipation),
+            _ => Real(&mut self.closure_gap),
+        })
+    }
+
+    /// The names of the columns these columns fill, in the order of [`Self::NAMES`]: `range`
+    /// to `end`, then `closure`, `closure_position` if closures are kept, then the four
+    /// energies if they are.
+    pub fn kept_names(&self) -> Vec<&'static str> {
+        let mut out = Self::NAMES[..5].to_vec();
+        if self.keeps_closures() {
+            out.extend_from_slice(&Self::NAMES[5..7]);
+        }
+        if self.keeps_energy() {
+            out.extend_from_slice(&Self::NAMES[7..]);
+        }
+        out
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -130,5 +173,45 @@ mod tests {
         assert_eq!(row[5..7], [Cell::Missing; 2]);
         assert_eq!(row[12], Cell::Number(6.0));
         assert_eq!(CycleColumns::NAMES[..], Cycle::COLUMNS[..11]);
+    }
+
+    /// Each column by name holds, row by row, the cell of that name of each cycle's row.
+    #[test]
+    fn the_columns_by_name_are_the_rows_cells() {
+        use crate::{CycleCounter, CycleSink, LuGre};
+        let u = [-2.0, 1.0, -3.0, 5.0, -1.0, 3.0, -4.0, 4.0, -2.0];
+        let model = LuGre::paper().rate_independent();
+        fn count<S: CycleSink>(u: &[f64], model: crate::RateIndependent, sink: &mut S) {
+            let mut counter = CycleCounter::new(0.0)
+                .unwrap()
+                .with_energy(Some(model), 0.0)
+                .unwrap();
+            counter.push_all(u, sink).unwrap();
+            counter.finish(sink).unwrap();
+        }
+        let mut cycles: Vec<Cycle> = Vec::new();
+        count(&u, model, &mut cycles);
+        let mut c = CycleColumns::new().with_energy(true);
+        count(&u, model, &mut c);
+        assert_eq!(c.kept_names(), CycleColumns::NAMES);
+        for (j, name) in CycleColumns::NAMES.into_iter().enumerate() {
+            let cells: Vec<Cell> = match c.column_mut(name).unwrap() {
+                ColumnMut::Real(v) => v.iter().map(|&x| Cell::Number(x)).collect(),
+                ColumnMut::Index(v) => v.iter().map(|&i| Cell::Index(i as u64)).collect(),
+            };
+            for (k, cycle) in cycles.iter().enumerate() {
+                let want = cycle.row()[j];
+                let have = cells[k];
+                let same = match (want, have) {
+                    (Cell::Missing, Cell::Number(x)) => x.is_nan(),
+                    (Cell::Missing, Cell::Index(_)) => c.closure[k] == -1,
+                    _ => want == have,
+                };
+                assert!(same, "{name} of cycle {k}: {have:?}, the row has {want:?}");
+            }
+        }
+        assert!(c.column_mut("y_start").is_none());
+        let c = CycleColumns::new().with_closures(false);
+        assert_eq!(c.kept_names(), CycleColumns::NAMES[..5]);
     }
 }

@@ -39,7 +39,7 @@
 
 use super::lm::Evaluator;
 use super::slow::{half_rise_rate, median};
-use super::spec::{lugre_params, Family, Resolved};
+use super::spec::{index_of, lugre_params, Family, Resolved};
 use crate::kernel::relax::decay;
 use crate::model::{LuGre, Parameter};
 use nalgebra::DMatrix;
@@ -103,8 +103,9 @@ impl Exact {
             .iter()
             .map(|&i| match (self.family, i) {
                 (Family::LuGre, i) => vec![(i, 1.0)],
-                (Family::Dahl, 0) => vec![(0, values[1])],
-                (Family::Dahl, _) => vec![(0, values[0]), (3, 1.0), (4, 1.0)],
+                // sigma0 = rho Fc, Fs = Fc (Dahl::lugre_params).
+                (Family::Dahl, RHO) => vec![(SIGMA0, values[DAHL_FC])],
+                (Family::Dahl, _) => vec![(SIGMA0, values[RHO]), (FC, 1.0), (FS, 1.0)],
             })
             .collect()
     }
@@ -162,12 +163,35 @@ impl<E: Evaluator> Evaluator for Rows<E> {
     }
 }
 
-/// The derivatives below are written for the LuGre parameters by their index in
-/// [`Parameter::LUGRE`]: a parameter added to the table needs its own here.
-const _: () = assert!(
-    Parameter::LUGRE.len() == 7,
-    "the full fit's derivatives (Exact::evaluate) know 7 LuGre parameters: add the new one's"
-);
+/// The parameters [`Exact::evaluate`] has derivatives for (the Dahl model's through its LuGre
+/// form, [`Exact::columns`]). Any other parameter of the table is held by a full fit at its
+/// value: a parameter added to the table is fitted once its derivative is written here.
+const DIFFERENTIATED: [Parameter; 8] = [
+    Parameter::Sigma0,
+    Parameter::Sigma1,
+    Parameter::Sigma2,
+    Parameter::Fc,
+    Parameter::Fs,
+    Parameter::Vs,
+    Parameter::Beta,
+    Parameter::Rho,
+];
+
+/// Whether a full fit can fit `p` ([`DIFFERENTIATED`]).
+pub(crate) fn differentiates(p: Parameter) -> bool {
+    DIFFERENTIATED.contains(&p)
+}
+
+/// The LuGre parameters' places in a LuGre parameter vector, from the table.
+const SIGMA0: usize = index_of(&Parameter::LUGRE, Parameter::Sigma0);
+const FC: usize = index_of(&Parameter::LUGRE, Parameter::Fc);
+const FS: usize = index_of(&Parameter::LUGRE, Parameter::Fs);
+/// The Dahl parameters' places in a Dahl parameter vector.
+const RHO: usize = index_of(&Parameter::DAHL, Parameter::Rho);
+const DAHL_FC: usize = index_of(&Parameter::DAHL, Parameter::Fc);
+
+/// The number of LuGre parameters: the length of the derivatives' arrays.
+const N: usize = Parameter::LUGRE.len();
 
 impl Evaluator for Exact {
     fn evaluate(&mut self, values: &[f64], y: &mut [f64], jac: &mut DMatrix<f64>) -> bool {
@@ -176,20 +200,20 @@ impl Evaluator for Exact {
             return false;
         }
         let columns = self.columns(values);
-        let mut needed = [false; 7];
+        let mut needed = [false; N];
         for &(j, _) in columns.iter().flatten() {
             needed[j] = true;
         }
-        let needed: Vec<usize> = (0..7).filter(|&j| needed[j]).collect();
+        let needed: Vec<usize> = (0..N).filter(|&j| needed[j]).collect();
         let n = y.len();
         let cols = jac.as_mut_slice();
         let (sigma0, sigma1, sigma2) = (p.sigma0, p.sigma1, p.sigma2);
         let (fc, fs, vs, beta) = (p.fc, p.fs, p.vs, p.beta);
         let drop = fs - fc;
         let mut z = self.x0;
-        let mut zs = [0.0f64; 7];
-        let mut q = [0.0f64; 7];
-        let mut dy = [0.0f64; 7];
+        let mut zs = [0.0f64; N];
+        let mut q = [0.0f64; N];
+        let mut dy = [0.0f64; N];
         // NaN once a derivative is not finite (`x * 0`): no branch in the loop.
         let mut bad = 0.0;
         for i in 0..n {
@@ -215,23 +239,23 @@ impl Evaluator for Exact {
             y[i] = sigma0 * z + sigma1 * dz + sigma2 * v;
             let inv_g = 1.0 / g;
             for &j in &needed {
-                q[j] = match j {
-                    0 => 1.0 / sigma0,
-                    3 => -(1.0 - big_e) * inv_g,
-                    4 => -big_e * inv_g,
-                    5 => -drop * big_e * beta * rb / vs * inv_g,
+                q[j] = match Parameter::LUGRE[j] {
+                    Parameter::Sigma0 => 1.0 / sigma0,
+                    Parameter::Fc => -(1.0 - big_e) * inv_g,
+                    Parameter::Fs => -big_e * inv_g,
+                    Parameter::Vs => -drop * big_e * beta * rb / vs * inv_g,
                     // r^beta ln r -> 0 as r -> 0.
-                    6 if r > 0.0 => drop * big_e * rb * r.ln() * inv_g,
+                    Parameter::Beta if r > 0.0 => drop * big_e * rb * r.ln() * inv_g,
                     _ => 0.0,
                 };
             }
             let damp = sigma0 - sigma1 * k;
             let s1kz = sigma1 * k * z;
             for &j in &needed {
-                dy[j] = match j {
-                    1 => dz,
-                    2 => v,
-                    _ => damp * zs[j] - s1kz * q[j] + if j == 0 { z } else { 0.0 },
+                dy[j] = match Parameter::LUGRE[j] {
+                    Parameter::Sigma1 => dz,
+                    Parameter::Sigma2 => v,
+                    p => damp * zs[j] - s1kz * q[j] + if p == Parameter::Sigma0 { z } else { 0.0 },
                 };
             }
             for (c_idx, col) in columns.iter().enumerate() {
@@ -510,13 +534,34 @@ mod tests {
     fn output_is_the_simulators_and_derivatives_match_differences() {
         let (t, u) = record();
         let n = u.len();
-        for (family, values) in [
-            (Family::LuGre, vec![3.0, 0.7, 0.2, 1.0, 1.8, 0.4, 1.0]),
-            (Family::LuGre, vec![3.0, 0.7, 0.2, 1.0, 1.8, 0.4, 2.0]),
-            (Family::LuGre, vec![3.0, 0.7, 0.2, 1.0, 1.8, 0.4, 1.3]),
-            (Family::Dahl, vec![2.0, 0.9]),
+        // The values by name (any other parameter of the table at its default).
+        let lugre = |beta: f64| -> Vec<f64> {
+            Parameter::LUGRE
+                .map(|p| match p {
+                    Parameter::Sigma0 => 3.0,
+                    Parameter::Sigma1 => 0.7,
+                    Parameter::Sigma2 => 0.2,
+                    Parameter::Fc => 1.0,
+                    Parameter::Fs => 1.8,
+                    Parameter::Vs => 0.4,
+                    Parameter::Beta => beta,
+                    p => p.default_value(),
+                })
+                .to_vec()
+        };
+        let dahl = Parameter::DAHL
+            .map(|p| if p == Parameter::Rho { 2.0 } else { 0.9 })
+            .to_vec();
+        for (family, values, table) in [
+            (Family::LuGre, lugre(1.0), &Parameter::LUGRE[..]),
+            (Family::LuGre, lugre(2.0), &Parameter::LUGRE[..]),
+            (Family::LuGre, lugre(1.3), &Parameter::LUGRE[..]),
+            (Family::Dahl, dahl, &Parameter::DAHL[..]),
         ] {
-            let free: Vec<usize> = (0..values.len()).collect();
+            // Every parameter the fit has a derivative for.
+            let free: Vec<usize> = (0..values.len())
+                .filter(|&i| differentiates(table[i]))
+                .collect();
             let mut ex = Exact::new(family, free.clone(), &t, &u, 0.1);
             let mut y = vec![0.0; n];
             let mut jac = DMatrix::zeros(n, free.len());

@@ -1,6 +1,7 @@
 //! What to fit: the model family, which parameters are free, their start values and bounds, and
 //! the map from bounded parameters to the unconstrained variables the optimizer moves.
 
+use super::full;
 use crate::error::FitError;
 use crate::model::{Dahl, LuGreParams, Parameter};
 
@@ -76,10 +77,16 @@ impl Family {
         }
     }
 
-    /// Whether a full fit frees parameter `i` unless told otherwise: every one but `beta`,
-    /// which most records determine poorly.
+    /// Whether a full fit frees parameter `i` unless told otherwise: the table says so
+    /// ([`Parameter::fit_frees_by_default`]: all but `beta`) and the fit has its derivative.
     fn full_default(self, i: usize) -> bool {
-        self.table()[i] != Parameter::Beta
+        let p = self.table()[i];
+        p.fit_frees_by_default() && full::differentiates(p)
+    }
+
+    /// Whether a full fit can fit parameter `i` (it has its derivative).
+    fn in_full_fit(self, i: usize) -> bool {
+        full::differentiates(self.table()[i])
     }
 }
 
@@ -494,6 +501,10 @@ impl FitSpec {
                     _ => FitError::NotInSlowLoop { name },
                 });
             }
+            let full = matches!(kind, FitKind::Full | FitKind::Staged);
+            if self.freed[i] && full && !self.family.in_full_fit(i) {
+                return Err(FitError::NotInFullFit { name });
+            }
             if (kind.frees(self.family, i) || self.freed[i]) && !self.fixed[i] {
                 free.push(i);
             }
@@ -504,7 +515,13 @@ impl FitSpec {
         // A parameter the model of this fit uses, held, must have a value from the user: the
         // family's defaults are the paper's dimensionless values.
         for (i, &name) in names.iter().enumerate() {
-            if kind.uses(self.family, i) && !free.contains(&i) && !self.value_given[i] {
+            // A parameter the fit cannot fit, left alone, keeps a default that means "absent"
+            // (Parameter::default_is_absence): the model without it.
+            let absent = matches!(kind, FitKind::Full | FitKind::Staged)
+                && !self.fixed[i]
+                && !self.family.in_full_fit(i)
+                && self.family.table()[i].default_is_absence();
+            if kind.uses(self.family, i) && !free.contains(&i) && !self.value_given[i] && !absent {
                 return Err(FitError::NotGiven {
                     name,
                     fit: kind.label(),
@@ -571,11 +588,11 @@ mod tests {
         }
         let slow = Family::LuGre.slow_parameters().map(|i| Parameter::LUGRE[i]);
         assert_eq!(slow, Parameter::LUGRE_RATE_INDEPENDENT);
-        let held: Vec<Parameter> = (0..Parameter::LUGRE.len())
-            .filter(|&i| !Family::LuGre.full_default(i))
-            .map(|i| Parameter::LUGRE[i])
-            .collect();
-        assert_eq!(held, [Parameter::Beta], "beta alone is held in a full fit");
+        // A full fit holds beta (and any parameter it has no derivative for), frees the rest.
+        for (i, p) in Parameter::LUGRE.into_iter().enumerate() {
+            let want = p != Parameter::Beta && full::differentiates(p);
+            assert_eq!(Family::LuGre.full_default(i), want, "{p}");
+        }
         assert_eq!(Family::Dahl.slow_parameters(), [0, 1]);
     }
 
@@ -623,16 +640,26 @@ mod tests {
                 example: "2, the usual Stribeck exponent"
             }
         );
+        // The free parameters by name, whatever their places in the table.
+        let free = |s: &FitSpec, kind| -> Vec<&str> {
+            let names = s.family().parameters();
+            s.resolve(kind)
+                .unwrap()
+                .free
+                .iter()
+                .map(|&i| names[i])
+                .collect()
+        };
         let s = FitSpec::lugre(LuGreParams::default());
-        assert_eq!(s.resolve(FitKind::Slow).unwrap().free, vec![0, 4]);
+        assert_eq!(free(&s, FitKind::Slow), ["sigma0", "fs"]);
         assert_eq!(
-            s.resolve(FitKind::Full).unwrap().free,
-            vec![0, 1, 2, 3, 4, 5]
+            free(&s, FitKind::Full),
+            ["sigma0", "sigma1", "sigma2", "fc", "fs", "vs"]
         );
         let s = s.fix("sigma2").unwrap().free("beta").unwrap();
         assert_eq!(
-            s.resolve(FitKind::Full).unwrap().free,
-            vec![0, 1, 3, 4, 5, 6]
+            free(&s, FitKind::Full),
+            ["sigma0", "sigma1", "fc", "fs", "vs", "beta"]
         );
         assert_eq!(
             s.resolve(FitKind::Slow).unwrap_err(),

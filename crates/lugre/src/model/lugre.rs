@@ -7,6 +7,11 @@ use crate::error::ModelError;
 ///
 /// The default is the paper's Examples 2-3: `sigma0 = sigma1 = 1`, `sigma2 = 0`, `Fc = 1`,
 /// `Fs = 2`, `vs = 1`, `beta = 1`.
+///
+/// The fields are the table's [`Parameter::LUGRE`], in its order, laid out as C lays out a
+/// struct of `double`s: the C ABI's `LugreParams` is this struct (its header is written from
+/// the table, and a test of the C ABI checks each field's place against it).
+#[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LuGreParams {
     pub sigma0: f64,

@@ -138,23 +138,20 @@ mod tests {
         assert_eq!(unit(Parameter::Fc), "1");
         assert_eq!(unit(Parameter::Vs), "m/s");
         assert_eq!(unit(Parameter::Rho), "1/m");
+        use Parameter::{Beta, Fc, Fs, Rho, Sigma0, Sigma1, Sigma2, Vs};
         assert_eq!(
-            units(&Parameter::LUGRE),
+            units(&[Sigma0, Sigma1, Sigma2, Fc, Fs, Vs, Beta]),
             "mu_c, mu_s dimensionless; sigma0 in 1/m; sigma1, sigma2 in s/m"
         );
-        // The force is linear in these together; each loses the newton of its unit.
-        let scaling: Vec<Parameter> = Parameter::ALL.into_iter().filter(|&p| scales(p)).collect();
-        assert_eq!(
-            scaling,
-            [
-                Parameter::Sigma0,
-                Parameter::Sigma1,
-                Parameter::Sigma2,
-                Parameter::Fc,
-                Parameter::Fs
-            ]
-        );
-        for p in scaling {
+        // The force is linear in these together; the others keep their units.
+        for p in [Sigma0, Sigma1, Sigma2, Fc, Fs] {
+            assert!(scales(p), "{p}");
+        }
+        for p in [Vs, Beta, Rho] {
+            assert!(!scales(p), "{p}");
+        }
+        // Each that scales (any parameter of the table with the newton in its unit) loses it.
+        for p in Parameter::ALL.into_iter().filter(|&p| scales(p)) {
             assert!(!unit(p).contains('N'), "{p}");
         }
     }

@@ -154,6 +154,13 @@ impl Parameter {
         matches!(self, Parameter::Sigma2)
     }
 
+    /// Whether a full fit frees the parameter unless told otherwise: every one but `beta`,
+    /// which most records determine poorly (a parameter the fit has no derivative for is held
+    /// whatever this says).
+    pub const fn fit_frees_by_default(self) -> bool {
+        !matches!(self, Parameter::Beta)
+    }
+
     /// What values the parameter may take.
     pub const fn domain(self) -> Domain {
         match self {
