@@ -47,9 +47,6 @@ class LuGre:
         vs: _Real = 1.0,
         beta: _Real = 1.0,
     ) -> None: ...
-    @staticmethod
-    def preset(name: Literal["canudas1995"], **parameters: _Real) -> LuGre:
-        """A published parameter set by name, the keywords (the constructor's) overriding it."""
     @property
     def sigma0(self) -> float: ...
     @property
@@ -65,6 +62,9 @@ class LuGre:
     @property
     def beta(self) -> float: ...
     # end of the table's parameters
+    @staticmethod
+    def preset(name: Literal["canudas1995"], **parameters: _Real) -> LuGre:
+        """A published parameter set by name, the keywords (the constructor's) overriding it."""
     @property
     def g0(self) -> float: ...
     @property
