@@ -295,6 +295,10 @@ enum LugreStatus lugre_simulate(const struct LugreModel *model,
                                 double *z_out,
                                 double *force_out);
 
+// The name of column `index` of [`lugre_sweep`]'s table ("amplitude", "frequency", ...;
+// static, the core's names), or NULL past the last column.
+const char *lugre_sweep_column(size_t index);
+
 // The periodic steady state under `u = offset + A sin(2 pi f t)` for every amplitude with
 // every frequency (as `lugre sweep`): the fixed point of the period map, in parallel on all
 // cores. Row `i n_frequencies + j` of `table` (row-major, [`LUGRE_SWEEP_COLUMNS`] doubles a

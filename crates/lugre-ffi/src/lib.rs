@@ -622,6 +622,20 @@ pub extern "C" fn lugre_simulate(
 pub const LUGRE_SWEEP_COLUMNS: usize = 12;
 const _: () = assert!(LUGRE_SWEEP_COLUMNS == lugre::sweep::COLUMNS.len());
 
+/// The name of column `index` of [`lugre_sweep`]'s table ("amplitude", "frequency", ...;
+/// static, the core's names), or NULL past the last column.
+#[no_mangle]
+pub extern "C" fn lugre_sweep_column(index: usize) -> *const c_char {
+    static NAMES: std::sync::OnceLock<Vec<CString>> = std::sync::OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        lugre::sweep::COLUMNS
+            .iter()
+            .map(|n| CString::new(*n).expect("no NUL in a column name"))
+            .collect()
+    });
+    names.get(index).map_or(std::ptr::null(), |n| n.as_ptr())
+}
+
 /// The periodic steady state under `u = offset + A sin(2 pi f t)` for every amplitude with
 /// every frequency (as `lugre sweep`): the fixed point of the period map, in parallel on all
 /// cores. Row `i n_frequencies + j` of `table` (row-major, [`LUGRE_SWEEP_COLUMNS`] doubles a

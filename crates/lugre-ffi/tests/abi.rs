@@ -680,6 +680,13 @@ fn sweep_through_the_abi_is_the_cores() {
         .unwrap();
     let want: Vec<f64> = core.points.iter().flat_map(|p| p.values()).collect();
     assert_eq!(table, want);
+    for (i, name) in lugre::sweep::COLUMNS.iter().enumerate() {
+        assert_eq!(
+            unsafe { CStr::from_ptr(lugre_sweep_column(i)) }.to_str(),
+            Ok(*name)
+        );
+    }
+    assert!(lugre_sweep_column(LUGRE_SWEEP_COLUMNS).is_null());
     let zero = [0.0];
     let status = lugre_sweep(
         m,

@@ -112,6 +112,8 @@ static void simulation_and_element(const LugreModel *m) {
     const double *row = table + 4 * LUGRE_SWEEP_COLUMNS;
     CHECK(row[0] == 1e-5 && row[1] == 1 && row[2] > 0 && row[9] > 0 && row[9] < 3.15);
     CHECK(lugre_sweep(m, amplitudes, 2, frequencies, 3, 0, 0, table, 5) == LUGRE_STATUS_BUFFER_TOO_SMALL);
+    CHECK(strcmp(lugre_sweep_column(2), "dissipation") == 0);
+    CHECK(lugre_sweep_column(LUGRE_SWEEP_COLUMNS) == NULL);
 }
 
 static void fits(void) {
