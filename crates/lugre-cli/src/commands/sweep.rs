@@ -222,8 +222,12 @@ fn print_table(
     writeln!(w, "{}", choice.describe(Needed::All))?;
     writeln!(
         w,
-        "Input: u = {} + A sin(2 pi f t); {} amplitudes x {} frequencies = {} points; periodic steady state (fixed point of the period map), tol = {}",
-        sig(r.offset(), 10),
+        "Input: u = {}A sin(2 pi f t); {} amplitudes x {} frequencies = {} points; periodic steady state (fixed point of the period map), tol = {}",
+        if r.offset() == 0.0 {
+            String::new()
+        } else {
+            format!("{} + ", sig(r.offset(), 10))
+        },
         r.amplitudes().len(),
         r.frequencies().len(),
         s.points.len(),
