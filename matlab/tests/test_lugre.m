@@ -107,7 +107,7 @@ function failures = test_lugre()
   failures += expect(isequal(w.dissipation, numbers(j, 'dissipation')) && isequal(w.phase, numbers(j, 'phase')), ...
                      'sweep: the CLI''s energies and phases');
   failures += raises(@() lugre_sweep(0, 1), 'amplitudes: amplitude must be a finite number > 0, got 0');
-  failures += raises(@() lugre_sweep(1e-6, [1 NaN]), 'frequencies(2) must be a finite number, got NaN');
+  failures += raises(@() lugre_sweep(1e-6, [1 NaN]), 'frequencies: frequency must be a finite number > 0, got NaN');
 
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
   failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) must be a finite number, got NaN');

@@ -657,8 +657,10 @@ pub extern "C" fn lugre_sweep(
 ) -> LugreStatus {
     guard(|| {
         let m = handle(model, "model")?;
-        let a = input(amplitudes, n_amplitudes, "amplitudes")?.to_vec();
-        let f = input(frequencies, n_frequencies, "frequencies")?.to_vec();
+        // As given: the core judges every value (`amplitudes: amplitude must be a finite
+        // number > 0, got NaN`, as every front end says it).
+        let a = values(amplitudes, n_amplitudes, "amplitudes")?.to_vec();
+        let f = values(frequencies, n_frequencies, "frequencies")?.to_vec();
         let named = |name: &str, e: lugre::SweepError| {
             fail(LugreStatus::InvalidArgument, format!("{name}: {e}"))
         };
