@@ -25,6 +25,9 @@
    lugre.dynamics, scipy's fastest method reaching the same accuracy and MuJoCo's LuGre
    (`dcmotor`, Euler h = 1e-3, 2e-3, implicitfast 1e-3), scored against the independent
    reference in crates/lugre/tests/reference/dynamics (bench/compare_dynamics.py).
+5. Steady-state sweeps: lugre.sweep on a 50 x 50 grid of amplitudes and frequencies against
+   scipy's Radau simulating points to their steady state at the same accuracy
+   (bench/compare_sweep.py).
 
 Prints one table: case, method, time, error or agreement, ratio (time / lugre's time).
 See bench/README.md for the options and what exactly is timed.
@@ -589,6 +592,10 @@ def compare(args: argparse.Namespace) -> None:
         sys.path.insert(0, HERE)
         from compare_dynamics import dynamics_rows
         dynamics_rows(rows, summary, log, fmt_time, fmt_ratio)
+    if args.only in (None, "sweep"):
+        sys.path.insert(0, HERE)
+        from compare_sweep import sweep_rows
+        sweep_rows(rows, summary, log, fmt_time, fmt_ratio)
     elapsed = time.perf_counter() - start
     end_load = machine_info()["load"]
 
@@ -622,8 +629,9 @@ def parse_args(argv):
                     help="use the environment as it is (no pip install, no build)")
     ap.add_argument("--no-build", action="store_true", help="install the PyPI packages but do not rebuild lugre")
     ap.add_argument("--no-cli", action="store_true", help="skip the `lugre` CLI rows (and its build)")
-    ap.add_argument("--only", choices=("simulation", "rainflow", "dynamics"),
-                    help="run only the simulation cases, the rainflow counting or the closed-loop dynamics")
+    ap.add_argument("--only", choices=("simulation", "rainflow", "dynamics", "sweep"),
+                    help="run only the simulation cases, the rainflow counting, the closed-loop dynamics "
+                         "or the steady-state sweep")
     ap.add_argument("--quick", action="store_true",
                     help="a smoke test: 10 / 2 periods, 10^5 and 10^6 samples, rtol 1e-6 and 1e-10")
     ap.add_argument("--rtols", type=lambda s: [float(v) for v in s.split(",")], default=None,

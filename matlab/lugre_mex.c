@@ -337,6 +337,38 @@ static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     return struct_of(4, names, v);
 }
 
+/* lugre_sweep(amplitudes, frequencies, params, offset, tol): one column per name of
+ * lugre_sweep_column, one row per point (amplitude-major). */
+static mxArray *sweep_struct(int nrhs, const mxArray *prhs[]) {
+    size_t na = 0, nf = 0;
+    const double *a = vector(prhs[0], "amplitudes", &na);
+    const double *f = vector(prhs[1], "frequencies", &nf);
+    double offset = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "offset") : 0.0;
+    double tol = nrhs > 4 && !mxIsEmpty(prhs[4]) ? scalar(prhs[4], "tol") : 0.0;
+    LugreModel *m = model_of(nrhs > 2 ? prhs[2] : NULL);
+    /* The request checked (values, grid size) before the table is allocated: with no room
+     * the call stops at the buffer check, after every other one. */
+    LugreStatus pre = lugre_sweep(m, a, na, f, nf, offset, tol, NULL, 0);
+    if (pre != LUGRE_STATUS_BUFFER_TOO_SMALL) {
+        lugre_model_free(m);
+        check(pre);
+    }
+    size_t rows = na * nf;
+    double *table = doubles(rows * LUGRE_SWEEP_COLUMNS);
+    LugreStatus st = lugre_sweep(m, a, na, f, nf, offset, tol, table, rows);
+    lugre_model_free(m);
+    check(st);
+    const char *names[LUGRE_SWEEP_COLUMNS];
+    mxArray *v[LUGRE_SWEEP_COLUMNS];
+    for (size_t c = 0; c < LUGRE_SWEEP_COLUMNS; c++) {
+        names[c] = lugre_sweep_column(c);
+        v[c] = mxCreateDoubleMatrix(rows, 1, mxREAL);
+        double *p = mxGetPr(v[c]);
+        for (size_t r = 0; r < rows; r++) p[r] = table[r * LUGRE_SWEEP_COLUMNS + c];
+    }
+    return struct_of(LUGRE_SWEEP_COLUMNS, names, v);
+}
+
 static mxArray *dynamics_scenario(int nrhs, const mxArray *prhs[]) {
     char name[32];
     if (!mxIsChar(prhs[0]) || mxGetString(prhs[0], name, sizeof name) != 0)
@@ -718,6 +750,9 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     } else if (strcmp(cmd, "simulate") == 0) {
         if (args < 2) fail("lugre_simulate(t, x, params, z0): t and x are needed");
         plhs[0] = simulate_struct(args, a);
+    } else if (strcmp(cmd, "sweep") == 0) {
+        if (args < 2) fail("lugre_sweep(amplitudes, frequencies, params, offset, tol): amplitudes and frequencies are needed");
+        plhs[0] = sweep_struct(args, a);
     } else if (strcmp(cmd, "dynamics") == 0) {
         if (args == 1 && mxIsStruct(a[0])) {
             plhs[0] = dynamics_request(a[0]);

@@ -99,6 +99,16 @@ function failures = test_lugre()
   [F2, z2] = lugre_friction_step(x(4:end), diff(t(3:end)), p, z(2), x(3));
   failures += expect(isequal(z2, z(3:end)), 'friction_step: a run continued');
 
+  % The steady-state sweep: the CLI's numbers to the last digit, amplitude-major.
+  w = lugre_sweep([1e-6 1e-5], [0.1 1], struct('preset', 'canudas1995'));
+  j = cli('sweep --preset canudas1995 --amplitudes 1e-6,1e-5 --frequencies 0.1,1 --json');
+  failures += expect(isequal(w.amplitude, [1e-6; 1e-6; 1e-5; 1e-5]) && isequal(w.frequency, [0.1; 1; 0.1; 1]), ...
+                     'sweep: the grid''s order');
+  failures += expect(isequal(w.dissipation, numbers(j, 'dissipation')) && isequal(w.phase, numbers(j, 'phase')), ...
+                     'sweep: the CLI''s energies and phases');
+  failures += raises(@() lugre_sweep(0, 1), 'amplitudes: amplitude must be a finite number > 0, got 0');
+  failures += raises(@() lugre_sweep(1e-6, [1 NaN]), 'frequencies: frequency must be a finite number > 0, got NaN');
+
   % Bad input: a MATLAB error with lugre's message, and Octave goes on.
   failures += raises(@() lugre_loop([0 NaN 1]), 'u(2) must be a finite number, got NaN');
   failures += raises(@() lugre_loop('abc'), 'u must be numeric or logical, got a char array');

@@ -305,6 +305,20 @@ function got = mex_answer(c)
       got = fit_answer(f);
     case 'dynamics'
       got = dynamics_answer(f);
+    case 'sweep'
+      r = lugre_sweep(numbers(f.amplitudes), numbers(f.frequencies), params_of(field_or(f, 'model', struct()), classes), ...
+                      field_or(f, 'offset', 0), field_or(f, 'tol', []));
+      names = fieldnames(r);
+      points = cell(1, numel(r.amplitude));
+      for i = 1:numel(points)
+        p = struct();
+        for k = 1:numel(names)
+          p.(names{k}) = r.(names{k})(i);
+        end
+        points{i} = p;
+      end
+      got = struct();
+      got.points = points;
     otherwise
       error('conformance:case', 'the MEX functions have no command %s', c.command);
   end

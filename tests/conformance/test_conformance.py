@@ -238,6 +238,14 @@ def py_simulate(f):
     return {k: tolist(v) for k, v in r.items()}
 
 
+def py_sweep(f):
+    model = model_of(f.get("model")) or lugre.LuGre()
+    keywords = {name: numbers(f[name]) for name in ("offset", "tol") if name in f}
+    r = lugre.sweep(model, amplitudes=numbers(f["amplitudes"]), frequencies=numbers(f["frequencies"]), **keywords)
+    columns = [tolist(r[name]) for name in lugre.SWEEP_COLUMNS]
+    return {"points": [dict(zip(lugre.SWEEP_COLUMNS, row)) for row in zip(*columns)]}
+
+
 def py_fit(f):
     keywords = {"kind": f.get("kind", "slow"), "model": f.get("family", "lugre")}
     for name in ("t", "fix", "starts", "x0"):
@@ -266,7 +274,8 @@ def py_dynamics(f):
     return out
 
 
-PYTHON = {"loop": py_loop, "cycles": py_cycles, "simulate": py_simulate, "fit": py_fit, "dynamics": py_dynamics}
+PYTHON = {"loop": py_loop, "cycles": py_cycles, "simulate": py_simulate, "fit": py_fit, "dynamics": py_dynamics,
+          "sweep": py_sweep}
 
 
 def run_python(case):

@@ -120,7 +120,11 @@ fn ranges_loops_offset_and_csv() {
 #[test]
 fn bad_input_is_one_line_naming_the_value() {
     let base = ["sweep", "--preset", "canudas1995"];
-    let cases: [(&[&str], &str); 9] = [
+    let cases: [(&[&str], &str); 10] = [
+        (
+            &["--amplitudes", "1e300", "--frequencies", "1"],
+            "at amplitude 1e300, frequency 1: the force or the energy per cycle overflows f64 (values too large for this model)",
+        ),
         (
             &["--amplitudes", "0", "--frequencies", "1"],
             "--amplitudes: amplitude must be a finite number > 0, got 0",

@@ -31,6 +31,11 @@ typedef struct LugreParams {
   double beta;
 } LugreParams;
 
+// The columns of a row of [`lugre_sweep`]'s table, in order: amplitude, frequency,
+// dissipation, work, stored_energy_change, peak_force, stiffness, damping, gain, phase (rad),
+// a1, b1 (`lugre::sweep::COLUMNS`).
+#define LUGRE_SWEEP_COLUMNS 12
+
 // The LuGre family of [`lugre_parameter_name`] and [`LugreFitResult::family`].
 #define LUGRE_FAMILY_LUGRE 0
 
@@ -305,6 +310,26 @@ enum LugreStatus lugre_simulate(const struct LugreModel *model,
                                 double z0,
                                 double *z_out,
                                 double *force_out);
+
+// The name of column `index` of [`lugre_sweep`]'s table ("amplitude", "frequency", ...;
+// static, the core's names), or NULL past the last column.
+const char *lugre_sweep_column(size_t index);
+
+// The periodic steady state under `u = offset + A sin(2 pi f t)` for every amplitude with
+// every frequency (as `lugre sweep`): the fixed point of the period map, in parallel on all
+// cores. Row `i n_frequencies + j` of `table` (row-major, [`LUGRE_SWEEP_COLUMNS`] doubles a
+// row) is `amplitudes[i]` with `frequencies[j]`; `table` holds `rows` rows (at least
+// `n_amplitudes n_frequencies`). `tol` is the integrator's relative tolerance (0: the default
+// 1e-12).
+enum LugreStatus lugre_sweep(const struct LugreModel *model,
+                             const double *amplitudes,
+                             size_t n_amplitudes,
+                             const double *frequencies,
+                             size_t n_frequencies,
+                             double offset,
+                             double tol,
+                             double *table,
+                             size_t rows);
 
 // A friction element at rest at displacement 0 with bristle deflection `z0`, for a host that
 // advances it step by step ([`lugre_element_step`]).

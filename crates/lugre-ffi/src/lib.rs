@@ -618,6 +618,79 @@ pub extern "C" fn lugre_simulate(
     })
 }
 
+/// The columns of a row of [`lugre_sweep`]'s table, in order: amplitude, frequency,
+/// dissipation, work, stored_energy_change, peak_force, stiffness, damping, gain, phase (rad),
+/// a1, b1 (`lugre::sweep::COLUMNS`).
+pub const LUGRE_SWEEP_COLUMNS: usize = 12;
+const _: () = assert!(LUGRE_SWEEP_COLUMNS == lugre::sweep::COLUMNS.len());
+
+/// The name of column `index` of [`lugre_sweep`]'s table ("amplitude", "frequency", ...;
+/// static, the core's names), or NULL past the last column.
+#[no_mangle]
+pub extern "C" fn lugre_sweep_column(index: usize) -> *const c_char {
+    static NAMES: std::sync::OnceLock<Vec<CString>> = std::sync::OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        lugre::sweep::COLUMNS
+            .iter()
+            .map(|n| CString::new(*n).expect("no NUL in a column name"))
+            .collect()
+    });
+    names.get(index).map_or(std::ptr::null(), |n| n.as_ptr())
+}
+
+/// The periodic steady state under `u = offset + A sin(2 pi f t)` for every amplitude with
+/// every frequency (as `lugre sweep`): the fixed point of the period map, in parallel on all
+/// cores. Row `i n_frequencies + j` of `table` (row-major, [`LUGRE_SWEEP_COLUMNS`] doubles a
+/// row) is `amplitudes[i]` with `frequencies[j]`; `table` holds `rows` rows (at least
+/// `n_amplitudes n_frequencies`). `tol` is the integrator's relative tolerance (0: the default
+/// 1e-12).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn lugre_sweep(
+    model: *const LugreModel,
+    amplitudes: *const f64,
+    n_amplitudes: usize,
+    frequencies: *const f64,
+    n_frequencies: usize,
+    offset: f64,
+    tol: f64,
+    table: *mut f64,
+    rows: usize,
+) -> LugreStatus {
+    guard(|| {
+        let m = handle(model, "model")?;
+        // As given: the core judges every value (`amplitudes: amplitude must be a finite
+        // number > 0, got NaN`, as every front end says it).
+        let a = values(amplitudes, n_amplitudes, "amplitudes")?.to_vec();
+        let f = values(frequencies, n_frequencies, "frequencies")?.to_vec();
+        let named = |name: &str, e: lugre::SweepError| {
+            fail(LugreStatus::InvalidArgument, format!("{name}: {e}"))
+        };
+        let mut r = lugre::sweep::Request::new(a, f).map_err(|e| match e {
+            lugre::SweepError::NotPositive {
+                what: "frequency", ..
+            } => named("frequencies", e),
+            lugre::SweepError::NotPositive { .. } => named("amplitudes", e),
+            e => e.into(),
+        })?;
+        r = r.with_offset(offset).map_err(|e| named("offset", e))?;
+        if tol != 0.0 {
+            r = r.with_tolerance(
+                lugre::Tolerance::new(tol)
+                    .map_err(|e| fail(LugreStatus::InvalidArgument, format!("tol: {e}")))?,
+            );
+        }
+        capacity(r.points(), rows)?;
+        if table.is_null() {
+            return Err(fail(LugreStatus::NullPointer, "table is NULL"));
+        }
+        let sweep = r.run(&m.model, None)?;
+        let flat: Vec<f64> = sweep.points.iter().flat_map(|p| p.values()).collect();
+        output(table, &flat);
+        Ok(())
+    })
+}
+
 /// A friction element at rest at displacement 0 with bristle deflection `z0`, for a host that
 /// advances it step by step ([`lugre_element_step`]).
 #[no_mangle]

@@ -774,3 +774,83 @@ fn a_dynamics_request_is_the_cores() {
     lugre_motion_free(m);
     lugre_dynamics_free(d);
 }
+
+#[test]
+fn sweep_through_the_abi_is_the_cores() {
+    let m = table1();
+    let (a, f) = ([1e-6, 1e-4], [0.1, 10.0]);
+    let mut table = vec![0.0; 4 * LUGRE_SWEEP_COLUMNS];
+    let status = lugre_sweep(
+        m,
+        a.as_ptr(),
+        2,
+        f.as_ptr(),
+        2,
+        0.0,
+        0.0,
+        table.as_mut_ptr(),
+        4,
+    );
+    assert_eq!(status, LugreStatus::Ok, "{}", last_error());
+    let model = lugre::LuGre::from_params(lugre::LuGreParams::canudas_de_wit_1995()).unwrap();
+    let core = lugre::sweep::Request::new(a.to_vec(), f.to_vec())
+        .unwrap()
+        .run(&model, None)
+        .unwrap();
+    let want: Vec<f64> = core.points.iter().flat_map(|p| p.values()).collect();
+    assert_eq!(table, want);
+    for (i, name) in lugre::sweep::COLUMNS.iter().enumerate() {
+        assert_eq!(
+            unsafe { CStr::from_ptr(lugre_sweep_column(i)) }.to_str(),
+            Ok(*name)
+        );
+    }
+    assert!(lugre_sweep_column(LUGRE_SWEEP_COLUMNS).is_null());
+    let zero = [0.0];
+    let status = lugre_sweep(
+        m,
+        zero.as_ptr(),
+        1,
+        f.as_ptr(),
+        2,
+        0.0,
+        0.0,
+        table.as_mut_ptr(),
+        4,
+    );
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert_eq!(
+        last_error(),
+        "amplitudes: amplitude must be a finite number > 0, got 0"
+    );
+    let status = lugre_sweep(
+        m,
+        a.as_ptr(),
+        2,
+        f.as_ptr(),
+        2,
+        0.0,
+        0.0,
+        table.as_mut_ptr(),
+        3,
+    );
+    assert_eq!(status, LugreStatus::BufferTooSmall);
+    let status = lugre_sweep(
+        m,
+        a.as_ptr(),
+        2,
+        f.as_ptr(),
+        2,
+        0.0,
+        1e-20,
+        table.as_mut_ptr(),
+        4,
+    );
+    assert_eq!(status, LugreStatus::InvalidArgument);
+    assert!(
+        last_error().starts_with("tol: the tolerance must be"),
+        "{}",
+        last_error()
+    );
+    lugre_model_free(m);
+}

@@ -12,6 +12,7 @@ mod loops;
 mod models;
 mod read;
 mod simulate;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -45,6 +46,8 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
         "DYNAMICS_FIELDS",
         lugre::dynamics::Field::ALL.map(|f| f.name()),
     )?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add("SWEEP_COLUMNS", lugre::sweep::COLUMNS)?;
     m.add_function(wrap_pyfunction!(read::read, m)?)?;
     // The core's tables: the models' parameters, the columns of cycles and sampled loops.
     m.add("PARAMETERS", models::parameter_table(m.py())?)?;

@@ -544,12 +544,14 @@ pub enum SweepError {
     },
     #[error("the input is not periodic: it ends at u = {last}, not where it starts (u = {first})", first = num(*.first), last = num(*.last))]
     NotPeriodic { first: f64, last: f64 },
-    #[error("at amplitude {amplitude}, frequency {frequency}: {source}", amplitude = num(*.amplitude), frequency = num(*.frequency))]
+    #[error("at amplitude {amplitude}, frequency {frequency}: {reason}", amplitude = num(*.amplitude), frequency = num(*.frequency))]
     AtPoint {
         amplitude: f64,
         frequency: f64,
-        source: SimulateError,
+        reason: SimulateError,
     },
+    #[error("at amplitude {amplitude}, frequency {frequency}: the force or the energy per cycle overflows f64 (values too large for this model)", amplitude = num(*.amplitude), frequency = num(*.frequency))]
+    Overflow { amplitude: f64, frequency: f64 },
     #[error(transparent)]
     Simulate(#[from] SimulateError),
 }

@@ -66,9 +66,7 @@ pub(crate) struct SweepArgs {
     /// The sine's mean value [m] (default 0): it shifts the loops along u, nothing else.
     #[arg(long, value_name = "U0", allow_hyphen_values = true, value_parser = Real, help_heading = "Input")]
     pub(crate) offset: Option<f64>,
-    /// Relative tolerance of the integrator, in [1e-14, 1) (default 1e-12: energies to about
-    /// 1e-11).
-    #[arg(long, value_name = "TOL", value_parser = Real, help_heading = "Sweep")]
+    #[arg(long, value_name = "TOL", value_parser = Real, help_heading = "Sweep", help = tol_help())]
     pub(crate) tol: Option<f64>,
     /// Each point's steady-state loop (t, u, F) at N >= 2 evenly spaced times over one
     /// period, both ends included, in --json.
@@ -76,6 +74,14 @@ pub(crate) struct SweepArgs {
     pub(crate) loops: Option<usize>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
+}
+
+/// `--tol`'s help, with the core's default.
+fn tol_help() -> String {
+    format!(
+        "Relative tolerance of the integrator, in [1e-14, 1) (default {}: energies to about ten times that)",
+        sig(sweep::Request::DEFAULT_TOLERANCE, 3)
+    )
 }
 
 /// The front end's spelling of a request error: the flag, then the core's message.
@@ -222,8 +228,12 @@ fn print_table(
     writeln!(w, "{}", choice.describe(Needed::All))?;
     writeln!(
         w,
-        "Input: u = {} + A sin(2 pi f t); {} amplitudes x {} frequencies = {} points; periodic steady state (fixed point of the period map), tol = {}",
-        sig(r.offset(), 10),
+        "Input: u = {}A sin(2 pi f t); {} amplitudes x {} frequencies = {} points; periodic steady state (fixed point of the period map), tol = {}",
+        if r.offset() == 0.0 {
+            String::new()
+        } else {
+            format!("{} + ", sig(r.offset(), 10))
+        },
         r.amplitudes().len(),
         r.frequencies().len(),
         s.points.len(),

@@ -35,6 +35,7 @@ pub fn run(case: &Case) -> Outcome {
         "element" => element(f),
         "fit" => fit(f),
         "dynamics" => dynamics(f),
+        "sweep" => sweep(f),
         other => panic!("{}: the C ABI has no command '{other}'", case.id),
     }
 }
@@ -243,6 +244,41 @@ fn simulate(f: &Fields) -> Outcome {
         y.as_mut_ptr(),
     ))?;
     Ok(json!({"t": t, "u": x, "z": z, "y": y}))
+}
+
+/// The steady-state sweep: `lugre_sweep`'s table as `{"points": [{column: value}, ...]}`.
+fn sweep(f: &Fields) -> Outcome {
+    let m = model(f.get("model"))?;
+    let (a, fr) = (
+        f.numbers("amplitudes").unwrap(),
+        f.numbers("frequencies").unwrap(),
+    );
+    let rows = a.len() * fr.len();
+    let mut table = vec![0.0; rows * LUGRE_SWEEP_COLUMNS];
+    status(lugre_sweep(
+        m.0,
+        a.as_ptr(),
+        a.len(),
+        fr.as_ptr(),
+        fr.len(),
+        f.num("offset").unwrap_or(0.0),
+        f.num("tol").unwrap_or(0.0),
+        table.as_mut_ptr(),
+        rows,
+    ))?;
+    let points: Vec<Value> = table
+        .chunks(LUGRE_SWEEP_COLUMNS)
+        .map(|row| {
+            let point: serde_json::Map<String, Value> = (0..LUGRE_SWEEP_COLUMNS)
+                .map(|c| {
+                    let name = unsafe { std::ffi::CStr::from_ptr(lugre_sweep_column(c)) };
+                    (name.to_string_lossy().into_owned(), json!(row[c]))
+                })
+                .collect();
+            Value::Object(point)
+        })
+        .collect();
+    Ok(json!({ "points": points }))
 }
 
 /// The friction element from rest at `x[0]` (time 0) through `x[1..]`, each over its step

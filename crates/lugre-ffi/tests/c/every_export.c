@@ -127,6 +127,15 @@ static void simulation_and_element(const LugreModel *m) {
     double times[] = {10, 20}, pos[2];
     OK(lugre_dynamics_scenario("stick-slip", 0, times, 2, pos, NULL, NULL, NULL));
     CHECK(pos[0] > 0 && pos[1] > pos[0]);
+    const double amplitudes[] = {1e-6, 1e-5}, frequencies[] = {0.1, 1, 10};
+    double table[6 * LUGRE_SWEEP_COLUMNS];
+    OK(lugre_sweep(m, amplitudes, 2, frequencies, 3, 0, 0, table, 6));
+    /* Row 4 is A = 1e-5, f = 1: dissipation (column 2) > 0, phase (column 9) in (0, pi). */
+    const double *row = table + 4 * LUGRE_SWEEP_COLUMNS;
+    CHECK(row[0] == 1e-5 && row[1] == 1 && row[2] > 0 && row[9] > 0 && row[9] < 3.15);
+    CHECK(lugre_sweep(m, amplitudes, 2, frequencies, 3, 0, 0, table, 5) == LUGRE_STATUS_BUFFER_TOO_SMALL);
+    CHECK(strcmp(lugre_sweep_column(2), "dissipation") == 0);
+    CHECK(lugre_sweep_column(LUGRE_SWEEP_COLUMNS) == NULL);
 }
 
 static void fits(void) {

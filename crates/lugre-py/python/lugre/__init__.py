@@ -32,6 +32,11 @@ Dask), and tables go straight into pandas (``lugre.cycles(...).to_frame()``,
 ``lugre.dynamics(...).to_frame()``, ``hl.sample(n).to_frame()``,
 ``pandas.DataFrame(model.simulate(...))``, ``pandas.DataFrame(hl.loop_table)``).
 
+Steady-state sweeps (``lugre sweep``): ``lugre.sweep(model, amplitudes=..., frequencies=...,
+offset=None, tol=None, loop_samples=None)`` returns the energy per cycle, peak force, equivalent
+stiffness and damping and describing function of the periodic steady state under each sine of
+the grid (``help(lugre.sweep)``).
+
 Data files: ``lugre.read(path, columns=None, scale=None, delimiter=None, *, roles=None)``
 returns a file's columns by role ("t", "u", "F", ...) with their units, read by the same reader
 as the ``lugre`` command's ``--input`` (see ``help(lugre.read)``).
@@ -51,6 +56,7 @@ from ._lugre import (
     DYNAMICS_FIELDS,
     LOOP_COLUMNS,
     PARAMETERS,
+    SWEEP_COLUMNS,
     Curve,
     Dahl,
     HysteresisLoop,
@@ -62,6 +68,7 @@ from ._lugre import (
     cycles,
     dynamics,
     fit,
+    sweep,
 )
 from ._read import Columns, read
 
@@ -72,6 +79,7 @@ __all__ = [
     "Columns",
     "LOOP_COLUMNS",
     "PARAMETERS",
+    "SWEEP_COLUMNS",
     "Curve",
     "CyclesResult",
     "Dahl",
@@ -87,6 +95,8 @@ __all__ = [
     "dynamics",
     "fit",
     "read",
+    "sweep",
+    "SweepResult",
 ]
 
 
@@ -118,6 +128,26 @@ class CyclesResult(dict):
         import pandas as pd
 
         return pd.DataFrame(self["cycles"])
+
+
+class SweepResult(dict):
+    """What ``lugre.sweep`` returns: a dict with one numpy array per column of
+    ``SWEEP_COLUMNS`` (one entry per point, amplitude-major), and "loops" (a list of dicts t, u,
+    force) when ``loop_samples`` was given; ``to_frame()`` gives the columns as a
+    ``pandas.DataFrame``. Picklable like any dict."""
+
+    __slots__ = ()
+
+    def columns(self):
+        """The points' columns, in the order of ``lugre sweep --csv``, as a dict of arrays."""
+        return {key: self[key] for key in SWEEP_COLUMNS}
+
+    def to_frame(self):
+        """The points as a ``pandas.DataFrame``, one row per point (pandas is imported here,
+        only)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.columns())
 
 
 class DynamicsResult(dict):

@@ -438,6 +438,33 @@ DYNAMICS_FIELDS: Tuple[str, ...]
 PARAMETERS: Dict[str, Dict[str, Dict[str, Any]]]
 CYCLE_COLUMNS: Tuple[str, ...]
 LOOP_COLUMNS: Tuple[str, ...]
+SWEEP_COLUMNS: Tuple[str, ...]
+
+
+class SweepResult(Dict[str, Any]):
+    """What ``sweep`` returns: one array per column of ``SWEEP_COLUMNS`` (one entry per point,
+    amplitude-major) and "loops" (a list of dicts t, u, force) when ``loop_samples`` was
+    given."""
+
+    def columns(self) -> Dict[str, np.ndarray]: ...
+    def to_frame(self) -> Any: ...
+
+
+def sweep(
+    model: Union[LuGre, Dahl],
+    *,
+    amplitudes: Union[str, _Reals],
+    frequencies: Union[str, _Reals],
+    offset: Optional[float] = None,
+    tol: Optional[float] = None,
+    loop_samples: Optional[int] = None,
+) -> SweepResult:
+    """The periodic steady state under u = offset + A sin(2 pi f t) for every amplitude with
+    every frequency (``lugre sweep``): energy dissipated per cycle, peak force, equivalent
+    stiffness and damping, describing function (gain, phase in radians). amplitudes and
+    frequencies: numbers > 0, or "a,b,c" / "start:stop:count" (log spacing). Defaults: the core
+    request's (offset 0, tol 1e-12, no loops)."""
+    ...
 
 
 class DynamicsResult(Dict[str, Any]):

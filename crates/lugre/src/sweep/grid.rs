@@ -271,7 +271,7 @@ impl Request {
         Ok(Sweep { points })
     }
 
-    /// Point `i`, its failure named by its amplitude and frequency.
+    /// Point `i` (its failure names its amplitude and frequency).
     fn compute<G: VelocityFn, F: VelocityFn>(
         &self,
         model: &LuGre<G, F>,
@@ -286,10 +286,5 @@ impl Request {
             self.tol,
             self.loop_samples,
         )
-        .map_err(|source| SweepError::AtPoint {
-            amplitude,
-            frequency,
-            source,
-        })
     }
 }

@@ -3,8 +3,9 @@
 
 use super::orbit::{LoopSamples, SineOrbit};
 use super::COLUMNS;
+use crate::error::SweepError;
 use crate::model::{LuGre, VelocityFn};
-use crate::simulate::{SimulateError, Tolerance};
+use crate::simulate::Tolerance;
 use std::f64::consts::PI;
 
 /// The periodic steady state under `u = offset + A sin(2 pi f t)`: energies over one period,
@@ -52,8 +53,14 @@ impl Point {
         offset: f64,
         tol: Tolerance,
         loop_samples: usize,
-    ) -> Result<Point, SimulateError> {
-        let orbit = SineOrbit::new(model, amplitude, frequency, offset, tol)?;
+    ) -> Result<Point, SweepError> {
+        let orbit = SineOrbit::new(model, amplitude, frequency, offset, tol).map_err(|reason| {
+            SweepError::AtPoint {
+                amplitude,
+                frequency,
+                reason,
+            }
+        })?;
         let s = orbit.sums;
         let k = orbit.copies();
         let period = orbit.sine().period();
@@ -102,7 +109,7 @@ impl Point {
     }
 
     /// No number of the point is NaN or infinite (a model whose forces overflow).
-    fn check(&self) -> Result<(), SimulateError> {
+    fn check(&self) -> Result<(), SweepError> {
         let finite_loop = self
             .samples
             .as_ref()
@@ -110,9 +117,9 @@ impl Point {
         if self.values().iter().all(|v| v.is_finite()) && finite_loop {
             Ok(())
         } else {
-            Err(SimulateError::Overflow {
-                what: "the force",
-                t: 0.0,
+            Err(SweepError::Overflow {
+                amplitude: self.amplitude,
+                frequency: self.frequency,
             })
         }
     }
