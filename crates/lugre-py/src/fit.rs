@@ -23,6 +23,8 @@ use crate::convert::{
 };
 use crate::models::{PyDahl, PyLuGre};
 
+mod lab;
+
 /// A rough upper estimate of the fit's working memory per sample, in floats (the Jacobian of
 /// up to 7 columns and the optimizer's copies of it, the output, residuals and the simulation's
 /// state), reserved once before the core allocates: a failed allocation there would abort the
@@ -41,6 +43,31 @@ const FLOATS_PER_SAMPLE: usize = 48;
 ///   freed) from rate-dependent samples (t, u, f), on the exact simulation of eq. 1 from the
 ///   initial state x0 (given, not fitted), from `starts` start points (the first from the
 ///   data, then sigma0 and vs scaled by 4 or 1/4); the best end point wins.
+///
+/// The lab's experiments (Canudas de Wit et al. 1995; Olsson et al. 1998), LuGre only, as
+/// `lugre fit --fit stribeck|presliding|staged`:
+///
+/// * kind="stribeck": fc, fs, vs, sigma2 (free=["beta"] adds beta; sigma0, sigma1 do not
+///   enter) from the steady-state curve F_ss(v) = g(v) sgn(v) + sigma2 v of constant-velocity
+///   runs: a record (u, f, t=t), or (None, f, t=t, v=v), whose runs are found without help
+///   (each point the mean force over a run's steady part, weighted by its standard error), or
+///   a table of runs (None, f, v=v) without t (one velocity and steady force a run). beta is
+///   held: give it (model=lugre.LuGre(beta=2) or fix={"beta": 2}). "fitted" and "residuals"
+///   are at the points; "points" holds their columns {"v", "F", "stderr"} ("stderr" None for
+///   a table) and "plateaus" the runs found in a record ({"skipped", "velocity_noise",
+///   "runs": {"v", "F", "stderr", "sd", "samples", "t_start", "t_end"}}; None for a table).
+/// * kind="presliding": sigma0, sigma1 from a presliding test (u, f, t=t) from rest (small
+///   reversals below break-away), the Stribeck curve held at the model's values
+///   (model=lugre.LuGre(fc=..., fs=..., vs=..., beta=..., sigma2=...), or fix={...}); a test
+///   that breaks away raises ValueError.
+/// * kind="staged": the two in turn, the second holding the first's curve, then, with (u, f,
+///   t=t), a full fit of that rate-dependent record (read as the C1 cubic through its samples)
+///   started from them. The stages' records are keywords: stribeck= (t, u, F), a table (v, F)
+///   or the columns of lugre.read (a mapping by role "t", "u" or "v", "F"), and presliding=
+///   (t, u, F) or lugre.read's columns; u and f are None without the final fit. The result:
+///   "parameters" (each with the "stage" that determined it: "stribeck", "presliding" or
+///   "full"), "fixed", "values" (the identified model), "model", "kind" and "stages" (each
+///   stage's dict as its kind returns it, without "values").
 ///
 /// Arguments:
 ///
@@ -77,7 +104,7 @@ const FLOATS_PER_SAMPLE: usize = 48;
 ///   J^T J), "correlation" (float64 array, one row and column per fitted parameter, in the
 ///   order of "parameters"), "iterations", "evaluations", "starts", "converged",
 ///   "termination" (why the iteration stopped), "turning_points" (how many a slow fit found in
-///   the data; None for a full fit), "model" ("lugre" or "dahl"), "kind" ("slow" or "full");
+///   the data; None for a full fit), "model" ("lugre" or "dahl"), "kind" (its label);
 /// * "fitted": the model's output at every sample and "residuals" = f - fitted (float64
 ///   arrays).
 ///
@@ -110,8 +137,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, stribeck=None, presliding=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, stribeck=None, presliding=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -130,8 +157,40 @@ pub fn fit<'py>(
     interpolate: Option<&Bound<'py, PyAny>>,
     normal: Option<&Bound<'py, PyAny>>,
     v: Option<&Bound<'py, PyAny>>,
+    stribeck: Option<&Bound<'py, PyAny>>,
+    presliding: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
+    let kind = match given(kind) {
+        Some(k) => kind_arg(&k)?,
+        None => FitKind::Slow,
+    };
+    let spec = build_spec(
+        given(model),
+        given(fix),
+        given(free),
+        given(start),
+        given(bounds),
+    )?;
+    if lab::is_lab(kind) {
+        let cubic = crate::simulate::cubic_arg(given(interpolate).as_ref())?;
+        let args = lab::Args {
+            u: given(Some(u)),
+            f: given(Some(f)),
+            t: given(t),
+            v: given(v),
+            stribeck: given(stribeck),
+            presliding: given(presliding),
+            others: [
+                ("x0", given(x0)),
+                ("starts", given(starts)),
+                ("interpolate='cubic'", given(interpolate).filter(|_| cubic)),
+                ("normal", given(normal)),
+            ],
+        };
+        return lab::fit(py, kind, &spec, args);
+    }
+    lab::refuse_records(kind, [("stribeck", stribeck), ("presliding", presliding)])?;
     let t = match given(t) {
         Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
         None => None,
@@ -178,17 +237,6 @@ pub fn fit<'py>(
             e => PyValueError::new_err(format!("normal: {e}")),
         })?;
     }
-    let kind = match given(kind) {
-        Some(k) => kind_arg(&k)?,
-        None => FitKind::Slow,
-    };
-    let spec = build_spec(
-        given(model),
-        given(fix),
-        given(free),
-        given(start),
-        given(bounds),
-    )?;
 
     let x0 = given(x0).map(|x| real(&x, "x0")).transpose()?;
     let cubic = crate::simulate::cubic_arg(given(interpolate).as_ref())?;
@@ -248,15 +296,7 @@ pub fn fit<'py>(
         })
         .map_err(|e| explain(py, e))?;
 
-    if !report.converged {
-        // `lugre fit` warns on stderr and reports the point; Python's way is a warning.
-        let message = CString::new(format!(
-            "the fit did not converge ({}); the best point found is reported",
-            report.termination
-        ))
-        .unwrap_or_default();
-        PyErr::warn(py, &py.get_type::<PyRuntimeWarning>(), &message, 1)?;
-    }
+    warn_unconverged(py, &report)?;
     let d = report_dict(py, &report, &spec, &f, normal.is_some())?;
     if motion.is_some() {
         // The displacement the velocity record integrates to, at the samples.
@@ -265,17 +305,46 @@ pub fn fit<'py>(
     Ok(d)
 }
 
-/// `kind`: "slow" or "full" (case-insensitive).
-fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
-    let s = text(obj, "kind", "'slow' or 'full'")?;
-    match s.trim().to_ascii_lowercase().as_str() {
-        "slow" => Ok(FitKind::Slow),
-        "full" => Ok(FitKind::Full),
-        _ => Err(PyValueError::new_err(format!(
-            "kind must be 'slow' or 'full', got {}",
-            obj.repr()?
-        ))),
+/// A fit that ran out of evaluations at a usable point: `lugre fit` warns on stderr and
+/// reports the point; Python's way is a warning.
+fn warn_unconverged(py: Python<'_>, report: &FitReport) -> PyResult<()> {
+    if !report.converged {
+        let message = CString::new(format!(
+            "the fit did not converge ({}); the best point found is reported",
+            report.termination
+        ))
+        .unwrap_or_default();
+        PyErr::warn(py, &py.get_type::<PyRuntimeWarning>(), &message, 1)?;
     }
+    Ok(())
+}
+
+/// The kinds of fit `kind` names (the labels of `lugre fit --fit`), in the message's order.
+const KINDS: [FitKind; 5] = [
+    FitKind::Slow,
+    FitKind::Full,
+    FitKind::Stribeck,
+    FitKind::Presliding,
+    FitKind::Staged,
+];
+
+/// `kind`: "slow", "full", "stribeck", "presliding" or "staged" (case-insensitive).
+fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
+    let names: Vec<String> = KINDS.iter().map(|k| format!("'{}'", k.label())).collect();
+    let expected = format!(
+        "{} or {}",
+        names[..names.len() - 1].join(", "),
+        names[names.len() - 1]
+    );
+    let s = text(obj, "kind", &expected)?;
+    let s = s.trim().to_ascii_lowercase();
+    KINDS
+        .into_iter()
+        .find(|k| k.label() == s)
+        .ok_or_else(|| match obj.repr() {
+            Ok(r) => PyValueError::new_err(format!("kind must be {expected}, got {r}")),
+            Err(e) => e,
+        })
 }
 
 /// A `str` argument, else a `TypeError` saying what was expected.

@@ -47,11 +47,13 @@ def assert_gil_released():
 
 @pytest.fixture(scope="session")
 def lugre_exe():
-    """The `lugre` command built from this checkout: the newest of the debug and release
-    builds (scripts/test.sh runs the Rust tests, which build it, first)."""
+    """The `lugre` command built from this checkout: $LUGRE_EXE if set, else the newest of the
+    debug and release builds (scripts/test.sh runs the Rust tests, which build it, first)."""
     import os
     import pathlib
 
+    if os.environ.get("LUGRE_EXE"):
+        return os.environ["LUGRE_EXE"]
     root = pathlib.Path(__file__).resolve().parents[3]
     target = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", root / "target"))
     builds = [p for p in (target / "debug" / "lugre", target / "release" / "lugre") if p.exists()]

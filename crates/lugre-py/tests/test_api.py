@@ -268,16 +268,23 @@ def test_dynamics_takes_the_core_request_fields():
 
 def test_the_fit_result_stub_has_every_key():
     """The keys of lugre.fit's result are FitResult's in the stub (a key added to one and not
-    the other fails here)."""
+    the other fails here): the required ones for a slow fit, all of them (the NotRequired ones
+    too) for a Stribeck fit."""
     import ast
     import importlib.resources
 
     tree = ast.parse(importlib.resources.files("lugre").joinpath("__init__.pyi").read_text())
     cls = next(n for n in tree.body if isinstance(n, ast.ClassDef) and n.name == "FitResult")
-    stub = {n.target.id for n in cls.body if isinstance(n, ast.AnnAssign)}
+    keys = [n for n in cls.body if isinstance(n, ast.AnnAssign)]
+    stub = {n.target.id for n in keys}
+    optional = {n.target.id for n in keys if isinstance(n.annotation, ast.Subscript)
+                and getattr(n.annotation.value, "id", None) == "NotRequired"}
     rho, u, y = lugre.LuGre(sigma0=6).loop([0, 1, 0.5, 1.5]).sample(401)
     r = lugre.fit(u, y + 1e-3 * np.sin(np.arange(len(u))))
-    assert set(r) == stub
+    assert set(r) == stub - optional
+    v = np.array([-1e-2, -3e-3, -1e-3, -3e-4, 3e-4, 1e-3, 3e-3, 1e-2])
+    f = np.sign(v) * (1 + 0.5 * np.exp(-(v / 1e-3) ** 2)) + 0.4 * v
+    assert set(lugre.fit(None, f, v=v, kind="stribeck", fix={"beta": 2})) == stub
 
 
 def test_presets_are_the_cores():

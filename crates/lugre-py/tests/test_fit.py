@@ -300,7 +300,7 @@ REQUEST_ERRORS = [
     (dict(start={"sigma0": 2}, fix={"sigma0": 3}), "sigma0 is given both in start and in fix (a fixed parameter keeps the value in fix)"),
     (dict(x0=0.1), "x0 applies to the full fit (add kind='full')"),
     (dict(starts=2), "starts applies to the full fit (add kind='full')"),
-    (dict(kind="medium"), "kind must be 'slow' or 'full', got 'medium'"),
+    (dict(kind="medium"), "kind must be 'slow', 'full', 'stribeck', 'presliding' or 'staged', got 'medium'"),
     (dict(model="coulomb"), "model must be 'lugre', 'dahl', a lugre.LuGre or a lugre.Dahl, got 'coulomb'"),
 ]
 
@@ -419,7 +419,7 @@ def test_no_warning_when_converged(example4):
 
 def test_signature_docstring_and_example():
     assert str(inspect.signature(lugre.fit)) == (
-        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None)"
+        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, stribeck=None, presliding=None)"
     )
     doc = lugre.fit.__doc__
     for words in ("lugre fit", "kind=\"slow\"", "ci95", "correlation", "ValueError", "TypeError"):

@@ -402,6 +402,8 @@ pub enum FitError {
         parameters: usize,
         needed: usize,
     },
+    #[error("the table of constant-velocity runs has {v} velocities and {f} forces: give one steady force per velocity")]
+    SteadyTableLengths { v: usize, f: usize },
     #[error("the record has no constant-velocity run: the velocity never stays constant (within its noise) over {min_run} samples or more in its {samples} samples; record runs at constant velocities, or give a table v,F of their steady forces")]
     NoPlateau { samples: usize, min_run: usize },
     #[error("the constant-velocity runs are too short: the longest has {longest} samples and each needs at least {needed} once its transient is dropped; sample faster or run each velocity longer")]

@@ -24,6 +24,7 @@ import os
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import NotRequired
 
 __version__: str
 
@@ -320,6 +321,40 @@ class FitEstimate(TypedDict):
     at_bound: bool
 
 @type_check_only
+class StagedEstimate(FitEstimate):
+    """One parameter of a staged fit, with the stage that determined it (a dict at runtime)."""
+
+    stage: Literal["stribeck", "presliding", "full"]
+
+@type_check_only
+class SteadyPoints(TypedDict):
+    """The points of a Stribeck fit: one a constant-velocity run (a dict at runtime)."""
+
+    v: _Floats
+    F: _Floats
+    stderr: Optional[_Floats]  # None for a table (v, F)
+
+@type_check_only
+class PlateauRuns(TypedDict):
+    """The steady part of each run found in a record, as columns (a dict at runtime)."""
+
+    v: _Floats
+    F: _Floats
+    stderr: _Floats
+    sd: _Floats
+    samples: npt.NDArray[np.uint64]
+    t_start: _Floats
+    t_end: _Floats
+
+@type_check_only
+class Plateaus(TypedDict):
+    """The constant-velocity runs found in a record (a dict at runtime)."""
+
+    skipped: int
+    velocity_noise: float
+    runs: PlateauRuns
+
+@type_check_only
 class FitResult(TypedDict):
     """The result of lugre.fit (a dict at runtime)."""
 
@@ -339,18 +374,61 @@ class FitResult(TypedDict):
     termination: str
     turning_points: Optional[int]
     model: Literal["lugre", "dahl"]
-    kind: Literal["slow", "full"]
+    kind: Literal["slow", "full", "stribeck", "presliding"]
     normal_force: bool
     fitted: _Floats
-    residuals: _Floats
+    residuals: _Floats  # kind="stribeck": at the points
+    # kind="stribeck" only: the points fitted, and the runs found in a record (None: a table).
+    points: NotRequired[SteadyPoints]
+    plateaus: NotRequired[Optional[Plateaus]]
 
+@type_check_only
+class StagedResult(TypedDict):
+    """The result of lugre.fit(kind="staged") (a dict at runtime)."""
+
+    parameters: dict[str, StagedEstimate]
+    fixed: dict[str, float]
+    values: dict[str, float]
+    stages: dict[str, FitResult]  # "stribeck", "presliding", "full"; without "values"
+    model: Literal["lugre"]
+    kind: Literal["staged"]
+
+# A record of the staged fit: (t, u, F), a table of runs (v, F) (stribeck= only), or columns by
+# role ("t", "u" or "v", "F") as lugre.read returns them.
+_Record = Union[Tuple[_Reals, _Reals, _Reals], Tuple[_Reals, _Reals], Mapping[str, _Reals]]
+
+@overload
+def fit(
+    u: Optional[_Reals],
+    f: Optional[_Reals],
+    *,
+    t: Optional[_Reals] = None,
+    model: Union[Literal["lugre"], str, LuGre] = "lugre",
+    kind: Literal["staged"],
+    fix: Union[str, Iterable[str], Mapping[str, _Real]] = (),
+    free: Union[str, Iterable[str]] = (),
+    start: Optional[Mapping[str, _Real]] = None,
+    bounds: Optional[Mapping[str, Tuple[Optional[_Real], Optional[_Real]]]] = None,
+    x0: None = None,
+    starts: None = None,
+    interpolate: Literal["linear"] = "linear",
+    normal: None = None,
+    v: Optional[_Reals] = None,
+    stribeck: _Record,
+    presliding: _Record,
+) -> StagedResult:
+    """The staged identification: the Stribeck fit of the constant-velocity runs `stribeck`,
+    the presliding fit of `presliding`, then, with (t, u, f), a full fit started from them."""
+    ...
+
+@overload
 def fit(
     u: Optional[_Reals],
     f: _Reals,
     *,
     t: Optional[_Reals] = None,
     model: Union[Literal["lugre", "dahl"], str, LuGre, Dahl] = "lugre",
-    kind: Union[Literal["slow", "full"], str] = "slow",
+    kind: Union[Literal["slow", "full", "stribeck", "presliding"], str] = "slow",
     fix: Union[str, Iterable[str], Mapping[str, _Real]] = (),
     free: Union[str, Iterable[str]] = (),
     start: Optional[Mapping[str, _Real]] = None,
@@ -360,6 +438,8 @@ def fit(
     interpolate: Literal["linear", "cubic"] = "linear",
     normal: Optional[_Reals] = None,
     v: Optional[_Reals] = None,
+    stribeck: None = None,
+    presliding: None = None,
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""

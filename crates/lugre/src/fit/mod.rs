@@ -94,7 +94,7 @@ pub use plateaus::{find_plateaus, Motion, Plateau, Plateaus, MIN_RUN, MIN_STEADY
 pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
 pub use staged::{fit_staged, StagedReport};
-pub use stribeck::{fit_stribeck, steady_force, SteadyPoint};
+pub use stribeck::{fit_stribeck, steady_force, table_points, SteadyPoint};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;

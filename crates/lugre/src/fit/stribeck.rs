@@ -56,6 +56,21 @@ pub fn steady_force(p: &LuGreParams, v: f64) -> f64 {
     (p.fc + (p.fs - p.fc) * e) * v.signum() + p.sigma2 * v
 }
 
+/// The points of a table of constant-velocity runs, one velocity and steady force a run (no
+/// standard errors: every point weighs the same).
+pub fn table_points(v: &[f64], f: &[f64]) -> Result<Vec<SteadyPoint>, FitError> {
+    if v.len() != f.len() {
+        return Err(FitError::SteadyTableLengths {
+            v: v.len(),
+            f: f.len(),
+        });
+    }
+    Ok(v.iter()
+        .zip(f)
+        .map(|(&v, &f)| SteadyPoint { v, f, stderr: None })
+        .collect())
+}
+
 /// Indices of the LuGre parameters in the family's vector (the table's order).
 const SIGMA2: usize = index_of(&Parameter::LUGRE, Parameter::Sigma2);
 const FC: usize = index_of(&Parameter::LUGRE, Parameter::Fc);
@@ -416,5 +431,17 @@ mod tests {
         assert!(matches!(e, FitError::NotForFamily { .. }), "{e}");
         let r = spec().resolve(FitKind::Stribeck).unwrap();
         assert_eq!(r.free, vec![SIGMA2, FC, FS, VS]);
+        let e = table_points(&[1.0, -1.0], &[1.0]).unwrap_err();
+        assert_eq!(e, FitError::SteadyTableLengths { v: 2, f: 1 });
+        assert!(e.to_string().contains("2 velocities and 1 forces"), "{e}");
+        let p = table_points(&[1.0], &[2.0]).unwrap();
+        assert_eq!(
+            p,
+            vec![SteadyPoint {
+                v: 1.0,
+                f: 2.0,
+                stderr: None
+            }]
+        );
     }
 }

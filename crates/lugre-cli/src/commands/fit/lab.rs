@@ -16,8 +16,8 @@
 
 use anyhow::{anyhow, bail, Result};
 use lugre::fit::{
-    find_plateaus, fit_presliding, fit_stribeck, FitError, FitReport, FitSpec, Motion, Plateaus,
-    SteadyPoint,
+    find_plateaus, fit_presliding, fit_stribeck, table_points, FitError, FitReport, FitSpec,
+    Motion, Plateaus, SteadyPoint,
 };
 use std::io::Write;
 use std::path::Path;
@@ -156,11 +156,7 @@ pub(super) fn read_steady(args: &FitArgs, path: &Path) -> Result<Steady> {
         table.take(&Role::F).unwrap_or_default(),
     );
     if !timed {
-        let points = x
-            .into_iter()
-            .zip(f)
-            .map(|(v, f)| SteadyPoint { v, f, stderr: None })
-            .collect();
+        let points = table_points(&x, &f).map_err(|e| anyhow!("{}: {e}", path.display()))?;
         return Ok(Steady {
             points,
             plateaus: None,
