@@ -174,3 +174,53 @@ fn bad_input_is_one_line_naming_the_value() {
         rejects(&all, want);
     }
 }
+
+/// `--plot` draws the five panels (SVG and PNG alike), with the units of `--units` or the
+/// preset's SI in the labels.
+#[test]
+fn the_figure_has_its_panels_and_units() {
+    let dir = TempDir::new("sweep-plot");
+    let (svg, png) = (dir.join("sweep.svg"), dir.join("sweep.png"));
+    let args = |path: &str, units: &[&'static str]| -> Vec<String> {
+        let mut a: Vec<String> = [
+            "sweep",
+            "--preset",
+            "canudas1995",
+            "--amplitudes",
+            "1e-6:1e-4:3",
+            "--frequencies",
+            "0.1,10",
+            "--plot",
+            path,
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        a.extend(units.iter().map(|s| s.to_string()));
+        a
+    };
+    let run = |a: Vec<String>| accepts(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    run(args(&svg, &[]));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for label in [
+        "steady-state loops at f = 0.1 Hz",
+        "friction against velocity",
+        "energy dissipated per cycle",
+        "describing function: gain",
+        "input u [m]",
+        "energy per cycle [J]",
+        "A = 1e-5",
+        "f = 10 Hz",
+    ] {
+        assert!(text.contains(label), "{label} not in the figure");
+    }
+    run(args(&png, &["--units", "u=mm,F=N"]));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    rejects(
+        &args(&svg, &["--units", "t=s"])
+            .iter()
+            .map(String::as_str)
+            .collect::<Vec<_>>(),
+        "--units: unknown quantity 't' (give u=UNIT or F=UNIT)",
+    );
+}

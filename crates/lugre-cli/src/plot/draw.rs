@@ -430,13 +430,25 @@ mod tests {
             super::super::BLACK,
         )
         .label("y");
-        let mut f = Figure::new("x", "y").curve(c).log_x();
-        f.log_y = true;
-        let f = f.in_log_space();
+        let f = Figure::new("x", "y")
+            .curve(c)
+            .log_x()
+            .log_y()
+            .in_log_space();
         // The point with y = 0 splits the curve; one legend entry stays.
         assert_eq!(f.curves.len(), 2);
         assert_eq!(f.curves[0].points, [(0.0, 0.0)]);
         assert_eq!(f.curves[1].points, [(2.0, 2.0), (3.0, 3.0)]);
         assert_eq!(f.curves[1].label, None);
+    }
+
+    #[test]
+    fn the_colour_scale_runs_dark_to_light() {
+        let lightness =
+            |c: RGBColor| 0.3 * f64::from(c.0) + 0.59 * f64::from(c.1) + 0.11 * f64::from(c.2);
+        let colors: Vec<RGBColor> = (0..6).map(|k| super::super::scale_color(k, 6)).collect();
+        assert_eq!(colors[0], RGBColor(68, 1, 84));
+        assert!(colors.windows(2).all(|w| lightness(w[1]) > lightness(w[0])));
+        assert_eq!(super::super::scale_color(0, 1), RGBColor(68, 1, 84));
     }
 }

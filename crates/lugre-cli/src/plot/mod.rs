@@ -43,6 +43,37 @@ pub(crate) const GREY: RGBColor = RGBColor(80, 80, 80);
 /// The palette in order of use for a family of curves.
 pub(crate) const PALETTE: [RGBColor; 5] = [BLUE, RED, GREEN, ORANGE, BLACK];
 
+/// Anchors of a sequential colour scale (viridis: perceptually uniform, lightness rising
+/// monotonically, so the order survives grey-scale printing and colour-blind readers).
+const SCALE: [RGBColor; 9] = [
+    RGBColor(68, 1, 84),
+    RGBColor(71, 45, 123),
+    RGBColor(59, 82, 139),
+    RGBColor(44, 114, 142),
+    RGBColor(33, 145, 140),
+    RGBColor(40, 174, 128),
+    RGBColor(94, 201, 98),
+    RGBColor(173, 220, 48),
+    RGBColor(253, 231, 37),
+];
+
+/// The colour of `k` of `n` curves ordered by a parameter (an amplitude, a frequency): dark to
+/// light along the sequential scale, stopping short of its lightest yellow, which does not
+/// show on white.
+pub(crate) fn scale_color(k: usize, n: usize) -> RGBColor {
+    let f = if n > 1 {
+        0.85 * k as f64 / (n - 1) as f64
+    } else {
+        0.0
+    };
+    let x = f.clamp(0.0, 1.0) * (SCALE.len() - 1) as f64;
+    let i = (x.floor() as usize).min(SCALE.len() - 2);
+    let w = x - i as f64;
+    let mix = |a: u8, b: u8| (f64::from(a) + w * (f64::from(b) - f64::from(a))).round() as u8;
+    let (a, b) = (SCALE[i], SCALE[i + 1]);
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum LineStyle {
     Solid,
@@ -155,6 +186,12 @@ impl Figure {
     /// A logarithmic x axis.
     pub(crate) fn log_x(mut self) -> Self {
         self.log_x = true;
+        self
+    }
+
+    /// A logarithmic y axis.
+    pub(crate) fn log_y(mut self) -> Self {
+        self.log_y = true;
         self
     }
 

@@ -13,13 +13,21 @@ use lugre::Tolerance;
 use std::io::Write;
 use std::sync::Mutex;
 
-use crate::args::{check_files, ModelArgs, ModelChoice, Needed, OutputArgs};
+use crate::args::{check_files, ModelArgs, ModelChoice, Needed, OutputArgs, PlotArgs};
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{Real, Whole};
+
+mod plot;
+
+/// The help of `--plot` for this command.
+const PLOT_HELP: &str = "Draw the steady-state loops of the amplitudes at the first frequency \
+    (in the (u, F) and (u', F) planes, coloured by amplitude), the energy per cycle and the \
+    describing function's gain and phase against the amplitude (one curve per frequency), to an \
+    SVG or PNG file";
 
 /// The help of `--json` for this command.
 fn json_help() -> String {
@@ -42,7 +50,11 @@ fn csv_help() -> String {
 }
 
 #[derive(Args, Debug)]
-#[command(mut_arg("json", |a| a.help(json_help())), mut_arg("csv", |a| a.help(csv_help())))]
+#[command(
+    mut_arg("json", |a| a.help(json_help())),
+    mut_arg("csv", |a| a.help(csv_help())),
+    mut_arg("plot", |a| a.help(PLOT_HELP))
+)]
 pub(crate) struct SweepArgs {
     #[command(flatten)]
     pub(crate) model: ModelArgs,
@@ -72,8 +84,14 @@ pub(crate) struct SweepArgs {
     /// period, both ends included, in --json.
     #[arg(long = "loops", value_name = "N", value_parser = Whole(2), help_heading = "Output")]
     pub(crate) loops: Option<usize>,
+    /// Units of the displacement and the force in the figure's labels, e.g. u=mm,F=N
+    /// (default: m and N for a preset, none otherwise; the values are the model's as given).
+    #[arg(long, value_name = "u=UNIT,F=UNIT", help_heading = "Output")]
+    pub(crate) units: Option<String>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
+    #[command(flatten)]
+    pub(crate) plot: PlotArgs,
 }
 
 /// `--tol`'s help, with the core's default.
@@ -90,11 +108,15 @@ fn flagged(flag: &str, e: SweepError) -> anyhow::Error {
 }
 
 pub(crate) fn run(args: &SweepArgs) -> Result<()> {
-    check_files(None, &args.output, None)?;
+    check_files(None, &args.output, Some(&args.plot))?;
     let choice = args.model.build()?;
     let model = choice.lugre();
+    let units = plot::Units::parse(args.units.as_deref(), args.model.preset.is_some())?;
     let request = build(args)?;
     let sweep = compute(&request, &model)?;
+    if let Some(path) = &args.plot.path {
+        plot::figure(&model, &request, &sweep, &units)?.save(path)?;
+    }
     report(args, &choice, &request, &sweep)
 }
 
