@@ -10,7 +10,7 @@ use std::ffi::CString;
 use lugre::error::NormalForceError;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow, Family, FitError, FitKind, FitReport, FitSpec,
-    FullOptions, CUBIC_READING_TOL,
+    FullOptions, Noise, PositionHandling, CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
@@ -91,6 +91,12 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// "residuals" are coefficients, "normal_force" is True; "values" keeps the model's names
 /// (lugre.LuGre(**r["values"]) is the model per newton).
 ///
+/// `noise` ("auto", default, or "off"): "auto" estimates the position and force noise from the
+/// samples (third differences) and, in a full fit, reads an equally spaced noisy displacement
+/// as the smooth motion nearest the samples (as `lugre fit --noise`); the result's "noise" is
+/// {"position", "force", "handling", "description"} (None with "off"), and "warnings" lists,
+/// in words, why the estimates or intervals may not be trusted.
+///
 /// `interpolate="cubic"` (full fit): the samples of a smooth motion read as the C1 cubic through
 /// them, subdivided to 1e-9 of their range (as `lugre fit --interpolate cubic`); the residual
 /// stays at the samples.
@@ -110,8 +116,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto')"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -130,6 +136,7 @@ pub fn fit<'py>(
     interpolate: Option<&Bound<'py, PyAny>>,
     normal: Option<&Bound<'py, PyAny>>,
     v: Option<&Bound<'py, PyAny>>,
+    noise: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
     let t = match given(t) {
@@ -198,6 +205,10 @@ pub fn fit<'py>(
         ));
     }
     let starts = given(starts).map(|s| count(&s, "starts")).transpose()?;
+    let noise = match given(noise) {
+        Some(n) => noise_arg(&n)?,
+        None => Noise::Auto,
+    };
     let options = match kind {
         FitKind::Slow => {
             // As `lugre fit` refuses --x0 and --starts without --fit full.
@@ -233,7 +244,10 @@ pub fn fit<'py>(
         // `options` is set for the full fit only, which has times.
         .detach(|| match (&options, &t) {
             (Some((x0, starts)), Some(t)) => {
-                let options = FullOptions::default().with_x0(*x0).with_starts(*starts);
+                let options = FullOptions::default()
+                    .with_x0(*x0)
+                    .with_starts(*starts)
+                    .with_noise(noise);
                 if let Some(m) = &motion {
                     fit_full_smooth(&spec, m, &f, options)
                 } else if cubic {
@@ -276,6 +290,21 @@ fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
             obj.repr()?
         ))),
     }
+}
+
+/// `noise`: "auto" or "off" (the core's names, case-insensitive).
+fn noise_arg(obj: &Bound<'_, PyAny>) -> PyResult<Noise> {
+    let expected = format!(
+        "one of {}",
+        Noise::NAMES.map(|n| format!("'{n}'")).join(", ")
+    );
+    let s = text(obj, "noise", &expected)?;
+    Noise::from_name(&s).ok_or_else(|| {
+        PyValueError::new_err(match obj.repr() {
+            Ok(r) => format!("noise must be {expected}, got {r}"),
+            Err(_) => format!("noise must be {expected}"),
+        })
+    })
 }
 
 /// A `str` argument, else a `TypeError` saying what was expected.
@@ -590,6 +619,23 @@ fn report_dict<'py>(
     d.set_item("model", r.family.label().to_ascii_lowercase())?;
     d.set_item("kind", r.kind.label())?;
     d.set_item("normal_force", normal)?;
+    match &r.noise {
+        Some(n) => {
+            let nd = PyDict::new(py);
+            nd.set_item("position", n.position)?;
+            nd.set_item("force", n.force)?;
+            nd.set_item("handling", n.handling.key())?;
+            nd.set_item("description", n.handling.describe())?;
+            match n.handling {
+                PositionHandling::Smoothed { lambda } => nd.set_item("lambda", lambda)?,
+                PositionHandling::Gate { gate } => nd.set_item("gate", gate)?,
+                _ => {}
+            }
+            d.set_item("noise", nd)?;
+        }
+        None => d.set_item("noise", py.None())?,
+    }
+    d.set_item("warnings", r.warnings.clone())?;
     d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
     d.set_item("residuals", vec_out(py, r.residuals(f)))?;
     Ok(d)

@@ -27,6 +27,12 @@
 //! forward sensitivities of the simulation's recursion (eqs. X1-X4 in `fit/full.rs`) and
 //! several starts (the first from the data; the best end point wins).
 //!
+//! **Noise** ([`noise`], eqs. N1-N2). Both fits estimate the position and force noise from
+//! the record's third differences and report them ([`FitReport::noise`]); the full fit reads
+//! an equally spaced noisy displacement as the smooth motion nearest the samples (a smoothing
+//! spline whose residual equals the position noise), since the least-squares fit treats the
+//! input as exact. [`Noise::Off`] takes the samples as given.
+//!
 //! Both minimise `sum_i (y_i(p) - F_i)^2` with the `levenberg-marquardt` crate (MINPACK's
 //! trust-region method). Bounds `lo < p < hi` (default `0 < p < inf`: every parameter is
 //! positive) are built into the variables it moves: `p = lo + exp(theta)` (the
@@ -80,12 +86,14 @@
 
 mod full;
 mod lm;
+pub mod noise;
 mod slow;
 mod spec;
 mod stats;
 
 pub use crate::error::{FitError, Unidentified, Why};
 pub use lm::FitProgress;
+pub use noise::{NoiseLevels, PositionHandling};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
 
 use crate::input::{check_finite, check_increasing};
@@ -140,6 +148,12 @@ pub struct FitReport {
     /// The model's output at every sample: `y°(rho_i)` from [`crate::HysteresisLoop`] (slow fit)
     /// or the exact simulation from [`Simulator`] (full fit).
     pub fitted: Vec<f64>,
+    /// The noise levels estimated in the record and how the fit used them (`None` when the
+    /// noise handling was switched off, [`Noise::Off`]).
+    pub noise: Option<NoiseLevels>,
+    /// Why the estimates or their intervals may not be trusted, in words (empty: no reason
+    /// found).
+    pub warnings: Vec<String>,
 }
 
 impl FitReport {
@@ -178,6 +192,7 @@ impl FitReport {
 pub struct FullOptions<'p> {
     x0: f64,
     starts: usize,
+    noise: Noise,
     progress: Option<&'p mut dyn FnMut(&FitProgress)>,
 }
 
@@ -186,7 +201,33 @@ impl Default for FullOptions<'_> {
         Self {
             x0: 0.0,
             starts: Self::DEFAULT_STARTS,
+            noise: Noise::Auto,
             progress: None,
+        }
+    }
+}
+
+/// Whether a fit estimates the record's noise and takes it into account ([`noise`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Noise {
+    /// Estimate the position and force noise (N1); the full fit reads a noisy displacement as
+    /// the smooth motion nearest the samples (N2), the slow fit gates its reversals.
+    #[default]
+    Auto,
+    /// Use the samples as given.
+    Off,
+}
+
+impl Noise {
+    /// The names the front ends take.
+    pub const NAMES: [&'static str; 2] = ["auto", "off"];
+
+    /// `"auto"` or `"off"` (case-insensitive).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name.trim().to_ascii_lowercase().as_str() {
+            "auto" => Some(Noise::Auto),
+            "off" => Some(Noise::Off),
+            _ => None,
         }
     }
 }
@@ -196,6 +237,7 @@ impl std::fmt::Debug for FullOptions<'_> {
         f.debug_struct("FullOptions")
             .field("x0", &self.x0)
             .field("starts", &self.starts)
+            .field("noise", &self.noise)
             .field("progress", &self.progress.is_some())
             .finish()
     }
@@ -221,6 +263,13 @@ impl<'p> FullOptions<'p> {
         self
     }
 
+    /// Whether the record's noise is estimated and taken into account (default
+    /// [`Noise::Auto`]).
+    pub fn with_noise(mut self, noise: Noise) -> Self {
+        self.noise = noise;
+        self
+    }
+
     /// Called after every model evaluation with the fit's progress (default: nothing).
     pub fn with_progress(mut self, progress: &'p mut dyn FnMut(&FitProgress)) -> Self {
         self.progress = Some(progress);
@@ -233,6 +282,10 @@ impl<'p> FullOptions<'p> {
 
     pub fn starts(&self) -> usize {
         self.starts
+    }
+
+    pub fn noise(&self) -> Noise {
+        self.noise
     }
 }
 
@@ -337,6 +390,11 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
     let fitted = outcome.y.clone();
     let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1)?;
     report.turning_points = Some(sl.turning_points().len());
+    report.noise = Some(NoiseLevels {
+        position: noise::noise_level(u),
+        force: noise::noise_level(f),
+        handling: PositionHandling::AsGiven,
+    });
     Ok(report)
 }
 
@@ -386,8 +444,17 @@ pub fn fit_full_smooth(
     for (&k, &fk) in knots.iter().zip(f) {
         rf[k] = fk;
     }
-    let mut report = fit_full(spec, rt, ru, &rf, options)?;
+    let noise = options.noise;
+    // The cubic reading takes the samples as exact: the noise is only reported.
+    let mut report = fit_full(spec, rt, ru, &rf, options.with_noise(Noise::Off))?;
     report.fitted = knots.iter().map(|&k| report.fitted[k]).collect();
+    if noise == Noise::Auto {
+        report.noise = Some(NoiseLevels {
+            position: noise::noise_level(motion.samples().1),
+            force: noise::noise_level(f),
+            handling: PositionHandling::AsGiven,
+        });
+    }
     Ok(report)
 }
 
@@ -404,6 +471,7 @@ pub fn fit_full(
     let FullOptions {
         x0,
         starts,
+        noise,
         mut progress,
     } = options;
     let mut progress = |p: &FitProgress| {
@@ -432,6 +500,15 @@ pub fn fit_full(
             most: FullOptions::MAX_STARTS,
         });
     }
+    // The noise, and the displacement the fit runs on (smoothed where it is noisy).
+    let (smoothed, levels) = match noise {
+        Noise::Auto => {
+            let (x, levels) = noise::prepare_full(t, u, f);
+            (x, Some(levels))
+        }
+        Noise::Off => (None, None),
+    };
+    let u = smoothed.as_deref().unwrap_or(u);
     let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
     let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };
     let (t_m, u_m, f_m) = (pick(t), pick(u), pick(f));
@@ -511,6 +588,7 @@ pub fn fit_full(
     let mut r = report(FitKind::Full, &resolved, outcome, pick(&out.y), f, starts)?;
     // The fitted curve at every row, measured or not.
     r.fitted = out.y;
+    r.noise = levels;
     Ok(r)
 }
 
@@ -592,6 +670,8 @@ fn report(
         termination: outcome.reason(),
         turning_points: None,
         fitted,
+        noise: None,
+        warnings: Vec::new(),
     })
 }
 

@@ -18,7 +18,7 @@ use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec,
-    FullOptions, CUBIC_READING_TOL,
+    FullOptions, Noise, CUBIC_READING_TOL,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -116,10 +116,26 @@ pub(crate) struct FitArgs {
         help_heading = "Fit"
     )]
     pub(crate) starts: Option<usize>,
+    /// Noise in the record: 'auto' (default) estimates the position and force noise from the
+    /// samples (third differences) and, in a full fit, reads an equally spaced noisy
+    /// displacement as the smooth motion nearest the samples; 'off' takes the samples as exact.
+    #[arg(long, value_name = "auto|off", value_parser = parse_noise, help_heading = "Fit")]
+    pub(crate) noise: Option<Noise>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
     #[command(flatten)]
     pub(crate) plot: PlotArgs,
+}
+
+/// `--noise`: one of the core's names.
+fn parse_noise(text: &str) -> Result<Noise, String> {
+    Noise::from_name(text).ok_or_else(|| {
+        format!(
+            "expected one of {}, got {}",
+            Noise::NAMES.join(", "),
+            crate::fmt::quoted(&crate::fmt::excerpt(text))
+        )
+    })
 }
 
 /// The measured record.
@@ -157,6 +173,7 @@ struct Request<'a> {
     full: Option<(f64, usize)>,
     /// The full fit's reading of the displacement between samples.
     cubic: bool,
+    noise: Noise,
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
@@ -230,6 +247,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         record,
         full,
         cubic,
+        noise: args.noise.unwrap_or_default(),
     })
 }
 
@@ -257,6 +275,7 @@ fn compute(r: &Request) -> Result<FitReport> {
             let options = FullOptions::default()
                 .with_x0(*x0)
                 .with_starts(*starts)
+                .with_noise(r.noise)
                 .with_progress(&mut report);
             let result = if let Some(motion) = &record.velocity {
                 fit_full_smooth(&r.spec, motion, &record.f, options).map_err(with_file)

@@ -2,7 +2,7 @@
 //! table and the JSON document.
 
 use anyhow::Result;
-use lugre::fit::{Family, FitKind, FitReport};
+use lugre::fit::{Family, FitKind, FitReport, PositionHandling};
 use lugre::model::{normal, Parameter};
 use std::io::Write;
 use std::path::Path;
@@ -243,8 +243,20 @@ pub(super) fn print_table(
         "{} iterations, {} model evaluations: {}",
         r.iterations, r.evaluations, r.termination
     )?;
+    if let Some(n) = &r.noise {
+        writeln!(
+            w,
+            "noise estimated in the record: position {}, force {} (standard deviations); {}",
+            sig(n.position, 4),
+            sig(n.force, 4),
+            n.handling.describe()
+        )?;
+    }
     if r.estimates.len() > 1 {
         print_correlation(w, r, normal)?;
+    }
+    for warning in &r.warnings {
+        writeln!(w, "warning: {warning}")?;
     }
     Ok(())
 }
@@ -335,6 +347,37 @@ pub(super) fn write_json<W: Write>(
         j.raw(",\"turning_points\":")?;
         j.int(n)?;
     }
+    if let Some(n) = &r.noise {
+        j.raw(",\"noise\":{\"position\":")?;
+        num_or_null(&mut j, n.position)?;
+        j.raw(",\"force\":")?;
+        num_or_null(&mut j, n.force)?;
+        j.raw(&format!(
+            ",\"handling\":{},\"description\":{}",
+            quote(n.handling.key()),
+            quote(&n.handling.describe())
+        ))?;
+        match n.handling {
+            PositionHandling::Smoothed { lambda } => {
+                j.raw(",\"lambda\":")?;
+                num_or_null(&mut j, lambda)?;
+            }
+            PositionHandling::Gate { gate } => {
+                j.raw(",\"gate\":")?;
+                num_or_null(&mut j, gate)?;
+            }
+            _ => {}
+        }
+        j.raw("}")?;
+    }
+    j.raw(",\"warnings\":[")?;
+    for (k, warning) in r.warnings.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&quote(warning))?;
+    }
+    j.raw("]")?;
     j.raw(&format!(",\"normal_force\":{normal}"))?;
     j.raw(",\"input\":")?;
     j.raw(&quote(&path.display().to_string()))?;
