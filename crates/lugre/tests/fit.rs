@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::Lcg;
+use common::{Gauss, Lcg};
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{
@@ -22,17 +22,6 @@ fn held(held: &[(&str, f64)]) -> FitSpec {
         .fold(FitSpec::new(Family::LuGre), |s, &(name, v)| {
             s.set(name, v).unwrap().fix(name).unwrap()
         })
-}
-
-/// Standard normal deviates by Box-Muller.
-struct Gauss(Lcg);
-
-impl Gauss {
-    fn next(&mut self) -> f64 {
-        // 1 - unit() is in (0, 1]: the logarithm is finite.
-        let r = (-2.0 * (1.0 - self.0.unit()).ln()).sqrt();
-        r * (std::f64::consts::TAU * self.0.unit()).cos()
-    }
 }
 
 /// The RMS of `f`.

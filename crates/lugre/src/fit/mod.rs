@@ -40,7 +40,10 @@
 //! the data (force plateaus, the relaxation after reversals, the steady sliding force against
 //! speed, linear least squares for `sigma1` and `sigma2`), so no guess is needed; a value given
 //! with [`FitSpec::set`] is used instead. A parameter whose true value is 0 (e.g. `sigma2` in
-//! the paper's examples) must be fixed: fitted parameters are positive.
+//! the paper's examples) goes to its bound: it is reported *at its bound* ([`Estimate::at_bound`],
+//! a warning in [`FitReport::warnings`]) with an interval that reaches the bound, and the other
+//! estimates are given as they are with it held there; the same for a user's bound the data
+//! push against (`vs` bounded below its true value). Fix it at 0 to fit without it.
 //!
 //! **Uncertainty** (eqs. S1-S2 in `fit/stats.rs`): the linearised covariance
 //! `s^2 (J^T J)^-1` at the optimum, `s^2 = RSS / (m - p)`, and 95 % intervals
@@ -621,7 +624,11 @@ fn report(
     let values = resolved.free_values_of(&outcome.values);
     let data_norm = f.iter().map(|v| v * v).sum::<f64>().sqrt();
     let rss: f64 = f.iter().zip(&fitted).map(|(f, y)| (f - y) * (f - y)).sum();
-    let unc = stats::uncertainty(&outcome.jac, &names, &values, rss, data_norm)?;
+    let start_values = resolved.free_values();
+    let at_bound: Vec<bool> = (0..names.len())
+        .map(|j| resolved.bounds[j].reached(values[j], start_values[j]))
+        .collect();
+    let unc = stats::uncertainty(&outcome.jac, &names, &values, &at_bound, rss, data_norm)?;
     let converged = outcome.converged();
     if !converged
         && !matches!(
@@ -631,15 +638,24 @@ fn report(
     {
         return Err(not_converged(resolved, &outcome, m));
     }
-    let estimates = (0..names.len())
+    let estimates: Vec<Estimate> = (0..names.len())
         .map(|j| {
             let half = unc.t * unc.stderr[j];
+            let b = resolved.bounds[j];
+            let mut ci95 = [b.clamp(values[j] - half), b.clamp(values[j] + half)];
+            if at_bound[j] {
+                // The interval of an estimate at its bound reaches the bound.
+                match bound_of(values[j], b) {
+                    x if x == b.lo => ci95[0] = b.lo,
+                    _ => ci95[1] = b.hi,
+                }
+            }
             Estimate {
                 name: names[j],
                 value: values[j],
                 stderr: unc.stderr[j],
-                ci95: [values[j] - half, values[j] + half],
-                at_bound: resolved.bounds[j].at_bound(values[j]),
+                ci95,
+                at_bound: at_bound[j],
             }
         })
         .collect();
@@ -652,6 +668,7 @@ fn report(
         .filter(|i| !resolved.free.contains(i))
         .map(|i| (resolved.family.parameters()[i], resolved.values[i]))
         .collect();
+    let warnings = bound_warnings(&estimates, &resolved.bounds);
     Ok(FitReport {
         kind,
         family: resolved.family,
@@ -671,8 +688,42 @@ fn report(
         turning_points: None,
         fitted,
         noise: None,
-        warnings: Vec::new(),
+        warnings,
     })
+}
+
+/// The bound nearer `value`.
+fn bound_of(value: f64, b: Bounds) -> f64 {
+    if b.hi.is_finite() && (value - b.hi).abs() < (value - b.lo).abs() {
+        b.hi
+    } else {
+        b.lo
+    }
+}
+
+/// Each estimate at its bound, in words: the fit pushed it there, and the other estimates are
+/// those with it held at the bound.
+fn bound_warnings(estimates: &[Estimate], bounds: &[Bounds]) -> Vec<String> {
+    estimates
+        .iter()
+        .zip(bounds)
+        .filter(|(e, _)| e.at_bound)
+        .map(|(e, b)| {
+            let which = bound_of(e.value, *b);
+            format!(
+                "{} is at its bound {} (the data push it there: its interval reaches the bound, \
+                 and the other estimates are those with {} held at it; {})",
+                e.name,
+                crate::error::num(which),
+                e.name,
+                if which == 0.0 {
+                    "fix it at 0 if that is what it is".to_string()
+                } else {
+                    "widen its bounds if they were a guess".to_string()
+                }
+            )
+        })
+        .collect()
 }
 
 impl FitReport {

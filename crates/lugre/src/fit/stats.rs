@@ -26,6 +26,11 @@
 //!   from 0 nor from twice its value: e.g. `sigma1` from quasi-static data, whose effect
 //!   `sigma1 z'` is far below the noise.
 //!
+//! A parameter at one of its bounds (see [`super::FitReport`]; e.g. `sigma2 = 0` on data without
+//! viscous friction) is exempt from the first and third tests: its effect vanishes with its
+//! value, and its interval reaches the bound. Its standard error is that of (S1), the
+//! curvature of the sum of squares at the bound.
+//!
 //! Parameters without effect, and collinear ones, are set aside (as if fixed) and the rest is
 //! analysed again, so that one error names every parameter the data do not determine.
 
@@ -60,6 +65,7 @@ pub(crate) fn uncertainty(
     jac: &DMatrix<f64>,
     names: &[&'static str],
     values: &[f64],
+    at_bound: &[bool],
     rss: f64,
     data_norm: f64,
 ) -> Result<Uncertainty, FitError> {
@@ -71,7 +77,9 @@ pub(crate) fn uncertainty(
     let mut kept = Vec::new();
     for j in 0..p {
         let sensitivity = scale[j] * values[j].abs() / data_norm;
-        if sensitivity > NO_EFFECT {
+        // At its bound 0 a parameter's effect `p J_p` vanishes with `p`, not with `J_p`: it is
+        // reported at its bound, not as without effect.
+        if sensitivity > NO_EFFECT || (at_bound[j] && scale[j] > 0.0) {
             kept.push(j);
         } else {
             problems.push(Unidentified {
@@ -146,8 +154,9 @@ pub(crate) fn uncertainty(
     for a in 0..q {
         let j = kept[a];
         let relative_half_width = t * stderr[a] / values[j].abs();
-        // NaN (a zero estimate) counts as unidentifiable too.
-        if relative_half_width.is_nan() || relative_half_width >= 1.0 {
+        // NaN (a zero estimate) counts as unidentifiable too; an estimate at its bound has an
+        // interval that reaches the bound.
+        if !at_bound[j] && (relative_half_width.is_nan() || relative_half_width >= 1.0) {
             problems.push(Unidentified {
                 name: names[j],
                 value: values[j],
@@ -266,7 +275,7 @@ mod tests {
         // y = p0 + p1 x: the textbook covariance s^2 (X^T X)^-1.
         let x: Vec<f64> = (0..10).map(f64::from).collect();
         let jac = DMatrix::from_fn(10, 2, |i, j| if j == 0 { 1.0 } else { x[i] });
-        let u = uncertainty(&jac, &["p0", "p1"], &[10.0, 2.0], 8.0, 100.0).unwrap();
+        let u = uncertainty(&jac, &["p0", "p1"], &[10.0, 2.0], &[false; 2], 8.0, 100.0).unwrap();
         let s2: f64 = 8.0 / 8.0;
         // (X^T X)^-1 for x = 0..9: [[sum x^2, -sum x], [-sum x, n]] / (n sum x^2 - (sum x)^2).
         let det: f64 = 10.0 * 285.0 - 45.0 * 45.0;
@@ -295,11 +304,11 @@ mod tests {
             stderr: 0.0,
             relative_half_width: 0.0,
         });
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], 1.0, 1.0).unwrap_err();
+        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], &[false; 2], 1.0, 1.0).unwrap_err();
         assert!(e.to_string().starts_with("b cannot be identified"), "{e}");
         assert_eq!(why(e), vec![("b", no_effect)]);
         let jac = DMatrix::from_fn(10, 2, |i, _| 1.0 + i as f64);
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], 1.0, 1.0).unwrap_err();
+        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], &[false; 2], 1.0, 1.0).unwrap_err();
         assert!(
             e.to_string().starts_with("a, b cannot be identified"),
             "{e}"
@@ -319,7 +328,7 @@ mod tests {
         assert!(!text.contains("inf"), "{text}");
         // A parameter driven to 0, and another that noise swamps: both named.
         let jac = DMatrix::from_fn(10, 2, |i, j| if j == 0 { 1e-3 } else { i as f64 });
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 0.0], 1.0, 1.0).unwrap_err();
+        let e = uncertainty(&jac, &["a", "b"], &[1.0, 0.0], &[false; 2], 1.0, 1.0).unwrap_err();
         assert_eq!(why(e), vec![("a", wide), ("b", no_effect)]);
     }
 }
