@@ -9,8 +9,8 @@ use std::ffi::CString;
 
 use lugre::error::NormalForceError;
 use lugre::fit::{
-    fit_full, fit_full_smooth, fit_slow, Family, FitError, FitKind, FitReport, FitSpec,
-    FullOptions, Noise, PositionHandling, CUBIC_READING_TOL,
+    fit_full, fit_full_smooth, fit_slow_with, Family, FitError, FitKind, FitReport, FitSpec,
+    FullOptions, Noise, PositionHandling, SlowOptions, CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
@@ -97,6 +97,10 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// {"position", "force", "handling", "description"} (None with "off"), and "warnings" lists,
 /// in words, why the estimates or intervals may not be trusted.
 ///
+/// `gate` (slow fit): the noise gate on the reversals, in units of u: a turn counts once the
+/// input has come back from its extreme by at least gate (as `lugre fit --gate`); None: 8 times
+/// the estimated position noise (0 with noise="off").
+///
 /// `interpolate="cubic"` (full fit): the samples of a smooth motion read as the C1 cubic through
 /// them, subdivided to 1e-9 of their range (as `lugre fit --interpolate cubic`); the residual
 /// stays at the samples.
@@ -116,8 +120,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto')"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None, gate=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -137,6 +141,7 @@ pub fn fit<'py>(
     normal: Option<&Bound<'py, PyAny>>,
     v: Option<&Bound<'py, PyAny>>,
     noise: Option<&Bound<'py, PyAny>>,
+    gate: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
     let t = match given(t) {
@@ -209,6 +214,16 @@ pub fn fit<'py>(
         Some(n) => noise_arg(&n)?,
         None => Noise::Auto,
     };
+    let gate = given(gate).map(|g| real(&g, "gate")).transpose()?;
+    if gate.is_some() && kind == FitKind::Full {
+        return Err(PyValueError::new_err(
+            "gate applies to the slow fit (kind='slow'): the full fit simulates every turn of the input",
+        ));
+    }
+    let mut slow_options = SlowOptions::default().with_noise(noise);
+    if let Some(g) = gate {
+        slow_options = slow_options.with_gate(g);
+    }
     let options = match kind {
         FitKind::Slow => {
             // As `lugre fit` refuses --x0 and --starts without --fit full.
@@ -258,9 +273,12 @@ pub fn fit<'py>(
                     fit_full(&spec, t, &u, &f, options)
                 }
             }
-            _ => fit_slow(&spec, &u, &f),
+            _ => fit_slow_with(&spec, &u, &f, slow_options),
         })
-        .map_err(|e| explain(py, e))?;
+        .map_err(|e| match e {
+            FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
+            e => explain(py, e),
+        })?;
 
     if !report.converged {
         // `lugre fit` warns on stderr and reports the point; Python's way is a warning.

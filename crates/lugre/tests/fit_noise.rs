@@ -171,3 +171,4 @@ fn a_parameter_at_a_user_bound_is_reported_there() {
     );
     assert_eq!(r.estimates.len(), 6);
 }
+

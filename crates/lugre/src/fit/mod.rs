@@ -345,10 +345,74 @@ fn check_count(samples: usize, parameters: usize) -> Result<(), FitError> {
 /// one or more periods of a slow periodic test (the record closes from its last sample to its
 /// first; trim a start-up transient first). See the module docs.
 pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitError> {
+    fit_slow_with(spec, u, f, SlowOptions::default())
+}
+
+/// Options of the slow fit: the defaults, changed with `with_*` (checked when the fit starts).
+///
+/// ```
+/// use lugre::fit::{Noise, SlowOptions};
+/// let options = SlowOptions::default().with_gate(1e-7);
+/// assert_eq!((options.gate(), options.noise()), (Some(1e-7), Noise::Auto));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SlowOptions {
+    gate: Option<f64>,
+    noise: Noise,
+}
+
+impl SlowOptions {
+    /// The default gate in standard deviations of the estimated position noise (N1): white
+    /// noise comes back from its running extreme by 8 of them about once in 10^15 samples.
+    pub const GATE_NOISE_SIGMAS: f64 = 8.0;
+
+    /// The noise gate on the reversals, in the units of `u` (finite, `>= 0`; 0: every turn of
+    /// the samples is a reversal). Default: [`Self::GATE_NOISE_SIGMAS`] times the estimated
+    /// position noise ([`Noise::Auto`]) or 0 ([`Noise::Off`]).
+    pub fn with_gate(mut self, gate: f64) -> Self {
+        self.gate = Some(gate);
+        self
+    }
+
+    /// Whether the record's noise is estimated (and sets the default gate).
+    pub fn with_noise(mut self, noise: Noise) -> Self {
+        self.noise = noise;
+        self
+    }
+
+    /// The gate given, if any.
+    pub fn gate(&self) -> Option<f64> {
+        self.gate
+    }
+
+    pub fn noise(&self) -> Noise {
+        self.noise
+    }
+}
+
+/// [`fit_slow`] with options: the noise gate on the reversals and the noise handling.
+pub fn fit_slow_with(
+    spec: &FitSpec,
+    u: &[f64],
+    f: &[f64],
+    options: SlowOptions,
+) -> Result<FitReport, FitError> {
     check_columns(&[("u", u), ("F", f)])?;
+    if let Some(g) = options.gate {
+        if !(g.is_finite() && g >= 0.0) {
+            return Err(FitError::BadGate { value: g });
+        }
+    }
     let mut resolved = spec.resolve(FitKind::Slow)?;
     check_count(u.len(), resolved.free.len())?;
-    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None)?;
+    let levels =
+        (options.noise == Noise::Auto).then(|| (noise::noise_level(u), noise::noise_level(f)));
+    let gate = match (options.gate, levels) {
+        (Some(g), _) => g,
+        (None, Some((position, _))) => SlowOptions::GATE_NOISE_SIGMAS * position,
+        (None, None) => 0.0,
+    };
+    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None, gate)?;
     let mut coarse_iterations = 0;
     let mut coarse_evaluations = 0;
     if u.len() > COARSE_ABOVE {
@@ -358,7 +422,13 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
         let (su, sf): (Vec<f64>, Vec<f64>) = idx.iter().map(|&i| (u[i], f[i])).unzip();
         // The reversals as estimated on the full record (the thinned one has the same).
         let turning = sl.turning_points().values().to_vec();
-        let sub = slow::SlowLoop::new(resolved.family, resolved.free.clone(), &su, Some(&turning))?;
+        let sub = slow::SlowLoop::new(
+            resolved.family,
+            resolved.free.clone(),
+            &su,
+            Some(&turning),
+            gate,
+        )?;
         slow_start(&mut resolved, &sub, &sf)?;
         let (_, coarse) = minimize(
             sub,
@@ -393,10 +463,10 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
     let fitted = outcome.y.clone();
     let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1)?;
     report.turning_points = Some(sl.turning_points().len());
-    report.noise = Some(NoiseLevels {
-        position: noise::noise_level(u),
-        force: noise::noise_level(f),
-        handling: PositionHandling::AsGiven,
+    report.noise = levels.map(|(position, force)| NoiseLevels {
+        position,
+        force,
+        handling: PositionHandling::Gate { gate },
     });
     Ok(report)
 }

@@ -17,8 +17,8 @@ use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use lugre::fit::{
-    fit_full, fit_full_smooth, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec,
-    FullOptions, Noise, CUBIC_READING_TOL,
+    fit_full, fit_full_smooth, fit_slow_with, FitError, FitKind, FitProgress, FitReport, FitSpec,
+    FullOptions, Noise, SlowOptions, CUBIC_READING_TOL,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -29,7 +29,7 @@ use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
-use crate::numbers::{parse_number, Whole};
+use crate::numbers::{parse_number, Real, Whole};
 use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
@@ -121,6 +121,18 @@ pub(crate) struct FitArgs {
     /// displacement as the smooth motion nearest the samples; 'off' takes the samples as exact.
     #[arg(long, value_name = "auto|off", value_parser = parse_noise, help_heading = "Fit")]
     pub(crate) noise: Option<Noise>,
+    /// Slow fit: the noise gate on the reversals, in units of u (after --scale): a turn counts
+    /// once the input has come back from its extreme by at least H, so that noise makes no
+    /// reversals (0: every turn counts). Default: 8 times the position noise estimated in the
+    /// record (0 with --noise off).
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        value_parser = Real,
+        help_heading = "Fit"
+    )]
+    pub(crate) gate: Option<f64>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
     #[command(flatten)]
@@ -174,6 +186,7 @@ struct Request<'a> {
     /// The full fit's reading of the displacement between samples.
     cubic: bool,
     noise: Noise,
+    gate: Option<f64>,
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
@@ -199,6 +212,8 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         if args.starts.is_some() {
             bail!("--starts applies to the full fit (add --fit full)");
         }
+    } else if args.gate.is_some() {
+        bail!("--gate applies to the slow fit (the full fit simulates every turn of the input)");
     }
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
@@ -248,6 +263,7 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         full,
         cubic,
         noise: args.noise.unwrap_or_default(),
+        gate: args.gate,
     })
 }
 
@@ -267,7 +283,16 @@ fn compute(r: &Request) -> Result<FitReport> {
     Ok(match &r.full {
         // Times, if any, were checked when read; the slow loop depends on the turning points
         // alone.
-        None => fit_slow(&r.spec, &record.u, &record.f).map_err(with_file)?,
+        None => {
+            let mut options = SlowOptions::default().with_noise(r.noise);
+            if let Some(gate) = r.gate {
+                options = options.with_gate(gate);
+            }
+            fit_slow_with(&r.spec, &record.u, &record.f, options).map_err(|e| match e {
+                FitError::BadGate { .. } => anyhow!("--gate: {e}"),
+                other => with_file(other),
+            })?
+        }
         Some((x0, starts)) => {
             let t = record.times_for_full_fit(r.path)?;
             let mut progress = FitProgressBar::new();
