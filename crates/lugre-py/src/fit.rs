@@ -9,8 +9,8 @@ use std::ffi::CString;
 
 use lugre::error::NormalForceError;
 use lugre::fit::{
-    fit_full, fit_full_smooth, fit_slow_with, Family, FitError, FitKind, FitReport, FitSpec,
-    FullOptions, Noise, PositionHandling, SlowOptions, CUBIC_READING_TOL,
+    fit_full, fit_full_smooth, fit_slow_with, Covariance, Family, FitError, FitKind, FitReport,
+    FitSpec, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions, CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
@@ -94,8 +94,14 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// `noise` ("auto", default, or "off"): "auto" estimates the position and force noise from the
 /// samples (third differences) and, in a full fit, reads an equally spaced noisy displacement
 /// as the smooth motion nearest the samples (as `lugre fit --noise`); the result's "noise" is
-/// {"position", "force", "handling", "description"} (None with "off"), and "warnings" lists,
-/// in words, why the estimates or intervals may not be trusted.
+/// {"position", "force", "handling", "description"} (estimated with "off" too, not used), and
+/// "warnings" lists,
+/// in words, why the estimates or intervals may not be trusted (a parameter at its bound, a
+/// residual RMS above 1.3 times the estimated force noise, residuals with a lag-1
+/// autocorrelation above 0.5). "covariance" says which covariance the standard errors come
+/// from: {"method": "classical" or "newey-west", "lags", "description", "lag1_autocorrelation",
+/// "ljung_box", "ljung_box_95"} (the sandwich when the Ljung-Box test finds the residuals
+/// correlated).
 ///
 /// `gate` (slow fit): the noise gate on the reversals, in units of u: a turn counts once the
 /// input has come back from its extreme by at least gate (as `lugre fit --gate`); None: 8 times
@@ -653,7 +659,27 @@ fn report_dict<'py>(
         }
         None => d.set_item("noise", py.None())?,
     }
-    d.set_item("warnings", r.warnings.clone())?;
+    let warnings: Vec<String> = r
+        .warnings
+        .iter()
+        .map(|w| match w {
+            FitWarning::Misfit { slow: true, .. } | FitWarning::Structured { slow: true, .. } => {
+                format!("{w} (kind='full')")
+            }
+            _ => w.to_string(),
+        })
+        .collect();
+    d.set_item("warnings", warnings)?;
+    let cov = PyDict::new(py);
+    cov.set_item("method", r.covariance.key())?;
+    cov.set_item("description", r.covariance.describe())?;
+    if let Covariance::NeweyWest { lags } = r.covariance {
+        cov.set_item("lags", lags)?;
+    }
+    cov.set_item("lag1_autocorrelation", r.serial.lag1)?;
+    cov.set_item("ljung_box", r.serial.ljung_box)?;
+    cov.set_item("ljung_box_95", r.serial.critical)?;
+    d.set_item("covariance", cov)?;
     d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
     d.set_item("residuals", vec_out(py, r.residuals(f)))?;
     Ok(d)

@@ -93,7 +93,15 @@ fn the_servo_axis_record_is_fitted_through_its_noise() {
         FullOptions::default().with_noise(Noise::Off),
     )
     .unwrap();
-    assert!(off.noise.is_none());
+    assert_eq!(off.noise.unwrap().handling, PositionHandling::AsGiven);
+    // ... and says its intervals cannot be trusted.
+    assert!(
+        off.warnings
+            .iter()
+            .any(|w| w.to_string().starts_with("the intervals cannot be trusted")),
+        "{:?}",
+        off.warnings
+    );
     assert!(value(&off, "sigma0") < 0.9e6, "{off:?}");
     assert!(value(&off, "fs") > 24.0, "{off:?}");
 }
@@ -129,7 +137,7 @@ fn a_parameter_at_its_bound_is_reported_there_with_the_others() {
     assert!(
         r.warnings
             .iter()
-            .any(|w| w.starts_with("sigma2 is at its bound 0")),
+            .any(|w| w.to_string().starts_with("sigma2 is at its bound 0")),
         "{:?}",
         r.warnings
     );
@@ -165,10 +173,38 @@ fn a_parameter_at_a_user_bound_is_reported_there() {
     assert!(
         r.warnings
             .iter()
-            .any(|w| w.starts_with("vs is at its bound 0.002")),
+            .any(|w| w.to_string().starts_with("vs is at its bound 0.002")),
         "{:?}",
         r.warnings
     );
     assert_eq!(r.estimates.len(), 6);
 }
 
+/// The reduced Monte Carlo of issue 26: `RECORDS` servo-axis records, each fitted with the
+/// noise handling; the 95 % intervals must cover the truth in at least 90 % of the records for
+/// every fitted parameter, and the mean estimates of sigma0, Fc, Fs, vs be within 2 % of the
+/// truth. (The full count, 200 records from the generator's own noise:
+/// `scripts/servo_axis_monte_carlo.py`, numbers in BENCHMARKS.md.)
+#[test]
+fn servo_axis_monte_carlo() {
+    const RECORDS: u64 = 24;
+    let mut covered = [0usize; 5];
+    let mut mean = [0.0f64; 5];
+    for seed in 0..RECORDS {
+        let (t, u, f) = servo_noisy(1000 + seed, 0.5e-6, 0.1e-6, 0.2);
+        let r = fit_full(&servo_spec(), &t, &u, &f, FullOptions::default()).unwrap();
+        for (k, (name, want)) in SERVO.iter().enumerate() {
+            let e = r.estimate(name).unwrap();
+            covered[k] += usize::from(e.ci95[0] <= *want && *want <= e.ci95[1]);
+            mean[k] += e.value / RECORDS as f64;
+        }
+    }
+    for (k, (name, want)) in SERVO.iter().enumerate() {
+        let coverage = covered[k] as f64 / RECORDS as f64;
+        assert!(coverage >= 0.9, "{name}: coverage {coverage}");
+        if *name != "sigma1" {
+            let bias = mean[k] / want - 1.0;
+            assert!(bias.abs() < 0.02, "{name}: mean error {bias}");
+        }
+    }
+}

@@ -87,6 +87,7 @@
 //! assert!(report.rms < 1e-12);
 //! ```
 
+mod covariance;
 mod full;
 mod lm;
 pub mod noise;
@@ -95,6 +96,7 @@ mod spec;
 mod stats;
 
 pub use crate::error::{FitError, Unidentified, Why};
+pub use covariance::{Covariance, FitWarning, SerialCorrelation, MISFIT_RATIO, STRUCTURED_RHO};
 pub use lm::FitProgress;
 pub use noise::{NoiseLevels, PositionHandling};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
@@ -102,7 +104,7 @@ pub use spec::{Bounds, Family, FitKind, FitSpec};
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
 use crate::simulate::{Gamma, PiecewiseLinear, Simulator, SmoothSamples, Trajectory};
-use lm::{minimize, Config, Outcome};
+use lm::{minimize, Config, Evaluator, Outcome};
 use spec::Resolved;
 
 /// One fitted parameter.
@@ -151,12 +153,16 @@ pub struct FitReport {
     /// The model's output at every sample: `y°(rho_i)` from [`crate::HysteresisLoop`] (slow fit)
     /// or the exact simulation from [`Simulator`] (full fit).
     pub fitted: Vec<f64>,
-    /// The noise levels estimated in the record and how the fit used them (`None` when the
-    /// noise handling was switched off, [`Noise::Off`]).
+    /// The noise levels estimated in the record and how the fit used them (with [`Noise::Off`]
+    /// they are estimated and reported, and not used).
     pub noise: Option<NoiseLevels>,
-    /// Why the estimates or their intervals may not be trusted, in words (empty: no reason
-    /// found).
-    pub warnings: Vec<String>,
+    /// Why the estimates or their intervals may not be trusted (empty: no reason found); each
+    /// says it in words (`Display`).
+    pub warnings: Vec<FitWarning>,
+    /// Which covariance the standard errors come from (C1-C2).
+    pub covariance: Covariance,
+    /// The residuals' serial correlation (C1).
+    pub serial: SerialCorrelation,
 }
 
 impl FitReport {
@@ -405,13 +411,15 @@ pub fn fit_slow_with(
     }
     let mut resolved = spec.resolve(FitKind::Slow)?;
     check_count(u.len(), resolved.free.len())?;
-    let levels =
-        (options.noise == Noise::Auto).then(|| (noise::noise_level(u), noise::noise_level(f)));
-    let gate = match (options.gate, levels) {
+    let mut levels = noise::levels(u, f, PositionHandling::AsGiven);
+    let gate = match (options.gate, options.noise) {
         (Some(g), _) => g,
-        (None, Some((position, _))) => SlowOptions::GATE_NOISE_SIGMAS * position,
-        (None, None) => 0.0,
+        (None, Noise::Auto) => SlowOptions::GATE_NOISE_SIGMAS * levels.position,
+        (None, Noise::Off) => 0.0,
     };
+    if options.gate.is_some() || options.noise == Noise::Auto {
+        levels.handling = PositionHandling::Gate { gate };
+    }
     let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None, gate)?;
     let mut coarse_iterations = 0;
     let mut coarse_evaluations = 0;
@@ -461,13 +469,10 @@ pub fn fit_slow_with(
     // The fitted curve: (F1) with the turning-point values of the core's loop, which equals
     // `HysteresisLoop::y_at` at the samples' rho to a few roundings (unit-tested).
     let fitted = outcome.y.clone();
-    let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1)?;
+    let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1, &[])?;
     report.turning_points = Some(sl.turning_points().len());
-    report.noise = levels.map(|(position, force)| NoiseLevels {
-        position,
-        force,
-        handling: PositionHandling::Gate { gate },
-    });
+    report.noise = Some(levels);
+    report.check_fit(f);
     Ok(report)
 }
 
@@ -517,17 +522,12 @@ pub fn fit_full_smooth(
     for (&k, &fk) in knots.iter().zip(f) {
         rf[k] = fk;
     }
-    let noise = options.noise;
     // The cubic reading takes the samples as exact: the noise is only reported.
     let mut report = fit_full(spec, rt, ru, &rf, options.with_noise(Noise::Off))?;
     report.fitted = knots.iter().map(|&k| report.fitted[k]).collect();
-    if noise == Noise::Auto {
-        report.noise = Some(NoiseLevels {
-            position: noise::noise_level(motion.samples().1),
-            force: noise::noise_level(f),
-            handling: PositionHandling::AsGiven,
-        });
-    }
+    let levels = noise::levels(motion.samples().1, f, PositionHandling::AsGiven);
+    report.noise = Some(levels);
+    report.check_fit(f);
     Ok(report)
 }
 
@@ -575,13 +575,11 @@ pub fn fit_full(
     }
     // The noise, and the displacement the fit runs on (smoothed where it is noisy).
     let (smoothed, levels) = match noise {
-        Noise::Auto => {
-            let (x, levels) = noise::prepare_full(t, u, f);
-            (x, Some(levels))
-        }
-        Noise::Off => (None, None),
+        Noise::Auto => noise::prepare_full(t, u, f),
+        Noise::Off => (None, noise::levels(u, f, PositionHandling::AsGiven)),
     };
     let u = smoothed.as_deref().unwrap_or(u);
+    let f_all = f;
     let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
     let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };
     let (t_m, u_m, f_m) = (pick(t), pick(u), pick(f));
@@ -596,11 +594,12 @@ pub fn fit_full(
     // The starting values from the measured rows alone (their speeds between measured rows).
     let measured = full::Exact::new(resolved.family, resolved.free.clone(), &t_m, &u_m, x0);
     let start = full::data_start(resolved.family, &measured, &u_m, &f_m, &resolved.values);
-    let mut ex = full::Rows::new(
-        full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0),
-        rows.clone(),
-        f.len(),
-    );
+    let mut exact = full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0);
+    if smoothed.is_some() {
+        // A smooth motion: each sample output with its own velocity (X5).
+        exact = exact.with_central_output(t, u);
+    }
+    let mut ex = full::Rows::new(exact, rows.clone(), f.len());
     let f = &f_m[..];
     resolved.fill_starts(&start);
     let base = resolved.values.clone();
@@ -654,14 +653,50 @@ pub fn fit_full(
         return Err(FitError::NoStart { starts });
     };
     outcome.evaluations = evaluations;
-    let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
-    let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
-    let mut out = Trajectory::with_capacity(u.len());
-    Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
-    let mut r = report(FitKind::Full, &resolved, outcome, pick(&out.y), f, starts)?;
+    let fitted = if smoothed.is_some() {
+        // (X5) is the fit's own output, not the simulator's at the knots.
+        let mut y = vec![0.0; u.len()];
+        let mut jac = nalgebra::DMatrix::zeros(u.len(), resolved.free.len());
+        ex.inner.evaluate(&outcome.values, &mut y, &mut jac);
+        y
+    } else {
+        let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
+        let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
+        let mut out = Trajectory::with_capacity(u.len());
+        Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
+        out.y
+    };
+    // A smoothed record: the estimates move with the smoothing's error too (S3).
+    let input_effects = match levels.handling {
+        PositionHandling::Smoothed { lambda } => {
+            // The output alone (no derivatives) for another reading of the input.
+            let model_at = |uk: &[f64]| -> Option<Vec<f64>> {
+                let mut e = full::Exact::new(resolved.family, Vec::new(), t, uk, x0)
+                    .with_central_output(t, uk);
+                let mut y = vec![0.0; uk.len()];
+                let mut none = nalgebra::DMatrix::zeros(uk.len(), 0);
+                e.evaluate(&outcome.values, &mut y, &mut none).then_some(y)
+            };
+            noise::input_effects(u, levels.position, lambda, model_at)
+                .into_iter()
+                .map(|dy| rows.iter().map(|&i| dy[i]).collect())
+                .collect()
+        }
+        _ => Vec::new(),
+    };
+    let mut r = report(
+        FitKind::Full,
+        &resolved,
+        outcome,
+        pick(&fitted),
+        f,
+        starts,
+        &input_effects,
+    )?;
     // The fitted curve at every row, measured or not.
-    r.fitted = out.y;
-    r.noise = levels;
+    r.fitted = fitted;
+    r.noise = Some(levels);
+    r.check_fit(f_all);
     Ok(r)
 }
 
@@ -677,7 +712,8 @@ fn not_converged(resolved: &Resolved, outcome: &Outcome, m: usize) -> FitError {
     }
 }
 
-/// Statistics, identifiability and the report.
+/// Statistics, identifiability and the report (`input_effects`: the model's responses to draws
+/// of the input's error, eq. S3).
 fn report(
     kind: FitKind,
     resolved: &Resolved,
@@ -685,6 +721,7 @@ fn report(
     fitted: Vec<f64>,
     f: &[f64],
     starts: usize,
+    input_effects: &[Vec<f64>],
 ) -> Result<FitReport, FitError> {
     let m = f.len();
     if !outcome.rss.is_finite() {
@@ -693,12 +730,21 @@ fn report(
     let names = resolved.names();
     let values = resolved.free_values_of(&outcome.values);
     let data_norm = f.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let rss: f64 = f.iter().zip(&fitted).map(|(f, y)| (f - y) * (f - y)).sum();
+    let residuals: Vec<f64> = f.iter().zip(&fitted).map(|(f, y)| f - y).collect();
+    let rss: f64 = residuals.iter().map(|r| r * r).sum();
     let start_values = resolved.free_values();
     let at_bound: Vec<bool> = (0..names.len())
         .map(|j| resolved.bounds[j].reached(values[j], start_values[j]))
         .collect();
-    let unc = stats::uncertainty(&outcome.jac, &names, &values, &at_bound, rss, data_norm)?;
+    let unc = stats::uncertainty(
+        &outcome.jac,
+        &names,
+        &values,
+        &at_bound,
+        &residuals,
+        data_norm,
+        input_effects,
+    )?;
     let converged = outcome.converged();
     if !converged
         && !matches!(
@@ -759,7 +805,29 @@ fn report(
         fitted,
         noise: None,
         warnings,
+        covariance: unc.method,
+        serial: SerialCorrelation::of(&residuals),
     })
+}
+
+impl FitReport {
+    /// Adds the lack-of-fit warnings (C1-C2 module docs) for the measured forces `f` (the rows
+    /// fitted), once the noise levels are known.
+    fn check_fit(&mut self, f: &[f64]) {
+        let r: Vec<f64> = f
+            .iter()
+            .zip(&self.fitted)
+            .filter(|(f, _)| !f.is_nan())
+            .map(|(f, y)| f - y)
+            .collect();
+        let force_noise = self.noise.map(|n| n.force);
+        let slow = self.kind == FitKind::Slow;
+        // Checked again on another reading of the rows: the new check replaces the old.
+        self.warnings
+            .retain(|w| matches!(w, FitWarning::AtBound { .. }));
+        self.warnings
+            .extend(covariance::lack_of_fit(&r, self.rms, force_noise, slow));
+    }
 }
 
 /// The bound nearer `value`.
@@ -771,27 +839,15 @@ fn bound_of(value: f64, b: Bounds) -> f64 {
     }
 }
 
-/// Each estimate at its bound, in words: the fit pushed it there, and the other estimates are
-/// those with it held at the bound.
-fn bound_warnings(estimates: &[Estimate], bounds: &[Bounds]) -> Vec<String> {
+/// Each estimate at its bound.
+fn bound_warnings(estimates: &[Estimate], bounds: &[Bounds]) -> Vec<FitWarning> {
     estimates
         .iter()
         .zip(bounds)
         .filter(|(e, _)| e.at_bound)
-        .map(|(e, b)| {
-            let which = bound_of(e.value, *b);
-            format!(
-                "{} is at its bound {} (the data push it there: its interval reaches the bound, \
-                 and the other estimates are those with {} held at it; {})",
-                e.name,
-                crate::error::num(which),
-                e.name,
-                if which == 0.0 {
-                    "fix it at 0 if that is what it is".to_string()
-                } else {
-                    "widen its bounds if they were a guess".to_string()
-                }
-            )
+        .map(|(e, b)| FitWarning::AtBound {
+            name: e.name,
+            bound: bound_of(e.value, *b),
         })
         .collect()
 }
@@ -813,7 +869,6 @@ impl FitReport {
 
 #[cfg(test)]
 mod tests {
-    use super::lm::Evaluator;
     use super::*;
     use nalgebra::DMatrix;
 
@@ -857,7 +912,7 @@ mod tests {
         let (_, outcome) = minimize(eval, &f, &resolved, &[1.0, 1.0], config, &mut |_, _| {});
         assert!(!outcome.converged());
         let fitted = outcome.y.clone();
-        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap();
+        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap();
         assert!(!r.converged);
         assert!(
             r.termination.contains("without meeting the tolerances"),
@@ -878,7 +933,7 @@ mod tests {
             &mut |_, _| {},
         );
         let fitted = outcome.y.clone();
-        let e = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap_err();
+        let e = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap_err();
         assert!(matches!(e, FitError::NotConverged { .. }), "{e}");
         assert!(e.to_string().starts_with("the fit did not converge"), "{e}");
     }
@@ -896,7 +951,7 @@ mod tests {
         );
         assert!(outcome.converged());
         let fitted = outcome.y.clone();
-        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap();
+        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap();
         assert!((r.estimates[0].value - 2.0).abs() < 0.05, "{r:?}");
         assert!((r.estimates[1].value - 0.8).abs() < 0.02, "{r:?}");
     }

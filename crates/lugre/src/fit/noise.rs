@@ -254,48 +254,92 @@ pub fn smooth_displacement(u: &[f64], sigma: f64) -> Option<(Vec<f64>, f64)> {
     Some((x, 10f64.powf(lo)))
 }
 
-/// The noise of a full fit's record (`f`: NaN where no force was measured) and the
-/// displacement the fit runs on: smoothed (N2) where the samples are equally spaced and noisy.
+/// The noise levels (N1) of the position `u` and the force `f` (NaN where no force was
+/// measured), with what the fit does with them.
+pub(crate) fn levels(u: &[f64], f: &[f64], handling: PositionHandling) -> NoiseLevels {
+    NoiseLevels {
+        position: noise_level(u),
+        force: noise_level(f),
+        handling,
+    }
+}
+
+/// The noise of a full fit's record and the displacement the fit runs on: smoothed (N2) where
+/// the samples are equally spaced and noisy.
 pub(crate) fn prepare_full(t: &[f64], u: &[f64], f: &[f64]) -> (Option<Vec<f64>>, NoiseLevels) {
-    let position = noise_level(u);
-    let force = noise_level(f);
-    let (smoothed, handling) = if !evenly_spaced(t) {
-        (None, PositionHandling::Uneven)
-    } else {
-        match smooth_displacement(u, position) {
-            Some((x, lambda)) => (Some(x), PositionHandling::Smoothed { lambda }),
-            None => (None, PositionHandling::AsGiven),
+    let mut levels = levels(u, f, PositionHandling::AsGiven);
+    if !evenly_spaced(t) {
+        levels.handling = PositionHandling::Uneven;
+        return (None, levels);
+    }
+    match smooth_displacement(u, levels.position) {
+        Some((x, lambda)) => {
+            levels.handling = PositionHandling::Smoothed { lambda };
+            (Some(x), levels)
         }
+        None => (None, levels),
+    }
+}
+
+/// Draws of the smoothing's error for (S3), `fit/stats.rs`.
+pub const INPUT_DRAWS: usize = 64;
+
+/// The model's response to [`INPUT_DRAWS`] draws of the error of a smoothed displacement `u`
+/// (noise `sigma`, smoothing `lambda`): the smoother is linear, so its error on white noise
+/// `e` is the smoothed noise `S e`; `model_at` gives the output for a reading of the input.
+/// The draws come from a fixed generator: the same record gives the same intervals.
+pub(crate) fn input_effects(
+    u: &[f64],
+    sigma: f64,
+    lambda: f64,
+    mut model_at: impl FnMut(&[f64]) -> Option<Vec<f64>>,
+) -> Vec<Vec<f64>> {
+    let Some(base) = model_at(u) else {
+        return Vec::new();
     };
-    (
-        smoothed,
-        NoiseLevels {
-            position,
-            force,
-            handling,
-        },
-    )
+    let n = u.len();
+    let mut normal = Normal(0x05ee_d0f0_015e);
+    let (mut e, mut s, mut uk, mut work) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], Vec::new());
+    let mut out = Vec::with_capacity(INPUT_DRAWS);
+    for _ in 0..INPUT_DRAWS {
+        e.iter_mut().for_each(|x| *x = sigma * normal.next());
+        smooth_with(&e, lambda, &mut s, &mut work);
+        for i in 0..n {
+            uk[i] = u[i] + s[i];
+        }
+        if let Some(y) = model_at(&uk) {
+            out.push(y.iter().zip(&base).map(|(a, b)| a - b).collect());
+        }
+    }
+    out
+}
+
+/// Standard normal deviates: Box-Muller on a 64-bit LCG (Knuth's MMIX constants).
+struct Normal(u64);
+
+impl Normal {
+    fn unit(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        // In (0, 1): the logarithm below is finite.
+        ((self.0 >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    }
+
+    fn next(&mut self) -> f64 {
+        let r = (-2.0 * self.unit().ln()).sqrt();
+        r * (std::f64::consts::TAU * self.unit()).cos()
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Gaussian deviates (Box-Muller on a fixed LCG), for the estimator's tests.
     fn gauss(n: usize, seed: u64) -> Vec<f64> {
-        let mut s = seed;
-        let mut unit = || {
-            s = s
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            ((s >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        };
-        (0..n)
-            .map(|_| {
-                let r = (-2.0 * unit().ln()).sqrt();
-                r * (std::f64::consts::TAU * unit()).cos()
-            })
-            .collect()
+        let mut g = Normal(seed);
+        (0..n).map(|_| g.next()).collect()
     }
 
     #[test]

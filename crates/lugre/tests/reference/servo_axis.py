@@ -24,7 +24,7 @@ Options (before the command): --position-noise UM, --force-noise N, --resolution
 
 The crate's test `servo_axis_monte_carlo` (crates/lugre/tests/fit_noise.rs) reads the clean
 samples written by `clean` (crates/lugre/tests/reference/servo_axis_clean.csv) and adds its own
-noise of the same levels; the full Monte Carlo (scripts/servo_axis_monte_carlo.sh) fits records
+noise of the same levels; the full Monte Carlo (scripts/servo_axis_monte_carlo.py) fits records
 written by `records`.
 """
 

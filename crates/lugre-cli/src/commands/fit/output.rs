@@ -2,7 +2,7 @@
 //! table and the JSON document.
 
 use anyhow::Result;
-use lugre::fit::{Family, FitKind, FitReport, PositionHandling};
+use lugre::fit::{Covariance, Family, FitKind, FitReport, FitWarning, PositionHandling};
 use lugre::model::{normal, Parameter};
 use std::io::Write;
 use std::path::Path;
@@ -255,10 +255,24 @@ pub(super) fn print_table(
     if r.estimates.len() > 1 {
         print_correlation(w, r, normal)?;
     }
+    writeln!(w, "standard errors: {}", r.covariance.describe())?;
     for warning in &r.warnings {
-        writeln!(w, "warning: {warning}")?;
+        writeln!(w, "warning: {}", warning_text(warning))?;
     }
     Ok(())
+}
+
+/// A warning of the core, with the flag that does what it suggests.
+pub(super) fn warning_text(warning: &FitWarning) -> String {
+    match warning {
+        FitWarning::Misfit { slow: true, .. } | FitWarning::Structured { slow: true, .. } => {
+            format!("{warning} (--fit full)")
+        }
+        FitWarning::AtBound { name, bound } if *bound == 0.0 => {
+            format!("{warning} (--fix {name}=0)")
+        }
+        _ => warning.to_string(),
+    }
 }
 
 fn print_correlation(w: &mut impl Write, r: &FitReport, normal: bool) -> Result<()> {
@@ -375,9 +389,25 @@ pub(super) fn write_json<W: Write>(
         if k > 0 {
             j.raw(",")?;
         }
-        j.raw(&quote(warning))?;
+        j.raw(&quote(&warning_text(warning)))?;
     }
     j.raw("]")?;
+    j.raw(&format!(
+        ",\"covariance\":{{\"method\":{},\"description\":{}",
+        quote(r.covariance.key()),
+        quote(&r.covariance.describe())
+    ))?;
+    if let Covariance::NeweyWest { lags } = r.covariance {
+        j.raw(",\"lags\":")?;
+        j.int(lags)?;
+    }
+    j.raw(",\"lag1_autocorrelation\":")?;
+    num_or_null(&mut j, r.serial.lag1)?;
+    j.raw(",\"ljung_box\":")?;
+    num_or_null(&mut j, r.serial.ljung_box)?;
+    j.raw(",\"ljung_box_95\":")?;
+    num_or_null(&mut j, r.serial.critical)?;
+    j.raw("}")?;
     j.raw(&format!(",\"normal_force\":{normal}"))?;
     j.raw(",\"input\":")?;
     j.raw(&quote(&path.display().to_string()))?;
