@@ -10,7 +10,8 @@ noise, seed = record number) and fitted with
 Printed: per parameter the coverage of the 95 % intervals, the mean and RMS relative error, the
 RMS of the reported standard errors (relative), and the median wall time of one fit (the process included).
 
-    python3 scripts/servo_axis_monte_carlo.py [--records 200] [--lugre PATH] [-- EXTRA...]
+    python3 scripts/servo_axis_monte_carlo.py [--records 200] [--lugre PATH]
+        [--position-noise UM] [--force-noise N] [--resolution UM] [-- EXTRA...]
 
 Needs numpy and scipy; the binary defaults to target/release/lugre.
 """
@@ -40,6 +41,9 @@ def generator():
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--records", type=int, default=200)
+    p.add_argument("--position-noise", type=float, default=0.5, help="um (default 0.5)")
+    p.add_argument("--force-noise", type=float, default=0.2, help="N (default 0.2)")
+    p.add_argument("--resolution", type=float, default=0.1, help="um (default 0.1; 0: none)")
     p.add_argument("--lugre", default=os.path.join(HERE, "..", "target", "release", "lugre"))
     p.add_argument("extra", nargs="*")
     a = p.parse_args()
@@ -53,7 +57,7 @@ def main():
         path = os.path.join(d, "record.csv")
         for seed in range(1, a.records + 1):
             with open(path, "w") as fh:
-                gen.write(fh, *gen.noisy(t, u, f, seed, 0.5, 0.2, 0.1), 10)
+                gen.write(fh, *gen.noisy(t, u, f, seed, a.position_noise, a.force_noise, a.resolution), 10)
             cmd = [a.lugre, "fit", "--input", path, "--fit", "full", "--beta", "2",
                    "--scale", "u=1e-3", "--fix", "sigma2=40", "--json"] + a.extra
             start = time.perf_counter()

@@ -305,6 +305,32 @@ class FitEstimate(TypedDict):
     ci95: Tuple[float, float]
     at_bound: bool
 
+# The noise levels estimated in the record and how the fit used them ("lambda" with
+# "smoothed", the smoothing's; "gate" with "gate"). Functional form: "lambda" is a keyword.
+FitNoise = TypedDict(
+    "FitNoise",
+    {
+        "position": float,
+        "force": float,
+        "handling": Literal["smoothed", "as_given", "uneven", "gate"],
+        "description": str,
+        "lambda": float,
+        "gate": float,
+    },
+    total=False,
+)
+
+@type_check_only
+class FitCovariance(TypedDict, total=False):
+    """Which covariance the standard errors come from, and the test that chose it."""
+
+    method: Literal["classical", "newey-west"]
+    description: str
+    lags: int
+    lag1_autocorrelation: float
+    ljung_box: float
+    ljung_box_95: float
+
 @type_check_only
 class FitResult(TypedDict):
     """The result of lugre.fit (a dict at runtime)."""
@@ -327,6 +353,9 @@ class FitResult(TypedDict):
     model: Literal["lugre", "dahl"]
     kind: Literal["slow", "full"]
     normal_force: bool
+    noise: Optional[FitNoise]
+    warnings: list[str]
+    covariance: FitCovariance
     fitted: _Floats
     residuals: _Floats
 
@@ -346,6 +375,8 @@ def fit(
     interpolate: Literal["linear", "cubic"] = "linear",
     normal: Optional[_Reals] = None,
     v: Optional[_Reals] = None,
+    noise: Literal["auto", "off"] = "auto",
+    gate: Optional[_Real] = None,
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""

@@ -372,9 +372,15 @@ impl SlowOptions {
     /// noise comes back from its running extreme by 8 of them about once in 10^15 samples.
     pub const GATE_NOISE_SIGMAS: f64 = 8.0;
 
+    /// The default gate at most, as a fraction of the record's range: a coarsely sampled
+    /// record's jagged differences look like noise to (N1), and a larger gate would remove the
+    /// loops the test is made of.
+    pub const GATE_RANGE: f64 = 0.05;
+
     /// The noise gate on the reversals, in the units of `u` (finite, `>= 0`; 0: every turn of
     /// the samples is a reversal). Default: [`Self::GATE_NOISE_SIGMAS`] times the estimated
-    /// position noise ([`Noise::Auto`]) or 0 ([`Noise::Off`]).
+    /// position noise, at most [`Self::GATE_RANGE`] of the record's range ([`Noise::Auto`]),
+    /// or 0 ([`Noise::Off`]).
     pub fn with_gate(mut self, gate: f64) -> Self {
         self.gate = Some(gate);
         self
@@ -414,7 +420,15 @@ pub fn fit_slow_with(
     let mut levels = noise::levels(u, f, PositionHandling::AsGiven);
     let gate = match (options.gate, options.noise) {
         (Some(g), _) => g,
-        (None, Noise::Auto) => SlowOptions::GATE_NOISE_SIGMAS * levels.position,
+        (None, Noise::Auto) => {
+            let (lo, hi) = u
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                    (a.min(x), b.max(x))
+                });
+            (SlowOptions::GATE_NOISE_SIGMAS * levels.position)
+                .min(SlowOptions::GATE_RANGE * (hi - lo))
+        }
         (None, Noise::Off) => 0.0,
     };
     if options.gate.is_some() || options.noise == Noise::Auto {
