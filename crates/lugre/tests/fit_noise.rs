@@ -184,7 +184,9 @@ fn a_parameter_at_a_user_bound_is_reported_there() {
 /// noise handling; the 95 % intervals must cover the truth in at least 90 % of the records for
 /// every fitted parameter, and the mean estimates of sigma0, Fc, Fs, vs be within 2 % of the
 /// truth. (The full count, 200 records from the generator's own noise:
-/// `scripts/servo_axis_monte_carlo.py`, numbers in BENCHMARKS.md.)
+/// `scripts/servo_axis_monte_carlo.py`, numbers in BENCHMARKS.md: there sigma1's intervals
+/// cover 0.89 of the time, the others' 0.90 to 0.955.) Seeds 1000-1023 of this file's
+/// generator: 22 of 24 covered for each parameter.
 #[test]
 fn servo_axis_monte_carlo() {
     const RECORDS: u64 = 24;

@@ -27,7 +27,9 @@
 //! **Lack of fit.** Where the force noise `s_F` was estimated ([`super::noise`], eq. N1), a
 //! residual RMS above `1.3 s_F` says the model does not fit the data to their noise; a lag-1
 //! autocorrelation above 0.5 says the residuals are structured. Either is reported in words
-//! ([`FitWarning`]): the intervals then count a systematic misfit as if it were noise.
+//! ([`FitWarning`]): the intervals then count a systematic misfit as if it were noise. Residuals
+//! below `1e-10` of the force (an exact fit of noise-free data, to rounding) are neither tested
+//! nor warned about: rounding is correlated, but it is no misfit.
 
 use nalgebra::DMatrix;
 
@@ -42,6 +44,10 @@ pub const MISFIT_RATIO: f64 = 1.3;
 
 /// A lag-1 autocorrelation of the residuals above this is structure, not noise.
 pub const STRUCTURED_RHO: f64 = 0.5;
+
+/// Residuals below this fraction of the force (RMS, relative) are the rounding of an exact
+/// fit (noise-free data): correlated, as rounding is, but no sign of a misfit.
+pub const EXACT_FIT: f64 = 1e-10;
 
 /// Which covariance the standard errors come from.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -141,10 +147,12 @@ pub(crate) fn newey_west(
     scale: &[f64],
     inv_r: &DMatrix<f64>,
     r: &[f64],
+    data_norm: f64,
 ) -> Option<(DMatrix<f64>, usize)> {
     let m = r.len();
     let serial = SerialCorrelation::of(r);
-    if !serial.correlated() {
+    let rss: f64 = r.iter().map(|x| x * x).sum();
+    if !serial.correlated() || rss.sqrt() <= EXACT_FIT * data_norm {
         return None;
     }
     let lags = serial.bandwidth(m);
@@ -243,10 +251,14 @@ impl std::fmt::Display for FitWarning {
 pub(crate) fn lack_of_fit(
     r: &[f64],
     rms: f64,
+    f_rms: f64,
     force_noise: Option<f64>,
     slow: bool,
 ) -> Vec<FitWarning> {
     let mut out = Vec::new();
+    if rms <= EXACT_FIT * f_rms {
+        return out;
+    }
     if let Some(s) = force_noise.filter(|s| *s > 0.0) {
         let ratio = rms / s;
         if ratio > MISFIT_RATIO {
@@ -299,7 +311,7 @@ mod tests {
         let sc = SerialCorrelation::of(&smooth);
         assert!(sc.correlated() && sc.lag1 > 0.9, "{sc:?}");
         assert!(sc.bandwidth(2000) > 10);
-        let w = lack_of_fit(&smooth, 0.7, Some(0.1), true);
+        let w = lack_of_fit(&smooth, 0.7, 1.0, Some(0.1), true);
         assert_eq!(w.len(), 2);
         let text = w[0].to_string();
         assert!(text.contains("7.0 times the force noise"), "{text}");
@@ -318,7 +330,7 @@ mod tests {
         let scale = [(m as f64).sqrt()];
         let inv_r = DMatrix::from_element(1, 1, 1.0);
         // Alternating residuals are correlated (rho_1 = -1): Newey-West with the capped rho.
-        let (cov, lags) = newey_west(&jac, &[0], &scale, &inv_r, &r).unwrap();
+        let (cov, lags) = newey_west(&jac, &[0], &scale, &inv_r, &r, 1.0).unwrap();
         assert!(lags >= 1);
         // Bartlett weights shrink the alternating sum towards 0, never below.
         assert!(cov[(0, 0)] >= 0.0 && cov[(0, 0)] < 1.0, "{cov}");

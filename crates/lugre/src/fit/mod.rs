@@ -839,8 +839,16 @@ impl FitReport {
         // Checked again on another reading of the rows: the new check replaces the old.
         self.warnings
             .retain(|w| matches!(w, FitWarning::AtBound { .. }));
-        self.warnings
-            .extend(covariance::lack_of_fit(&r, self.rms, force_noise, slow));
+        let f_rms = (f.iter().filter(|f| !f.is_nan()).map(|f| f * f).sum::<f64>()
+            / r.len().max(1) as f64)
+            .sqrt();
+        self.warnings.extend(covariance::lack_of_fit(
+            &r,
+            self.rms,
+            f_rms,
+            force_noise,
+            slow,
+        ));
     }
 }
 

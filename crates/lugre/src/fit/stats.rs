@@ -167,10 +167,11 @@ pub(crate) fn uncertainty(
     let t = t_quantile_975(dof);
     // (S1), or (C2) where the residuals are correlated: the covariance of the scaled
     // parameters.
-    let (cov, method) = match covariance::newey_west(jac, &kept, &scale, &inv_r, residuals) {
-        Some((cov, lags)) => (cov, Covariance::NeweyWest { lags }),
-        None => (inv_r.clone() * s2, Covariance::Classical),
-    };
+    let (cov, method) =
+        match covariance::newey_west(jac, &kept, &scale, &inv_r, residuals, data_norm) {
+            Some((cov, lags)) => (cov, Covariance::NeweyWest { lags }),
+            None => (inv_r.clone() * s2, Covariance::Classical),
+        };
     let cov = cov + input_covariance(jac, &kept, &scale, &inv_r, input_effects);
     let stderr: Vec<f64> = (0..q)
         .map(|a| cov[(a, a)].sqrt() / scale[kept[a]])
