@@ -31,21 +31,52 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-/// Adds Gaussian noise of standard deviation 1 % of the RMS of `f` (Box-Muller on an LCG).
-fn noisy(f: &[f64], mut state: u64) -> Vec<f64> {
+/// `n` standard normal deviates (Box-Muller on an LCG).
+fn gauss(n: usize, mut state: u64) -> Vec<f64> {
     let mut unit = move || {
         state = state
             .wrapping_mul(6_364_136_223_846_793_005)
             .wrapping_add(1_442_695_040_888_963_407);
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let rms = (f.iter().map(|v| v * v).sum::<f64>() / f.len() as f64).sqrt();
-    f.iter()
-        .map(|v| {
+    (0..n)
+        .map(|_| {
             let r = (-2.0 * (1.0 - unit()).ln()).sqrt();
-            v + 0.01 * rms * r * (std::f64::consts::TAU * unit()).cos()
+            r * (std::f64::consts::TAU * unit()).cos()
         })
         .collect()
+}
+
+/// Adds Gaussian noise of standard deviation 1 % of the RMS of `f`.
+fn noisy(f: &[f64], state: u64) -> Vec<f64> {
+    let rms = (f.iter().map(|v| v * v).sum::<f64>() / f.len() as f64).sqrt();
+    f.iter()
+        .zip(gauss(f.len(), state))
+        .map(|(v, e)| v + 0.01 * rms * e)
+        .collect()
+}
+
+/// The servo-axis record (`t,u,F`, u in mm): the noise-free samples of the
+/// independent generator (crates/lugre/tests/reference/servo_axis.py, scipy Radau) with 0.5 um
+/// of position noise rounded to 0.1 um and 0.2 N of force noise.
+fn servo_file(dir: &Path) -> PathBuf {
+    let text = include_str!("../../lugre/tests/reference/servo_axis_clean.csv");
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let e = gauss(2 * rows.len(), 31);
+    let t: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+    let u: Vec<f64> = (0..rows.len())
+        .map(|i| ((rows[i][1] + 5e-4 * e[2 * i]) / 1e-4).round() * 1e-4)
+        .collect();
+    let f: Vec<f64> = (0..rows.len())
+        .map(|i| rows[i][2] + 0.2 * e[2 * i + 1])
+        .collect();
+    let path = dir.join("servo.csv");
+    write_csv(&path, "t,u,F", &[&t, &u, &f]);
+    path
 }
 
 /// Writes the columns with a header.
@@ -658,7 +689,17 @@ fn a_sparse_sine_record_fits_with_the_cubic_reading() {
         (velocity - dense).abs() <= 0.02 * dense,
         "velocity record {velocity:e} vs dense {dense:e}"
     );
-    assert!(linear > 1.5 * dense, "linear {linear:e} vs dense {dense:e}");
+    // Read as given, the linear reading's O(h) error shows; with the noise handling (the
+    // default) the samples are read as a smooth motion, each output with its own velocity.
+    let as_given = rms(&sparse, &["--noise", "off"]);
+    assert!(
+        as_given > 1.5 * dense,
+        "linear as given {as_given:e} vs dense {dense:e}"
+    );
+    assert!(
+        (linear - dense).abs() <= 0.02 * dense,
+        "linear {linear:e} vs dense {dense:e}"
+    );
 }
 
 /// The lab file (examples/data: Time [s], Normal [uN], Position [mm], Friction [uN], the force
@@ -715,5 +756,80 @@ fn a_normal_force_column_gives_friction_coefficients() {
     rejects(
         &["fit", "--input", bad.to_str().unwrap(), "--columns", "N=N"],
         "bad-normal.csv: line 4: N must be > 0, got 0",
+    );
+}
+
+#[test]
+fn noise_is_estimated_reported_and_gated() {
+    let dir = scratch("noise");
+    let servo = servo_file(&dir);
+    let servo = servo.to_str().unwrap();
+    let full = [
+        "fit",
+        "--fit",
+        "full",
+        "--input",
+        servo,
+        "--beta",
+        "2",
+        "--scale",
+        "u=1e-3",
+        "--fix",
+        "sigma2=40",
+    ];
+    let doc = json(&[&full[..], &["--json"]].concat());
+    let noise = &doc["noise"];
+    // sqrt(0.5^2 + 0.1^2 / 12) um and 0.2 N, to the median's few per cent.
+    let position = noise["position"].as_f64().unwrap();
+    assert!((position / 0.5008e-6 - 1.0).abs() < 0.06, "{noise}");
+    assert!(
+        (noise["force"].as_f64().unwrap() / 0.2 - 1.0).abs() < 0.06,
+        "{noise}"
+    );
+    assert_eq!(noise["handling"], "smoothed");
+    assert!(noise["lambda"].as_f64().unwrap() > 1.0, "{noise}");
+    for (name, want) in [("sigma0", 1e6), ("fc", 15.0), ("fs", 22.0), ("vs", 4e-3)] {
+        let got = doc["parameters"][name]["value"].as_f64().unwrap();
+        assert!((got / want - 1.0).abs() < 0.02, "{name}: {got} vs {want}");
+    }
+    assert!(doc["warnings"].is_array(), "{doc}");
+    // The table says what was found and done.
+    let out = lugre(&full);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("noise estimated in the record: position"),
+        "{text}"
+    );
+    assert!(text.contains("smooth motion nearest the samples"), "{text}");
+    // Off: the samples as given (the noise still reported), and the intervals said to be
+    // untrustworthy.
+    let doc = json(&[&full[..], &["--json", "--noise", "off"]].concat());
+    assert_eq!(doc["noise"]["handling"], "as_given");
+    let warnings = doc["warnings"].as_array().unwrap();
+    assert!(
+        warnings.iter().any(|w| w
+            .as_str()
+            .unwrap()
+            .starts_with("the intervals cannot be trusted")),
+        "{doc}"
+    );
+    rejects(
+        &[&full[..], &["--noise", "some"]].concat(),
+        "expected one of auto, off",
+    );
+    rejects(
+        &[&full[..], &["--gate", "1e-6"]].concat(),
+        "--gate applies to the slow fit",
+    );
+    // The slow fit's gate: given, reported, checked.
+    let slow = slow_file(&dir, &LuGre::paper().with_sigma0(6.0).unwrap(), &[0.0, 1.0]);
+    let slow = slow.to_str().unwrap();
+    let doc = json(&["fit", "--input", slow, "--gate", "0.01", "--json"]);
+    assert_eq!(doc["noise"]["handling"], "gate");
+    assert_eq!(doc["noise"]["gate"], 0.01);
+    assert_eq!(doc["turning_points"], 4);
+    rejects(
+        &["fit", "--input", slow, "--gate", "-1"],
+        "--gate: the gate must be a finite number >= 0",
     );
 }

@@ -9,8 +9,8 @@ use std::ffi::CString;
 
 use lugre::error::NormalForceError;
 use lugre::fit::{
-    fit_full, fit_full_smooth, fit_slow, Family, FitError, FitKind, FitReport, FitSpec,
-    FullOptions, CUBIC_READING_TOL,
+    fit_full, fit_full_smooth, fit_slow_with, Covariance, Family, FitError, FitKind, FitReport,
+    FitSpec, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions, CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
@@ -118,6 +118,22 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// "residuals" are coefficients, "normal_force" is True; "values" keeps the model's names
 /// (lugre.LuGre(**r["values"]) is the model per newton).
 ///
+/// `noise` ("auto", default, or "off"): "auto" estimates the position and force noise from the
+/// samples (third differences) and, in a full fit, reads an equally spaced noisy displacement
+/// as the smooth motion nearest the samples (as `lugre fit --noise`); the result's "noise" is
+/// {"position", "force", "handling", "description"} (estimated with "off" too, not used), and
+/// "warnings" lists,
+/// in words, why the estimates or intervals may not be trusted (a parameter at its bound, a
+/// residual RMS above 1.3 times the estimated force noise, residuals with a lag-1
+/// autocorrelation above 0.5). "covariance" says which covariance the standard errors come
+/// from: {"method": "classical" or "newey-west", "lags", "description", "lag1_autocorrelation",
+/// "ljung_box", "ljung_box_95"} (the sandwich when the Ljung-Box test finds the residuals
+/// correlated).
+///
+/// `gate` (slow fit): the noise gate on the reversals, in units of u: a turn counts once the
+/// input has come back from its extreme by at least gate (as `lugre fit --gate`); None: 8 times
+/// the estimated position noise (0 with noise="off").
+///
 /// `interpolate="cubic"` (full fit): the samples of a smooth motion read as the C1 cubic through
 /// them, subdivided to 1e-9 of their range (as `lugre fit --interpolate cubic`); the residual
 /// stays at the samples.
@@ -137,8 +153,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, stribeck=None, presliding=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, stribeck=None, presliding=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None, gate=None, stribeck=None, presliding=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None, stribeck=None, presliding=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -157,6 +173,8 @@ pub fn fit<'py>(
     interpolate: Option<&Bound<'py, PyAny>>,
     normal: Option<&Bound<'py, PyAny>>,
     v: Option<&Bound<'py, PyAny>>,
+    noise: Option<&Bound<'py, PyAny>>,
+    gate: Option<&Bound<'py, PyAny>>,
     stribeck: Option<&Bound<'py, PyAny>>,
     presliding: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
@@ -186,6 +204,8 @@ pub fn fit<'py>(
                 ("starts", given(starts)),
                 ("interpolate='cubic'", given(interpolate).filter(|_| cubic)),
                 ("normal", given(normal)),
+                ("noise", given(noise)),
+                ("gate", given(gate)),
             ],
         };
         return lab::fit(py, kind, &spec, args);
@@ -246,6 +266,20 @@ pub fn fit<'py>(
         ));
     }
     let starts = given(starts).map(|s| count(&s, "starts")).transpose()?;
+    let noise = match given(noise) {
+        Some(n) => noise_arg(&n)?,
+        None => Noise::Auto,
+    };
+    let gate = given(gate).map(|g| real(&g, "gate")).transpose()?;
+    if gate.is_some() && kind == FitKind::Full {
+        return Err(PyValueError::new_err(
+            "gate applies to the slow fit (kind='slow'): the full fit simulates every turn of the input",
+        ));
+    }
+    let mut slow_options = SlowOptions::default().with_noise(noise);
+    if let Some(g) = gate {
+        slow_options = slow_options.with_gate(g);
+    }
     let options = match kind {
         FitKind::Slow => {
             // As `lugre fit` refuses --x0 and --starts without --fit full.
@@ -281,7 +315,10 @@ pub fn fit<'py>(
         // `options` is set for the full fit only, which has times.
         .detach(|| match (&options, &t) {
             (Some((x0, starts)), Some(t)) => {
-                let options = FullOptions::default().with_x0(*x0).with_starts(*starts);
+                let options = FullOptions::default()
+                    .with_x0(*x0)
+                    .with_starts(*starts)
+                    .with_noise(noise);
                 if let Some(m) = &motion {
                     fit_full_smooth(&spec, m, &f, options)
                 } else if cubic {
@@ -292,9 +329,12 @@ pub fn fit<'py>(
                     fit_full(&spec, t, &u, &f, options)
                 }
             }
-            _ => fit_slow(&spec, &u, &f),
+            _ => fit_slow_with(&spec, &u, &f, slow_options),
         })
-        .map_err(|e| explain(py, e))?;
+        .map_err(|e| match e {
+            FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
+            e => explain(py, e),
+        })?;
 
     warn_unconverged(py, &report)?;
     let d = report_dict(py, &report, &spec, &f, normal.is_some())?;
@@ -345,6 +385,21 @@ fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
             Ok(r) => PyValueError::new_err(format!("kind must be {expected}, got {r}")),
             Err(e) => e,
         })
+}
+
+/// `noise`: "auto" or "off" (the core's names, case-insensitive).
+fn noise_arg(obj: &Bound<'_, PyAny>) -> PyResult<Noise> {
+    let expected = format!(
+        "one of {}",
+        Noise::NAMES.map(|n| format!("'{n}'")).join(", ")
+    );
+    let s = text(obj, "noise", &expected)?;
+    Noise::from_name(&s).ok_or_else(|| {
+        PyValueError::new_err(match obj.repr() {
+            Ok(r) => format!("noise must be {expected}, got {r}"),
+            Err(_) => format!("noise must be {expected}"),
+        })
+    })
 }
 
 /// A `str` argument, else a `TypeError` saying what was expected.
@@ -659,6 +714,43 @@ fn report_dict<'py>(
     d.set_item("model", r.family.label().to_ascii_lowercase())?;
     d.set_item("kind", r.kind.label())?;
     d.set_item("normal_force", normal)?;
+    match &r.noise {
+        Some(n) => {
+            let nd = PyDict::new(py);
+            nd.set_item("position", n.position)?;
+            nd.set_item("force", n.force)?;
+            nd.set_item("handling", n.handling.key())?;
+            nd.set_item("description", n.handling.describe())?;
+            match n.handling {
+                PositionHandling::Smoothed { lambda } => nd.set_item("lambda", lambda)?,
+                PositionHandling::Gate { gate } => nd.set_item("gate", gate)?,
+                _ => {}
+            }
+            d.set_item("noise", nd)?;
+        }
+        None => d.set_item("noise", py.None())?,
+    }
+    let warnings: Vec<String> = r
+        .warnings
+        .iter()
+        .map(|w| match w {
+            FitWarning::Misfit { slow: true, .. } | FitWarning::Structured { slow: true, .. } => {
+                format!("{w} (kind='full')")
+            }
+            _ => w.to_string(),
+        })
+        .collect();
+    d.set_item("warnings", warnings)?;
+    let cov = PyDict::new(py);
+    cov.set_item("method", r.covariance.key())?;
+    cov.set_item("description", r.covariance.describe())?;
+    if let Covariance::NeweyWest { lags } = r.covariance {
+        cov.set_item("lags", lags)?;
+    }
+    cov.set_item("lag1_autocorrelation", r.serial.lag1)?;
+    cov.set_item("ljung_box", r.serial.ljung_box)?;
+    cov.set_item("ljung_box_95", r.serial.critical)?;
+    d.set_item("covariance", cov)?;
     d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
     d.set_item("residuals", vec_out(py, r.residuals(f)))?;
     Ok(d)

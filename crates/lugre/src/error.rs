@@ -369,6 +369,8 @@ pub enum FitError {
     BadStarts { starts: usize, most: usize },
     #[error("x0 must be a finite number, got {value}", value = num(*.value))]
     BadX0 { value: f64 },
+    #[error("the gate must be a finite number >= 0 (in the units of u), got {value}", value = num(*.value))]
+    BadGate { value: f64 },
     #[error("{} cannot be identified from this data: {}", names_of(.parameters), reasons(.parameters))]
     Unidentifiable { parameters: Vec<Unidentified> },
     #[error("the model could not be evaluated at any of the {starts} starts (every start value gave a non-finite response): give start values for the parameters")]

@@ -6,8 +6,11 @@
 
 mod common;
 
-use common::Lcg;
-use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
+use common::{Gauss, Lcg};
+use lugre::fit::{
+    fit_full, fit_slow, fit_slow_with, Family, FitReport, FitSpec, FullOptions, Noise,
+    PositionHandling, SlowOptions,
+};
 use lugre::simulate::{merge_times, uniform_times};
 use lugre::{
     fit::Why, Dahl, DataError, FitError, Gamma, LuGre, LuGreParams, PiecewiseLinear, Simulator,
@@ -22,17 +25,6 @@ fn held(held: &[(&str, f64)]) -> FitSpec {
         .fold(FitSpec::new(Family::LuGre), |s, &(name, v)| {
             s.set(name, v).unwrap().fix(name).unwrap()
         })
-}
-
-/// Standard normal deviates by Box-Muller.
-struct Gauss(Lcg);
-
-impl Gauss {
-    fn next(&mut self) -> f64 {
-        // 1 - unit() is in (0, 1]: the logarithm is finite.
-        let r = (-2.0 * (1.0 - self.0.unit()).ln()).sqrt();
-        r * (std::f64::consts::TAU * self.0.unit()).cos()
-    }
 }
 
 /// The RMS of `f`.
@@ -173,6 +165,42 @@ fn slow_fit_recovers_canudas_de_wit_1995() {
     let f = noisy(&f, 0.01, 3);
     let r = fit_slow(&FitSpec::lugre(p), &u, &f).unwrap();
     check_recovery(&r, &[("sigma0", 1e5), ("fs", 1.5)], SLOW_FIT_RECOVERY);
+}
+
+#[test]
+fn slow_fit_gates_the_reversals_of_a_noisy_position() {
+    // Issue 26: 50 nm of position noise on a 20 um loop (Canudas de Wit 1995: sigma0 = 1e5 N/m,
+    // Fs = 1.5 N). Without a gate every wiggle of the noise near a turn is a reversal.
+    let p = LuGreParams::canudas_de_wit_1995();
+    let model = LuGre::from_params(p).unwrap();
+    let (u, f) = slow_record(&model, &[-1e-5, 1e-5], 4, 2, 2000);
+    let mut g = Gauss(Lcg(21));
+    let u: Vec<f64> = u.iter().map(|x| x + 5e-8 * g.next()).collect();
+    let f = noisy(&f, 0.01, 22);
+    let spec = FitSpec::lugre(p);
+    let off = fit_slow_with(&spec, &u, &f, SlowOptions::default().with_noise(Noise::Off)).unwrap();
+    assert!(off.turning_points.unwrap() > 20, "{:?}", off.turning_points);
+    let r = fit_slow_with(&spec, &u, &f, SlowOptions::default()).unwrap();
+    // Two periods of two reversals.
+    assert_eq!(r.turning_points, Some(4));
+    let noise = r.noise.unwrap();
+    assert!((noise.position / 5e-8 - 1.0).abs() < 0.1, "{noise:?}");
+    let gate = match noise.handling {
+        PositionHandling::Gate { gate } => gate,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(gate, SlowOptions::GATE_NOISE_SIGMAS * noise.position);
+    for (name, want) in [("sigma0", 1e5), ("fs", 1.5)] {
+        let got = r.estimate(name).unwrap().value;
+        assert!((got / want - 1.0).abs() < 0.02, "{name}: {got} vs {want}");
+    }
+    // A gate given is used as it is; a negative one is refused.
+    let given = fit_slow_with(&spec, &u, &f, SlowOptions::default().with_gate(1e-6)).unwrap();
+    assert_eq!(given.turning_points, Some(4));
+    assert_eq!(
+        fit_slow_with(&spec, &u, &f, SlowOptions::default().with_gate(-1.0)).unwrap_err(),
+        FitError::BadGate { value: -1.0 }
+    );
 }
 
 #[test]

@@ -320,6 +320,32 @@ class FitEstimate(TypedDict):
     ci95: Tuple[float, float]
     at_bound: bool
 
+# The noise levels estimated in the record and how the fit used them ("lambda" with
+# "smoothed", the smoothing's; "gate" with "gate"). Functional form: "lambda" is a keyword.
+FitNoise = TypedDict(
+    "FitNoise",
+    {
+        "position": float,
+        "force": float,
+        "handling": Literal["smoothed", "as_given", "uneven", "gate"],
+        "description": str,
+        "lambda": float,
+        "gate": float,
+    },
+    total=False,
+)
+
+@type_check_only
+class FitCovariance(TypedDict, total=False):
+    """Which covariance the standard errors come from, and the test that chose it."""
+
+    method: Literal["classical", "newey-west"]
+    description: str
+    lags: int
+    lag1_autocorrelation: float
+    ljung_box: float
+    ljung_box_95: float
+
 @type_check_only
 class StagedEstimate(FitEstimate):
     """One parameter of a staged fit, with the stage that determined it (a dict at runtime)."""
@@ -376,6 +402,9 @@ class FitResult(TypedDict):
     model: Literal["lugre", "dahl"]
     kind: Literal["slow", "full", "stribeck", "presliding"]
     normal_force: bool
+    noise: Optional[FitNoise]
+    warnings: list[str]
+    covariance: FitCovariance
     fitted: _Floats
     residuals: _Floats  # kind="stribeck": at the points
     # kind="stribeck" only: the points fitted, and the runs found in a record (None: a table).
@@ -414,6 +443,8 @@ def fit(
     interpolate: Literal["linear"] = "linear",
     normal: None = None,
     v: Optional[_Reals] = None,
+    noise: None = None,
+    gate: None = None,
     stribeck: _Record,
     presliding: _Record,
 ) -> StagedResult:
@@ -438,6 +469,8 @@ def fit(
     interpolate: Literal["linear", "cubic"] = "linear",
     normal: Optional[_Reals] = None,
     v: Optional[_Reals] = None,
+    noise: Literal["auto", "off"] = "auto",
+    gate: Optional[_Real] = None,
     stribeck: None = None,
     presliding: None = None,
 ) -> FitResult:

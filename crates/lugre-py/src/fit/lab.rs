@@ -29,7 +29,7 @@ pub(super) struct Args<'py> {
     pub presliding: Option<Bound<'py, PyAny>>,
     /// The options of the other fits, refused by name: `x0`, `starts`, `interpolate`,
     /// `normal`.
-    pub others: [(&'static str, Option<Bound<'py, PyAny>>); 4],
+    pub others: [(&'static str, Option<Bound<'py, PyAny>>); 6],
 }
 
 /// Whether `kind` is one of the lab's fits.

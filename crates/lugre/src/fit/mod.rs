@@ -27,6 +27,12 @@
 //! forward sensitivities of the simulation's recursion (eqs. X1-X4 in `fit/full.rs`) and
 //! several starts (the first from the data; the best end point wins).
 //!
+//! **Noise** ([`noise`], eqs. N1-N2). Both fits estimate the position and force noise from
+//! the record's third differences and report them ([`FitReport::noise`]); the full fit reads
+//! an equally spaced noisy displacement as the smooth motion nearest the samples (a smoothing
+//! spline whose residual equals the position noise), since the least-squares fit treats the
+//! input as exact. [`Noise::Off`] takes the samples as given.
+//!
 //! Both minimise `sum_i (y_i(p) - F_i)^2` with the `levenberg-marquardt` crate (MINPACK's
 //! trust-region method). Bounds `lo < p < hi` (default `0 < p < inf`: every parameter is
 //! positive) are built into the variables it moves: `p = lo + exp(theta)` (the
@@ -34,7 +40,10 @@
 //! the data (force plateaus, the relaxation after reversals, the steady sliding force against
 //! speed, linear least squares for `sigma1` and `sigma2`), so no guess is needed; a value given
 //! with [`FitSpec::set`] is used instead. A parameter whose true value is 0 (e.g. `sigma2` in
-//! the paper's examples) must be fixed: fitted parameters are positive.
+//! the paper's examples) goes to its bound: it is reported *at its bound* ([`Estimate::at_bound`],
+//! a warning in [`FitReport::warnings`]) with an interval that reaches the bound, and the other
+//! estimates are given as they are with it held there; the same for a user's bound the data
+//! push against (`vs` bounded below its true value). Fix it at 0 to fit without it.
 //!
 //! **Uncertainty** (eqs. S1-S2 in `fit/stats.rs`): the linearised covariance
 //! `s^2 (J^T J)^-1` at the optimum, `s^2 = RSS / (m - p)`, and 95 % intervals
@@ -78,8 +87,10 @@
 //! assert!(report.rms < 1e-12);
 //! ```
 
+mod covariance;
 mod full;
 mod lm;
+pub mod noise;
 mod plateaus;
 mod presliding;
 mod slow;
@@ -89,7 +100,9 @@ mod stats;
 mod stribeck;
 
 pub use crate::error::{FitError, Unidentified, Why};
+pub use covariance::{Covariance, FitWarning, SerialCorrelation, MISFIT_RATIO, STRUCTURED_RHO};
 pub use lm::FitProgress;
+pub use noise::{NoiseLevels, PositionHandling};
 pub use plateaus::{find_plateaus, Motion, Plateau, Plateaus, MIN_RUN, MIN_STEADY};
 pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
@@ -99,7 +112,7 @@ pub use stribeck::{fit_stribeck, steady_force, table_points, SteadyPoint};
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
 use crate::simulate::{Gamma, PiecewiseLinear, Simulator, SmoothSamples, Trajectory};
-use lm::{minimize, Config, Outcome};
+use lm::{minimize, Config, Evaluator, Outcome};
 use spec::Resolved;
 
 /// One fitted parameter.
@@ -148,6 +161,16 @@ pub struct FitReport {
     /// The model's output at every sample: `y°(rho_i)` from [`crate::HysteresisLoop`] (slow fit)
     /// or the exact simulation from [`Simulator`] (full fit).
     pub fitted: Vec<f64>,
+    /// The noise levels estimated in the record and how the fit used them (with [`Noise::Off`]
+    /// they are estimated and reported, and not used).
+    pub noise: Option<NoiseLevels>,
+    /// Why the estimates or their intervals may not be trusted (empty: no reason found); each
+    /// says it in words (`Display`).
+    pub warnings: Vec<FitWarning>,
+    /// Which covariance the standard errors come from (C1-C2).
+    pub covariance: Covariance,
+    /// The residuals' serial correlation (C1).
+    pub serial: SerialCorrelation,
 }
 
 impl FitReport {
@@ -186,6 +209,7 @@ impl FitReport {
 pub struct FullOptions<'p> {
     x0: f64,
     starts: usize,
+    noise: Noise,
     progress: Option<&'p mut dyn FnMut(&FitProgress)>,
 }
 
@@ -194,7 +218,33 @@ impl Default for FullOptions<'_> {
         Self {
             x0: 0.0,
             starts: Self::DEFAULT_STARTS,
+            noise: Noise::Auto,
             progress: None,
+        }
+    }
+}
+
+/// Whether a fit estimates the record's noise and takes it into account ([`noise`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Noise {
+    /// Estimate the position and force noise (N1); the full fit reads a noisy displacement as
+    /// the smooth motion nearest the samples (N2), the slow fit gates its reversals.
+    #[default]
+    Auto,
+    /// Use the samples as given.
+    Off,
+}
+
+impl Noise {
+    /// The names the front ends take.
+    pub const NAMES: [&'static str; 2] = ["auto", "off"];
+
+    /// `"auto"` or `"off"` (case-insensitive).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name.trim().to_ascii_lowercase().as_str() {
+            "auto" => Some(Noise::Auto),
+            "off" => Some(Noise::Off),
+            _ => None,
         }
     }
 }
@@ -204,6 +254,7 @@ impl std::fmt::Debug for FullOptions<'_> {
         f.debug_struct("FullOptions")
             .field("x0", &self.x0)
             .field("starts", &self.starts)
+            .field("noise", &self.noise)
             .field("progress", &self.progress.is_some())
             .finish()
     }
@@ -229,6 +280,13 @@ impl<'p> FullOptions<'p> {
         self
     }
 
+    /// Whether the record's noise is estimated and taken into account (default
+    /// [`Noise::Auto`]).
+    pub fn with_noise(mut self, noise: Noise) -> Self {
+        self.noise = noise;
+        self
+    }
+
     /// Called after every model evaluation with the fit's progress (default: nothing).
     pub fn with_progress(mut self, progress: &'p mut dyn FnMut(&FitProgress)) -> Self {
         self.progress = Some(progress);
@@ -241,6 +299,10 @@ impl<'p> FullOptions<'p> {
 
     pub fn starts(&self) -> usize {
         self.starts
+    }
+
+    pub fn noise(&self) -> Noise {
+        self.noise
     }
 }
 
@@ -297,10 +359,90 @@ fn check_count(samples: usize, parameters: usize) -> Result<(), FitError> {
 /// one or more periods of a slow periodic test (the record closes from its last sample to its
 /// first; trim a start-up transient first). See the module docs.
 pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitError> {
+    fit_slow_with(spec, u, f, SlowOptions::default())
+}
+
+/// Options of the slow fit: the defaults, changed with `with_*` (checked when the fit starts).
+///
+/// ```
+/// use lugre::fit::{Noise, SlowOptions};
+/// let options = SlowOptions::default().with_gate(1e-7);
+/// assert_eq!((options.gate(), options.noise()), (Some(1e-7), Noise::Auto));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SlowOptions {
+    gate: Option<f64>,
+    noise: Noise,
+}
+
+impl SlowOptions {
+    /// The default gate in standard deviations of the estimated position noise (N1): white
+    /// noise comes back from its running extreme by 8 of them about once in 10^15 samples.
+    pub const GATE_NOISE_SIGMAS: f64 = 8.0;
+
+    /// The default gate at most, as a fraction of the record's range: a coarsely sampled
+    /// record's jagged differences look like noise to (N1), and a larger gate would remove the
+    /// loops the test is made of.
+    pub const GATE_RANGE: f64 = 0.05;
+
+    /// The noise gate on the reversals, in the units of `u` (finite, `>= 0`; 0: every turn of
+    /// the samples is a reversal). Default: [`Self::GATE_NOISE_SIGMAS`] times the estimated
+    /// position noise, at most [`Self::GATE_RANGE`] of the record's range ([`Noise::Auto`]),
+    /// or 0 ([`Noise::Off`]).
+    pub fn with_gate(mut self, gate: f64) -> Self {
+        self.gate = Some(gate);
+        self
+    }
+
+    /// Whether the record's noise is estimated (and sets the default gate).
+    pub fn with_noise(mut self, noise: Noise) -> Self {
+        self.noise = noise;
+        self
+    }
+
+    /// The gate given, if any.
+    pub fn gate(&self) -> Option<f64> {
+        self.gate
+    }
+
+    pub fn noise(&self) -> Noise {
+        self.noise
+    }
+}
+
+/// [`fit_slow`] with options: the noise gate on the reversals and the noise handling.
+pub fn fit_slow_with(
+    spec: &FitSpec,
+    u: &[f64],
+    f: &[f64],
+    options: SlowOptions,
+) -> Result<FitReport, FitError> {
     check_columns(&[("u", u), ("F", f)])?;
+    if let Some(g) = options.gate {
+        if !(g.is_finite() && g >= 0.0) {
+            return Err(FitError::BadGate { value: g });
+        }
+    }
     let mut resolved = spec.resolve(FitKind::Slow)?;
     check_count(u.len(), resolved.free.len())?;
-    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None)?;
+    let mut levels = noise::levels(u, f, PositionHandling::AsGiven);
+    let gate = match (options.gate, options.noise) {
+        (Some(g), _) => g,
+        (None, Noise::Auto) => {
+            let (lo, hi) = u
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                    (a.min(x), b.max(x))
+                });
+            (SlowOptions::GATE_NOISE_SIGMAS * levels.position)
+                .min(SlowOptions::GATE_RANGE * (hi - lo))
+        }
+        (None, Noise::Off) => 0.0,
+    };
+    if options.gate.is_some() || options.noise == Noise::Auto {
+        levels.handling = PositionHandling::Gate { gate };
+    }
+    let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None, gate)?;
     let mut coarse_iterations = 0;
     let mut coarse_evaluations = 0;
     if u.len() > COARSE_ABOVE {
@@ -310,7 +452,13 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
         let (su, sf): (Vec<f64>, Vec<f64>) = idx.iter().map(|&i| (u[i], f[i])).unzip();
         // The reversals as estimated on the full record (the thinned one has the same).
         let turning = sl.turning_points().values().to_vec();
-        let sub = slow::SlowLoop::new(resolved.family, resolved.free.clone(), &su, Some(&turning))?;
+        let sub = slow::SlowLoop::new(
+            resolved.family,
+            resolved.free.clone(),
+            &su,
+            Some(&turning),
+            gate,
+        )?;
         slow_start(&mut resolved, &sub, &sf)?;
         let (_, coarse) = minimize(
             sub,
@@ -343,8 +491,10 @@ pub fn fit_slow(spec: &FitSpec, u: &[f64], f: &[f64]) -> Result<FitReport, FitEr
     // The fitted curve: (F1) with the turning-point values of the core's loop, which equals
     // `HysteresisLoop::y_at` at the samples' rho to a few roundings (unit-tested).
     let fitted = outcome.y.clone();
-    let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1)?;
+    let mut report = report(FitKind::Slow, &resolved, outcome, fitted, f, 1, &[])?;
     report.turning_points = Some(sl.turning_points().len());
+    report.noise = Some(levels);
+    report.check_fit(f);
     Ok(report)
 }
 
@@ -394,8 +544,12 @@ pub fn fit_full_smooth(
     for (&k, &fk) in knots.iter().zip(f) {
         rf[k] = fk;
     }
-    let mut report = fit_full(spec, rt, ru, &rf, options)?;
+    // The cubic reading takes the samples as exact: the noise is only reported.
+    let mut report = fit_full(spec, rt, ru, &rf, options.with_noise(Noise::Off))?;
     report.fitted = knots.iter().map(|&k| report.fitted[k]).collect();
+    let levels = noise::levels(motion.samples().1, f, PositionHandling::AsGiven);
+    report.noise = Some(levels);
+    report.check_fit(f);
     Ok(report)
 }
 
@@ -412,6 +566,7 @@ pub fn fit_full(
     let FullOptions {
         x0,
         starts,
+        noise,
         mut progress,
     } = options;
     let mut progress = |p: &FitProgress| {
@@ -440,6 +595,13 @@ pub fn fit_full(
             most: FullOptions::MAX_STARTS,
         });
     }
+    // The noise, and the displacement the fit runs on (smoothed where it is noisy).
+    let (smoothed, levels) = match noise {
+        Noise::Auto => noise::prepare_full(t, u, f),
+        Noise::Off => (None, noise::levels(u, f, PositionHandling::AsGiven)),
+    };
+    let u = smoothed.as_deref().unwrap_or(u);
+    let f_all = f;
     let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
     let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };
     let (t_m, u_m, f_m) = (pick(t), pick(u), pick(f));
@@ -454,11 +616,12 @@ pub fn fit_full(
     // The starting values from the measured rows alone (their speeds between measured rows).
     let measured = full::Exact::new(resolved.family, resolved.free.clone(), &t_m, &u_m, x0);
     let start = full::data_start(resolved.family, &measured, &u_m, &f_m, &resolved.values);
-    let mut ex = full::Rows::new(
-        full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0),
-        rows.clone(),
-        f.len(),
-    );
+    let mut exact = full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0);
+    if smoothed.is_some() {
+        // A smooth motion: each sample output with its own velocity (X5).
+        exact = exact.with_central_output(t, u);
+    }
+    let mut ex = full::Rows::new(exact, rows.clone(), f.len());
     let f = &f_m[..];
     resolved.fill_starts(&start);
     let base = resolved.values.clone();
@@ -512,13 +675,50 @@ pub fn fit_full(
         return Err(FitError::NoStart { starts });
     };
     outcome.evaluations = evaluations;
-    let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
-    let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
-    let mut out = Trajectory::with_capacity(u.len());
-    Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
-    let mut r = report(FitKind::Full, &resolved, outcome, pick(&out.y), f, starts)?;
+    let fitted = if smoothed.is_some() {
+        // (X5) is the fit's own output, not the simulator's at the knots.
+        let mut y = vec![0.0; u.len()];
+        let mut jac = nalgebra::DMatrix::zeros(u.len(), resolved.free.len());
+        ex.inner.evaluate(&outcome.values, &mut y, &mut jac);
+        y
+    } else {
+        let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
+        let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
+        let mut out = Trajectory::with_capacity(u.len());
+        Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
+        out.y
+    };
+    // A smoothed record: the estimates move with the smoothing's error too (S3).
+    let input_effects = match levels.handling {
+        PositionHandling::Smoothed { lambda } => {
+            // The output alone (no derivatives) for another reading of the input.
+            let model_at = |uk: &[f64]| -> Option<Vec<f64>> {
+                let mut e = full::Exact::new(resolved.family, Vec::new(), t, uk, x0)
+                    .with_central_output(t, uk);
+                let mut y = vec![0.0; uk.len()];
+                let mut none = nalgebra::DMatrix::zeros(uk.len(), 0);
+                e.evaluate(&outcome.values, &mut y, &mut none).then_some(y)
+            };
+            noise::input_effects(u, levels.position, lambda, model_at)
+                .into_iter()
+                .map(|dy| rows.iter().map(|&i| dy[i]).collect())
+                .collect()
+        }
+        _ => Vec::new(),
+    };
+    let mut r = report(
+        FitKind::Full,
+        &resolved,
+        outcome,
+        pick(&fitted),
+        f,
+        starts,
+        &input_effects,
+    )?;
     // The fitted curve at every row, measured or not.
-    r.fitted = out.y;
+    r.fitted = fitted;
+    r.noise = Some(levels);
+    r.check_fit(f_all);
     Ok(r)
 }
 
@@ -534,7 +734,8 @@ fn not_converged(resolved: &Resolved, outcome: &Outcome, m: usize) -> FitError {
     }
 }
 
-/// Statistics, identifiability and the report.
+/// Statistics, identifiability and the report (`input_effects`: the model's responses to draws
+/// of the input's error, eq. S3).
 fn report(
     kind: FitKind,
     resolved: &Resolved,
@@ -542,6 +743,7 @@ fn report(
     fitted: Vec<f64>,
     f: &[f64],
     starts: usize,
+    input_effects: &[Vec<f64>],
 ) -> Result<FitReport, FitError> {
     let m = f.len();
     if !outcome.rss.is_finite() {
@@ -550,8 +752,21 @@ fn report(
     let names = resolved.names();
     let values = resolved.free_values_of(&outcome.values);
     let data_norm = f.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let rss: f64 = f.iter().zip(&fitted).map(|(f, y)| (f - y) * (f - y)).sum();
-    let unc = stats::uncertainty(&outcome.jac, &names, &values, rss, data_norm)?;
+    let residuals: Vec<f64> = f.iter().zip(&fitted).map(|(f, y)| f - y).collect();
+    let rss: f64 = residuals.iter().map(|r| r * r).sum();
+    let start_values = resolved.free_values();
+    let at_bound: Vec<bool> = (0..names.len())
+        .map(|j| resolved.bounds[j].reached(values[j], start_values[j]))
+        .collect();
+    let unc = stats::uncertainty(
+        &outcome.jac,
+        &names,
+        &values,
+        &at_bound,
+        &residuals,
+        data_norm,
+        input_effects,
+    )?;
     let converged = outcome.converged();
     if !converged
         && !matches!(
@@ -561,15 +776,24 @@ fn report(
     {
         return Err(not_converged(resolved, &outcome, m));
     }
-    let estimates = (0..names.len())
+    let estimates: Vec<Estimate> = (0..names.len())
         .map(|j| {
             let half = unc.t * unc.stderr[j];
+            let b = resolved.bounds[j];
+            let mut ci95 = [b.clamp(values[j] - half), b.clamp(values[j] + half)];
+            if at_bound[j] {
+                // The interval of an estimate at its bound reaches the bound.
+                match bound_of(values[j], b) {
+                    x if x == b.lo => ci95[0] = b.lo,
+                    _ => ci95[1] = b.hi,
+                }
+            }
             Estimate {
                 name: names[j],
                 value: values[j],
                 stderr: unc.stderr[j],
-                ci95: [values[j] - half, values[j] + half],
-                at_bound: resolved.bounds[j].at_bound(values[j]),
+                ci95,
+                at_bound: at_bound[j],
             }
         })
         .collect();
@@ -581,6 +805,7 @@ fn report(
         .filter(|i| !resolved.free.contains(i))
         .map(|i| (resolved.family.parameters()[i], resolved.values[i]))
         .collect();
+    let warnings = bound_warnings(&estimates, &resolved.bounds);
     Ok(FitReport {
         kind,
         family: resolved.family,
@@ -599,7 +824,61 @@ fn report(
         termination: outcome.reason(),
         turning_points: None,
         fitted,
+        noise: None,
+        warnings,
+        covariance: unc.method,
+        serial: SerialCorrelation::of(&residuals),
     })
+}
+
+impl FitReport {
+    /// Adds the lack-of-fit warnings (C1-C2 module docs) for the measured forces `f` (the rows
+    /// fitted), once the noise levels are known.
+    fn check_fit(&mut self, f: &[f64]) {
+        let r: Vec<f64> = f
+            .iter()
+            .zip(&self.fitted)
+            .filter(|(f, _)| !f.is_nan())
+            .map(|(f, y)| f - y)
+            .collect();
+        let force_noise = self.noise.map(|n| n.force);
+        let slow = self.kind == FitKind::Slow;
+        // Checked again on another reading of the rows: the new check replaces the old.
+        self.warnings
+            .retain(|w| matches!(w, FitWarning::AtBound { .. }));
+        let f_rms = (f.iter().filter(|f| !f.is_nan()).map(|f| f * f).sum::<f64>()
+            / r.len().max(1) as f64)
+            .sqrt();
+        self.warnings.extend(covariance::lack_of_fit(
+            &r,
+            self.rms,
+            f_rms,
+            force_noise,
+            slow,
+        ));
+    }
+}
+
+/// The bound nearer `value`.
+fn bound_of(value: f64, b: Bounds) -> f64 {
+    if b.hi.is_finite() && (value - b.hi).abs() < (value - b.lo).abs() {
+        b.hi
+    } else {
+        b.lo
+    }
+}
+
+/// Each estimate at its bound.
+fn bound_warnings(estimates: &[Estimate], bounds: &[Bounds]) -> Vec<FitWarning> {
+    estimates
+        .iter()
+        .zip(bounds)
+        .filter(|(e, _)| e.at_bound)
+        .map(|(e, b)| FitWarning::AtBound {
+            name: e.name,
+            bound: bound_of(e.value, *b),
+        })
+        .collect()
 }
 
 impl FitReport {
@@ -619,7 +898,6 @@ impl FitReport {
 
 #[cfg(test)]
 mod tests {
-    use super::lm::Evaluator;
     use super::*;
     use nalgebra::DMatrix;
 
@@ -663,7 +941,7 @@ mod tests {
         let (_, outcome) = minimize(eval, &f, &resolved, &[1.0, 1.0], config, &mut |_, _| {});
         assert!(!outcome.converged());
         let fitted = outcome.y.clone();
-        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap();
+        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap();
         assert!(!r.converged);
         assert!(
             r.termination.contains("without meeting the tolerances"),
@@ -684,7 +962,7 @@ mod tests {
             &mut |_, _| {},
         );
         let fitted = outcome.y.clone();
-        let e = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap_err();
+        let e = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap_err();
         assert!(matches!(e, FitError::NotConverged { .. }), "{e}");
         assert!(e.to_string().starts_with("the fit did not converge"), "{e}");
     }
@@ -702,7 +980,7 @@ mod tests {
         );
         assert!(outcome.converged());
         let fitted = outcome.y.clone();
-        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1).unwrap();
+        let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap();
         assert!((r.estimates[0].value - 2.0).abs() < 0.05, "{r:?}");
         assert!((r.estimates[1].value - 0.8).abs() < 0.02, "{r:?}");
     }

@@ -91,8 +91,10 @@ struct LongSegment {
 
 /// The sample indices at which the cyclic sequence `u` reverses, ascending. In a run of equal
 /// values the first sample stands for the run (the run at the end of the record continues the
-/// one at its start, cyclically).
-fn cyclic_reversals(u: &[f64]) -> Vec<usize> {
+/// one at its start, cyclically). With a gate `gate > 0`, a turn is a reversal only once the
+/// sequence has come back from its extreme by at least `gate` (the rule of the rainflow
+/// counter's gate, [`crate::cycles`]): noise smaller than the gate makes no reversal.
+fn cyclic_reversals(u: &[f64], gate: f64) -> Vec<usize> {
     let n = u.len();
     let mut reps: Vec<usize> = (0..n).filter(|&i| i == 0 || u[i] != u[i - 1]).collect();
     if reps.len() > 1 && u[n - 1] == u[0] {
@@ -103,6 +105,9 @@ fn cyclic_reversals(u: &[f64]) -> Vec<usize> {
     if m < 2 {
         return Vec::new();
     }
+    if gate > 0.0 {
+        return gated_reversals(u, &reps, gate);
+    }
     let mut out: Vec<usize> = (0..m)
         .filter(|&j| {
             let prev = u[reps[(j + m - 1) % m]];
@@ -112,6 +117,36 @@ fn cyclic_reversals(u: &[f64]) -> Vec<usize> {
         })
         .map(|j| reps[j])
         .collect();
+    out.sort_unstable();
+    out
+}
+
+/// [`cyclic_reversals`] with a gate: one walk round the cycle of run representatives `reps`
+/// from the highest (a reversal whatever the gate), each extreme confirmed once the sequence
+/// has come back from it by `gate`.
+fn gated_reversals(u: &[f64], reps: &[usize], gate: f64) -> Vec<usize> {
+    let m = reps.len();
+    let top = (0..m).fold(0, |b, j| if u[reps[j]] > u[reps[b]] { j } else { b });
+    let mut out = vec![reps[top]];
+    // Heading down from the top: the candidate is the lowest value since the last reversal.
+    let mut down = true;
+    let mut cand = reps[top];
+    for step in 1..m {
+        let i = reps[(top + step) % m];
+        let (v, c) = (u[i], u[cand]);
+        let (further, back) = if down { (v < c, v - c) } else { (v > c, c - v) };
+        if further {
+            cand = i;
+        } else if back >= gate {
+            out.push(cand);
+            down = !down;
+            cand = i;
+        }
+    }
+    // The walk ends below the top: a last minimum is confirmed by the climb back to it.
+    if down && u[reps[top]] - u[cand] >= gate {
+        out.push(cand);
+    }
     out.sort_unstable();
     out
 }
@@ -175,16 +210,18 @@ fn refined_reversal(u: &[f64], r: usize) -> f64 {
 
 impl SlowLoop {
     /// Places the samples `u` (finite, checked by the caller) on their loop, each reversal
-    /// estimated between the samples ([`refined_reversal`]), or at `turning` (the values
-    /// estimated on the full record, for a thinned one with the same reversals).
+    /// (turns by at least `gate`, [`cyclic_reversals`]) estimated between the samples
+    /// ([`refined_reversal`]), or at `turning` (the values estimated on the full record, for a
+    /// thinned one with the same reversals).
     pub fn new(
         family: Family,
         free: Vec<usize>,
         u: &[f64],
         turning: Option<&[f64]>,
+        gate: f64,
     ) -> Result<Self, FitError> {
         let n = u.len();
-        let rev = cyclic_reversals(u);
+        let rev = cyclic_reversals(u, gate);
         if !rev.iter().any(|&r| r > 0 && r < n - 1) {
             return Err(FitError::NoReversal { fit: "slow" });
         }
@@ -501,11 +538,19 @@ mod tests {
         let u = [
             0.0, 0.5, 1.0, 1.0, 0.0, -1.0, 0.0, 0.5, 1.0, 0.0, -1.0, -0.5, 0.0,
         ];
-        assert_eq!(cyclic_reversals(&u), vec![2, 5, 8, 10]);
+        assert_eq!(cyclic_reversals(&u, 0.0), vec![2, 5, 8, 10]);
+        // Any gate up to the smallest excursion finds the same (the top's run at its first
+        // sample, as without a gate).
+        assert_eq!(cyclic_reversals(&u, 0.5), vec![2, 5, 8, 10]);
         // A ramp reverses only where the record closes.
-        assert_eq!(cyclic_reversals(&[0.0, 1.0, 2.0]), vec![0, 2]);
-        assert!(cyclic_reversals(&[3.0, 3.0]).is_empty());
-        let e = SlowLoop::new(Family::LuGre, vec![0, 4], &[0.0, 1.0, 2.0], None).unwrap_err();
+        assert_eq!(cyclic_reversals(&[0.0, 1.0, 2.0], 0.0), vec![0, 2]);
+        assert_eq!(cyclic_reversals(&[0.0, 1.0, 2.0], 1.0), vec![0, 2]);
+        assert!(cyclic_reversals(&[3.0, 3.0], 0.0).is_empty());
+        // A wiggle of 0.1 on the way down is two reversals without a gate, none with 0.2.
+        let w = [0.0, 1.0, 0.5, 0.6, 0.2, -1.0, -0.5];
+        assert_eq!(cyclic_reversals(&w, 0.0), vec![1, 2, 3, 5]);
+        assert_eq!(cyclic_reversals(&w, 0.2), vec![1, 5]);
+        let e = SlowLoop::new(Family::LuGre, vec![0, 4], &[0.0, 1.0, 2.0], None, 0.0).unwrap_err();
         assert_eq!(e, FitError::NoReversal { fit: "slow" });
     }
 
@@ -527,7 +572,7 @@ mod tests {
                 Family::LuGre => (vec![6.0, 1.0, 0.0, 1.0, 2.0, 1.0, 1.0], vec![0, 4]),
                 Family::Dahl => (vec![3.0, 2.0], vec![0, 1]),
             };
-            let mut sl = SlowLoop::new(family, free.clone(), &u, None).unwrap();
+            let mut sl = SlowLoop::new(family, free.clone(), &u, None, 0.0).unwrap();
             // Both periods' turning points: the same periodic loop.
             assert_eq!(
                 sl.turning_points().values(),

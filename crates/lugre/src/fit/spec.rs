@@ -221,13 +221,28 @@ impl Bounds {
         }
     }
 
+    /// Whether the estimate `p` is at a bound: [`Self::at_bound`], or, for the bound 0, below `1e-6` of the fit's start `start`: the
+    /// log-map's variable has run 14 units towards minus infinity, which only a push against
+    /// the bound does (`sigma2 = 0` in data without viscous friction).
+    pub(crate) fn reached(self, p: f64, start: f64) -> bool {
+        self.at_bound(p) || (self.lo == 0.0 && p <= AT_ZERO_OF_START * start)
+    }
+
+    /// Cuts `x` to the bounds (an interval of an estimate at its bound ends there).
+    pub(crate) fn clamp(self, x: f64) -> f64 {
+        x.max(self.lo).min(self.hi)
+    }
+
     /// Where `p` sits relative to the bounds: within `1e-6` of the span (relative) of one of
     /// them, the optimizer's variable has run off to infinity and the estimate is the bound.
-    pub(crate) fn at_bound(self, p: f64) -> bool {
+    fn at_bound(self, p: f64) -> bool {
         let near = |b: f64| (p - b).abs() <= 1e-6 * b.abs().max(p.abs());
         (self.lo > 0.0 && near(self.lo)) || (self.hi.is_finite() && near(self.hi))
     }
 }
+
+/// A fitted value this far below its start, with the bound 0, is at the bound.
+const AT_ZERO_OF_START: f64 = 1e-6;
 
 /// The map between a bounded parameter `p` and the unconstrained variable `theta` the
 /// Levenberg-Marquardt iteration moves: `p = lo + exp(theta + shift)` for `hi = inf` (the

@@ -15,6 +15,18 @@
 //! scaling makes the result independent of the parameters' units, and the eigenvalues give the
 //! condition number used below.
 //!
+//! Where the residuals are correlated (a Ljung-Box test), the covariance is the Newey-West
+//! sandwich (C2) instead ([`super::covariance`]). Where the input itself carries an error (a
+//! smoothed displacement, [`super::noise`]), the estimates move with it too: with `dy_k` the
+//! model's response to the `k`-th of `K` draws of the input's error (the fitted parameters
+//! held),
+//!
+//! ```text
+//! Cov += 1/(K-1) sum_k (d_k - d) (d_k - d)^T     d_k = (J^T J)^-1 J^T dy_k,  d = mean d_k   (S3)
+//! ```
+//!
+//! the linearised covariance of the least-squares estimate under that error.
+//!
 //! A parameter is reported as not identifiable (an error, not a number) when
 //! * its column of `J` is zero relative to the force: it has no effect on the output
 //!   (`|p_j J_j| <= 1e-12 |F|`), e.g. `vs` when `Fs = Fc`;
@@ -26,9 +38,15 @@
 //!   from 0 nor from twice its value: e.g. `sigma1` from quasi-static data, whose effect
 //!   `sigma1 z'` is far below the noise.
 //!
+//! A parameter at one of its bounds (see [`super::FitReport`]; e.g. `sigma2 = 0` on data without
+//! viscous friction) is exempt from the first and third tests: its effect vanishes with its
+//! value, and its interval reaches the bound. Its standard error is that of (S1), the
+//! curvature of the sum of squares at the bound.
+//!
 //! Parameters without effect, and collinear ones, are set aside (as if fixed) and the rest is
 //! analysed again, so that one error names every parameter the data do not determine.
 
+use super::covariance::{self, Covariance};
 use crate::error::{FitError, Unidentified, Why};
 use nalgebra::{DMatrix, SymmetricEigen};
 
@@ -50,6 +68,8 @@ pub(crate) struct Uncertainty {
     pub correlation: Vec<Vec<f64>>,
     /// Condition number of the scaled normal matrix `R`.
     pub condition: f64,
+    /// Which covariance the standard errors come from.
+    pub method: Covariance,
 }
 
 /// (S1)-(S2) and the identifiability check. `jac` is `m x p` (column-major, one column per free
@@ -60,9 +80,12 @@ pub(crate) fn uncertainty(
     jac: &DMatrix<f64>,
     names: &[&'static str],
     values: &[f64],
-    rss: f64,
+    at_bound: &[bool],
+    residuals: &[f64],
     data_norm: f64,
+    input_effects: &[Vec<f64>],
 ) -> Result<Uncertainty, FitError> {
+    let rss: f64 = residuals.iter().map(|r| r * r).sum();
     let (m, p) = jac.shape();
     let dof = (m - p) as f64;
     let normal = jac.tr_mul(jac);
@@ -71,7 +94,9 @@ pub(crate) fn uncertainty(
     let mut kept = Vec::new();
     for j in 0..p {
         let sensitivity = scale[j] * values[j].abs() / data_norm;
-        if sensitivity > NO_EFFECT {
+        // At its bound 0 a parameter's effect `p J_p` vanishes with `p`, not with `J_p`: it is
+        // reported at its bound, not as without effect.
+        if sensitivity > NO_EFFECT || (at_bound[j] && scale[j] > 0.0) {
             kept.push(j);
         } else {
             problems.push(Unidentified {
@@ -140,14 +165,23 @@ pub(crate) fn uncertainty(
     });
     let s2 = rss / dof;
     let t = t_quantile_975(dof);
+    // (S1), or (C2) where the residuals are correlated: the covariance of the scaled
+    // parameters.
+    let (cov, method) =
+        match covariance::newey_west(jac, &kept, &scale, &inv_r, residuals, data_norm) {
+            Some((cov, lags)) => (cov, Covariance::NeweyWest { lags }),
+            None => (inv_r.clone() * s2, Covariance::Classical),
+        };
+    let cov = cov + input_covariance(jac, &kept, &scale, &inv_r, input_effects);
     let stderr: Vec<f64> = (0..q)
-        .map(|a| (s2 * inv_r[(a, a)]).sqrt() / scale[kept[a]])
+        .map(|a| cov[(a, a)].sqrt() / scale[kept[a]])
         .collect();
     for a in 0..q {
         let j = kept[a];
         let relative_half_width = t * stderr[a] / values[j].abs();
-        // NaN (a zero estimate) counts as unidentifiable too.
-        if relative_half_width.is_nan() || relative_half_width >= 1.0 {
+        // NaN (a zero estimate) counts as unidentifiable too; an estimate at its bound has an
+        // interval that reaches the bound.
+        if !at_bound[j] && (relative_half_width.is_nan() || relative_half_width >= 1.0) {
             problems.push(Unidentified {
                 name: names[j],
                 value: values[j],
@@ -168,7 +202,7 @@ pub(crate) fn uncertainty(
     let correlation = (0..q)
         .map(|a| {
             (0..q)
-                .map(|b| inv_r[(a, b)] / (inv_r[(a, a)] * inv_r[(b, b)]).sqrt())
+                .map(|b| cov[(a, b)] / (cov[(a, a)] * cov[(b, b)]).sqrt())
                 .collect()
         })
         .collect();
@@ -177,7 +211,51 @@ pub(crate) fn uncertainty(
         t,
         correlation,
         condition,
+        method,
     })
+}
+
+/// (S3) in the scaled variables: the covariance of the estimates that the input's own error
+/// causes, from the model's responses `dy_k` to draws of it (none: 0).
+fn input_covariance(
+    jac: &DMatrix<f64>,
+    kept: &[usize],
+    scale: &[f64],
+    inv_r: &DMatrix<f64>,
+    input_effects: &[Vec<f64>],
+) -> DMatrix<f64> {
+    let q = kept.len();
+    let mut cov = DMatrix::zeros(q, q);
+    let mut mean = nalgebra::DVector::zeros(q);
+    let ds: Vec<nalgebra::DVector<f64>> = input_effects
+        .iter()
+        .map(|dy| {
+            let g = nalgebra::DVector::from_iterator(
+                q,
+                kept.iter().map(|&j| {
+                    jac.column(j)
+                        .iter()
+                        .zip(dy)
+                        .map(|(a, b)| a * b)
+                        .sum::<f64>()
+                        / scale[j]
+                }),
+            );
+            inv_r * g
+        })
+        .collect();
+    if ds.len() < 2 {
+        return cov;
+    }
+    let k = ds.len() as f64;
+    for d in &ds {
+        mean += d / k;
+    }
+    for d in &ds {
+        let c = d - &mean;
+        cov += &c * c.transpose() / (k - 1.0);
+    }
+    cov
 }
 
 /// The 97.5 % quantile of Student's t distribution with `dof >= 1` degrees of freedom (the
@@ -261,12 +339,27 @@ mod tests {
         assert!(t_quantile_975(0.5).is_nan());
     }
 
+    /// Ten residuals with RSS = 8 and no serial correlation to speak of.
+    const WHITE_8: [f64; 10] = {
+        let a = 0.894_427_190_999_916; // sqrt(0.8)
+        [a, -a, -a, a, a, -a, a, -a, -a, a]
+    };
+
     #[test]
     fn straight_line_statistics() {
         // y = p0 + p1 x: the textbook covariance s^2 (X^T X)^-1.
         let x: Vec<f64> = (0..10).map(f64::from).collect();
         let jac = DMatrix::from_fn(10, 2, |i, j| if j == 0 { 1.0 } else { x[i] });
-        let u = uncertainty(&jac, &["p0", "p1"], &[10.0, 2.0], 8.0, 100.0).unwrap();
+        let u = uncertainty(
+            &jac,
+            &["p0", "p1"],
+            &[10.0, 2.0],
+            &[false; 2],
+            &WHITE_8,
+            100.0,
+            &[],
+        )
+        .unwrap();
         let s2: f64 = 8.0 / 8.0;
         // (X^T X)^-1 for x = 0..9: [[sum x^2, -sum x], [-sum x, n]] / (n sum x^2 - (sum x)^2).
         let det: f64 = 10.0 * 285.0 - 45.0 * 45.0;
@@ -295,11 +388,14 @@ mod tests {
             stderr: 0.0,
             relative_half_width: 0.0,
         });
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], 1.0, 1.0).unwrap_err();
+        let refused = |jac: &DMatrix<f64>, values: [f64; 2]| {
+            uncertainty(jac, &["a", "b"], &values, &[false; 2], &[1.0; 10], 1.0, &[]).unwrap_err()
+        };
+        let e = refused(&jac, [1.0, 1.0]);
         assert!(e.to_string().starts_with("b cannot be identified"), "{e}");
         assert_eq!(why(e), vec![("b", no_effect)]);
         let jac = DMatrix::from_fn(10, 2, |i, _| 1.0 + i as f64);
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 1.0], 1.0, 1.0).unwrap_err();
+        let e = refused(&jac, [1.0, 1.0]);
         assert!(
             e.to_string().starts_with("a, b cannot be identified"),
             "{e}"
@@ -319,7 +415,7 @@ mod tests {
         assert!(!text.contains("inf"), "{text}");
         // A parameter driven to 0, and another that noise swamps: both named.
         let jac = DMatrix::from_fn(10, 2, |i, j| if j == 0 { 1e-3 } else { i as f64 });
-        let e = uncertainty(&jac, &["a", "b"], &[1.0, 0.0], 1.0, 1.0).unwrap_err();
+        let e = refused(&jac, [1.0, 0.0]);
         assert_eq!(why(e), vec![("a", wide), ("b", no_effect)]);
     }
 }

@@ -203,6 +203,7 @@ pub fn fit_stribeck(spec: &FitSpec, points: &[SteadyPoint]) -> Result<FitReport,
         weighted_fit,
         &data,
         VS_FACTORS.len(),
+        &[],
     )?;
     // The curve and its RMS in force units (the statistics above are the weighted problem's).
     let p = resolved.lugre(&values);

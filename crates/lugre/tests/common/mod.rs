@@ -284,3 +284,14 @@ pub fn arc_contains(outer: &Loop, inner: &Loop, p: f64) -> bool {
             && inner.end.rho + shift <= outer.end.rho + slack
     })
 }
+
+/// Standard normal deviates by Box-Muller.
+pub struct Gauss(pub Lcg);
+
+impl Gauss {
+    pub fn next(&mut self) -> f64 {
+        // 1 - unit() is in (0, 1]: the logarithm is finite.
+        let r = (-2.0 * (1.0 - self.0.unit()).ln()).sqrt();
+        r * (std::f64::consts::TAU * self.0.unit()).cos()
+    }
+}

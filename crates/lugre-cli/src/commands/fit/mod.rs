@@ -17,8 +17,8 @@ use anyhow::{anyhow, bail, Result};
 use clap::{Args, ValueEnum};
 use indicatif::ProgressBar;
 use lugre::fit::{
-    fit_full, fit_full_smooth, fit_slow, FitError, FitKind, FitProgress, FitReport, FitSpec,
-    FullOptions, CUBIC_READING_TOL,
+    fit_full, fit_full_smooth, fit_slow_with, FitError, FitKind, FitProgress, FitReport, FitSpec,
+    FullOptions, Noise, SlowOptions, CUBIC_READING_TOL,
 };
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -29,7 +29,7 @@ use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
-use crate::numbers::{parse_number, Whole};
+use crate::numbers::{parse_number, Real, Whole};
 use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
@@ -132,10 +132,38 @@ pub(crate) struct FitArgs {
         help_heading = "Fit"
     )]
     pub(crate) starts: Option<usize>,
+    /// Noise in the record: 'auto' (default) estimates the position and force noise from the
+    /// samples (third differences) and, in a full fit, reads an equally spaced noisy
+    /// displacement as the smooth motion nearest the samples; 'off' takes the samples as exact.
+    #[arg(long, value_name = "auto|off", value_parser = parse_noise, help_heading = "Fit")]
+    pub(crate) noise: Option<Noise>,
+    /// Slow fit: the noise gate on the reversals, in units of u (after --scale): a turn counts
+    /// once the input has come back from its extreme by at least H, so that noise makes no
+    /// reversals (0: every turn counts). Default: 8 times the position noise estimated in the
+    /// record (0 with --noise off).
+    #[arg(
+        long,
+        value_name = "H",
+        allow_hyphen_values = true,
+        value_parser = Real,
+        help_heading = "Fit"
+    )]
+    pub(crate) gate: Option<f64>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
     #[command(flatten)]
     pub(crate) plot: PlotArgs,
+}
+
+/// `--noise`: one of the core's names.
+fn parse_noise(text: &str) -> Result<Noise, String> {
+    Noise::from_name(text).ok_or_else(|| {
+        format!(
+            "expected one of {}, got {}",
+            Noise::NAMES.join(", "),
+            crate::fmt::quoted(&crate::fmt::excerpt(text))
+        )
+    })
 }
 
 /// The measured record.
@@ -173,6 +201,8 @@ struct Request<'a> {
     full: Option<(f64, usize)>,
     /// The full fit's reading of the displacement between samples.
     cubic: bool,
+    noise: Noise,
+    gate: Option<f64>,
 }
 
 impl FitChoice {
@@ -227,6 +257,8 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         if args.starts.is_some() {
             bail!("--starts applies to the full fit (add --fit full)");
         }
+    } else if args.gate.is_some() {
+        bail!("--gate applies to the slow fit (the full fit simulates every turn of the input)");
     }
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
@@ -275,6 +307,8 @@ fn parse(args: &FitArgs) -> Result<Request<'_>> {
         record,
         full,
         cubic,
+        noise: args.noise.unwrap_or_default(),
+        gate: args.gate,
     })
 }
 
@@ -294,7 +328,16 @@ fn compute(r: &Request) -> Result<FitReport> {
     Ok(match &r.full {
         // Times, if any, were checked when read; the slow loop depends on the turning points
         // alone.
-        None => fit_slow(&r.spec, &record.u, &record.f).map_err(with_file)?,
+        None => {
+            let mut options = SlowOptions::default().with_noise(r.noise);
+            if let Some(gate) = r.gate {
+                options = options.with_gate(gate);
+            }
+            fit_slow_with(&r.spec, &record.u, &record.f, options).map_err(|e| match e {
+                FitError::BadGate { .. } => anyhow!("--gate: {e}"),
+                other => with_file(other),
+            })?
+        }
         Some((x0, starts)) => {
             let t = record.times_for_full_fit(r.path)?;
             let mut progress = FitProgressBar::new();
@@ -302,6 +345,7 @@ fn compute(r: &Request) -> Result<FitReport> {
             let options = FullOptions::default()
                 .with_x0(*x0)
                 .with_starts(*starts)
+                .with_noise(r.noise)
                 .with_progress(&mut report);
             let result = if let Some(motion) = &record.velocity {
                 fit_full_smooth(&r.spec, motion, &record.f, options).map_err(with_file)

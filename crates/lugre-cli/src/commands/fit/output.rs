@@ -2,7 +2,7 @@
 //! table and the JSON document.
 
 use anyhow::Result;
-use lugre::fit::{Family, FitKind, FitReport};
+use lugre::fit::{Covariance, Family, FitKind, FitReport, FitWarning, PositionHandling};
 use lugre::model::{normal, Parameter};
 use std::io::Write;
 use std::path::Path;
@@ -244,8 +244,21 @@ pub(super) fn print_table(
         "{} iterations, {} model evaluations: {}",
         r.iterations, r.evaluations, r.termination
     )?;
+    if let Some(n) = &r.noise {
+        writeln!(
+            w,
+            "noise estimated in the record: position {}, force {} (standard deviations); {}",
+            sig(n.position, 4),
+            sig(n.force, 4),
+            n.handling.describe()
+        )?;
+    }
     if r.estimates.len() > 1 {
         print_correlation(w, r, normal)?;
+    }
+    writeln!(w, "standard errors: {}", r.covariance.describe())?;
+    for warning in &r.warnings {
+        writeln!(w, "warning: {}", warning_text(warning))?;
     }
     Ok(())
 }
@@ -262,6 +275,19 @@ pub(super) fn write_fixed(
         writeln!(w, "fixed: {}", fixed.join(", "))?;
     }
     Ok(())
+}
+
+/// A warning of the core, with the flag that does what it suggests.
+pub(super) fn warning_text(warning: &FitWarning) -> String {
+    match warning {
+        FitWarning::Misfit { slow: true, .. } | FitWarning::Structured { slow: true, .. } => {
+            format!("{warning} (--fit full)")
+        }
+        FitWarning::AtBound { name, bound } if *bound == 0.0 => {
+            format!("{warning} (--fix {name}=0)")
+        }
+        _ => warning.to_string(),
+    }
 }
 
 fn print_correlation(w: &mut impl Write, r: &FitReport, normal: bool) -> Result<()> {
@@ -347,6 +373,53 @@ pub(super) fn write_json<W: Write>(
         j.raw(",\"turning_points\":")?;
         j.int(n)?;
     }
+    if let Some(n) = &r.noise {
+        j.raw(",\"noise\":{\"position\":")?;
+        num_or_null(&mut j, n.position)?;
+        j.raw(",\"force\":")?;
+        num_or_null(&mut j, n.force)?;
+        j.raw(&format!(
+            ",\"handling\":{},\"description\":{}",
+            quote(n.handling.key()),
+            quote(&n.handling.describe())
+        ))?;
+        match n.handling {
+            PositionHandling::Smoothed { lambda } => {
+                j.raw(",\"lambda\":")?;
+                num_or_null(&mut j, lambda)?;
+            }
+            PositionHandling::Gate { gate } => {
+                j.raw(",\"gate\":")?;
+                num_or_null(&mut j, gate)?;
+            }
+            _ => {}
+        }
+        j.raw("}")?;
+    }
+    j.raw(",\"warnings\":[")?;
+    for (k, warning) in r.warnings.iter().enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&quote(&warning_text(warning)))?;
+    }
+    j.raw("]")?;
+    j.raw(&format!(
+        ",\"covariance\":{{\"method\":{},\"description\":{}",
+        quote(r.covariance.key()),
+        quote(&r.covariance.describe())
+    ))?;
+    if let Covariance::NeweyWest { lags } = r.covariance {
+        j.raw(",\"lags\":")?;
+        j.int(lags)?;
+    }
+    j.raw(",\"lag1_autocorrelation\":")?;
+    num_or_null(&mut j, r.serial.lag1)?;
+    j.raw(",\"ljung_box\":")?;
+    num_or_null(&mut j, r.serial.ljung_box)?;
+    j.raw(",\"ljung_box_95\":")?;
+    num_or_null(&mut j, r.serial.critical)?;
+    j.raw("}")?;
     j.raw(&format!(",\"normal_force\":{normal}"))?;
     j.raw(",\"input\":")?;
     j.raw(&quote(&path.display().to_string()))?;
