@@ -10,9 +10,11 @@ q' = xd - x (Kp = 3 N/m, Ki = 4 N/(m s), Kv = 6 N s/m, xd = 1 m). With e = x - x
 
 1. The friction's own describing function (``lugre.sweep``: N(A, w) = k_eq + i w c_eq for
    e = A sin(w t)) closed with the linear rest, N = m w^2 - Kp + i (Ki / w - Kv w), has no
-   solution: it needs k_eq < 0 below sqrt(Kp / m) or c_eq < 0 above sqrt(Ki / Kv), and the
-   friction's k_eq is never that negative while c_eq = E / (pi w A^2) > 0. A sinusoidal
-   displacement never sticks, and the hunting is made of sticks.
+   solution: it needs k_eq <= m Ki / Kv - Kp = -2.33 N/m below sqrt(Ki / Kv) or c_eq < 0 above,
+   and the friction's k_eq is never that negative while c_eq = E / (pi w A^2) > 0. A sinusoidal
+   displacement never sticks, and the hunting is made of sticks. Nor has the block "mass +
+   friction" under a sine force with the whole PID as the linear part: its gain jumps over the
+   one needed as the force passes the break-away (nothing stops the slip).
 2. The block "mass + friction + the PD part" driven by the integral force w(t) = W sin(w t)
    (``lugre.dynamics`` with a force profile and gains (Kp, 0, Kv), run to its periodic steady
    state) has a describing function N_e(W, w) = e_1 / W that sticks and slips. The integrator
@@ -47,7 +49,8 @@ PERIODS, FORCE_POINTS, SAMPLES = 6, 512, 2048
 
 def first_harmonic(t, y, w):
     """Complex amplitude Y of y ~ Im(Y exp(i w t)) over whole periods sampled uniformly
-    (endpoint excluded): the rectangle rule, exact for trigonometric polynomials."""
+    (endpoint excluded): the rectangle rule, exact for trigonometric polynomials of degree
+    below half the samples."""
     return 1j * 2.0 / len(y) * np.sum(y * np.exp(-1j * w * t))
 
 
@@ -124,6 +127,35 @@ def block(W, w):
     return first_harmonic(t, e, w) / W, e
 
 
+def open_loop_gap(w, tol=1e-7):
+    """The whole PID as the linear part instead: the block mass + friction alone under the force
+    U sin(w t) (from rest, no kick) with 1 + C(i w) N_x(U, w) = 0, C = Kp + Ki / (i w) + i Kv w,
+    needs |N_x| = |x_1| / U = |1 / C(i w)|. Bisection in U on "|N_x| above that" closes in on
+    where it is crossed: a jump (the gains at both ends of a bracket of width tol Fs)."""
+    T = 2.0 * math.pi / w
+    tf = np.linspace(0.0, PERIODS * T, PERIODS * FORCE_POINTS + 1)
+    times = np.linspace((PERIODS - 1) * T, PERIODS * T, SAMPLES + 1)
+    need = 1.0 / abs(complex(KP, KV * w - KI / w))
+
+    def gain(U):
+        run = lugre.dynamics(MODEL, mass=MASS, force=(tf, U * np.sin(w * tf)), times=times)
+        t, x = one_period(run["t"], run["x"])
+        return abs(first_harmonic(t, x, w)) / U
+
+    lo, hi = 0.5 * MODEL.fs, MODEL.fs
+    g_lo, g_hi = gain(lo), gain(hi)
+    if not g_lo < need < g_hi:
+        raise ValueError(f"|N_x| does not cross {need} between U = {lo} and {hi}")
+    while hi - lo > tol * MODEL.fs:
+        mid = 0.5 * (lo + hi)
+        g = gain(mid)
+        if g < need:
+            lo, g_lo = mid, g
+        else:
+            hi, g_hi = mid, g
+    return {"need": need, "U": hi, "below": g_lo, "above": g_hi}
+
+
 def balance(W, w):
     """The two real equations of the harmonic balance N_e(W, w) = -i w / Ki, as
     (arg N_e + pi/2, Ki |N_e| / w - 1); None where the mass only sticks."""
@@ -176,6 +208,7 @@ def predict(tol=1e-10, max_iter=50):
 def main():
     sim = simulated()
     plain = plain_balance(sim["amplitude"], sim["period"])
+    gap = open_loop_gap(2.0 * math.pi / sim["period"])
     p = predict()
     need, have, ratio = plain["need"], plain["have"], sim["ratio"]
     rel = {k: p[k] / sim[k] - 1.0 for k in ("amplitude", "first_harmonic", "period")}
@@ -194,6 +227,10 @@ def main():
         f"   Below sqrt(Ki/Kv) it needs k_eq <= {plain['k_eq_needed_max']:.4f} N/m: the sweep's "
         f"least k_eq there is {plain['k_eq_min']:.3g} N/m; above, c_eq < 0: its least c_eq is "
         f"{plain['c_eq_min']:.3g} N s/m.\n"
+        "   The whole PID as the linear part, mass + friction under U sin(w t) as the block: no "
+        f"solution either.\n   It needs |N_x| = {gap['need']:.4f} m/N; |N_x| jumps from "
+        f"{gap['below']:.3g} to {gap['above']:.3g} m/N at U = {gap['U']:.6f} N (stuck below; "
+        "above, a slip that nothing stops).\n"
         "2. mass + friction + PD under the integral force W sin(w t), closed by Ki / s:\n"
         f"   balance at W = {p['W']:.5f} N, w = {p['w']:.5f} rad/s "
         f"(N_e = {abs(p['N']):.5f} m/N at {deg(p['N']):.3f} deg)\n"
@@ -206,6 +243,7 @@ def main():
         f"at {sim['integral_peak']:.4f} N with W_1 = {sim['integral_first_harmonic']:.4f} N "
         f"(peak / W_1 = {sim['integral_peak'] / sim['integral_first_harmonic']:.3f}; a sine: 1)."
     )
+    plain.update(open_loop=gap)
     return sim, plain, p
 
 

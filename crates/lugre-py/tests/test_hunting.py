@@ -21,6 +21,9 @@ def test_the_hunting_example_predicts_within_five_percent(capsys):
     # sqrt(Ki/Kv), or c_eq < 0 above.
     assert plain["k_eq_min"] > plain["k_eq_needed_max"] + 2.0
     assert plain["c_eq_min"] > 0.0
+    # Mass + friction alone as the block: its gain jumps over the one needed at the break-away.
+    gap = plain["open_loop"]
+    assert gap["below"] < gap["need"] / 100.0 and gap["above"] > 5.0 * gap["need"]
     # In the simulated cycle the integrator's balance holds exactly for the first harmonics.
     w = 2.0 * math.pi / sim["period"]
     assert abs(np.angle(sim["ratio"]) + math.pi / 2) < 1e-4
