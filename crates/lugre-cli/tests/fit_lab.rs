@@ -165,6 +165,14 @@ fn records_without_usable_runs_are_one_line() {
         &["fit", "--fit", "stribeck", "--input", &sine, "--beta", "2"],
         "constant-velocity run",
     );
+    // The lab's sine record: runs at its peak speed only.
+    let lab_sine = data("lab-sine.csv");
+    rejects(
+        &[
+            "fit", "--fit", "stribeck", "--input", &lab_sine, "--beta", "2",
+        ],
+        "distinct speed(s)",
+    );
     // Runs of 6 samples.
     let short = runs(6, 0.0);
     let short = dir.file("short.csv", short);
@@ -226,6 +234,12 @@ fn presliding_bad_input_is_one_line() {
         &["fit", "--fit", "presliding", "--input", &test],
         "is held in the presliding fit but has no value",
     );
+    // A sine of 1 mm slides far beyond the presliding range (its force stays below 0.9 Fs
+    // and the linear spring is soft: the exact fit's sigma0 shows it).
+    let sine = data("lab-sine.csv");
+    let mut args = vec!["fit", "--fit", "presliding", "--input", &sine];
+    args.extend(CURVE);
+    rejects(&args, "the presliding test slides");
     let dir = TempDir::new("fit-lab-presliding");
     let untimed = dir.file("u.csv", "u,F\n0,0\n1e-6,0.1\n0,0\n-1e-6,-0.1\n");
     let mut args = vec!["fit", "--fit", "presliding", "--input", &untimed];

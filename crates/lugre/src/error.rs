@@ -404,6 +404,13 @@ pub enum FitError {
         parameters: usize,
         needed: usize,
     },
+    #[error("the constant-velocity runs are at only {speeds} distinct speed(s) ({list}) for {parameters} free parameter(s): the steady-state curve needs runs at {parameters} speeds or more (a sine's record has runs only at its peak speed); run constant-velocity tests over a range of speeds, or fix parameters", list = .list.join(", "))]
+    TooFewSpeeds {
+        speeds: usize,
+        parameters: usize,
+        /// The speeds, rounded for the message.
+        list: Vec<String>,
+    },
     #[error("the table of constant-velocity runs has {v} velocities and {f} forces: give one steady force per velocity")]
     SteadyTableLengths { v: usize, f: usize },
     #[error("the record has no constant-velocity run: the velocity never stays constant (within its noise) over {min_run} samples or more in its {samples} samples; record runs at constant velocities, or give a table v,F of their steady forces")]

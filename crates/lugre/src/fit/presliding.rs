@@ -20,8 +20,9 @@
 //! sigma2`) held at its values (from the Stribeck fit, or given).
 //!
 //! A test that breaks away is refused ([`FitError::BreaksAway`]): its force reaches
-//! `0.9 Fs` (three noise deviations below its peak), or the spring (R2) would exceed twice
-//! `Fs` over the travel between two reversals, which only sliding allows.
+//! `0.9 Fs` (three noise deviations below its peak), or the spring (R2), or the fitted
+//! `sigma0`, would exceed twice `Fs` over the travel between two reversals, which only sliding
+//! allows (a sliding test's flat force can make (R2) soft; the exact fit is not fooled).
 
 use super::plateaus::difference_noise;
 use super::spec::index_of;
@@ -75,6 +76,9 @@ pub fn fit_presliding(
     // to the next one (half a sample ahead, a bias of sigma1 of order omega dt).
     let motion = SmoothSamples::pchip(t.to_vec(), u.to_vec(), CUBIC_READING_TOL)?;
     let mut report = fit_full_smooth(&held, &motion, f, FullOptions::default().with_starts(1))?;
+    // A sliding test can fool (R2) (the force is flat while it slides, so the spring looks
+    // soft) but not the exact fit: its sigma0 over the travel shows the sliding.
+    check_travel(u, report.lugre_params(&held).sigma0, resolved.values[FS])?;
     report.kind = FitKind::Presliding;
     Ok(report)
 }
@@ -139,6 +143,12 @@ fn check_breakaway(u: &[f64], f: &[f64], k: f64, fs: f64) -> Result<(), FitError
             fs,
         });
     }
+    check_travel(u, k, fs)
+}
+
+/// Refuses a test whose travel between two reversals, on a bristle spring `k`, would exceed
+/// twice `Fs`: only sliding goes that far.
+fn check_travel(u: &[f64], k: f64, fs: f64) -> Result<(), FitError> {
     let travel = full::segments(u)
         .iter()
         .map(|&(a, b)| (u[b] - u[a]).abs())

@@ -138,6 +138,25 @@ fn check_points(points: &[SteadyPoint]) -> Result<(), FitError> {
     Ok(())
 }
 
+/// Two runs' speeds within this ratio are one speed of the curve (runs of one test at one
+/// set speed, or the two signs of it, differ by their noise only).
+const SAME_SPEED: f64 = 1.05;
+
+/// The distinct speeds `|v|` of the points, ascending: the curve's parameters are only
+/// identified by runs at as many speeds.
+fn distinct_speeds(points: &[SteadyPoint]) -> Vec<f64> {
+    let mut a: Vec<f64> = points.iter().map(|p| p.v.abs()).collect();
+    a.sort_by(f64::total_cmp);
+    let mut out: Vec<f64> = Vec::new();
+    for s in a {
+        match out.last() {
+            Some(&last) if s <= last * SAME_SPEED => {}
+            _ => out.push(s),
+        }
+    }
+    out
+}
+
 /// The Stribeck fit of `Fc, Fs, vs, sigma2` (and `beta` if freed; `sigma0`, `sigma1` do not
 /// enter (T1)) to steady-state points, weighted by their standard errors when every point has
 /// one. See the module docs.
@@ -150,6 +169,14 @@ pub fn fit_stribeck(spec: &FitSpec, points: &[SteadyPoint]) -> Result<FitReport,
             plateaus: points.len(),
             parameters: resolved.free.len(),
             needed,
+        });
+    }
+    let speeds = distinct_speeds(points);
+    if speeds.len() < resolved.free.len() {
+        return Err(FitError::TooFewSpeeds {
+            speeds: speeds.len(),
+            parameters: resolved.free.len(),
+            list: speeds.iter().map(|&s| crate::error::num(s)).collect(),
         });
     }
     let weighted = points.iter().all(|p| p.stderr.is_some());
@@ -444,5 +471,41 @@ mod tests {
                 stderr: None
             }]
         );
+    }
+
+    #[test]
+    fn runs_at_too_few_speeds_are_said_to_be_so() {
+        // A sine's record: runs at its peak speed only, both signs, a little spread.
+        let points: Vec<SteadyPoint> = [3.77e-3, -3.77e-3, 3.79e-3, -3.76e-3, 3.78e-3, -3.8e-3]
+            .iter()
+            .map(|&v| SteadyPoint {
+                v,
+                f: f_ss(v),
+                stderr: Some(1e-3),
+            })
+            .collect();
+        let e = fit_stribeck(&spec(), &points).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                FitError::TooFewSpeeds {
+                    speeds: 1,
+                    parameters: 4,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert!(e.to_string().starts_with("the constant-velocity runs are at only 1 distinct speed(s) (0.00376) for 4 free parameter(s)"), "{e}");
+        assert_eq!(distinct_speeds(&points).len(), 1);
+        let all: Vec<SteadyPoint> = speeds()
+            .into_iter()
+            .map(|v| SteadyPoint {
+                v,
+                f: f_ss(v),
+                stderr: None,
+            })
+            .collect();
+        assert_eq!(distinct_speeds(&all).len(), 25);
     }
 }
