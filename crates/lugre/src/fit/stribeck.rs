@@ -176,7 +176,7 @@ pub fn fit_stribeck(spec: &FitSpec, points: &[SteadyPoint]) -> Result<FitReport,
         return Err(FitError::TooFewSpeeds {
             speeds: speeds.len(),
             parameters: resolved.free.len(),
-            list: speeds.iter().map(|&s| crate::error::num(s)).collect(),
+            list: speeds.iter().map(|s| format!("{s:.3e}")).collect(),
         });
     }
     let weighted = points.iter().all(|p| p.stderr.is_some());
@@ -496,7 +496,7 @@ mod tests {
             ),
             "{e}"
         );
-        assert!(e.to_string().starts_with("the constant-velocity runs are at only 1 distinct speed(s) (0.00376) for 4 free parameter(s)"), "{e}");
+        assert!(e.to_string().starts_with("the constant-velocity runs are at only 1 distinct speed(s) (3.760e-3) for 4 free parameter(s)"), "{e}");
         assert_eq!(distinct_speeds(&points).len(), 1);
         let all: Vec<SteadyPoint> = speeds()
             .into_iter()
