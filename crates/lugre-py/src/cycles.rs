@@ -6,7 +6,8 @@ use lugre::CycleColumns;
 use numpy::IntoPyArray;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict};
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyBool, PyDict, PyType};
 
 use crate::convert::{self, real, type_name, value_error, vec_out};
 use crate::models::lugre_of;
@@ -77,8 +78,10 @@ pub fn cycles<'py>(
         .detach(|| count(u, gate, model, x0, keep_reversals, keep_closures))
         .map_err(value_error)?;
     let result = to_dict(py, columns, &summary)?;
-    py.import("lugre")?
-        .getattr("CyclesResult")?
+    // The class is looked up once, not in the package's module at every call.
+    static CYCLES_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+    CYCLES_RESULT
+        .import(py, "lugre", "CyclesResult")?
         .call1((result,))
 }
 

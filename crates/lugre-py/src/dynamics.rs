@@ -4,7 +4,8 @@
 
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyDict, PyList, PyType};
 
 use crate::convert::{count, floats, real, type_name, value_error, vec_out};
 use crate::models::lugre_of;
@@ -263,7 +264,11 @@ fn result<'py>(py: Python<'py>, plan: &Plan, outcome: Outcome) -> PyResult<Bound
         }
         d.set_item("loops", list)?;
     }
-    py.import("lugre")?.getattr("DynamicsResult")?.call1((d,))
+    // The class is looked up once, not in the package's module at every call.
+    static DYNAMICS_RESULT: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+    DYNAMICS_RESULT
+        .import(py, "lugre", "DynamicsResult")?
+        .call1((d,))
 }
 
 /// `(t, values)`: two arrays of equal length.

@@ -436,21 +436,29 @@ fn keyword_lines(parameters: &[Parameter]) -> String {
 /// The value of every parameter of `table` from the keywords given to `class` (its default
 /// where not given), each a real number; a keyword not in the table is a `TypeError`, as Python
 /// says it.
-fn keyword_values(
+fn keyword_values<'py>(
     class: &str,
     table: &[Parameter],
-    given: Option<&Bound<'_, PyDict>>,
+    given: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Vec<(Parameter, f64)>> {
-    check_keywords(class, table, given)?;
+    // One pass over the keywords given (usually one or two), not a lookup per parameter of
+    // the table: each lookup made a Python string of the name and hashed it (a model took 6x
+    // as long to make). The values are still checked in the table's order.
+    let mut values: Vec<Option<Bound<'py, PyAny>>> = table.iter().map(|_| None).collect();
+    if let Some(d) = given {
+        for (key, value) in d.iter() {
+            let key = key.str()?;
+            let name = key.to_cow()?;
+            match table.iter().position(|p| p.name() == name) {
+                Some(i) => values[i] = Some(value),
+                None => return Err(unknown_keyword(class, table, &name)),
+            }
+        }
+    }
     table
         .iter()
-        .map(|&p| {
-            let value = match given {
-                Some(d) => d.get_item(p.name())?,
-                None => None,
-            };
-            Ok((p, real_or(value.as_ref(), p.name(), p.default_value())?))
-        })
+        .zip(values)
+        .map(|(&p, value)| Ok((p, real_or(value.as_ref(), p.name(), p.default_value())?)))
         .collect()
 }
 
@@ -464,14 +472,19 @@ fn check_keywords(
     for key in d.keys() {
         let name = key.str()?.to_string();
         if !table.iter().any(|p| p.name() == name) {
-            let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
-            return Err(PyTypeError::new_err(format!(
-                "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
-                names.join(", ")
-            )));
+            return Err(unknown_keyword(class, table, &name));
         }
     }
     Ok(())
+}
+
+/// Python's `TypeError` for a keyword `name` that is not a parameter of `table`.
+fn unknown_keyword(class: &str, table: &[Parameter], name: &str) -> PyErr {
+    let names: Vec<&str> = table.iter().map(|p| p.name()).collect();
+    PyTypeError::new_err(format!(
+        "{class}() got an unexpected keyword argument '{name}' (its parameters: {})",
+        names.join(", ")
+    ))
 }
 
 /// The attribute `name` of a `class` object: the value of its parameter of that name (`get`),

@@ -764,7 +764,7 @@ impl Plan {
     /// The solver's ([`DynamicsError`]), and those of the loops' rainflow count and loop
     /// computation.
     pub fn run(&self) -> Result<Outcome, Error> {
-        let motion = self.system.solve(self.t_end, &self.times, self.tol)?;
+        let motion = self.motion()?;
         let breakaway = match self.rate {
             Some(_) => self.system.breakaway(self.t_end, self.tol)?,
             None => None,
@@ -779,6 +779,15 @@ impl Plan {
             breakaway,
             loops,
         })
+    }
+
+    /// The motion at the output times alone, for a caller that reports nothing else: a ramp's
+    /// break-away is a second integration, and [`Plan::run`] would locate it for nothing.
+    ///
+    /// # Errors
+    /// The solver's.
+    pub fn motion(&self) -> Result<Motion, DynamicsError> {
+        self.system.solve(self.t_end, &self.times, self.tol)
     }
 }
 
