@@ -622,6 +622,16 @@ pub(crate) struct PlotArgs {
         help_heading = "Output"
     )]
     pub(crate) path: Option<PathBuf>,
+    /// Units on the figure's axes, e.g. t=s,u=mm,F=N (default: those of the input file's
+    /// header, for columns not scaled; a preset's SI where the command has no file). Labels
+    /// only: the values are not converted.
+    #[arg(
+        long,
+        value_name = "ROLE=UNIT,...",
+        help_heading = "Output",
+        requires = "plot"
+    )]
+    pub(crate) units: Option<String>,
 }
 
 #[cfg(test)]

@@ -217,10 +217,10 @@ fn the_figure_has_its_panels_and_units() {
     run(args(&png, &["--units", "u=mm,F=N"]));
     assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
     rejects(
-        &args(&svg, &["--units", "t=s"])
+        &args(&svg, &["--units", "w=s"])
             .iter()
             .map(String::as_str)
             .collect::<Vec<_>>(),
-        "--units: unknown quantity 't' (give u=UNIT or F=UNIT)",
+        "--units: unknown quantity 'w' (give t=UNIT, u=UNIT or F=UNIT)",
     );
 }

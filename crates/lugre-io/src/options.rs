@@ -182,6 +182,12 @@ impl ReadOptions {
         self.select.iter().find(|(r, _)| r == role).map(|(_, s)| s)
     }
 
+    /// Whether the values of `role` are multiplied by a factor (`--scale`): the unit in the
+    /// file's header then no longer applies.
+    pub fn scales(&self, role: &Role) -> bool {
+        self.scale.iter().any(|(r, _, _)| r == role)
+    }
+
     /// Whether any column is chosen.
     pub fn selects_any(&self) -> bool {
         !self.select.is_empty()

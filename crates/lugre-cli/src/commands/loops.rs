@@ -15,7 +15,7 @@ use crate::hysteresis::{arc_points, kind_name};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
-use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, BLACK, PALETTE};
+use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, Units, BLACK, PALETTE};
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
 const MAX_TABLE_ROWS: usize = 40;
@@ -146,7 +146,15 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
         write_atomic(path, |w| outcome.write_csv(w))?;
     }
     if let Some(path) = &args.plot.path {
-        loop_figure(&outcome.hl, &outcome.loops).save(path)?;
+        // The input file's units (its columns as read, not scaled: the loop reads none), else
+        // a preset's SI; the flag's over them.
+        let units = match &args.input.input {
+            Some(file) => Units::of_header(file, &lugre_io::ReadOptions::default()),
+            None if args.model.preset.is_some() => Units::si(),
+            None => Units::default(),
+        };
+        let units = units.with_flag(args.plot.units.as_deref())?;
+        loop_figure(&outcome.hl, &outcome.loops, &units).save(path)?;
     }
 
     let stdout = std::io::stdout();
@@ -404,7 +412,7 @@ fn more(out: &mut impl Write, n: usize) -> Result<()> {
 const MAX_DRAWN_MINOR_LOOPS: usize = 10;
 
 /// The loop in the (u, y°) plane as the paper's Fig. 15 draws it.
-fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
+fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
     let major = &loops[0];
     let mut minors: Vec<&Loop> = loops[1..].iter().collect();
     minors.sort_by(|p, q| {
@@ -412,7 +420,8 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop]) -> Figure {
         range(q).total_cmp(&range(p))
     });
     let drawn = minors.len().min(MAX_DRAWN_MINOR_LOOPS);
-    let mut fig = Figure::new("input u", "friction force y°").title("Hysteresis loop");
+    let mut fig =
+        Figure::new(units.u("input u"), units.force("friction force y°")).title("Hysteresis loop");
     fig = fig.curve(
         Curve::new(
             arc_points(hl, major.start.rho, major.end.rho),

@@ -28,9 +28,11 @@ mod elements;
 mod legend;
 mod output;
 mod raster;
+mod units;
 
 pub(crate) use output::check_path;
 use output::save;
+pub(crate) use units::Units;
 
 /// Colours that stay distinct in grey scale too (dark to mid tones).
 pub(crate) const BLACK: RGBColor = RGBColor(0, 0, 0);

@@ -30,6 +30,7 @@ use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_number, Real, Whole};
+use crate::plot::Units;
 use lugre::model::normal;
 use lugre::simulate::SmoothSamples;
 use lugre_io::{Reader, Role, Rows, Spec};
@@ -62,8 +63,9 @@ const CSV_HELP: &str =
     this CSV file";
 /// The help of `--plot` for this command.
 const PLOT_HELP: &str =
-    "Draw the data and the fit in the (u, F) plane, and beside them the residuals, to \
-    an SVG or PNG file";
+    "Draw the data and the fit in the (u, F) plane, and beside them the residuals against \
+    time and against the input (the Stribeck fit: friction against velocity with the fitted \
+    curve), to an SVG or PNG file; the axes carry the file's units (--units)";
 
 #[derive(Args, Debug)]
 #[command(
@@ -177,6 +179,8 @@ struct Record {
     /// The normal force at each sample, when the record has one: `f` then holds the friction
     /// coefficient `F / N`.
     normal: Option<Vec<f64>>,
+    /// The units of the file's header (for the figure's labels).
+    units: Units,
 }
 
 impl Record {
@@ -372,7 +376,8 @@ fn report_fit(args: &FitArgs, path: &Path, record: &Record, report: &FitReport) 
         write_atomic(csv, |w| write_csv(w, record, report, &residuals))?;
     }
     if let Some(plot) = &args.plot.path {
-        figure(record, report, &residuals).save(plot)?;
+        let units = record.units.clone().with_flag(args.plot.units.as_deref())?;
+        figure(record, report, &residuals, &units).save(plot)?;
     }
     warn_unconverged(report);
     let stdout = std::io::stdout();
@@ -438,6 +443,7 @@ fn read_record(args: &FitArgs, path: &Path) -> Result<Record> {
         .rows(&spec)
         .and_then(Rows::collect_table)
         .map_err(|e| e.in_file(path))?;
+    let units = Units::of_file(&table, &options);
     let (u, f, normal) = (
         table.take(&motion).unwrap_or_default(),
         table.take(&Role::F).unwrap_or_default(),
@@ -451,6 +457,7 @@ fn read_record(args: &FitArgs, path: &Path) -> Result<Record> {
             f,
             velocity: None,
             normal,
+            units,
         });
     }
     let t = t.unwrap_or_default(); // required above
@@ -462,6 +469,7 @@ fn read_record(args: &FitArgs, path: &Path) -> Result<Record> {
         f,
         velocity: Some(motion),
         normal,
+        units,
     })
 }
 

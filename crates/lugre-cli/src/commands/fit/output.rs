@@ -11,7 +11,7 @@ use super::Record;
 use crate::fmt::sig;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
-use crate::plot::{Curve, Figure, LineStyle, Panels, BLACK, BLUE, RED};
+use crate::plot::{Curve, Figure, LineStyle, Panels, Units, BLACK, BLUE, RED};
 
 /// Vertical strokes in the residual figure (at most).
 const RESIDUAL_BINS: usize = 600;
@@ -61,9 +61,10 @@ pub(super) fn write_csv(
     Ok(())
 }
 
-/// Two panels: the data with the fit in the (u, F) plane, and the residuals against t (or the
-/// sample).
-pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels {
+/// The fit's check: the data with the fit in the (u, F) plane, and the residuals against t (or
+/// the sample) and against the input u, where structure the fit missed shows (a bias at the
+/// reversals, a trend with the velocity).
+pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64], units: &Units) -> Panels {
     let what = format!("{} fit", report.kind.label());
     let data: Vec<(f64, f64)> = record
         .u
@@ -78,12 +79,18 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels
         .copied()
         .zip(report.fitted.iter().copied())
         .collect();
-    let y_label = if record.normal.is_some() {
-        "friction coefficient F / N"
+    let (y_label, residual_label) = if record.normal.is_some() {
+        (
+            "friction coefficient F / N".to_string(),
+            "residual (F - fit) / N".to_string(),
+        )
     } else {
-        "friction force F"
+        (
+            units.force("friction force F"),
+            units.force("residual F - fit"),
+        )
     };
-    let fit_fig = Figure::new("input u", y_label)
+    let fit_fig = Figure::new(units.u("input u"), y_label)
         .title(format!(
             "{} {what}: residual RMS {}",
             report.family.label(),
@@ -95,48 +102,69 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64]) -> Panels
                 .label("data"),
         )
         .curve(Curve::new(fit, LineStyle::Dashed, RED).label("fit"));
-    Panels::side_by_side(fit_fig, residual_figure(record, res))
+    let (x_label, xs): (String, Vec<f64>) = match &record.t {
+        Some(t) => (units.t("time t"), t.clone()),
+        None => (
+            "sample".to_string(),
+            (0..res.len()).map(|i| i as f64).collect(),
+        ),
+    };
+    let by_time = residual_figure(&xs, res, x_label, &residual_label, "against time");
+    let by_input = residual_figure(
+        &record.u,
+        res,
+        units.u("input u"),
+        &residual_label,
+        "against the input",
+    );
+    let mut panels = Panels::side_by_side(fit_fig, by_time);
+    panels.panels.push(by_input);
+    panels.cols = 3;
+    panels.size = (2250, 650);
+    panels
 }
 
-/// The residuals against t (or the sample).
-fn residual_figure(record: &Record, res: &[f64]) -> Figure {
-    let (x_label, xs): (&str, Vec<f64>) = match &record.t {
-        Some(t) => ("time t", t.clone()),
-        None => ("sample", (0..res.len()).map(|i| i as f64).collect()),
-    };
-    // Noise drawn as one polyline zigzags at sharp angles, which the bitmap backend renders
-    // with long miter spikes: draw separate vertical strokes instead, from 0 to each residual
-    // (few samples) or over the range of each of RESIDUAL_BINS consecutive groups.
+/// The residuals against `xs` (any order). Noise drawn as one polyline zigzags at sharp
+/// angles, which the bitmap backend renders with long miter spikes: separate vertical strokes
+/// instead, from 0 to each residual (few samples) or over the range of each of
+/// [`RESIDUAL_BINS`] groups of samples consecutive in `x`.
+fn residual_figure(xs: &[f64], res: &[f64], x_label: String, y_label: &str, what: &str) -> Figure {
+    let mut order: Vec<usize> = (0..res.len()).collect();
+    order.sort_by(|&a, &b| xs[a].total_cmp(&xs[b]));
     let n = res.len();
     let bins = n.min(RESIDUAL_BINS);
-    let mut res_fig = Figure::new(x_label, "residual F - fit").title(if bins < n {
+    let mut fig = Figure::new(x_label, y_label).title(if bins < n {
         format!(
-            "Residuals, min to max of each {}-sample group",
+            "Residuals {what}, min to max of each {}-sample group",
             n.div_ceil(bins)
         )
     } else {
-        "Residuals".to_string()
+        format!("Residuals {what}")
     });
     for b in 0..bins {
         let (lo, hi) = (b * n / bins, ((b + 1) * n / bins).max(b * n / bins + 1));
-        let x = 0.5 * (xs[lo] + xs[hi - 1]);
+        let group = &order[lo..hi];
+        let x = 0.5 * (xs[group[0]] + xs[group[group.len() - 1]]);
         let (mut r0, mut r1) = if bins < n {
             (f64::INFINITY, f64::NEG_INFINITY)
         } else {
             (0.0, 0.0)
         };
-        for &r in res[lo..hi].iter().filter(|r| !r.is_nan()) {
+        for r in group.iter().map(|&i| res[i]).filter(|r| !r.is_nan()) {
             r0 = r0.min(r);
             r1 = r1.max(r);
         }
         if r0 > r1 {
             continue; // only input-only rows in this group
         }
-        res_fig =
-            res_fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
+        fig = fig.curve(Curve::new(vec![(x, r0), (x, r1)], LineStyle::Solid, BLACK).width(1));
     }
-    res_fig.curve(Curve::new(
-        vec![(xs[0], 0.0), (xs[n - 1], 0.0)],
+    let (Some(&i0), Some(&i1)) = (order.first(), order.last()) else {
+        return fig;
+    };
+    let (first, last) = (xs[i0], xs[i1]);
+    fig.curve(Curve::new(
+        vec![(first, 0.0), (last, 0.0)],
         LineStyle::Dashed,
         RED,
     ))

@@ -21,6 +21,8 @@ use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{parse_list, Whole};
+use crate::plot::Units;
+use lugre_io::Role;
 
 mod drive;
 mod output;
@@ -261,7 +263,14 @@ fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
         } else {
             format!("γ = {}", sig(r.simulation.gamma().value(), 6))
         };
-        response_figure(out, &what).save(path)?;
+        // The input file's units, else a preset's SI; the flag's over them.
+        let units = match &args.input.input {
+            Some(file) => Units::of_header(file, &args.data.options(&[Role::U, Role::V])?),
+            None if args.model.preset.is_some() => Units::si(),
+            None => Units::default(),
+        };
+        let units = units.with_flag(args.plot.units.as_deref())?;
+        response_figure(out, &what, &units).save(path)?;
     }
     let stdout = std::io::stdout();
     if args.output.json {

@@ -8,7 +8,7 @@ use super::Request;
 use crate::fmt::sig;
 use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
-use crate::plot::{Curve, Figure, LineStyle, Panels, BLUE};
+use crate::plot::{Curve, Figure, LineStyle, Panels, Units, BLUE};
 use lugre::model::named::Needed;
 use lugre::simulate::Drive;
 
@@ -37,13 +37,13 @@ pub(super) fn write_json<W: Write>(mut j: JsonOut<W>, out: &Trajectory) -> std::
 const MAX_DRAWN_BUCKETS: usize = 20_000;
 
 /// The response as two panels: y against t, and y against u.
-pub(super) fn response_figure(out: &Trajectory, what: &str) -> Panels {
+pub(super) fn response_figure(out: &Trajectory, what: &str, units: &Units) -> Panels {
     let keep = envelope_indices(&out.y, MAX_DRAWN_BUCKETS);
     let pick = |x: &[f64]| -> Vec<(f64, f64)> { keep.iter().map(|&i| (x[i], out.y[i])).collect() };
-    let time = Figure::new("time t", "output y")
+    let time = Figure::new(units.t("time t"), units.force("output y"))
         .title(format!("y against t, {what}"))
         .curve(Curve::new(pick(&out.t), LineStyle::Solid, BLUE));
-    let input = Figure::new("input u", "output y")
+    let input = Figure::new(units.u("input u"), units.force("output y"))
         .title(format!("y against u, {what}"))
         .curve(Curve::new(pick(&out.u), LineStyle::Solid, BLUE));
     Panels::side_by_side(time, input)

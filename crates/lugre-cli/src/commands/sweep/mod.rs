@@ -20,6 +20,7 @@ use crate::io::csv::NumberRows;
 use crate::io::json::JsonOut;
 use crate::io::progress::{styled, Progress};
 use crate::numbers::{Real, Whole};
+use crate::plot::Units;
 
 mod plot;
 
@@ -84,10 +85,6 @@ pub(crate) struct SweepArgs {
     /// period, both ends included, in --json.
     #[arg(long = "loops", value_name = "N", value_parser = Whole(2), help_heading = "Output")]
     pub(crate) loops: Option<usize>,
-    /// Units of the displacement and the force in the figure's labels, e.g. u=mm,F=N
-    /// (default: m and N for a preset, none otherwise; the values are the model's as given).
-    #[arg(long, value_name = "u=UNIT,F=UNIT", help_heading = "Output")]
-    pub(crate) units: Option<String>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
     #[command(flatten)]
@@ -111,7 +108,10 @@ pub(crate) fn run(args: &SweepArgs) -> Result<()> {
     check_files(None, &args.output, Some(&args.plot))?;
     let choice = args.model.build()?;
     let model = choice.lugre();
-    let units = plot::Units::parse(args.units.as_deref(), args.model.preset.is_some())?;
+    // A preset's parameters are SI; the flag names others (labels only).
+    let si = args.model.preset.is_some();
+    let units = if si { Units::si() } else { Units::default() };
+    let units = units.with_flag(args.plot.units.as_deref())?;
     let request = build(args)?;
     let sweep = compute(&request, &model)?;
     if let Some(path) = &args.plot.path {

@@ -8,13 +8,13 @@
 //! 5. its phase (degrees) against the amplitude, one curve per frequency.
 //!
 //! Axis labels carry the units of `--units u=UNIT,F=UNIT` (a preset's are SI: m and N); the
-//! energy's unit is the product of the two.
+//! energy's unit is the product of the two ([`Units`]).
 
-use anyhow::{bail, Result};
+use anyhow::Result;
 use lugre::sweep::{self, Point, Sweep};
 use lugre::LuGre;
 
-use crate::plot::{scale_color, Curve, Figure, LineStyle, Marker, Panels, Shape};
+use crate::plot::{scale_color, Curve, Figure, LineStyle, Marker, Panels, Shape, Units};
 
 /// At most this many loops are overlaid (evenly chosen among the amplitudes, both ends kept).
 const MAX_LOOPS: usize = 8;
@@ -22,82 +22,6 @@ const MAX_LOOPS: usize = 8;
 const MAX_CURVES: usize = 8;
 /// Samples of each loop drawn, when `--loops` did not ask for them.
 const LOOP_SAMPLES: usize = 401;
-
-/// The units of the displacement and the force, for the axis labels.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub(super) struct Units {
-    pub(super) u: Option<String>,
-    pub(super) force: Option<String>,
-}
-
-impl Units {
-    /// `--units u=UNIT,F=UNIT` (either or both; `x`, `force` and `friction` are synonyms), else
-    /// SI for a preset's parameters, else none.
-    pub(super) fn parse(text: Option<&str>, si: bool) -> Result<Self> {
-        let mut units = if si {
-            Units {
-                u: Some("m".into()),
-                force: Some("N".into()),
-            }
-        } else {
-            Units::default()
-        };
-        let Some(text) = text else {
-            return Ok(units);
-        };
-        for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            let Some((role, unit)) = item.split_once('=') else {
-                bail!("--units: '{item}' is not ROLE=UNIT (e.g. u=mm,F=N)");
-            };
-            let unit = unit.trim();
-            if unit.is_empty() {
-                bail!("--units: the unit of '{}' is empty", role.trim());
-            }
-            match role.trim().to_lowercase().as_str() {
-                "u" | "x" => units.u = Some(unit.to_string()),
-                "f" | "force" | "friction" => units.force = Some(unit.to_string()),
-                other => bail!("--units: unknown quantity '{other}' (give u=UNIT or F=UNIT)"),
-            }
-        }
-        Ok(units)
-    }
-
-    fn label(name: &str, unit: Option<&str>) -> String {
-        match unit {
-            Some(unit) => format!("{name} [{unit}]"),
-            None => name.to_string(),
-        }
-    }
-
-    fn u(&self, name: &str) -> String {
-        Self::label(name, self.u.as_deref())
-    }
-
-    fn force(&self, name: &str) -> String {
-        Self::label(name, self.force.as_deref())
-    }
-
-    fn velocity(&self, name: &str) -> String {
-        Self::label(name, self.u.as_ref().map(|u| format!("{u}/s")).as_deref())
-    }
-
-    fn energy(&self, name: &str) -> String {
-        let unit = match (&self.force, &self.u) {
-            (Some(f), Some(u)) if f == "N" && u == "m" => Some("J".to_string()),
-            (Some(f), Some(u)) => Some(format!("{f} {u}")),
-            _ => None,
-        };
-        Self::label(name, unit.as_deref())
-    }
-
-    fn gain(&self, name: &str) -> String {
-        let unit = match (&self.force, &self.u) {
-            (Some(f), Some(u)) => Some(format!("{f}/{u}")),
-            _ => None,
-        };
-        Self::label(name, unit.as_deref())
-    }
-}
 
 /// The five panels of a computed sweep.
 pub(super) fn figure(
@@ -194,7 +118,7 @@ fn summary_figures(r: &sweep::Request, s: &Sweep, units: &Units) -> [Figure; 3] 
         .title("energy dissipated per cycle")
         .log_x()
         .log_y();
-    let mut gain = Figure::new(units.u("amplitude A"), units.gain("gain |N|"))
+    let mut gain = Figure::new(units.u("amplitude A"), units.stiffness("gain |N|"))
         .title("describing function: gain")
         .log_x()
         .log_y();
@@ -241,25 +165,6 @@ fn summary_figures(r: &sweep::Request, s: &Sweep, units: &Units) -> [Figure; 3] 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn units_from_the_flag_over_the_presets() {
-        let si = Units::parse(None, true).unwrap();
-        assert_eq!(si.energy("E"), "E [J]");
-        assert_eq!(si.velocity("v"), "v [m/s]");
-        let mm = Units::parse(Some("u=mm"), true).unwrap();
-        assert_eq!(mm.u("A"), "A [mm]");
-        assert_eq!(mm.energy("E"), "E [N mm]");
-        assert_eq!(mm.gain("g"), "g [N/mm]");
-        let none = Units::parse(None, false).unwrap();
-        assert_eq!(none.u("A"), "A");
-        assert_eq!(
-            Units::parse(Some("t=s"), false).unwrap_err().to_string(),
-            "--units: unknown quantity 't' (give u=UNIT or F=UNIT)"
-        );
-        assert!(Units::parse(Some("u"), false).is_err());
-        assert!(Units::parse(Some("F="), false).is_err());
-    }
 
     #[test]
     fn the_loops_drawn_are_spread_over_the_amplitudes() {
