@@ -222,3 +222,22 @@ fn dynamics_draws_the_same_png_as_svg() {
     let dir = TempDir::new("png-svg-dynamics");
     same_ink(&dir, "dynamics", &["dynamics", "--scenario", "stick-slip"]);
 }
+
+/// A sweep: five panels in two rows, log axes, a sequential colour scale, markers.
+#[test]
+fn sweep_draws_the_same_png_as_svg() {
+    let dir = TempDir::new("png-svg-sweep");
+    same_ink(
+        &dir,
+        "sweep",
+        &[
+            "sweep",
+            "--preset",
+            "canudas1995",
+            "--amplitudes",
+            "1e-6:1e-4:4",
+            "--frequencies",
+            "0.1,10",
+        ],
+    );
+}
