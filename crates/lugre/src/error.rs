@@ -824,6 +824,54 @@ fn list(best: &[(&'static str, f64)]) -> String {
         .join(", ")
 }
 
+/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii), or a
+/// loop of one that cannot be computed. Element parameters are named with their index.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum ZooError {
+    #[error("{name} needs at least one element, got none")]
+    Empty { name: &'static str },
+    #[error("{first} and {second} have different lengths ({n_first} and {n_second})")]
+    LengthMismatch {
+        first: &'static str,
+        n_first: usize,
+        second: &'static str,
+        n_second: usize,
+    },
+    #[error("{name}[{index}] must be a finite number, got {value}", value = num(*.value))]
+    NotFinite {
+        name: &'static str,
+        index: usize,
+        value: f64,
+    },
+    #[error("{name}[{index}] must be > 0, got {value}", value = num(*.value))]
+    NotPositive {
+        name: &'static str,
+        index: usize,
+        value: f64,
+    },
+    #[error("{name}[{index}] must be >= 0, got {value}", value = num(*.value))]
+    Negative {
+        name: &'static str,
+        index: usize,
+        value: f64,
+    },
+    /// The initial-loading curve's slope `w0 + sum of the weights of thresholds <= r` is not
+    /// positive on the stretch starting at threshold `r`.
+    #[error("the initial-loading slope w0 + sum of weights with threshold <= {threshold} is {slope}; it must be > 0 (weights sorted by threshold)", threshold = num(*.threshold), slope = num(*.slope))]
+    NotIncreasing { threshold: f64, slope: f64 },
+    #[error("{elements} elements x {turning_points} turning points exceed the {limit} element states a loop may hold")]
+    TooLarge {
+        elements: usize,
+        turning_points: usize,
+        limit: usize,
+    },
+    #[error("{what} overflows f64 for this model and input")]
+    Overflow { what: &'static str },
+    #[error(transparent)]
+    Input(#[from] InputError),
+}
+
 /// Any error of the library.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
@@ -846,6 +894,8 @@ pub enum Error {
     Dynamics(#[from] DynamicsError),
     #[error(transparent)]
     Sweep(#[from] SweepError),
+    #[error(transparent)]
+    Zoo(#[from] ZooError),
 }
 
 #[cfg(test)]

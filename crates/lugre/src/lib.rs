@@ -55,6 +55,7 @@ mod memory;
 pub mod model;
 pub mod simulate;
 pub mod sweep;
+pub mod zoo;
 
 pub use cycles::{
     count_cycles, count_cycles_with_energy, Closure, Cycle, CycleColumns, CycleCounter,
@@ -62,7 +63,7 @@ pub use cycles::{
 };
 pub use error::{
     DataError, DynamicsError, Error, FitError, HistoryError, InputError, LoopError, ModelError,
-    SamplesError, SimulateError, SweepError,
+    SamplesError, SimulateError, SweepError, ZooError,
 };
 pub use fit::{fit_full, fit_slow, Estimate, FitReport, FitSpec};
 pub use input::{Bimodal, TurningPoints};

@@ -1,0 +1,283 @@
+//! The loops of a Masing model for a periodic input: rainflow pairing (ASTM E1049, a pair
+//! `(A, B)` closing at `P` once `|P - B| >= |B - A|`) in one pass over the period started at
+//! its first global maximum, from the periodic state (Z5). Each stack entry keeps its state
+//! (the `p_i`) and the dissipation from its point to the next entry up; a loop's arc
+//! `A -> B -> C` ends on the segment into `P` where the input is back at `u_A`, reached from
+//! the running state by one partial segment map.
+
+use super::{MasingState, PlayBank};
+use crate::error::ZooError;
+use crate::input::TurningPoints;
+use crate::kernel::ArcEnergy;
+use crate::loops::{Loop, LoopKind, LoopPoint};
+
+/// The most element states (elements x turning points) a loop may keep on its stack.
+pub const MAX_STATES: usize = 1 << 27;
+
+/// The periodic response of a Masing model and every loop, with energies.
+#[derive(Debug, Clone)]
+pub struct MasingLoop {
+    u: Vec<f64>,
+    rho: Vec<f64>,
+    force: Vec<f64>,
+    loops: Vec<Loop>,
+}
+
+/// An open reversal: rotated index, its state, the dissipation to the next entry up.
+struct Entry {
+    j: usize,
+    state: MasingState,
+    d: f64,
+}
+
+/// A closed loop before ordering: rotated arc ends, and the record.
+struct Found {
+    from: f64,
+    to: f64,
+    record: Loop,
+}
+
+impl MasingLoop {
+    /// The loops of `bank` for the periodic input `input`.
+    ///
+    /// # Errors
+    /// [`ZooError::TooLarge`] when the worst-case stack of states would exceed [`MAX_STATES`];
+    /// [`ZooError::Overflow`] when a force or energy is not finite.
+    pub fn new(bank: &PlayBank, input: &TurningPoints) -> Result<Self, ZooError> {
+        let u = input.values().to_vec();
+        let n = u.len();
+        if bank.len().saturating_mul(n) > MAX_STATES {
+            return Err(ZooError::TooLarge {
+                elements: bank.len(),
+                turning_points: n,
+                limit: MAX_STATES,
+            });
+        }
+        let mut rho = Vec::with_capacity(n + 1);
+        let mut total = 0.0;
+        rho.push(0.0);
+        for k in 0..n {
+            total += (u[(k + 1) % n] - u[k]).abs();
+            rho.push(total);
+        }
+        if !total.is_finite() {
+            return Err(crate::error::InputError::VariationOverflow.into());
+        }
+        let mut hl = Self {
+            u,
+            rho,
+            force: vec![0.0; n],
+            loops: Vec::new(),
+        };
+        hl.pair(bank);
+        hl.check_finite()?;
+        Ok(hl)
+    }
+
+    /// The rainflow pass: forces at the turning points and every loop.
+    fn pair(&mut self, bank: &PlayBank) {
+        let n = self.u.len();
+        let (max, min) = self
+            .u
+            .iter()
+            .fold((f64::MIN, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
+        let r = self.u.iter().position(|&x| x == max).unwrap_or(0);
+        let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
+        let start = bank.periodic_at_max(max, max - min);
+        let mut run = start.clone();
+        let mut scratch = start.clone();
+        let mut stack = vec![Entry {
+            j: 0,
+            state: start.clone(),
+            d: 0.0,
+        }];
+        let mut found = Vec::new();
+        let mut d_period = 0.0;
+        self.force[r] = bank.force(&start);
+        for j in 1..=n {
+            let k = (r + j) % n;
+            let u_p = self.u[k];
+            // The pair on the bottom entry (the global maximum) is the major loop, closed at the end.
+            while stack.len() >= 3 {
+                let m = stack.len();
+                let (a, b) = (&stack[m - 2], &stack[m - 1]);
+                let range = (b.state.u - a.state.u).abs();
+                if (u_p - b.state.u).abs() < range {
+                    break;
+                }
+                // The arc ends where the input is back at u_A, on the segment into P.
+                scratch.u = run.u;
+                scratch.p.copy_from_slice(&run.p);
+                let d = a.d + b.d + bank.advance(&mut scratch, a.state.u);
+                found.push(self.found(bank, (a, b, j - 1), &scratch, d, r));
+                let merged = a.d + b.d;
+                stack.truncate(m - 2);
+                if let Some(below) = stack.last_mut() {
+                    below.d += merged;
+                }
+            }
+            let d = bank.advance(&mut run, u_p);
+            d_period += d;
+            if let Some(top) = stack.last_mut() {
+                top.d += d;
+            }
+            self.force[k] = bank.force(&run);
+            if j < n {
+                stack.push(Entry {
+                    j,
+                    state: run.clone(),
+                    d: 0.0,
+                });
+            }
+        }
+        let energy = bank.arc(&start, &run, d_period);
+        let rho_r = self.rho[r];
+        let k_low = (r + lowest) % n;
+        let major = Loop {
+            kind: LoopKind::Major,
+            start: self.point(r, rho_r),
+            reversal: self.point(k_low, rho_r + self.rotated(r, lowest)),
+            end: LoopPoint {
+                rho: rho_r + self.period(),
+                u: max,
+                y: bank.force(&run),
+            },
+            energy,
+            parent: None,
+            depth: 0,
+        };
+        self.loops = nest(major, found);
+    }
+
+    /// The record of the loop `(A, B)` closing on the segment after rotated index `prev`, its
+    /// end state `end` and dissipation `d`.
+    fn found(
+        &self,
+        bank: &PlayBank,
+        (a, b, prev): (&Entry, &Entry, usize),
+        end: &MasingState,
+        d: f64,
+        r: usize,
+    ) -> Found {
+        let n = self.u.len();
+        let from = self.rotated(r, a.j);
+        let to = self.rotated(r, prev) + (a.state.u - self.u[(r + prev) % n]).abs();
+        // Reported from rho_A within [0, P).
+        let mut rho_a = self.rho[r] + from;
+        if rho_a >= self.period() {
+            rho_a -= self.period();
+        }
+        let k_a = (r + a.j) % n;
+        let record = Loop {
+            kind: LoopKind::Minor,
+            start: self.point(k_a, rho_a),
+            reversal: self.point((r + b.j) % n, rho_a + self.rotated(r, b.j) - from),
+            end: LoopPoint {
+                rho: rho_a + (to - from),
+                u: end.u,
+                y: bank.force(end),
+            },
+            energy: bank.arc(&a.state, end, d),
+            parent: None,
+            depth: 0,
+        };
+        Found { from, to, record }
+    }
+
+    /// `rho` of rotated index `j` from the start `r`.
+    fn rotated(&self, r: usize, j: usize) -> f64 {
+        let n = self.u.len();
+        if r + j >= n {
+            self.rho[r + j - n] + self.period() - self.rho[r]
+        } else {
+            self.rho[r + j] - self.rho[r]
+        }
+    }
+
+    fn point(&self, k: usize, rho: f64) -> LoopPoint {
+        LoopPoint {
+            rho,
+            u: self.u[k],
+            y: self.force[k],
+        }
+    }
+
+    fn check_finite(&self) -> Result<(), ZooError> {
+        if !self.force.iter().all(|f| f.is_finite()) {
+            return Err(ZooError::Overflow { what: "the force" });
+        }
+        let finite = |e: &ArcEnergy| {
+            [e.work, e.stored_energy_change, e.dissipation, e.closure_gap]
+                .iter()
+                .all(|x| x.is_finite())
+        };
+        if !self.loops.iter().all(|l| finite(&l.energy)) {
+            return Err(ZooError::Overflow {
+                what: "the energy of a loop",
+            });
+        }
+        Ok(())
+    }
+
+    /// Number of turning points in one period.
+    pub fn len(&self) -> usize {
+        self.u.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.u.is_empty()
+    }
+
+    /// The period `P`, the input's total variation over one period.
+    pub fn period(&self) -> f64 {
+        self.rho[self.u.len()]
+    }
+
+    /// Turning points `u_k`.
+    pub fn turning_points(&self) -> &[f64] {
+        &self.u
+    }
+
+    /// `rho_k` of the turning points.
+    pub fn turning_rho(&self) -> &[f64] {
+        &self.rho[..self.u.len()]
+    }
+
+    /// The periodic force at the turning points.
+    pub fn turning_force(&self) -> &[f64] {
+        &self.force
+    }
+
+    /// The major loop (`[0]`) and every minor loop, ordered by where their arcs start (a parent
+    /// before its children), with their energies: the records of [`crate::HysteresisLoop`].
+    pub fn loops(&self) -> &[Loop] {
+        &self.loops
+    }
+
+    /// The work over one period.
+    pub fn work_per_period(&self) -> f64 {
+        self.loops[0].energy.work
+    }
+}
+
+/// The major loop and the minor loops ordered by start (longer arcs first on a tie), with
+/// parents and depths: rainflow arcs are nested or disjoint, so one stack sweep finds each
+/// loop's smallest container.
+fn nest(major: Loop, mut found: Vec<Found>) -> Vec<Loop> {
+    found.sort_by(|x, y| x.from.total_cmp(&y.from).then(y.to.total_cmp(&x.to)));
+    let mut out = Vec::with_capacity(found.len() + 1);
+    out.push(major);
+    let mut open: Vec<(f64, usize)> = Vec::new();
+    for f in found {
+        while open.last().is_some_and(|&(to, _)| to <= f.from) {
+            open.pop();
+        }
+        let parent = open.last().map_or(0, |&(_, i)| i);
+        let mut record = f.record;
+        record.parent = Some(parent);
+        record.depth = out[parent].depth + 1;
+        open.push((f.to, out.len()));
+        out.push(record);
+    }
+    out
+}

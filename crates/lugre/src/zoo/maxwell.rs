@@ -1,0 +1,101 @@
+//! The Maxwell-slip model (Al-Bender, Lampaert and Swevers, "The generalized Maxwell-slip
+//! model: a novel model for friction simulation and compensation", IEEE Trans. Automatic
+//! Control 50(11), 2005, the rate-independent part of GMS; Lampaert, Al-Bender and Swevers,
+//! "A generalized Maxwell-slip friction model appropriate for control purposes", 2003).
+//!
+//! `N` elasto-plastic elements in parallel, all driven by the displacement `u` [m]. Element `i`
+//! has stiffness `k_i > 0` [N/m] and slip force `f_i > 0` [N], so break-away displacement
+//! `Delta_i = f_i / k_i` [m]; its state is its deflection `z_i` [m]:
+//!
+//! ```text
+//! (M1)  |k_i z_i| <= f_i,   dz_i/du = 1 while |z_i| < Delta_i or the motion unloads it,
+//!                           0 while it slips (z_i = ±Delta_i in the direction of motion)
+//! (M2)  F = sum_i k_i z_i                                     [N]
+//! (M3)  V = sum_i k_i z_i² / 2,  D = sum_i f_i × slip_i       [J]
+//! ```
+//!
+//! On a monotone segment of `u` the map is exact and piecewise linear: each `z_i` moves with
+//! `u` until it saturates at `±Delta_i` (the segment map Z1 of [`crate::zoo`], with `z = u - p`
+//! and threshold `Delta_i`). The initial-loading curve from rest is
+//! `F(u) = sum_i k_i min(u, Delta_i)`, increasing, slope `sum k_i` at 0.
+
+use super::{check_elements, check_lengths, MasingLoop, MasingState, PlayBank};
+use crate::error::ZooError;
+use crate::input::TurningPoints;
+
+/// The Maxwell-slip model: validated element stiffnesses and slip forces.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaxwellSlip {
+    stiffness: Vec<f64>,
+    slip_force: Vec<f64>,
+    bank: PlayBank,
+}
+
+impl MaxwellSlip {
+    /// Elements of stiffness `stiffness[i]` [N/m] and slip force `slip_force[i]` [N].
+    ///
+    /// # Errors
+    /// [`ZooError::Empty`] without elements, [`ZooError::LengthMismatch`] for arrays of
+    /// different lengths, [`ZooError::NotFinite`] / [`ZooError::NotPositive`] naming the
+    /// element, [`ZooError::Overflow`] when a break-away displacement `f_i / k_i` overflows.
+    pub fn new(stiffness: &[f64], slip_force: &[f64]) -> Result<Self, ZooError> {
+        check_lengths(
+            ("stiffness", stiffness.len()),
+            ("slip_force", slip_force.len()),
+        )?;
+        check_elements("stiffness", stiffness, true)?;
+        check_elements("slip_force", slip_force, true)?;
+        let delta: Vec<f64> = stiffness
+            .iter()
+            .zip(slip_force)
+            .map(|(k, f)| f / k)
+            .collect();
+        if !delta.iter().all(|d| d.is_finite()) {
+            return Err(ZooError::Overflow {
+                what: "a break-away displacement slip_force / stiffness",
+            });
+        }
+        let c = stiffness.iter().map(|k| -k).collect();
+        Ok(Self {
+            stiffness: stiffness.to_vec(),
+            slip_force: slip_force.to_vec(),
+            bank: PlayBank::new(delta, c, 0.0),
+        })
+    }
+
+    pub fn stiffness(&self) -> &[f64] {
+        &self.stiffness
+    }
+
+    pub fn slip_force(&self) -> &[f64] {
+        &self.slip_force
+    }
+
+    /// The break-away displacements `Delta_i = f_i / k_i`.
+    pub fn break_away(&self) -> &[f64] {
+        self.bank.thresholds()
+    }
+
+    /// The model in the common form (Z2) of [`crate::zoo`].
+    pub fn bank(&self) -> &PlayBank {
+        &self.bank
+    }
+
+    /// The force at each turning point, from rest (every `z_i = 0`) at `u0`.
+    pub fn response(&self, u0: f64, turning: &[f64]) -> Vec<f64> {
+        self.bank.response(&mut self.bank.rest(u0), turning)
+    }
+
+    /// The element deflections `z_i` of `state`.
+    pub fn deflections(&self, state: &MasingState) -> Vec<f64> {
+        state.deflections()
+    }
+
+    /// The loop and every minor loop for the periodic input `input`.
+    ///
+    /// # Errors
+    /// See [`MasingLoop::new`].
+    pub fn loops(&self, input: &TurningPoints) -> Result<MasingLoop, ZooError> {
+        MasingLoop::new(&self.bank, input)
+    }
+}
