@@ -360,3 +360,173 @@ fn prandtl_ishlinskii_loops_match_the_exact_reference() {
     check_periodic(m.bank(), &PI_INPUT_1, &PI_FORCE_1, &PI_LOOPS_1);
     check_periodic(m.bank(), &PI_INPUT_2, &PI_FORCE_2, &PI_LOOPS_2);
 }
+
+/// The work `∮ F du` along the exact path from `state` through `points` (trapezoids between
+/// the path's vertices, where the force is linear in `u`): the signed enclosed area when the
+/// path closes.
+fn path_work(bank: &PlayBank, state: &mut lugre::zoo::MasingState, points: &[f64]) -> f64 {
+    let mut w = 0.0;
+    for &u in points {
+        let path = bank.path(state, u);
+        for pair in path.windows(2) {
+            w += 0.5 * (pair[0].1 + pair[1].1) * (pair[1].0 - pair[0].0);
+        }
+        bank.advance(state, u);
+    }
+    w
+}
+
+/// Every loop closes to 1e-14 relative to the largest force, its stored energy comes back, and
+/// its work equals the area enclosed by the exact path (1e-12 relative to the loop's
+/// `|F|max × range`).
+fn check_masing(bank: &PlayBank, input: &[f64]) -> usize {
+    let hl = MasingLoop::new(bank, &TurningPoints::new(input).unwrap()).unwrap();
+    // The reversals of the cyclic sequence (points that are not reversals are dropped).
+    let input = hl.turning_points();
+    let f_max = hl
+        .turning_force()
+        .iter()
+        .fold(0.0f64, |m, f| m.max(f.abs()));
+    let (hi, lo) = input
+        .iter()
+        .fold((f64::MIN, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
+    let n = input.len();
+    let p = hl.period();
+    for l in hl.loops() {
+        assert!(l.energy.closure_gap.abs() <= 1e-14 * f_max, "{l:?}");
+        let scale = f_max * (l.start.u - l.reversal.u).abs();
+        assert!(
+            l.energy.stored_energy_change.abs() <= 1e-14 * scale.max(f_max * f_max),
+            "{l:?}"
+        );
+        // The path: from rest at mid-range to the maximum (the periodic state, Z5), around to
+        // the loop's start, then through the turning points inside its arc back to u_A.
+        let mut state = bank.rest(0.5 * (hi + lo));
+        bank.advance(&mut state, hi);
+        let r = input.iter().position(|&x| x == hi).unwrap();
+        let rho = |j: usize| {
+            (0..j)
+                .map(|i| (input[(r + i + 1) % n] - input[(r + i) % n]).abs())
+                .sum::<f64>()
+        };
+        let start_rho = (l.start.rho - hl.turning_rho()[r]).rem_euclid(p);
+        let mut j = 0;
+        while rho(j) < start_rho - 1e-9 * p {
+            j += 1;
+            bank.advance(&mut state, input[(r + j) % n]);
+        }
+        let end_rho = start_rho + (l.end.rho - l.start.rho);
+        let mut arc = Vec::new();
+        while rho(j + 1) < end_rho - 1e-9 * p {
+            j += 1;
+            arc.push(input[(r + j) % n]);
+        }
+        arc.push(l.end.u);
+        let area = path_work(bank, &mut state, &arc);
+        let tol = 1e-12 * (f_max * (hi - lo)).max(1e-300);
+        assert!((l.energy.work - area).abs() <= tol, "{l:?}: area {area}");
+    }
+    hl.loops().len()
+}
+
+/// Alternating turning points from a seeded generator (xorshift), one global maximum.
+fn alternating(seed: u64, n: usize, amplitude: f64) -> Vec<f64> {
+    let mut s = seed | 1;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut u = vec![0.0];
+    while u.len() < n {
+        let up = u.len() % 2 == 1;
+        let last = u[u.len() - 1];
+        let step = amplitude * (0.05 + next());
+        u.push(if up { last + step } else { last - step });
+    }
+    // Close the period with a last minimum below the first point.
+    if n % 2 == 1 {
+        u.pop();
+    }
+    u
+}
+
+#[test]
+fn maxwell_slip_minor_loops_close_and_enclose_their_work() {
+    let k: Vec<f64> = (0..100)
+        .map(|i| 1.0 + (i as f64 * 0.37).sin().abs() * 50.0)
+        .collect();
+    let f: Vec<f64> = (0..100).map(|i| 0.01 + 0.02 * i as f64).collect();
+    let m = MaxwellSlip::new(&k, &f).unwrap();
+    for seed in 1..6 {
+        assert!(check_masing(m.bank(), &alternating(seed, 60, 0.3)) > 10);
+    }
+}
+
+#[test]
+fn prandtl_ishlinskii_minor_loops_close_and_enclose_their_work() {
+    let r: Vec<f64> = (0..100).map(|i| 0.004 * i as f64).collect();
+    let w: Vec<f64> = (0..100).map(|i| 0.5 * (-0.03 * i as f64).exp()).collect();
+    let m = PrandtlIshlinskii::new(1.0, &r, &w).unwrap();
+    // Nonnegative weights: the play loops run counterclockwise, the work per period is < 0.
+    let input = TurningPoints::new(&[0.0, 1.0]).unwrap();
+    let hl = MasingLoop::new(m.bank(), &input).unwrap();
+    assert!(hl.work_per_period() < 0.0, "{}", hl.work_per_period());
+    for seed in 1..6 {
+        assert!(check_masing(m.bank(), &alternating(seed, 60, 0.3)) > 10);
+    }
+}
+
+#[test]
+fn bad_parameters_are_named_with_their_values() {
+    let e = MaxwellSlip::new(&[1.0, -2.0], &[1.0, 1.0])
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "stiffness[1] must be > 0, got -2");
+    let e = MaxwellSlip::new(&[1.0], &[1.0, 1.0])
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "stiffness and slip_force have different lengths (1 and 2)"
+    );
+    let e = MaxwellSlip::new(&[], &[]).unwrap_err().to_string();
+    assert_eq!(e, "stiffness needs at least one element, got none");
+    let e = MaxwellSlip::new(&[1.0], &[f64::NAN])
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "slip_force[0] must be a finite number, got NaN");
+    let e = PrandtlIshlinskii::new(1.0, &[0.5, -0.1], &[1.0, 1.0])
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "thresholds[1] must be >= 0, got -0.1");
+    let e = PrandtlIshlinskii::new(1.0, &[0.5, 0.2], &[-0.75, -0.5])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("threshold <= 0.5 is -0.25"), "{e}");
+    let e = PrandtlIshlinskii::new(0.0, &[0.5], &[1.0])
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("threshold <= 0 is 0;"), "{e}");
+    // Negative weights that keep the slope positive are allowed (saturation).
+    assert!(PrandtlIshlinskii::new(1.0, &[0.5, 0.2], &[-0.25, 0.5]).is_ok());
+}
+
+/// The response to turning points from rest is the initial-loading curve, then Masing
+/// branches: for Maxwell-slip `F(u) = sum k_i min(u, Delta_i)` on first loading, and the
+/// descending branch from `u_B` is `F(u_B) - 2 F_0((u_B - u) / 2)`.
+#[test]
+fn maxwell_slip_follows_masing_rules() {
+    let m = maxwell();
+    let first = |u: f64| -> f64 {
+        m.stiffness()
+            .iter()
+            .zip(m.break_away())
+            .map(|(k, d)| k * u.min(*d))
+            .sum()
+    };
+    let f = m.response(0.0, &[2.0, 0.5]);
+    close("initial loading", f[0], first(2.0));
+    close("Masing unloading", f[1], first(2.0) - 2.0 * first(0.75));
+}
