@@ -32,7 +32,7 @@ pub struct MaxwellSlip {
 }
 
 impl MaxwellSlip {
-    /// Elements of stiffness `stiffness[i]` [N/m] and slip force `slip_force[i]` [N].
+    /// Elements of stiffness `stiffness[i]` (N/m) and slip force `slip_force[i]` (N).
     ///
     /// # Errors
     /// [`ZooError::Empty`] without elements, [`ZooError::LengthMismatch`] for arrays of

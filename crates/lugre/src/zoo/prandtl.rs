@@ -1,6 +1,7 @@
 //! The Prandtl-Ishlinskii model with play (backlash) operators (Brokate and Sprekels,
-//! "Hysteresis and Phase Transitions", Springer 1996, §2.3; Kuhnen, "Modeling, identification
-//! and compensation of complex hysteretic nonlinearities", European J. Control 9, 2003).
+//! "Hysteresis and Phase Transitions", Springer 1996, ch. 2; Kuhnen, "Modeling, identification
+//! and compensation of complex hysteretic nonlinearities: a modified Prandtl-Ishlinskii
+//! approach", European J. Control 9(4), 2003).
 //!
 //! Input `u` (any unit, e.g. [V] or [m]), output `F` (any unit), thresholds `r_i >= 0` [unit
 //! of `u`], weights `w_i` [unit of `F` per unit of `u`], `w0` the weight of the linear part

@@ -1,0 +1,47 @@
+//! The loop and every minor loop with their energies of the Masing models of `lugre::zoo` for
+//! periodic inputs of random turning points, in turning points per second: Maxwell-slip with
+//! 100 elements (target: at least 10^6 turning points per second) and Prandtl-Ishlinskii with
+//! 100 play operators. The work per turning point is one segment map of every element.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use lugre::zoo::{MaxwellSlip, PrandtlIshlinskii};
+use std::hint::black_box;
+
+mod common;
+use common::random_turning_points;
+
+fn zoo(c: &mut Criterion) {
+    let elements = 100;
+    // Break-away displacements and thresholds spread over the input's range (0 to 1).
+    let k: Vec<f64> = (0..elements).map(|i| 1.0 + i as f64).collect();
+    let f: Vec<f64> = (0..elements)
+        .map(|i| k[i] * 0.5 * (i + 1) as f64 / elements as f64)
+        .collect();
+    let maxwell = MaxwellSlip::new(&k, &f).expect("valid parameters");
+    let r: Vec<f64> = (0..elements)
+        .map(|i| 0.5 * i as f64 / elements as f64)
+        .collect();
+    let w: Vec<f64> = (0..elements).map(|i| 1.0 / (1 + i) as f64).collect();
+    let prandtl = PrandtlIshlinskii::new(1.0, &r, &w).expect("valid parameters");
+    for (name, bank) in [
+        ("maxwell_slip_100", maxwell.bank()),
+        ("prandtl_ishlinskii_100", prandtl.bank()),
+    ] {
+        let mut group = c.benchmark_group(name);
+        group.sample_size(10);
+        for n in [1_000, 100_000] {
+            let tp = random_turning_points(n, 1.0);
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
+                b.iter(|| {
+                    let hl = lugre::zoo::MasingLoop::new(bank, black_box(tp)).expect("finite");
+                    black_box(hl.loops().len())
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+criterion_group!(benches, zoo);
+criterion_main!(benches);
