@@ -530,3 +530,54 @@ fn maxwell_slip_follows_masing_rules() {
     close("initial loading", f[0], first(2.0));
     close("Masing unloading", f[1], first(2.0) - 2.0 * first(0.75));
 }
+
+/// Repeated extremes (ties of the pairing rule) and the smallest input: loops close, nest, and
+/// the major loop's work equals the sum of the exact segment works over the period.
+#[test]
+fn ties_and_the_smallest_input() {
+    let m = maxwell();
+    for input in [
+        vec![0.0, 1.0],
+        vec![0.0, 1.0, 0.0, 1.0],
+        vec![0.0, 1.0, 0.25, 1.0, 0.0, 0.75],
+        vec![1.0, 0.0, 0.5, 0.0, 1.0, 0.25, 0.5, 0.25],
+    ] {
+        let count = check_masing(m.bank(), &input);
+        assert!(count >= 1, "{input:?}");
+        let hl = MasingLoop::new(m.bank(), &TurningPoints::new(&input).unwrap()).unwrap();
+        for l in &hl.loops()[1..] {
+            let parent = &hl.loops()[l.parent.unwrap()];
+            assert_eq!(l.depth, parent.depth + 1);
+            assert!(l.start.rho >= parent.start.rho - 1e-12 || parent.depth == 0);
+        }
+    }
+    // [0, 1, 0, 1] is two equal cycles: the major loop and one minor loop over the second.
+    let hl = MasingLoop::new(
+        m.bank(),
+        &TurningPoints::new(&[0.0, 1.0, 0.0, 1.0]).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(hl.loops().len(), 2);
+    close(
+        "half the period",
+        2.0 * hl.loops()[1].energy.work,
+        hl.work_per_period(),
+    );
+}
+
+#[test]
+fn too_many_element_states_are_refused_before_allocating() {
+    let k = vec![1.0; 1 << 14];
+    let m = MaxwellSlip::new(&k, &k).unwrap();
+    let u: Vec<f64> = (0..(1 << 14))
+        .map(|i| (i % 2) as f64 * (1.0 + i as f64))
+        .collect();
+    let e = m
+        .loops(&TurningPoints::new(&u).unwrap())
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "16384 elements x 16384 turning points exceed the 134217728 element states a loop may hold"
+    );
+}
