@@ -735,6 +735,33 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     return fit_result(&r, f, fitted, n, full);
 }
 
+/* names = lugre_parameters(model): the model's parameter names ('lugre' or 'dahl'), in the
+ * core's order, from the C ABI (the core's table). */
+static mxArray *parameter_names(int nrhs, const mxArray *prhs[]) {
+    char model[16] = "lugre";
+    if (nrhs > 0 && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], model, sizeof model) != 0))
+        fail("model must be 'lugre' or 'dahl'");
+    int family;
+    if (strcmp(model, "lugre") == 0) {
+        family = LUGRE_FAMILY_LUGRE;
+    } else if (strcmp(model, "dahl") == 0) {
+        family = LUGRE_FAMILY_DAHL;
+    } else {
+        mexErrMsgIdAndTxt(ERROR_ID, "model must be 'lugre' or 'dahl', got '%s'", model);
+        return NULL;
+    }
+    size_t count = 0;
+    const char *name = NULL;
+    while (count < LUGRE_MAX_PARAMETERS && lugre_parameter_name(family, count, &name) == LUGRE_STATUS_OK)
+        count++;
+    mxArray *names = mxCreateCellMatrix(1, count);
+    for (size_t i = 0; i < count; i++) {
+        check(lugre_parameter_name(family, i, &name));
+        mxSetCell(names, i, mxCreateString(name));
+    }
+    return names;
+}
+
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     char cmd[32];
     if (nrhs < 1 || !mxIsChar(prhs[0]) || mxGetString(prhs[0], cmd, sizeof cmd) != 0)
@@ -767,6 +794,8 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
     } else if (strcmp(cmd, "fit") == 0) {
         if (args < 2) fail("lugre_fit(u, f, options): u and f are needed");
         plhs[0] = fit_struct(args, a);
+    } else if (strcmp(cmd, "parameters") == 0) {
+        plhs[0] = parameter_names(args, a);
     } else {
         mexErrMsgIdAndTxt(ERROR_ID, "lugre_mex: unknown call '%s'", cmd);
     }

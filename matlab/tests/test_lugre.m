@@ -135,6 +135,11 @@ function failures = test_lugre()
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'pid', [1 2])), 'pid takes 3 numbers, got 2');
   failures += raises(@() lugre_dynamics(struct('scenario', 'pid', 'gamma', 1)), 'unknown field ''gamma''');
   failures += raises(@() lugre_cycles([0 Inf 1]), 'u(2) must be a finite number, got inf');
+  % The parameter names, from the core's table through the C ABI.
+  failures += expect(isequal(lugre_parameters('dahl'), {'rho', 'fc'}), 'lugre_parameters: Dahl');
+  names = lugre_parameters();
+  failures += expect(numel(names) == 7 && strcmp(names{1}, 'sigma0'), 'lugre_parameters: LuGre');
+  failures += raises(@() lugre_parameters('bouc-wen'), 'model must be ''lugre'' or ''dahl'', got ''bouc-wen''');
   failures += raises(@() lugre_cycles([0 1 0], 0, struct('fs', 1.5)), 'the model is only partly named: give sigma0 too, or preset ''canudas1995''');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 

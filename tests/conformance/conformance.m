@@ -110,7 +110,9 @@ function m = expected_message(c, table)
     close = find(rest == '}', 1);
     name = rest(open + 1:close - 1);
     colon = find(name == ':', 1);
-    if ~isempty(colon)   % {at:k}, {item:k}: element k (0-based) of an array, as MATLAB counts
+    if strcmp(name, '@lugre_parameters')   % the core's table: a parameter added needs no edit
+      word = strjoin(lugre_parameters('lugre'), ', ');
+    elseif ~isempty(colon)   % {at:k}, {item:k}: element k (0-based) of an array, as MATLAB counts
       word = sprintf('(%d)', str2double(name(colon + 1:end)) + 1);
     else
       word = name;

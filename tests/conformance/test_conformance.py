@@ -120,6 +120,9 @@ def message(case, front_end):
         head, rest = rest.split("{", 1)
         name, rest = rest.split("}", 1)
         kind, _, k = name.partition(":")
+        if name == "@lugre_parameters":  # the core's table, so a parameter added needs no edit
+            out += head + ", ".join(lugre.PARAMETERS["LuGre"])
+            continue
         out += head + (f"[{k}]" if kind in ("at", "item") and k else spelled(case, name, front_end))
     return out + rest
 

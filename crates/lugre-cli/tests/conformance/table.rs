@@ -249,6 +249,8 @@ impl Case {
                     dir.join(&f.name).display().to_string()
                 }
                 "@dir" => dir.display().to_string(),
+                // The core's table: a parameter added to it needs no edit here.
+                "@lugre_parameters" => lugre::fit::Family::LuGre.parameters().join(", "),
                 _ => match name.split_once(':') {
                     Some((kind, k)) => at(kind, k.parse().expect("{at:INDEX}"), front_end),
                     None => self.spelled(name, front_end),
