@@ -3,9 +3,9 @@
 //! Control 50(11), 2005, the rate-independent part of GMS; Lampaert, Al-Bender and Swevers,
 //! "A generalized Maxwell-slip friction model appropriate for control purposes", 2003).
 //!
-//! `N` elasto-plastic elements in parallel, all driven by the displacement `u` [m]. Element `i`
-//! has stiffness `k_i > 0` [N/m] and slip force `f_i > 0` [N], so break-away displacement
-//! `Delta_i = f_i / k_i` [m]; its state is its deflection `z_i` [m]:
+//! `N` elasto-plastic elements in parallel, all driven by the displacement `u` (m). Element `i`
+//! has stiffness `k_i > 0` (N/m) and slip force `f_i > 0` (N), so break-away displacement
+//! `Delta_i = f_i / k_i` (m); its state is its deflection `z_i` (m):
 //!
 //! ```text
 //! (M1)  |k_i z_i| <= f_i,   dz_i/du = 1 while |z_i| < Delta_i or the motion unloads it,

@@ -3,7 +3,7 @@
 //! and compensation of complex hysteretic nonlinearities: a modified Prandtl-Ishlinskii
 //! approach", European J. Control 9(4), 2003).
 //!
-//! Input `u` (any unit, e.g. [V] or [m]), output `F` (any unit), thresholds `r_i >= 0` [unit
+//! Input `u` (any unit, e.g. V or m), output `F` (any unit), thresholds `r_i >= 0` [unit
 //! of `u`], weights `w_i` [unit of `F` per unit of `u`], `w0` the weight of the linear part
 //! (the operator of threshold 0):
 //!
