@@ -115,14 +115,33 @@ impl PositionHandling {
 /// (N1): the standard deviation of white noise on the samples `x` (NaN entries skipped:
 /// differences across them are not formed). 0 for fewer than `DIFFERENCE_ORDER + 1` samples.
 pub fn noise_level(x: &[f64]) -> f64 {
-    let k = DIFFERENCE_ORDER;
+    difference_noise(x, DIFFERENCE_ORDER)
+}
+
+/// (N1) with differences of order `k` (1 to 3): `median |D^k x| / (Phi^-1(3/4) sqrt(C(2k, k)))`.
+/// The second differences serve where the signal's own third differences are not small (a
+/// velocity computed from the samples, a force that reverses: [`super::plateaus`],
+/// [`super::presliding`]).
+pub(crate) fn difference_noise(x: &[f64], k: usize) -> f64 {
+    // Binomial coefficients of D^k and C(2k, k), the variance of D^k of unit white noise.
+    let (coefficients, variance): (&[f64], f64) = match k {
+        1 => (&[-1.0, 1.0], 2.0),
+        2 => (&[1.0, -2.0, 1.0], 6.0),
+        _ => (&[-1.0, 3.0, -3.0, 1.0], DIFFERENCE_VARIANCE),
+    };
     let mut d: Vec<f64> = x
-        .windows(k + 1)
-        .map(|w| (w[3] - 3.0 * w[2] + 3.0 * w[1] - w[0]).abs())
+        .windows(coefficients.len())
+        .map(|w| {
+            w.iter()
+                .zip(coefficients)
+                .map(|(x, c)| c * x)
+                .sum::<f64>()
+                .abs()
+        })
         .filter(|d| !d.is_nan())
         .collect();
     match super::slow::median(&mut d) {
-        Some(m) => m / (MAD_NORMAL * DIFFERENCE_VARIANCE.sqrt()),
+        Some(m) => m / (MAD_NORMAL * variance.sqrt()),
         None => 0.0,
     }
 }

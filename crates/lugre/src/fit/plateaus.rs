@@ -5,7 +5,8 @@
 //! 1. **Velocity.** Between samples, `v_i = (u_{i+1} - u_i) / (t_{i+1} - t_i)` (a velocity
 //!    record gives it at each sample). Its noise is estimated robustly from the second
 //!    differences, which are noise alone on a run and hardly see a smooth change:
-//!    `s_v = 1.4826 median |v_{i+1} - 2 v_i + v_{i-1}| / sqrt(6)` (P1).
+//!    `s_v = median |v_{i+1} - 2 v_i + v_{i-1}| / (Phi^-1(3/4) sqrt(6))` (P1, the estimator (N1) of
+//!    [`super::noise`] at order 2).
 //! 2. **Runs.** A run is a stretch of consecutive samples whose velocity stays within
 //!    `4 s_v + 0.1 % |v|` of the stretch's mean (P2); runs of at least
 //!    [`MIN_RUN`] samples that move (`|v| > 4 s_v`) are the candidate plateaus. Ramps between
@@ -23,6 +24,7 @@
 use crate::error::FitError;
 use crate::input::{check_finite, check_increasing};
 
+use super::noise::difference_noise;
 use super::stribeck::SteadyPoint;
 
 /// The fewest samples a run must have to be a candidate plateau.
@@ -122,7 +124,7 @@ pub fn find_plateaus(
             v
         }
     };
-    let noise = difference_noise(&v);
+    let noise = difference_noise(&v, 2);
     let mut plateaus = Vec::new();
     let (mut skipped, mut longest) = (0, 0);
     for (a, b) in runs(&v, noise) {
@@ -160,21 +162,6 @@ pub fn find_plateaus(
         skipped,
         velocity_noise: noise,
     })
-}
-
-/// (P1): the noise of a series from its second differences (a smooth change hardly shows in
-/// them; white noise of deviation `s` gives them deviation `sqrt(6) s`), robustly (the median
-/// absolute value, scaled to a deviation).
-pub(crate) fn difference_noise(x: &[f64]) -> f64 {
-    let mut d: Vec<f64> = x
-        .windows(3)
-        .map(|w| (w[2] - 2.0 * w[1] + w[0]).abs())
-        .collect();
-    if d.is_empty() {
-        return 0.0;
-    }
-    d.sort_by(f64::total_cmp);
-    1.4826 * d[d.len() / 2] / 6f64.sqrt()
 }
 
 /// (P2): the stretches `[a, b)` of constant velocity.

@@ -24,7 +24,7 @@
 //! `sigma0`, would exceed twice `Fs` over the travel between two reversals, which only sliding
 //! allows (a sliding test's flat force can make (R2) soft; the exact fit is not fooled).
 
-use super::plateaus::difference_noise;
+use super::noise::difference_noise;
 use super::spec::index_of;
 use super::{
     check_columns, fit_full_smooth, full, FitKind, FitReport, FitSpec, FullOptions,
@@ -114,7 +114,7 @@ fn check_signal(u: &[f64], f: &[f64]) -> Result<(), FitError> {
         ("the presliding force", f),
         ("the presliding displacement", u),
     ] {
-        let noise = difference_noise(x);
+        let noise = difference_noise(x, 2);
         let (lo, hi) = x
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &y| {
@@ -134,7 +134,7 @@ fn check_signal(u: &[f64], f: &[f64]) -> Result<(), FitError> {
 
 /// Refuses a test that breaks away (module docs); `k` is the spring of (R2).
 fn check_breakaway(u: &[f64], f: &[f64], k: f64, fs: f64) -> Result<(), FitError> {
-    let noise = difference_noise(f);
+    let noise = difference_noise(f, 2);
     let peak = f.iter().fold(0.0f64, |m, y| m.max(y.abs()));
     if peak - 3.0 * noise >= BREAKAWAY_FRACTION * fs {
         return Err(FitError::BreaksAway {
