@@ -146,14 +146,13 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
         write_atomic(path, |w| outcome.write_csv(w))?;
     }
     if let Some(path) = &args.plot.path {
-        // The input file's units (its columns as read, not scaled: the loop reads none), else
-        // a preset's SI; the flag's over them.
-        let units = match &args.input.input {
-            Some(file) => Units::of_header(file, &lugre_io::ReadOptions::default()),
-            None if args.model.preset.is_some() => Units::si(),
-            None => Units::default(),
-        };
-        let units = units.with_flag(args.plot.units.as_deref())?;
+        // The loop reads its file's columns as they are (no --scale).
+        let units = Units::for_figure(
+            args.input.input.as_deref(),
+            &lugre_io::ReadOptions::default(),
+            args.model.preset.is_some(),
+            args.plot.units.as_deref(),
+        )?;
         loop_figure(&outcome.hl, &outcome.loops, &units).save(path)?;
     }
 

@@ -67,6 +67,23 @@ impl Units {
         }
     }
 
+    /// The units of a figure of a command that reads `file` (its header's, for roles
+    /// `options` does not scale) or, without one, runs a model that is SI when `preset`; then
+    /// `--units` (`flag`) over them.
+    pub(crate) fn for_figure(
+        file: Option<&std::path::Path>,
+        options: &ReadOptions,
+        preset: bool,
+        flag: Option<&str>,
+    ) -> Result<Self> {
+        let units = match file {
+            Some(file) => Units::of_header(file, options),
+            None if preset => Units::si(),
+            None => Units::default(),
+        };
+        units.with_flag(flag)
+    }
+
     /// These units with those of `--units ROLE=UNIT,...` (roles `t`, `u`, `F` by any of their
     /// header names) in their place.
     pub(crate) fn with_flag(mut self, text: Option<&str>) -> Result<Self> {

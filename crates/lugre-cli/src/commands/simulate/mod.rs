@@ -263,13 +263,12 @@ fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
         } else {
             format!("γ = {}", sig(r.simulation.gamma().value(), 6))
         };
-        // The input file's units, else a preset's SI; the flag's over them.
-        let units = match &args.input.input {
-            Some(file) => Units::of_header(file, &args.data.options(&[Role::U, Role::V])?),
-            None if args.model.preset.is_some() => Units::si(),
-            None => Units::default(),
-        };
-        let units = units.with_flag(args.plot.units.as_deref())?;
+        let units = Units::for_figure(
+            args.input.input.as_deref(),
+            &args.data.options(&[Role::U, Role::V])?,
+            args.model.preset.is_some(),
+            args.plot.units.as_deref(),
+        )?;
         response_figure(out, &what, &units).save(path)?;
     }
     let stdout = std::io::stdout();

@@ -108,10 +108,13 @@ pub(crate) fn run(args: &SweepArgs) -> Result<()> {
     check_files(None, &args.output, Some(&args.plot))?;
     let choice = args.model.build()?;
     let model = choice.lugre();
-    // A preset's parameters are SI; the flag names others (labels only).
-    let si = args.model.preset.is_some();
-    let units = if si { Units::si() } else { Units::default() };
-    let units = units.with_flag(args.plot.units.as_deref())?;
+    // No input file: a preset's parameters are SI; the flag names others (labels only).
+    let units = Units::for_figure(
+        None,
+        &lugre_io::ReadOptions::default(),
+        args.model.preset.is_some(),
+        args.plot.units.as_deref(),
+    )?;
     let request = build(args)?;
     let sweep = compute(&request, &model)?;
     if let Some(path) = &args.plot.path {
