@@ -215,100 +215,27 @@ pub fn fit<'py>(
         Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
         None => None,
     };
-    // A velocity record (as `lugre fit` reads t,v,F): integrated from u = 0 and read as the
-    // C1 cubic; `u` is then None.
-    let (u, motion) = match (given(Some(u)), given(v)) {
-        (Some(_), Some(_)) => {
-            return Err(PyValueError::new_err(
-                "give the displacement u or the velocity v, not both (u=None with v)",
-            ))
-        }
-        (None, None) => {
-            return Err(PyTypeError::new_err(
-                "u must be the displacement samples (None only with the velocity v), got None",
-            ))
-        }
-        (Some(u), None) => (floats(&u, "u")?.one_dimensional("u", &u)?, None),
-        (None, Some(v)) => {
-            let v = floats(&v, "v")?.one_dimensional("v", &v)?;
-            let Some(t) = &t else {
-                return Err(PyValueError::new_err(
-                    "a velocity record needs the samples' times: give t",
-                ));
-            };
-            let motion =
-                SmoothSamples::from_velocity(t.to_vec(), v.to_vec(), 0.0, CUBIC_READING_TOL)
-                    .map_err(|e| explain(py, FitError::from(e)))?;
-            (motion.samples().1.to_vec(), Some(motion))
-        }
-    };
-    let mut f = floats(f, "f")?.one_dimensional("f", f)?;
-    // With the normal force, the fit is to the friction coefficient F / N (as `lugre fit
-    // --columns N=NAME`).
-    let normal = match given(normal) {
-        Some(n) => Some(floats(&n, "normal")?.one_dimensional("normal", &n)?),
-        None => None,
-    };
-    if let Some(n) = &normal {
-        normal_force::to_coefficient(&mut f, n).map_err(|e| match e {
-            NormalForceError::NotPositive { index, .. } => {
-                PyValueError::new_err(format!("normal[{index}]: {e}"))
-            }
-            e => PyValueError::new_err(format!("normal: {e}")),
-        })?;
-    }
+    let (u, motion) = motion_of(py, given(Some(u)), given(v), t.as_deref())?;
+    let (f, normal) = friction_of(f, given(normal))?;
 
-    let x0 = given(x0).map(|x| real(&x, "x0")).transpose()?;
-    let cubic = crate::simulate::cubic_arg(given(interpolate).as_ref())?;
-    if cubic && kind == FitKind::Slow {
-        return Err(PyValueError::new_err(
-            "interpolate='cubic' applies to the full fit (kind='full'): the slow loop depends on the turning points alone",
-        ));
-    }
-    let starts = given(starts).map(|s| count(&s, "starts")).transpose()?;
-    let noise = match given(noise) {
-        Some(n) => noise_arg(&n)?,
-        None => Noise::Auto,
-    };
-    let gate = given(gate).map(|g| real(&g, "gate")).transpose()?;
-    if gate.is_some() && kind == FitKind::Full {
-        return Err(PyValueError::new_err(
-            "gate applies to the slow fit (kind='slow'): the full fit simulates every turn of the input",
-        ));
-    }
-    let mut slow_options = SlowOptions::default().with_noise(noise);
-    if let Some(g) = gate {
-        slow_options = slow_options.with_gate(g);
-    }
-    let options = match kind {
-        FitKind::Slow => {
-            // As `lugre fit` refuses --x0 and --starts without --fit full.
-            for (name, set) in [("x0", x0.is_some()), ("starts", starts.is_some())] {
-                if set {
-                    return Err(PyValueError::new_err(format!(
-                        "{name} applies to the full fit (add kind='full')"
-                    )));
-                }
-            }
-            if let Some(t) = &t {
-                check_times(t, u.len()).map_err(|e| explain(py, e))?;
-            }
-            None
-        }
-        _ => {
-            if t.is_none() {
-                return Err(PyValueError::new_err(
-                    "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
-                ));
-            }
-            let starts = match starts {
-                Some(n) => usize::try_from(n)
-                    .map_err(|_| PyValueError::new_err(format!("starts is too large, got {n}")))?,
-                None => FullOptions::DEFAULT_STARTS,
-            };
-            Some((x0.unwrap_or(0.0), starts))
-        }
-    };
+    let Run {
+        slow: slow_options,
+        full: options,
+        cubic,
+        noise,
+    } = run_options(
+        py,
+        kind,
+        [
+            given(x0),
+            given(starts),
+            given(interpolate),
+            given(noise),
+            given(gate),
+        ],
+        t.as_deref(),
+        u.len(),
+    )?;
     drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
 
     let report = py
@@ -343,6 +270,137 @@ pub fn fit<'py>(
         d.set_item("u", vec_out(py, u.to_vec()))?;
     }
     Ok(d)
+}
+
+/// How the slow or full fit runs, from its keywords.
+struct Run {
+    slow: SlowOptions,
+    /// The full fit's `x0` and number of starts (None: the slow fit).
+    full: Option<(f64, usize)>,
+    cubic: bool,
+    noise: Noise,
+}
+
+/// The keywords `x0, starts, interpolate, noise, gate` of the slow or full fit, checked
+/// against the kind of fit and the times `t` of `samples` samples (as `lugre fit` checks its
+/// flags).
+fn run_options(
+    py: Python<'_>,
+    kind: FitKind,
+    [x0, starts, interpolate, noise, gate]: [Option<Bound<'_, PyAny>>; 5],
+    t: Option<&[f64]>,
+    samples: usize,
+) -> PyResult<Run> {
+    let x0 = x0.map(|x| real(&x, "x0")).transpose()?;
+    let cubic = crate::simulate::cubic_arg(interpolate.as_ref())?;
+    if cubic && kind == FitKind::Slow {
+        return Err(PyValueError::new_err(
+            "interpolate='cubic' applies to the full fit (kind='full'): the slow loop depends on the turning points alone",
+        ));
+    }
+    let starts = starts.map(|s| count(&s, "starts")).transpose()?;
+    let noise = match noise {
+        Some(n) => noise_arg(&n)?,
+        None => Noise::Auto,
+    };
+    let gate = gate.map(|g| real(&g, "gate")).transpose()?;
+    if gate.is_some() && kind == FitKind::Full {
+        return Err(PyValueError::new_err(
+            "gate applies to the slow fit (kind='slow'): the full fit simulates every turn of the input",
+        ));
+    }
+    let mut slow_options = SlowOptions::default().with_noise(noise);
+    if let Some(g) = gate {
+        slow_options = slow_options.with_gate(g);
+    }
+    let options = match kind {
+        FitKind::Slow => {
+            // As `lugre fit` refuses --x0 and --starts without --fit full.
+            for (name, set) in [("x0", x0.is_some()), ("starts", starts.is_some())] {
+                if set {
+                    return Err(PyValueError::new_err(format!(
+                        "{name} applies to the full fit (add kind='full')"
+                    )));
+                }
+            }
+            if let Some(t) = t {
+                check_times(t, samples).map_err(|e| explain(py, e))?;
+            }
+            None
+        }
+        _ => {
+            if t.is_none() {
+                return Err(PyValueError::new_err(
+                    "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
+                ));
+            }
+            let starts = match starts {
+                Some(n) => usize::try_from(n)
+                    .map_err(|_| PyValueError::new_err(format!("starts is too large, got {n}")))?,
+                None => FullOptions::DEFAULT_STARTS,
+            };
+            Some((x0.unwrap_or(0.0), starts))
+        }
+    };
+    Ok(Run {
+        slow: slow_options,
+        full: options,
+        cubic,
+        noise,
+    })
+}
+
+/// The displacement at the samples: `u` as given, or a velocity record `v` (as `lugre fit`
+/// reads t,v,F) integrated from u = 0 and read as the C1 cubic, which is also returned.
+fn motion_of(
+    py: Python<'_>,
+    u: Option<Bound<'_, PyAny>>,
+    v: Option<Bound<'_, PyAny>>,
+    t: Option<&[f64]>,
+) -> PyResult<(Vec<f64>, Option<SmoothSamples>)> {
+    match (u, v) {
+        (Some(_), Some(_)) => Err(PyValueError::new_err(
+            "give the displacement u or the velocity v, not both (u=None with v)",
+        )),
+        (None, None) => Err(PyTypeError::new_err(
+            "u must be the displacement samples (None only with the velocity v), got None",
+        )),
+        (Some(u), None) => Ok((floats(&u, "u")?.one_dimensional("u", &u)?, None)),
+        (None, Some(v)) => {
+            let v = floats(&v, "v")?.one_dimensional("v", &v)?;
+            let Some(t) = t else {
+                return Err(PyValueError::new_err(
+                    "a velocity record needs the samples' times: give t",
+                ));
+            };
+            let motion =
+                SmoothSamples::from_velocity(t.to_vec(), v.to_vec(), 0.0, CUBIC_READING_TOL)
+                    .map_err(|e| explain(py, FitError::from(e)))?;
+            Ok((motion.samples().1.to_vec(), Some(motion)))
+        }
+    }
+}
+
+/// The force samples; with the normal force, the friction coefficient F / N (as `lugre fit
+/// --columns N=NAME`), and the normal force.
+fn friction_of(
+    f: &Bound<'_, PyAny>,
+    normal: Option<Bound<'_, PyAny>>,
+) -> PyResult<(Vec<f64>, Option<Vec<f64>>)> {
+    let mut f = floats(f, "f")?.one_dimensional("f", f)?;
+    let normal = match normal {
+        Some(n) => Some(floats(&n, "normal")?.one_dimensional("normal", &n)?),
+        None => None,
+    };
+    if let Some(n) = &normal {
+        normal_force::to_coefficient(&mut f, n).map_err(|e| match e {
+            NormalForceError::NotPositive { index, .. } => {
+                PyValueError::new_err(format!("normal[{index}]: {e}"))
+            }
+            e => PyValueError::new_err(format!("normal: {e}")),
+        })?;
+    }
+    Ok((f, normal))
 }
 
 /// A fit that ran out of evaluations at a usable point: `lugre fit` warns on stderr and
