@@ -34,7 +34,7 @@ fn zoo(c: &mut Criterion) {
             group.throughput(Throughput::Elements(n as u64));
             group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
                 b.iter(|| {
-                    let hl = lugre::zoo::MasingLoop::new(bank, black_box(tp)).expect("finite");
+                    let hl = lugre::zoo::ZooLoop::new(bank, black_box(tp)).expect("finite");
                     black_box(hl.loops().len())
                 })
             });

@@ -33,7 +33,7 @@
 //! | [`sweep`] | **periodic steady states** under sines (and periodic piecewise-linear inputs): the fixed point of the affine period map, energy per cycle, peak force, equivalent stiffness and damping, describing function; grids of amplitudes and frequencies on all cores | a [`sweep::Request`] (the front ends' one set of defaults and checks) run into a [`sweep::Sweep`] of [`sweep::Point`]s |
 //! | [`dynamics`] | a mass driven by forces, a spring and a PID controller with LuGre friction (Canudas de Wit et al. 1995): a dedicated Radau IIA with located sign changes of the velocity | a [`dynamics::Request`] (every front end's one set of defaults and checks; the 1995 experiments as presets) built into a validated [`dynamics::System`] and solved into a [`dynamics::Motion`] |
 //! | [`fit`] | **fitting**: identification from the slow loop or the full record, with standard errors and identifiability checks | [`fit_slow`]/[`fit_full`] from a [`FitSpec`] |
-//! | [`zoo`] | rate-independent models with Masing behaviour: Maxwell-slip, Prandtl-Ishlinskii (play operators); the exact segment map, the response to turning points, every loop with its energies ([`zoo::MasingLoop`]) | validated `new()`; `loops()` computes everything once |
+//! | [`zoo`] | rate-independent models with Masing behaviour: Maxwell-slip, Prandtl-Ishlinskii (play operators); the exact segment map, the response to turning points, every loop with its energies ([`zoo::ZooLoop`]) | validated `new()`; `loops()` computes everything once |
 //! | [`error`] | every error enum (a leaf); messages name the offending value | `thiserror`, `#[non_exhaustive]` |
 //!
 //! Dependencies run one way: `kernel` and `error` import nothing of the crate; `model`,

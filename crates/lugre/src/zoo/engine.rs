@@ -1,11 +1,13 @@
-//! The loops of a Masing model for a periodic input: rainflow pairing (ASTM E1049, a pair
+//! The loops of a model of the zoo for a periodic input: rainflow pairing (ASTM E1049, a pair
 //! `(A, B)` closing at `P` once `|P - B| >= |B - A|`) in one pass over the period started at
-//! its first global maximum, from the periodic state (Z5). Each stack entry keeps its state
-//! (the `p_i`) and the dissipation from its point to the next entry up; a loop's arc
-//! `A -> B -> C` ends on the segment into `P` where the input is back at `u_A`, reached from
-//! the running state by one partial segment map.
+//! its first global maximum, from the model's periodic state there
+//! ([`Segmental::periodic_start`]). Each stack entry keeps its state and the dissipation from
+//! its point to the next entry up; a loop's arc `A -> B -> C` ends on the segment into `P`
+//! where the input is back at `u_A`, reached from the running state by one partial segment
+//! map. Any model with an exact segment map ([`Segmental`]) runs on it: Masing models, whose
+//! loops close, and single-state models, whose minor loops drift as LuGre's do.
 
-use super::{MasingState, PlayBank};
+use super::Segmental;
 use crate::error::ZooError;
 use crate::input::TurningPoints;
 use crate::kernel::ArcEnergy;
@@ -14,9 +16,9 @@ use crate::loops::{Loop, LoopKind, LoopPoint};
 /// The most element states (elements x turning points) a loop may keep on its stack.
 pub const MAX_STATES: usize = 1 << 27;
 
-/// The periodic response of a Masing model and every loop, with energies.
+/// The periodic response of a model of the zoo and every loop, with energies.
 #[derive(Debug, Clone)]
-pub struct MasingLoop {
+pub struct ZooLoop {
     u: Vec<f64>,
     rho: Vec<f64>,
     force: Vec<f64>,
@@ -24,9 +26,9 @@ pub struct MasingLoop {
 }
 
 /// An open reversal: rotated index, its state, the dissipation to the next entry up.
-struct Entry {
+struct Entry<S> {
     j: usize,
-    state: MasingState,
+    state: S,
     d: f64,
 }
 
@@ -37,18 +39,18 @@ struct Found {
     record: Loop,
 }
 
-impl MasingLoop {
-    /// The loops of `bank` for the periodic input `input`.
+impl ZooLoop {
+    /// The loops of `model` for the periodic input `input`.
     ///
     /// # Errors
     /// [`ZooError::TooLarge`] when the worst-case stack of states would exceed [`MAX_STATES`];
     /// [`ZooError::Overflow`] when a force or energy is not finite.
-    pub fn new(bank: &PlayBank, input: &TurningPoints) -> Result<Self, ZooError> {
+    pub fn new<M: Segmental>(model: &M, input: &TurningPoints) -> Result<Self, ZooError> {
         let u = input.values().to_vec();
         let n = u.len();
-        if bank.len().saturating_mul(n) > MAX_STATES {
+        if model.state_len().saturating_mul(n) > MAX_STATES {
             return Err(ZooError::TooLarge {
-                elements: bank.len(),
+                elements: model.state_len(),
                 turning_points: n,
                 limit: MAX_STATES,
             });
@@ -69,13 +71,13 @@ impl MasingLoop {
             force: vec![0.0; n],
             loops: Vec::new(),
         };
-        hl.pair(bank);
+        hl.pair(model);
         hl.check_finite()?;
         Ok(hl)
     }
 
     /// The rainflow pass: forces at the turning points and every loop.
-    fn pair(&mut self, bank: &PlayBank) {
+    fn pair<M: Segmental>(&mut self, bank: &M) {
         let n = self.u.len();
         let (max, min) = self
             .u
@@ -83,7 +85,7 @@ impl MasingLoop {
             .fold((f64::MIN, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
         let r = self.u.iter().position(|&x| x == max).unwrap_or(0);
         let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
-        let start = bank.periodic_at_max(max, max - min);
+        let start = bank.periodic_start(&self.u, r, min);
         let mut run = start.clone();
         let mut scratch = start.clone();
         let mut stack = vec![Entry {
@@ -101,14 +103,13 @@ impl MasingLoop {
             while stack.len() >= 3 {
                 let m = stack.len();
                 let (a, b) = (&stack[m - 2], &stack[m - 1]);
-                let range = (b.state.u - a.state.u).abs();
-                if (u_p - b.state.u).abs() < range {
+                let (u_a, u_b) = (M::input(&a.state), M::input(&b.state));
+                if (u_p - u_b).abs() < (u_b - u_a).abs() {
                     break;
                 }
                 // The arc ends where the input is back at u_A, on the segment into P.
-                scratch.u = run.u;
-                scratch.p.copy_from_slice(&run.p);
-                let d = a.d + b.d + bank.advance(&mut scratch, a.state.u);
+                M::assign(&mut scratch, &run);
+                let d = a.d + b.d + bank.advance(&mut scratch, M::input(&a.state));
                 found.push(self.found(bank, (a, b, j - 1), &scratch, d, r));
                 let merged = a.d + b.d;
                 stack.truncate(m - 2);
@@ -151,17 +152,18 @@ impl MasingLoop {
 
     /// The record of the loop `(A, B)` closing on the segment after rotated index `prev`, its
     /// end state `end` and dissipation `d`.
-    fn found(
+    fn found<M: Segmental>(
         &self,
-        bank: &PlayBank,
-        (a, b, prev): (&Entry, &Entry, usize),
-        end: &MasingState,
+        bank: &M,
+        (a, b, prev): (&Entry<M::State>, &Entry<M::State>, usize),
+        end: &M::State,
         d: f64,
         r: usize,
     ) -> Found {
         let n = self.u.len();
         let from = self.rotated(r, a.j);
-        let to = self.rotated(r, prev) + (a.state.u - self.u[(r + prev) % n]).abs();
+        let u_a = M::input(&a.state);
+        let to = self.rotated(r, prev) + (u_a - self.u[(r + prev) % n]).abs();
         // Reported from rho_A within [0, P).
         let mut rho_a = self.rho[r] + from;
         if rho_a >= self.period() {
@@ -174,7 +176,7 @@ impl MasingLoop {
             reversal: self.point((r + b.j) % n, rho_a + self.rotated(r, b.j) - from),
             end: LoopPoint {
                 rho: rho_a + (to - from),
-                u: end.u,
+                u: M::input(end),
                 y: bank.force(end),
             },
             energy: bank.arc(&a.state, end, d),

@@ -19,7 +19,7 @@
 //! and threshold `Delta_i`). The initial-loading curve from rest is
 //! `F(u) = sum_i k_i min(u, Delta_i)`, increasing, slope `sum k_i` at 0.
 
-use super::{check_elements, check_lengths, MasingLoop, MasingState, PlayBank};
+use super::{check_elements, check_lengths, MasingState, PlayBank, ZooLoop};
 use crate::error::ZooError;
 use crate::input::TurningPoints;
 
@@ -94,8 +94,8 @@ impl MaxwellSlip {
     /// The loop and every minor loop for the periodic input `input`.
     ///
     /// # Errors
-    /// See [`MasingLoop::new`].
-    pub fn loops(&self, input: &TurningPoints) -> Result<MasingLoop, ZooError> {
-        MasingLoop::new(&self.bank, input)
+    /// See [`ZooLoop::new`].
+    pub fn loops(&self, input: &TurningPoints) -> Result<ZooLoop, ZooError> {
+        ZooLoop::new(&self.bank, input)
     }
 }

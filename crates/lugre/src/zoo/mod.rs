@@ -55,15 +55,17 @@
 //! (unique); an operator with `r_i >= R/2` never slips, its offset is not fixed by the input,
 //! and (Z5) takes the symmetric one: the state reached from rest (`z = 0`) at the mid-range
 //! `(u_max + u_min)/2`. The pairing engine of [`crate::loops`] carries LuGre's relaxation sums;
-//! this module has its own small one ([`MasingLoop`]) for the play-operator state.
+//! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
 mod engine;
 mod maxwell;
 mod prandtl;
+mod segment;
 
-pub use engine::{MasingLoop, MAX_STATES};
+pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
+pub use segment::{Point, Segmental, SingleState};
 
 use crate::kernel::ArcEnergy;
 

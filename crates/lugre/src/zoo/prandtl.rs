@@ -26,7 +26,7 @@
 //! are allowed (they model saturation). With nonnegative weights `D <= 0`: the play loops run
 //! counterclockwise in the `(u, F)` plane, and the work per loop is minus the enclosed area.
 
-use super::{check_elements, check_lengths, MasingLoop, PlayBank};
+use super::{check_elements, check_lengths, PlayBank, ZooLoop};
 use crate::error::ZooError;
 use crate::input::TurningPoints;
 
@@ -93,9 +93,9 @@ impl PrandtlIshlinskii {
     /// The loop and every minor loop for the periodic input `input`.
     ///
     /// # Errors
-    /// See [`MasingLoop::new`].
-    pub fn loops(&self, input: &TurningPoints) -> Result<MasingLoop, ZooError> {
-        MasingLoop::new(&self.bank, input)
+    /// See [`ZooLoop::new`].
+    pub fn loops(&self, input: &TurningPoints) -> Result<ZooLoop, ZooError> {
+        ZooLoop::new(&self.bank, input)
     }
 }
 

@@ -1,0 +1,209 @@
+//! What a model of the zoo provides to the loop engine ([`Segmental`]): an exact map of its
+//! state along a monotone segment of the input, the force and the energies of an arc, and its
+//! periodic state at the global maximum of a periodic input.
+//!
+//! Single-state models (Bouc-Wen, elasto-plastic) implement the smaller [`SingleState`]: a
+//! state `z` with `dz/du = h_s(z)` on a segment of direction `s` (the Duhem form). Their periodic
+//! state is the fixed point of the period map `T` (the state after one period from `z` at the
+//! global maximum):
+//!
+//! ```text
+//! (S1)  T(z*) = z*,     T'(z) = prod_k h_s(z_(k+1)) / h_s(z_k)     (separable segments)
+//! ```
+//!
+//! `T` is non-decreasing and maps the model's bounded range of states into itself, so
+//! `g(z) = T(z) - z` changes sign on that range: Newton's step with the exact derivative (S1),
+//! kept inside a bracket that bisection shrinks when the step leaves it. When `g` vanishes on a
+//! whole interval (an input too small to make the model slip everywhere), the state reached
+//! from rest (`z = 0`) at the mid-range is taken, as for the Masing models (Z5).
+
+use super::{MasingState, PlayBank};
+use crate::kernel::ArcEnergy;
+
+/// A model whose state moves along a monotone segment of the input by an exact map.
+pub trait Segmental {
+    /// The state: the input and the model's internal variables.
+    type State: Clone + std::fmt::Debug;
+
+    /// How many numbers one state holds (for the memory check of a loop's stack).
+    fn state_len(&self) -> usize;
+
+    /// The input of `state`.
+    fn input(state: &Self::State) -> f64;
+
+    /// The force (or output) in `state`.
+    fn force(&self, state: &Self::State) -> f64;
+
+    /// Moves `state` along the monotone segment to `to`; returns the dissipation over it.
+    fn advance(&self, state: &mut Self::State, to: f64) -> f64;
+
+    /// Work, stored-energy change, dissipation `d` and force difference over an arc.
+    fn arc(&self, from: &Self::State, to: &Self::State, d: f64) -> ArcEnergy;
+
+    /// The periodic state at the global maximum `u[r]` of the periodic input `u` (turning
+    /// points, the period running `u[r], u[r+1], ...` and wrapping), whose minimum is `min`.
+    fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Self::State;
+
+    /// `dst = src` without allocating where the state allows it.
+    fn assign(dst: &mut Self::State, src: &Self::State) {
+        dst.clone_from(src);
+    }
+}
+
+impl Segmental for PlayBank {
+    type State = MasingState;
+
+    fn state_len(&self) -> usize {
+        self.len()
+    }
+
+    #[inline]
+    fn input(state: &MasingState) -> f64 {
+        state.u
+    }
+
+    #[inline]
+    fn force(&self, state: &MasingState) -> f64 {
+        PlayBank::force(self, state)
+    }
+
+    #[inline]
+    fn advance(&self, state: &mut MasingState, to: f64) -> f64 {
+        PlayBank::advance(self, state, to)
+    }
+
+    fn arc(&self, from: &MasingState, to: &MasingState, d: f64) -> ArcEnergy {
+        PlayBank::arc(self, from, to, d)
+    }
+
+    fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> MasingState {
+        self.periodic_at_max(u[r], u[r] - min)
+    }
+
+    #[inline]
+    fn assign(dst: &mut MasingState, src: &MasingState) {
+        dst.u = src.u;
+        dst.p.copy_from_slice(&src.p);
+    }
+}
+
+/// A rate-independent model with one state `z`, `dz/du = h_s(z)` on a segment of direction `s`.
+pub trait SingleState {
+    /// The force at input `u` and state `z`.
+    fn force(&self, u: f64, z: f64) -> f64;
+
+    /// The stored energy at `(u, z)`.
+    fn stored_energy(&self, u: f64, z: f64) -> f64;
+
+    /// The state at `u_b` after the monotone segment from `(u_a, z_a)`, and the dissipation
+    /// along it (`>= 0`), both exact (closed form, or a root or quadrature to 1e-13 relative).
+    fn segment(&self, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64);
+
+    /// `h_s(z) = dz/du` moving up (`up`) or down: the derivative (S1) of the period map.
+    fn slope(&self, z: f64, up: bool) -> f64;
+
+    /// The range `[lo, hi]` the state stays in once inside it.
+    fn bounds(&self) -> (f64, f64);
+}
+
+/// The state of a [`SingleState`] model: the input and `z`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    /// The input.
+    pub u: f64,
+    /// The model's state.
+    pub z: f64,
+}
+
+impl<T: SingleState> Segmental for T {
+    type State = Point;
+
+    fn state_len(&self) -> usize {
+        2
+    }
+
+    #[inline]
+    fn input(state: &Point) -> f64 {
+        state.u
+    }
+
+    #[inline]
+    fn force(&self, state: &Point) -> f64 {
+        SingleState::force(self, state.u, state.z)
+    }
+
+    #[inline]
+    fn advance(&self, state: &mut Point, to: f64) -> f64 {
+        let (z, d) = self.segment(state.u, state.z, to);
+        *state = Point { u: to, z };
+        d
+    }
+
+    fn arc(&self, from: &Point, to: &Point, d: f64) -> ArcEnergy {
+        let stored = self.stored_energy(to.u, to.z) - self.stored_energy(from.u, from.z);
+        ArcEnergy {
+            work: stored + d,
+            stored_energy_change: stored,
+            dissipation: d,
+            closure_gap: SingleState::force(self, to.u, to.z)
+                - SingleState::force(self, from.u, from.z),
+        }
+    }
+
+    fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Point {
+        Point {
+            u: u[r],
+            z: fixed_point(self, u, r, min),
+        }
+    }
+}
+
+/// Iterations of the periodic-state solver; each halves the bracket at least once in two.
+const MAX_ITERATIONS: usize = 200;
+
+/// `T(z) - z` and `T'(z)` (S1) for the period of `u` started at `u[r]`.
+fn period_map<T: SingleState>(model: &T, u: &[f64], r: usize, z: f64) -> (f64, f64) {
+    let n = u.len();
+    let (mut at, mut state, mut derivative) = (u[r], z, 1.0);
+    for j in 1..=n {
+        let to = u[(r + j) % n];
+        let up = to > at;
+        let before = model.slope(state, up);
+        let (after_z, _) = model.segment(at, state, to);
+        let after = model.slope(after_z, up);
+        // At a saturated state (h = 0) the map no longer depends on where it started.
+        derivative *= if before != 0.0 { after / before } else { 0.0 };
+        (at, state) = (to, after_z);
+    }
+    (state - z, derivative - 1.0)
+}
+
+/// The periodic state (S1) at `u[r]`: safeguarded Newton on the model's bounds.
+fn fixed_point<T: SingleState>(model: &T, u: &[f64], r: usize, min: f64) -> f64 {
+    let (mut lo, mut hi) = model.bounds();
+    let rest = model.segment(0.5 * (u[r] + min), 0.0, u[r]).0.clamp(lo, hi);
+    let tolerance = 4.0 * f64::EPSILON * lo.abs().max(hi.abs());
+    let mut z = rest;
+    for _ in 0..MAX_ITERATIONS {
+        let (g, dg) = period_map(model, u, r, z);
+        if g.abs() <= tolerance {
+            return z;
+        }
+        // g is non-increasing: a positive value lies left of the roots.
+        if g > 0.0 {
+            lo = z;
+        } else {
+            hi = z;
+        }
+        if hi - lo <= tolerance {
+            return z;
+        }
+        let newton = z - g / dg;
+        z = if dg < 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+    }
+    z
+}
