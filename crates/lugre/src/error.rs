@@ -860,6 +860,23 @@ pub enum ZooError {
     /// positive on the stretch starting at threshold `r`.
     #[error("the initial-loading slope w0 + sum of weights with threshold <= {threshold} is {slope}; it must be > 0 (weights sorted by threshold)", threshold = num(*.threshold), slope = num(*.slope))]
     NotIncreasing { threshold: f64, slope: f64 },
+    #[error("unknown model '{name}' (the models: {known})")]
+    UnknownModel { name: String, known: String },
+    #[error("the {model} model has no parameter '{name}' (its parameters: {known})")]
+    UnknownParameter {
+        model: &'static str,
+        name: String,
+        known: String,
+    },
+    /// A scalar parameter outside its domain (`condition` as the table writes it).
+    #[error("{name} must be {condition}, got {value}", value = num(*.value))]
+    Scalar {
+        name: &'static str,
+        condition: &'static str,
+        value: f64,
+    },
+    #[error("{name} takes one value, got {count}")]
+    NotScalar { name: &'static str, count: usize },
     #[error("{elements} elements x {turning_points} turning points exceed the {limit} element states a loop may hold")]
     TooLarge {
         elements: usize,

@@ -508,7 +508,7 @@ fn bad_parameters_are_named_with_their_values() {
     let e = PrandtlIshlinskii::new(0.0, &[0.5], &[1.0])
         .unwrap_err()
         .to_string();
-    assert!(e.contains("threshold <= 0 is 0;"), "{e}");
+    assert_eq!(e, "linear_weight must be > 0, got 0");
     // Negative weights that keep the slope positive are allowed (saturation).
     assert!(PrandtlIshlinskii::new(1.0, &[0.5, 0.2], &[-0.25, 0.5]).is_ok());
 }
@@ -651,4 +651,75 @@ fn a_single_state_model_gives_the_loops_of_lugres_engine() {
             );
         }
     }
+}
+
+/// A value outside the domain the table states for a parameter.
+fn outside(domain: &str) -> f64 {
+    match domain {
+        "> 0" => 0.0,
+        ">= 0" => -1.0,
+        "finite" => f64::NAN,
+        other => panic!("a domain the test does not know: {other}"),
+    }
+}
+
+#[test]
+fn every_model_of_the_table_runs_on_its_defaults_and_refuses_its_domains() {
+    use lugre::zoo::{Shape, ZooModel, MODELS};
+    let input = TurningPoints::new(&[3.0, 1.0, 2.0, -3.0, -1.0, -2.0]).unwrap();
+    for spec in MODELS {
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        assert_eq!(model.spec().name, spec.name);
+        let named = model.named();
+        for (p, (name, values)) in spec.parameters.iter().zip(&named) {
+            assert_eq!(p.name, *name);
+            assert_eq!(p.default, values.as_slice(), "{}: default", p.name);
+        }
+        let hl = model.loops(&input).unwrap();
+        assert_eq!(hl.loops().len(), 3, "{}: major + 2 minor loops", spec.name);
+        // Sampled points at the turning points' rho are the turning points' forces.
+        let at = model.points(&hl, hl.turning_rho());
+        for (p, f) in at.iter().zip(hl.turning_force()) {
+            assert!((p.y - f).abs() <= 1e-14 * f.abs().max(1.0), "{}", spec.name);
+        }
+        let s = model.sample(&hl, 5).unwrap();
+        assert_eq!(s[0].y, s[4].y, "{}: the sampled period closes", spec.name);
+        assert!(model.sample(&hl, 1).is_err());
+        // Each domain the table states is the one `new` checks (a drift fails here).
+        for p in spec.parameters {
+            let n = if p.shape == Shape::Scalar {
+                1
+            } else {
+                p.default.len()
+            };
+            let mut bad = p.default.to_vec();
+            bad[n - 1] = outside(p.domain);
+            let err = ZooModel::new(spec.name, &[(p.name, &bad)]).unwrap_err();
+            assert!(err.to_string().contains(p.name), "{}: {err}", p.name);
+        }
+    }
+}
+
+#[test]
+fn the_table_names_what_is_wrong() {
+    use lugre::zoo::ZooModel;
+    let e = ZooModel::new("bouc", &[]).unwrap_err().to_string();
+    assert!(
+        e.starts_with("unknown model 'bouc' (the models: lugre, dahl, maxwell-slip"),
+        "{e}"
+    );
+    let e = ZooModel::new("maxwell-slip", &[("sigma0", &[1.0])])
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "the maxwell-slip model has no parameter 'sigma0' (its parameters: stiffness, slip_force)"
+    );
+    let e = ZooModel::new("prandtl-ishlinskii", &[("linear_weight", &[1.0, 2.0])]).unwrap_err();
+    assert_eq!(e.to_string(), "linear_weight takes one value, got 2");
+    let e = ZooModel::new("maxwell-slip", &[("stiffness", &[1.0, 2.0])]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "stiffness and slip_force have different lengths (2 and 4)"
+    );
 }

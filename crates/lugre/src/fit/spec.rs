@@ -31,6 +31,17 @@ pub enum Family {
 }
 
 impl Family {
+    /// Both families, in the order `--model` lists them.
+    pub const ALL: [Family; 2] = [Family::LuGre, Family::Dahl];
+
+    /// The name of `--model`, Python's `model=` and the C ABI's model name.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Family::LuGre => "lugre",
+            Family::Dahl => "dahl",
+        }
+    }
+
     /// The parameter names, in a fixed order.
     pub fn parameters(self) -> &'static [&'static str] {
         match self {

@@ -79,11 +79,8 @@ impl ZooLoop {
     /// The rainflow pass: forces at the turning points and every loop.
     fn pair<M: Segmental>(&mut self, bank: &M) {
         let n = self.u.len();
-        let (max, min) = self
-            .u
-            .iter()
-            .fold((f64::MIN, f64::MAX), |(a, b), &x| (a.max(x), b.min(x)));
-        let r = self.u.iter().position(|&x| x == max).unwrap_or(0);
+        let r = self.start_index();
+        let (max, min) = (self.u[r], self.u.iter().fold(f64::MAX, |m, &x| m.min(x)));
         let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
         let start = bank.periodic_start(&self.u, r, min);
         let mut run = start.clone();
@@ -282,4 +279,93 @@ fn nest(major: Loop, mut found: Vec<Found>) -> Vec<Loop> {
         out.push(record);
     }
     out
+}
+
+impl ZooLoop {
+    /// The periodic response at each of `rhos` (any real numbers: the loop is periodic), by
+    /// one walk over the period from the model's periodic state: `model` must be the one the
+    /// loop was computed for.
+    pub fn points<M: Segmental>(&self, model: &M, rhos: &[f64]) -> Vec<LoopPoint> {
+        let n = self.u.len();
+        let p = self.period();
+        let r = self.start_index();
+        let min = self.u.iter().fold(f64::MAX, |m, &x| m.min(x));
+        // Each rho as an offset along the period walked from u[r].
+        let offset = |rho: f64| {
+            let x = (rho - self.rho[r]).rem_euclid(p);
+            if x.is_finite() {
+                x
+            } else {
+                0.0
+            }
+        };
+        let mut order: Vec<usize> = (0..rhos.len()).collect();
+        order.sort_by(|&a, &b| offset(rhos[a]).total_cmp(&offset(rhos[b])));
+        let mut out = vec![
+            LoopPoint {
+                rho: 0.0,
+                u: 0.0,
+                y: 0.0
+            };
+            rhos.len()
+        ];
+        let mut run = model.periodic_start(&self.u, r, min);
+        let mut scratch = run.clone();
+        let (mut j, mut walked) = (0, 0.0);
+        for i in order {
+            let x = offset(rhos[i]);
+            // Whole segments up to the one holding x.
+            while j < n {
+                let length = (self.u[(r + j + 1) % n] - self.u[(r + j) % n]).abs();
+                if walked + length > x {
+                    break;
+                }
+                model.advance(&mut run, self.u[(r + j + 1) % n]);
+                walked += length;
+                j += 1;
+            }
+            let k = (r + j) % n;
+            let direction = (self.u[(k + 1) % n] - self.u[k]).signum();
+            M::assign(&mut scratch, &run);
+            let u = self.u[k] + direction * (x - walked);
+            model.advance(&mut scratch, u);
+            out[i] = LoopPoint {
+                rho: rhos[i],
+                u,
+                y: model.force(&scratch),
+            };
+        }
+        out
+    }
+
+    /// `n` points evenly spaced over one period, both ends included (`rho = 0` and `P`), `n`
+    /// checked first as for LuGre's loop.
+    ///
+    /// # Errors
+    /// [`SamplesError::TooFew`] for `n < 2`, [`SamplesError::TooMany`] above
+    /// [`crate::loops::MAX_SAMPLES`].
+    pub fn try_sample<M: Segmental>(
+        &self,
+        model: &M,
+        n: usize,
+    ) -> Result<Vec<LoopPoint>, crate::error::SamplesError> {
+        crate::loops::check_samples(n)?;
+        let p = self.period();
+        let rhos: Vec<f64> = (0..n)
+            .map(|i| {
+                if i == n - 1 {
+                    p
+                } else {
+                    p * (i as f64 / (n - 1) as f64)
+                }
+            })
+            .collect();
+        Ok(self.points(model, &rhos))
+    }
+
+    /// The index of the first global maximum, where the engine's walk starts.
+    fn start_index(&self) -> usize {
+        let max = self.u.iter().fold(f64::MIN, |m, &x| m.max(x));
+        self.u.iter().position(|&x| x == max).unwrap_or(0)
+    }
 }

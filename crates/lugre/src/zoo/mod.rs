@@ -61,11 +61,13 @@ mod engine;
 mod maxwell;
 mod prandtl;
 mod segment;
+mod table;
 
 pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};
+pub use table::{model_names, Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 
 use crate::kernel::ArcEnergy;
 
@@ -260,6 +262,28 @@ pub(crate) fn check_elements(
         }
     }
     Ok(())
+}
+
+/// Checks a scalar parameter: finite, and `> 0` (`positive`) or `>= 0`.
+pub(crate) fn check_scalar(
+    name: &'static str,
+    value: f64,
+    positive: bool,
+) -> Result<f64, crate::error::ZooError> {
+    let (ok, condition) = if positive {
+        (value > 0.0, "> 0")
+    } else {
+        (value >= 0.0, ">= 0")
+    };
+    if value.is_finite() && ok {
+        Ok(value)
+    } else {
+        Err(crate::error::ZooError::Scalar {
+            name,
+            condition,
+            value,
+        })
+    }
 }
 
 /// Checks that two element arrays are non-empty and equally long.

@@ -26,7 +26,7 @@
 //! are allowed (they model saturation). With nonnegative weights `D <= 0`: the play loops run
 //! counterclockwise in the `(u, F)` plane, and the work per loop is minus the enclosed area.
 
-use super::{check_elements, check_lengths, PlayBank, ZooLoop};
+use super::{check_elements, check_lengths, check_scalar, PlayBank, ZooLoop};
 use crate::error::ZooError;
 use crate::input::TurningPoints;
 
@@ -44,11 +44,11 @@ impl PrandtlIshlinskii {
     /// # Errors
     /// [`ZooError::Empty`] without operators, [`ZooError::LengthMismatch`],
     /// [`ZooError::NotFinite`] / [`ZooError::Negative`] (thresholds) naming the element,
-    /// [`ZooError::NotIncreasing`] when (P4) fails (`linear_weight <= 0` is reported at
-    /// threshold 0).
+    /// [`ZooError::Scalar`] for `linear_weight` not finite and positive,
+    /// [`ZooError::NotIncreasing`] when (P4) fails.
     pub fn new(linear_weight: f64, thresholds: &[f64], weights: &[f64]) -> Result<Self, ZooError> {
         check_lengths(("thresholds", thresholds.len()), ("weights", weights.len()))?;
-        check_elements("linear_weight", &[linear_weight], false)?;
+        check_scalar("linear_weight", linear_weight, true)?;
         check_elements("thresholds", thresholds, false)?;
         check_elements("weights", weights, false).or_else(|e| match e {
             ZooError::Negative { .. } => Ok(()),

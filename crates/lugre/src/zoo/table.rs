@@ -1,0 +1,283 @@
+//! The zoo's model table: every model by name with its parameters (names, units, shapes,
+//! domains, defaults and their source), built from named values ([`ZooModel::new`]), so
+//! that a front end translates a request to names and arrays and has each model of the table
+//! without code of its own.
+//!
+//! A parameter is a scalar or one value per element ([`Shape`]); the element arrays of a
+//! model have one length, its number of elements. A parameter not given takes its default.
+//!
+//! The defaults put every model on the scale of the paper's Example 2 (initial stiffness
+//! `sigma0 = 1` N/m, saturation force `g(0) = Fs = 2` N), so that their loops compare with
+//! LuGre's default loop on one figure; the literature has no canonical element
+//! distributions for these models.
+
+use super::{MaxwellSlip, PrandtlIshlinskii, ZooLoop};
+use crate::error::{SamplesError, ZooError};
+use crate::input::TurningPoints;
+use crate::loops::LoopPoint;
+
+/// Whether a parameter is one number or one number per element.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// One number.
+    Scalar,
+    /// One number per element (all of a model's element arrays equally long).
+    Elements,
+}
+
+/// A parameter of a model of the zoo.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZooParameter {
+    /// The name everywhere: the command line's flag, the Python keyword, the C name, JSON.
+    pub name: &'static str,
+    /// The unit with displacements in metres and forces in newtons.
+    pub unit: &'static str,
+    /// What it is, in a few words.
+    pub description: &'static str,
+    /// The values it may take, as the messages write them (each checked by the model's `new`).
+    pub domain: &'static str,
+    pub shape: Shape,
+    /// The default: one value for a scalar, the default elements for an array.
+    pub default: &'static [f64],
+}
+
+/// What a model of the zoo is and what lugre does with it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZooModelSpec {
+    /// The name of `--model`, Python's `model=`, the C ABI's and MEX's model name.
+    pub name: &'static str,
+    /// The name in reports and figures.
+    pub label: &'static str,
+    /// The model's equations in one line.
+    pub equations: &'static str,
+    /// The publication that defines it.
+    pub reference: &'static str,
+    pub parameters: &'static [ZooParameter],
+    /// Every minor loop closes (Masing behaviour).
+    pub closes_minor_loops: bool,
+}
+
+const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
+    name: "maxwell-slip",
+    label: "Maxwell-slip",
+    equations: "F = sum_i k_i z_i, element i sticks (dz_i = du) until |k_i z_i| = f_i, then slips",
+    reference: "Al-Bender, Lampaert and Swevers, IEEE Trans. Automatic Control 50(11), 2005",
+    parameters: &[
+        ZooParameter {
+            name: "stiffness",
+            unit: "N/m",
+            description: "element stiffnesses k_i",
+            domain: "> 0",
+            shape: Shape::Elements,
+            default: &[0.25, 0.25, 0.25, 0.25],
+        },
+        ZooParameter {
+            name: "slip_force",
+            unit: "N",
+            description: "element slip forces f_i",
+            domain: "> 0",
+            shape: Shape::Elements,
+            default: &[0.125, 0.375, 0.625, 0.875],
+        },
+    ],
+    closes_minor_loops: true,
+};
+
+const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
+    name: "prandtl-ishlinskii",
+    label: "Prandtl-Ishlinskii",
+    equations: "F = w0 u + sum_i w_i p_i, p_i the play operator of threshold r_i",
+    reference: "Brokate and Sprekels, Hysteresis and Phase Transitions, Springer 1996, ch. 2",
+    parameters: &[
+        ZooParameter {
+            name: "linear_weight",
+            unit: "N/m",
+            description: "weight w0 of the input itself",
+            domain: "> 0",
+            shape: Shape::Scalar,
+            default: &[0.25],
+        },
+        ZooParameter {
+            name: "thresholds",
+            unit: "m",
+            description: "play-operator thresholds r_i",
+            domain: ">= 0",
+            shape: Shape::Elements,
+            default: &[0.5, 1.5, 2.5, 3.5],
+        },
+        ZooParameter {
+            name: "weights",
+            unit: "N/m",
+            description: "play-operator weights w_i (the loading slope w0 + sum of w_i with r_i <= r stays > 0)",
+            domain: "finite",
+            shape: Shape::Elements,
+            default: &[0.25, 0.25, 0.125, 0.125],
+        },
+    ],
+    closes_minor_loops: true,
+};
+
+/// Every model of the zoo, in the order `--help` lists them.
+pub const MODELS: [ZooModelSpec; 2] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII];
+
+impl ZooModelSpec {
+    /// The model called `name` (case-insensitive, blanks around ignored).
+    pub fn find(name: &str) -> Option<&'static ZooModelSpec> {
+        let name = name.trim();
+        MODELS.iter().find(|m| m.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The parameter called `name` of this model.
+    pub fn parameter(&self, name: &str) -> Option<&'static ZooParameter> {
+        self.parameters
+            .iter()
+            .find(|p| p.name.eq_ignore_ascii_case(name.trim()))
+    }
+
+    /// The parameters' names, comma-separated (for messages and help).
+    pub fn parameter_names(&self) -> String {
+        let names: Vec<&str> = self.parameters.iter().map(|p| p.name).collect();
+        names.join(", ")
+    }
+}
+
+/// A model of the zoo, built from the table.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ZooModel {
+    MaxwellSlip(MaxwellSlip),
+    PrandtlIshlinskii(PrandtlIshlinskii),
+}
+
+/// Runs `$body` with `$m` bound to the concrete model (one dispatch for every method).
+macro_rules! each {
+    ($self:expr, $m:ident => $body:expr) => {
+        match $self {
+            ZooModel::MaxwellSlip(x) => {
+                let $m = x.bank();
+                $body
+            }
+            ZooModel::PrandtlIshlinskii(x) => {
+                let $m = x.bank();
+                $body
+            }
+        }
+    };
+}
+
+impl ZooModel {
+    /// The model `name` of [`MODELS`] with the values `given` by parameter name (any
+    /// parameter not given takes its default).
+    ///
+    /// # Errors
+    /// [`ZooError::UnknownModel`], [`ZooError::UnknownParameter`] (naming the model's
+    /// parameters), [`ZooError::NotScalar`] for several values of a scalar, and the model's
+    /// own checks (domains, lengths) naming the parameter and the value.
+    pub fn new(name: &str, given: &[(&str, &[f64])]) -> Result<Self, ZooError> {
+        let spec = ZooModelSpec::find(name).ok_or_else(|| ZooError::UnknownModel {
+            name: name.trim().to_string(),
+            known: model_names(),
+        })?;
+        let values = resolve(spec, given)?;
+        let value = |name: &str| -> &[f64] {
+            let i = spec.parameters.iter().position(|p| p.name == name);
+            i.map_or(&[], |i| &values[i])
+        };
+        Ok(match spec.name {
+            "maxwell-slip" => {
+                Self::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
+            }
+            _ => Self::PrandtlIshlinskii(PrandtlIshlinskii::new(
+                value("linear_weight")[0],
+                value("thresholds"),
+                value("weights"),
+            )?),
+        })
+    }
+
+    /// The model's entry in the table.
+    pub fn spec(&self) -> &'static ZooModelSpec {
+        match self {
+            Self::MaxwellSlip(_) => &MODELS[0],
+            Self::PrandtlIshlinskii(_) => &MODELS[1],
+        }
+    }
+
+    /// Each parameter by name with its values, in the table's order (what reports echo).
+    pub fn named(&self) -> Vec<(&'static str, Vec<f64>)> {
+        let values: Vec<Vec<f64>> = match self {
+            Self::MaxwellSlip(m) => vec![m.stiffness().to_vec(), m.slip_force().to_vec()],
+            Self::PrandtlIshlinskii(m) => vec![
+                vec![m.linear_weight()],
+                m.thresholds().to_vec(),
+                m.weights().to_vec(),
+            ],
+        };
+        self.spec()
+            .parameters
+            .iter()
+            .map(|p| p.name)
+            .zip(values)
+            .collect()
+    }
+
+    /// The loop and every minor loop for the periodic input `input`, with their energies.
+    ///
+    /// # Errors
+    /// See [`ZooLoop::new`].
+    pub fn loops(&self, input: &TurningPoints) -> Result<ZooLoop, ZooError> {
+        each!(self, m => ZooLoop::new(m, input))
+    }
+
+    /// The periodic response of `hl` (computed by [`Self::loops`] of this model) at `rhos`.
+    pub fn points(&self, hl: &ZooLoop, rhos: &[f64]) -> Vec<LoopPoint> {
+        each!(self, m => hl.points(m, rhos))
+    }
+
+    /// `n` points of the loop `hl` evenly spaced over one period.
+    ///
+    /// # Errors
+    /// See [`ZooLoop::try_sample`].
+    pub fn sample(&self, hl: &ZooLoop, n: usize) -> Result<Vec<LoopPoint>, SamplesError> {
+        each!(self, m => hl.try_sample(m, n))
+    }
+}
+
+/// The name of every model lugre has, comma-separated: LuGre and Dahl, then the zoo's.
+pub fn model_names() -> String {
+    let classic = crate::fit::Family::ALL.map(|f| f.name());
+    let names: Vec<&str> = classic
+        .into_iter()
+        .chain(MODELS.iter().map(|m| m.name))
+        .collect();
+    names.join(", ")
+}
+
+/// Each parameter's values: the given ones, else the default.
+fn resolve(spec: &ZooModelSpec, given: &[(&str, &[f64])]) -> Result<Vec<Vec<f64>>, ZooError> {
+    for (name, values) in given {
+        let p = spec
+            .parameter(name)
+            .ok_or_else(|| ZooError::UnknownParameter {
+                model: spec.name,
+                name: name.trim().to_string(),
+                known: spec.parameter_names(),
+            })?;
+        if p.shape == Shape::Scalar && values.len() != 1 {
+            return Err(ZooError::NotScalar {
+                name: p.name,
+                count: values.len(),
+            });
+        }
+    }
+    Ok(spec
+        .parameters
+        .iter()
+        .map(|p| {
+            given
+                .iter()
+                .rev()
+                .find(|(n, _)| n.trim().eq_ignore_ascii_case(p.name))
+                .map_or_else(|| p.default.to_vec(), |(_, v)| v.to_vec())
+        })
+        .collect())
+}
