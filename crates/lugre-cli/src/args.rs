@@ -15,14 +15,66 @@ use lugre::{Dahl, LuGre, LuGreParams, RateIndependent};
 use lugre_io::{Delimiter, ReadOptions, Role, Spec};
 use std::path::{Path, PathBuf};
 
-use crate::fmt::sig;
+use crate::fmt::{capitalized, sig};
 use crate::io::outputs::Files;
 use crate::numbers::{parse_list, Real};
 
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+/// The model `--model` names: LuGre, Dahl, or a model of the core's zoo table (by its index
+/// in [`lugre::zoo::MODELS`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum ModelKind {
     Lugre,
     Dahl,
+    Zoo(usize),
+}
+
+impl ModelKind {
+    /// Every model's name, in the order `--help` lists them (the core's names).
+    fn names() -> Vec<&'static str> {
+        Family::ALL
+            .iter()
+            .map(|f| f.name())
+            .chain(lugre::zoo::MODELS.iter().map(|m| m.name))
+            .collect()
+    }
+
+    /// The model called `name` (one of [`Self::names`]).
+    fn from_name(name: &str) -> ModelKind {
+        match name {
+            n if n == Family::LuGre.name() => ModelKind::Lugre,
+            n if n == Family::Dahl.name() => ModelKind::Dahl,
+            n => ModelKind::Zoo(
+                lugre::zoo::MODELS
+                    .iter()
+                    .position(|m| m.name == n)
+                    .unwrap_or(0),
+            ),
+        }
+    }
+
+    /// The zoo's entry of a model of the zoo.
+    pub(crate) fn zoo(self) -> Option<&'static lugre::zoo::ZooModelSpec> {
+        match self {
+            ModelKind::Zoo(i) => lugre::zoo::MODELS.get(i),
+            _ => None,
+        }
+    }
+
+    /// The name `--model` takes.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            ModelKind::Lugre => Family::LuGre.name(),
+            ModelKind::Dahl => Family::Dahl.name(),
+            ModelKind::Zoo(i) => lugre::zoo::MODELS[i].name,
+        }
+    }
+}
+
+/// `--model`'s parser: the core's model names, listed in `--help` and in the error.
+fn model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(ModelKind::names())
+        .map(|name: String| ModelKind::from_name(&name))
 }
 
 /// Model flags shared by every command. Defaults: the paper's Examples 2-3.
@@ -121,6 +173,7 @@ impl ModelKind {
         match self {
             ModelKind::Lugre => (Family::LuGre.label(), &Parameter::LUGRE),
             ModelKind::Dahl => (Family::Dahl.label(), &Parameter::DAHL),
+            ModelKind::Zoo(i) => (lugre::zoo::MODELS[i].label, &[]),
         }
     }
 }
@@ -131,7 +184,7 @@ impl ModelKind {
 pub(crate) struct ModelArgs {
     #[arg(
         long,
-        value_enum,
+        value_parser = model_parser(),
         default_value = "lugre",
         help_heading = MODEL_HEADING,
         help = model_help()
@@ -140,6 +193,9 @@ pub(crate) struct ModelArgs {
     // `--sigma0 ... --rho`, generated from the table.
     #[command(flatten)]
     pub(crate) values: ParameterFlags,
+    // The zoo's own parameters (`--stiffness ...`), generated from its table.
+    #[command(flatten)]
+    pub(crate) zoo: crate::zoo_args::ZooFlags,
     #[arg(long, value_enum, help_heading = MODEL_HEADING, help = preset_help())]
     pub(crate) preset: Option<Preset>,
 }
@@ -155,9 +211,10 @@ fn model_help() -> String {
         format!("{label} ({})", symbols.join(", "))
     };
     format!(
-        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w",
+        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w; or, for `lugre loop`, {}",
         list(ModelKind::Lugre),
-        list(ModelKind::Dahl)
+        list(ModelKind::Dahl),
+        crate::zoo_args::models_help()
     )
 }
 
@@ -212,14 +269,7 @@ impl ParameterFlags {
             "1" => String::new(),
             unit => format!(" [{unit}]"),
         };
-        let description = p.description();
-        let mut first = description.chars();
-        let capitalized: String = first
-            .next()
-            .map(|c| c.to_ascii_uppercase())
-            .into_iter()
-            .chain(first)
-            .collect();
+        let capitalized = capitalized(p.description());
         format!(
             "{capitalized}: {} {}{unit} ({}; default {})",
             p.symbol(),
@@ -315,6 +365,7 @@ impl ModelArgs {
         self.preset.is_some()
             || self.model != ModelKind::Lugre
             || Parameter::ALL.iter().any(|&p| self.given(p).is_some())
+            || self.zoo.any()
     }
 
     /// For a physical system: every parameter in `needed` of the chosen model has a value from
@@ -335,6 +386,19 @@ impl ModelArgs {
     }
 
     pub(crate) fn build(&self) -> Result<ModelChoice> {
+        if let Some(spec) = self.model.zoo() {
+            bail!(
+                "--model {}: this command takes {} (the models of the zoo work with `lugre loop`)",
+                spec.name,
+                Family::ALL.map(|f| f.name()).join(" or ")
+            );
+        }
+        if let Some(flag) = self.zoo.first_given() {
+            bail!(
+                "{flag} is a parameter of {}: add that --model",
+                crate::zoo_args::owners(&flag)
+            );
+        }
         let (_, parameters) = self.model.family();
         let names: Vec<String> = parameters.iter().map(|p| format!("--{p}")).collect();
         if self.model == ModelKind::Dahl && self.preset.is_some() {
@@ -349,13 +413,11 @@ impl ModelArgs {
             .find(|q| !parameters.contains(q) && self.given(*q).is_some())
         {
             match self.model {
-                ModelKind::Lugre => {
-                    bail!("--{q} is the Dahl model's parameter (add --model dahl)")
-                }
                 ModelKind::Dahl => bail!(
                     "--{q} is a LuGre parameter; the Dahl model takes {}",
                     names.join(" and ")
                 ),
+                _ => bail!("--{q} is the Dahl model's parameter (add --model dahl)"),
             }
         }
         let value = |p: Parameter| self.named_value(p).unwrap_or(p.default_value());
@@ -367,7 +429,7 @@ impl ModelArgs {
                 }
                 Model::LuGre(LuGre::from_params(p)?)
             }
-            ModelKind::Dahl => Model::Dahl(Dahl::new(value(Parameter::Rho), value(Parameter::Fc))?),
+            _ => Model::Dahl(Dahl::new(value(Parameter::Rho), value(Parameter::Fc))?),
         };
         Ok(ModelChoice {
             model,
@@ -408,11 +470,7 @@ impl ModelChoice {
 
     /// The model as a JSON object: `kind` and its parameters.
     pub(crate) fn to_json(&self) -> serde_json::Value {
-        let kind = match self.kind {
-            ModelKind::Lugre => "lugre",
-            ModelKind::Dahl => "dahl",
-        };
-        let mut j = serde_json::json!({ "kind": kind });
+        let mut j = serde_json::json!({ "kind": self.kind.name() });
         for (q, value) in self.values() {
             j[q.name()] = value.into();
         }

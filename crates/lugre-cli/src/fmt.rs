@@ -124,3 +124,14 @@ mod tests {
         assert_eq!(shorten_quoted("no quotes"), "no quotes");
     }
 }
+
+/// `text` with its first letter upper case (a description opening a help line).
+pub(crate) fn capitalized(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map(|c| c.to_ascii_uppercase())
+        .into_iter()
+        .chain(chars)
+        .collect()
+}

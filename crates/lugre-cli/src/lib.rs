@@ -16,6 +16,7 @@ mod hysteresis;
 mod io;
 mod numbers;
 mod plot;
+mod zoo_args;
 
 pub use cli::Cli;
 pub use fmt::shorten_quoted;

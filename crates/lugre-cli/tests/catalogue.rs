@@ -1538,7 +1538,7 @@ fn other_flags_out_of_range() {
         ),
         (
             vec!["loop", "--turning-points", "0,1", "--model", "coulomb"],
-            "[possible values: lugre, dahl]",
+            "[possible values: lugre, dahl, maxwell-slip, prandtl-ishlinskii",
         ),
         (vec!["bogus"], "unrecognized subcommand 'bogus'"),
         (

@@ -11,11 +11,13 @@ use crate::args::{
     check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
 };
 use crate::fmt::{exact, sig};
-use crate::hysteresis::{arc_points, kind_name};
+use crate::hysteresis::{arc_of, kind_name};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, Units, BLACK, PALETTE};
+use crate::zoo_args::{build_zoo, zoo_json, zoo_line};
+use lugre::zoo::{ZooLoop, ZooModel};
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
 const MAX_TABLE_ROWS: usize = 40;
@@ -70,17 +72,104 @@ pub(crate) struct LoopArgs {
 
 /// The request, from the flags (all checked before anything is computed).
 struct Request {
-    model: ModelChoice,
+    model: Chosen,
     input: PeriodicInput,
     /// The rhos of `--at`.
     at: Option<Vec<f64>>,
     samples: Option<usize>,
 }
 
+/// The model: LuGre or Dahl (their loop depends on `sigma0` and `g(0)` alone), or a model of
+/// the zoo.
+enum Chosen {
+    Classic(ModelChoice),
+    Zoo(ZooModel),
+}
+
+/// The periodic response: LuGre's closed forms, or a model of the zoo with its loop.
+enum Source {
+    LuGre(HysteresisLoop),
+    Zoo(Box<(ZooModel, ZooLoop)>),
+}
+
+impl Source {
+    fn period(&self) -> f64 {
+        match self {
+            Source::LuGre(hl) => hl.period(),
+            Source::Zoo(z) => z.1.period(),
+        }
+    }
+
+    fn turning_points(&self) -> Vec<LoopPoint> {
+        match self {
+            Source::LuGre(hl) => hl.turning_loop_points(),
+            Source::Zoo(z) => {
+                let hl = &z.1;
+                (0..hl.len())
+                    .map(|k| LoopPoint {
+                        rho: hl.turning_rho()[k],
+                        u: hl.turning_points()[k],
+                        y: hl.turning_force()[k],
+                    })
+                    .collect()
+            }
+        }
+    }
+
+    fn work_per_period(&self) -> f64 {
+        match self {
+            Source::LuGre(hl) => hl.work_per_period(),
+            Source::Zoo(z) => z.1.work_per_period(),
+        }
+    }
+
+    /// The response at `rhos`.
+    fn points(&self, rhos: &[f64]) -> Vec<LoopPoint> {
+        match self {
+            Source::LuGre(hl) => rhos.iter().map(|&r| hl.point_at(r)).collect(),
+            Source::Zoo(z) => z.0.points(&z.1, rhos),
+        }
+    }
+
+    /// `n >= 2` points evenly spaced over one period, both ends included.
+    fn sample(&self, n: usize) -> Vec<LoopPoint> {
+        match self {
+            Source::LuGre(hl) => hl.sample(n),
+            Source::Zoo(z) => z.0.sample(&z.1, n).unwrap_or_default(),
+        }
+    }
+
+    /// The curve over `[rho0, rho1]`, through every turning point on it (for figures).
+    fn arc(&self, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
+        arc_of(
+            |r| self.points(r),
+            self.period(),
+            &self.turning_rho(),
+            rho0,
+            rho1,
+        )
+    }
+
+    /// The output's symbol and name: LuGre's loop `y°`, a model of the zoo's force `F`.
+    fn output(&self) -> (&'static str, &'static str) {
+        match self {
+            Source::LuGre(_) => ("y°", "friction force y°"),
+            Source::Zoo(_) => ("F", "force F"),
+        }
+    }
+
+    fn turning_rho(&self) -> Vec<f64> {
+        match self {
+            Source::LuGre(hl) => hl.turning_rho().to_vec(),
+            Source::Zoo(z) => z.1.turning_rho().to_vec(),
+        }
+    }
+}
+
 /// What `lugre loop` computes, every number finite: the loop, its loops, Theorem A for a
 /// bimodal input, and the points asked for (`--at`, `--samples`).
 struct Outcome {
-    hl: HysteresisLoop,
+    hl: Source,
     loops: Vec<Loop>,
     theorem_a: Option<TheoremA>,
     points: Option<Vec<LoopPoint>>,
@@ -94,7 +183,10 @@ pub(crate) fn run(args: &LoopArgs) -> Result<()> {
 }
 
 fn parse(args: &LoopArgs) -> Result<Request> {
-    let model = args.model.build()?;
+    let model = match build_zoo(&args.model)? {
+        Some(z) => Chosen::Zoo(z),
+        None => Chosen::Classic(args.model.build()?),
+    };
     let input = args.input.build()?;
     let at = match &args.at {
         Some(text) => Some(parse_list("--at", text)?),
@@ -112,18 +204,25 @@ fn parse(args: &LoopArgs) -> Result<Request> {
 }
 
 fn compute(request: &Request) -> Result<Outcome> {
-    let hl = HysteresisLoop::new(
-        request.model.rate_independent(),
-        &request.input.turning_points(),
-    )?;
-    let loops = hl.loops();
-    check_loops_finite(&loops)?;
-    let theorem_a = match &request.input {
-        PeriodicInput::Bimodal(b) => Some(TheoremA::new(b, &hl)),
-        _ => None,
+    let turning = request.input.turning_points();
+    let (hl, loops, theorem_a) = match &request.model {
+        Chosen::Classic(model) => {
+            let hl = HysteresisLoop::new(model.rate_independent(), &turning)?;
+            let theorem_a = match &request.input {
+                PeriodicInput::Bimodal(b) => Some(TheoremA::new(b, &hl)),
+                _ => None,
+            };
+            (Source::LuGre(hl.clone()), hl.loops(), theorem_a)
+        }
+        Chosen::Zoo(model) => {
+            let zl = model.loops(&turning)?;
+            let loops = zl.loops().to_vec();
+            (Source::Zoo(Box::new((model.clone(), zl))), loops, None)
+        }
     };
+    check_loops_finite(&loops)?;
     let points: Option<Vec<LoopPoint>> = match (&request.at, request.samples) {
-        (Some(rhos), _) => Some(rhos.iter().map(|&r| hl.point_at(r)).collect()),
+        (Some(rhos), _) => Some(hl.points(rhos)),
         (None, Some(n)) => Some(hl.sample(n)),
         (None, None) => None,
     };
@@ -141,7 +240,7 @@ fn compute(request: &Request) -> Result<Outcome> {
 }
 
 /// Writes the CSV and the figure asked for, then prints the JSON document or the table.
-fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()> {
+fn report(args: &LoopArgs, model: &Chosen, outcome: &Outcome) -> Result<()> {
     if let Some(path) = &args.output.csv {
         write_atomic(path, |w| outcome.write_csv(w))?;
     }
@@ -153,7 +252,7 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
             args.model.preset.is_some(),
             args.plot.units.as_deref(),
         )?;
-        loop_figure(&outcome.hl, &outcome.loops, &units).save(path)?;
+        loop_figure(&outcome.hl, &outcome.loops, &units, model).save(path)?;
     }
 
     let stdout = std::io::stdout();
@@ -161,7 +260,11 @@ fn report(args: &LoopArgs, model: &ModelChoice, outcome: &Outcome) -> Result<()>
         outcome.write_json(model, JsonOut::new(stdout.lock()))?;
     } else {
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
-        outcome.print_table(&mut out, &model.describe(Needed::RateIndependent))?;
+        let line = match model {
+            Chosen::Classic(m) => m.describe(Needed::RateIndependent),
+            Chosen::Zoo(m) => zoo_line(m),
+        };
+        outcome.print_table(&mut out, &line)?;
         if let Some(path) = &args.output.csv {
             writeln!(
                 out,
@@ -215,15 +318,20 @@ impl Outcome {
 
     /// Everything `lugre loop --json` prints (the documented schema; keys may be added, never
     /// renamed).
-    fn write_json<W: Write>(&self, model: &ModelChoice, mut j: JsonOut<W>) -> std::io::Result<()> {
+    fn write_json<W: Write>(&self, model: &Chosen, mut j: JsonOut<W>) -> std::io::Result<()> {
         let hl = &self.hl;
         j.raw("{\"model\":")?;
-        j.raw(&model.to_json().to_string())?;
-        j.field(",\"g0\":", hl.model().g0())?;
-        j.field(",\"a\":", hl.model().a())?;
+        match model {
+            Chosen::Classic(m) => j.raw(&m.to_json().to_string())?,
+            Chosen::Zoo(m) => j.raw(&zoo_json(m).to_string())?,
+        }
+        if let Source::LuGre(hl) = hl {
+            j.field(",\"g0\":", hl.model().g0())?;
+            j.field(",\"a\":", hl.model().a())?;
+        }
         j.field(",\"period\":", hl.period())?;
         j.raw(",\"turning_points\":")?;
-        j.points(&hl.turning_loop_points())?;
+        j.points(&hl.turning_points())?;
         if let Some(ta) = &self.theorem_a {
             j.raw(",\"theorem_a\":{\"rho\":")?;
             j.array(&ta.rho)?;
@@ -251,19 +359,26 @@ impl Outcome {
 
     fn print_table(&self, out: &mut impl Write, model: &str) -> Result<()> {
         let hl = &self.hl;
-        let m = hl.model();
         writeln!(out, "{model}")?;
+        if let Source::LuGre(hl) = hl {
+            let m = hl.model();
+            write!(
+                out,
+                "g(0) = {}   a = sigma0/g(0) = {}   ",
+                sig(m.g0(), 10),
+                sig(m.a(), 10)
+            )?;
+        }
         writeln!(
             out,
-            "g(0) = {}   a = sigma0/g(0) = {}   period P = {} (total variation of u per period)",
-            sig(m.g0(), 10),
-            sig(m.a(), 10),
+            "period P = {} (total variation of u per period)",
             sig(hl.period(), 10)
         )?;
 
-        writeln!(out, "\nHysteresis loop y° at the turning points")?;
-        writeln!(out, "{:>6} {:>16} {:>16} {:>18}", "k", "rho", "u", "y°")?;
-        let tp = hl.turning_loop_points();
+        let (y, _) = hl.output();
+        writeln!(out, "\nHysteresis loop {y} at the turning points")?;
+        writeln!(out, "{:>6} {:>16} {:>16} {:>18}", "k", "rho", "u", y)?;
+        let tp = hl.turning_points();
         for (k, p) in tp.iter().enumerate().take(MAX_TABLE_ROWS) {
             writeln!(
                 out,
@@ -284,6 +399,12 @@ impl Outcome {
             "\nWork per period (energy dissipated per cycle): {}",
             sig(hl.work_per_period(), 12)
         )?;
+        if hl.work_per_period() < 0.0 {
+            writeln!(
+                out,
+                "(negative: the loop runs counterclockwise in the (u, {y}) plane, the output lagging the input as a play operator's does; its area is the magnitude)"
+            )?;
+        }
         if let Some(points) = &self.points {
             print_points(out, points)?;
         }
@@ -411,7 +532,7 @@ fn more(out: &mut impl Write, n: usize) -> Result<()> {
 const MAX_DRAWN_MINOR_LOOPS: usize = 10;
 
 /// The loop in the (u, y°) plane as the paper's Fig. 15 draws it.
-fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
+fn loop_figure(hl: &Source, loops: &[Loop], units: &Units, model: &Chosen) -> Figure {
     let major = &loops[0];
     let mut minors: Vec<&Loop> = loops[1..].iter().collect();
     minors.sort_by(|p, q| {
@@ -419,11 +540,15 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
         range(q).total_cmp(&range(p))
     });
     let drawn = minors.len().min(MAX_DRAWN_MINOR_LOOPS);
-    let mut fig =
-        Figure::new(units.u("input u"), units.force("friction force y°")).title("Hysteresis loop");
+    let title = match model {
+        Chosen::Classic(_) => "Hysteresis loop".to_string(),
+        Chosen::Zoo(m) => format!("Hysteresis loop, {} model", m.spec().label),
+    };
+    let (_, output) = hl.output();
+    let mut fig = Figure::new(units.u("input u"), units.force(output)).title(title.clone());
     fig = fig.curve(
         Curve::new(
-            arc_points(hl, major.start.rho, major.end.rho),
+            hl.arc(major.start.rho, major.end.rho),
             if drawn > 0 {
                 LineStyle::Dashed
             } else {
@@ -431,7 +556,7 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
             },
             BLACK,
         )
-        .label("hysteresis loop y°")
+        .label(format!("hysteresis loop {}", hl.output().0))
         .width(2),
     );
     for (i, l) in minors.iter().take(drawn).enumerate() {
@@ -442,7 +567,7 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
         );
         fig = fig.curve(
             Curve::new(
-                arc_points(hl, l.start.rho, l.end.rho),
+                hl.arc(l.start.rho, l.end.rho),
                 // Colours repeat after five loops: the line style changes then, so every drawn
                 // loop stays distinguishable, in grey scale too.
                 [LineStyle::Solid, LineStyle::DashDot, LineStyle::Dotted][(i / PALETTE.len()) % 3],
@@ -470,7 +595,7 @@ fn loop_figure(hl: &HysteresisLoop, loops: &[Loop], units: &Units) -> Figure {
     }
     if minors.len() > drawn {
         fig.title = Some(format!(
-            "Hysteresis loop ({drawn} largest of {} minor loops in colour)",
+            "{title} ({drawn} largest of {} minor loops in colour)",
             minors.len()
         ));
     }

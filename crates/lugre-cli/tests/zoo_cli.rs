@@ -1,0 +1,152 @@
+//! The models of the core's zoo table (`lugre::zoo::MODELS`) through `lugre loop`, with no
+//! model-specific code in the CLI: each is a `--model` value listed in `--help`, runs on its
+//! defaults alone, echoes every parameter by name in its JSON, takes its parameters from flags
+//! generated from the table, and gives the core's loops (compared with the library's own
+//! result for the same request); bad requests get one line.
+
+mod common;
+
+use common::{accepts, accepts_json, f, rejects};
+use lugre::zoo::{Shape, ZooModel, MODELS};
+use lugre::TurningPoints;
+
+const TURNING: &str = "3,1,2,-3,-1,-2";
+
+#[test]
+fn every_model_of_the_table_is_listed_and_runs_on_its_defaults() {
+    let help = accepts(&["loop", "--help"]);
+    let input = TurningPoints::new(&[3.0, 1.0, 2.0, -3.0, -1.0, -2.0]).unwrap();
+    for spec in MODELS {
+        assert!(help.contains(spec.name), "--help lists {}", spec.name);
+        let doc = accepts_json(&[
+            "loop",
+            "--model",
+            spec.name,
+            "--turning-points",
+            TURNING,
+            "--json",
+        ]);
+        assert_eq!(doc["model"]["kind"], spec.name);
+        for p in spec.parameters {
+            let echoed = &doc["model"][p.name];
+            let values: Vec<f64> = match p.shape {
+                Shape::Scalar => vec![f(echoed)],
+                Shape::Elements => echoed.as_array().unwrap().iter().map(f).collect(),
+            };
+            assert_eq!(values, p.default, "{}: {}", spec.name, p.name);
+        }
+        let want = ZooModel::new(spec.name, &[])
+            .unwrap()
+            .loops(&input)
+            .unwrap();
+        let loops = doc["loops"].as_array().unwrap();
+        assert_eq!(loops.len(), want.loops().len());
+        for (got, want) in loops.iter().zip(want.loops()) {
+            for (key, value) in [
+                ("work", want.energy.work),
+                ("stored_energy_change", want.energy.stored_energy_change),
+                ("dissipation", want.energy.dissipation),
+                ("closure_gap", want.energy.closure_gap),
+            ] {
+                assert_eq!(f(&got[key]), value, "{}: {key}", spec.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_parameters_come_from_flags_generated_from_the_table() {
+    let doc = accepts_json(&[
+        "loop",
+        "--model",
+        "maxwell-slip",
+        "--stiffness",
+        "1,2",
+        "--slip-force",
+        "1,0.5",
+        "--turning-points",
+        TURNING,
+        "--json",
+        "--samples",
+        "5",
+    ]);
+    assert_eq!(doc["model"]["stiffness"], serde_json::json!([1.0, 2.0]));
+    // Both elements slip on the major loop: F(3) = 1 + 0.5.
+    assert_eq!(f(&doc["turning_points"][0]["y"]), 1.5);
+    assert_eq!(doc["points"].as_array().unwrap().len(), 5);
+    let doc = accepts_json(&[
+        "loop",
+        "--model",
+        "prandtl-ishlinskii",
+        "--linear-weight",
+        "2",
+        "--thresholds",
+        "0.5",
+        "--weights",
+        "1",
+        "--turning-points",
+        "1,-1",
+        "--json",
+    ]);
+    // F = 2 u + p, p(1) = 0.5 on the periodic loop: 2.5; the loop runs counterclockwise.
+    assert_eq!(f(&doc["turning_points"][0]["y"]), 2.5);
+    assert!(f(&doc["work_per_period"]) < 0.0);
+}
+
+#[test]
+fn bad_requests_of_the_zoo_get_one_line() {
+    rejects(
+        &["loop", "--model", "maxwell-slip", "--sigma1", "1", "--turning-points", TURNING],
+        "--sigma1 is not a parameter of the Maxwell-slip model (its parameters: --stiffness, --slip-force)",
+    );
+    rejects(
+        &["loop", "--stiffness", "1", "--turning-points", TURNING],
+        "--stiffness is a parameter of --model maxwell-slip: add that --model",
+    );
+    rejects(
+        &[
+            "loop",
+            "--model",
+            "maxwell-slip",
+            "--stiffness",
+            "1,-2",
+            "--slip-force",
+            "1,1",
+            "--turning-points",
+            TURNING,
+        ],
+        "stiffness[1] must be > 0, got -2",
+    );
+    rejects(
+        &[
+            "loop",
+            "--model",
+            "maxwell-slip",
+            "--preset",
+            "canudas1995",
+            "--turning-points",
+            TURNING,
+        ],
+        "--preset is a LuGre parameter set; the Maxwell-slip model takes --stiffness, --slip-force",
+    );
+    rejects(
+        &[
+            "loop",
+            "--model",
+            "prandtl-ishlinskii",
+            "--linear-weight",
+            "1,2",
+            "--turning-points",
+            TURNING,
+        ],
+        "linear_weight takes one value, got 2",
+    );
+    rejects(
+        &["simulate", "--model", "maxwell-slip", "--sine", "1,1"],
+        "--model maxwell-slip: this command takes lugre or dahl (the models of the zoo work with `lugre loop`)",
+    );
+    rejects(
+        &["loop", "--model", "bouc", "--turning-points", TURNING],
+        "bouc",
+    );
+}
