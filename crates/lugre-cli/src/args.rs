@@ -385,6 +385,19 @@ impl ModelArgs {
             .or_else(|| self.preset.and_then(|s| s.params().get(p)))
     }
 
+    /// The model of the zoo the flags name, or `None` for LuGre and Dahl
+    /// ([`crate::zoo_args::build`]).
+    pub(crate) fn build_zoo(&self) -> Result<Option<lugre::zoo::ZooModel>> {
+        let Some(spec) = self.model.zoo() else {
+            return Ok(None);
+        };
+        let classic: Vec<(Parameter, f64)> = Parameter::ALL
+            .into_iter()
+            .filter_map(|p| self.given(p).map(|v| (p, v)))
+            .collect();
+        crate::zoo_args::build(spec, self.preset.is_some(), &self.zoo, &classic).map(Some)
+    }
+
     pub(crate) fn build(&self) -> Result<ModelChoice> {
         if let Some(spec) = self.model.zoo() {
             bail!(

@@ -82,6 +82,17 @@ pub fn shorten_quoted(message: &str) -> String {
     out
 }
 
+/// `text` with its first letter upper case (a description opening a help line).
+pub(crate) fn capitalized(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map(|c| c.to_ascii_uppercase())
+        .into_iter()
+        .chain(chars)
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -123,15 +134,4 @@ mod tests {
         assert_eq!(shorten_quoted("it's"), "it's");
         assert_eq!(shorten_quoted("no quotes"), "no quotes");
     }
-}
-
-/// `text` with its first letter upper case (a description opening a help line).
-pub(crate) fn capitalized(text: &str) -> String {
-    let mut chars = text.chars();
-    chars
-        .next()
-        .map(|c| c.to_ascii_uppercase())
-        .into_iter()
-        .chain(chars)
-        .collect()
 }

@@ -9,7 +9,6 @@ use clap::{Arg, ArgMatches, Args, Command};
 use lugre::model::Parameter;
 use lugre::zoo::{Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 
-use crate::args::ModelArgs;
 use crate::fmt::sig;
 use crate::numbers::parse_list;
 
@@ -140,17 +139,19 @@ impl Args for ZooFlags {
     }
 }
 
-/// The model of the zoo `args` names, from its flags (every parameter not given at its
-/// default), or `None` for LuGre and Dahl.
+/// The model of the zoo `spec` from its flags: the zoo's own (`zoo`) and the LuGre or Dahl
+/// flags given (`classic`); every parameter not given at its default.
 ///
 /// # Errors
-/// A flag of a parameter the model does not have, `--preset`, a list that is not numbers,
-/// and the core's checks of the values (one line naming the flag and the value).
-pub(crate) fn build_zoo(args: &ModelArgs) -> Result<Option<ZooModel>> {
-    let Some(spec) = args.model.zoo() else {
-        return Ok(None);
-    };
-    if args.preset.is_some() {
+/// A flag of a parameter the model does not have, `--preset` (`preset_given`), a list that
+/// is not numbers, and the core's checks of the values (one line naming the flag and value).
+pub(crate) fn build(
+    spec: &ZooModelSpec,
+    preset_given: bool,
+    zoo: &ZooFlags,
+    classic: &[(Parameter, f64)],
+) -> Result<ZooModel> {
+    if preset_given {
         bail!(
             "--preset is a LuGre parameter set; the {} model takes {}",
             spec.label,
@@ -158,20 +159,16 @@ pub(crate) fn build_zoo(args: &ModelArgs) -> Result<Option<ZooModel>> {
         );
     }
     let mut given: Vec<(&str, Vec<f64>)> = Vec::new();
-    for (name, text) in &args.zoo.given {
+    for (name, text) in &zoo.given {
         check_owned(spec, &flag(name))?;
         given.push((name, parse_list(&flag(name), text)?));
     }
-    for q in Parameter::ALL {
-        if let Some(v) = args.given(q) {
-            check_owned(spec, &format!("--{}", q.name()))?;
-            given.push((q.name(), vec![v]));
-        }
+    for &(q, v) in classic {
+        check_owned(spec, &format!("--{}", q.name()))?;
+        given.push((q.name(), vec![v]));
     }
     let borrowed: Vec<(&str, &[f64])> = given.iter().map(|(n, v)| (*n, v.as_slice())).collect();
-    ZooModel::new(spec.name, &borrowed)
-        .map(Some)
-        .map_err(|e| anyhow::anyhow!(e))
+    ZooModel::new(spec.name, &borrowed).map_err(|e| anyhow::anyhow!(e))
 }
 
 /// The flags of `spec`'s parameters, comma-separated.

@@ -16,7 +16,7 @@ use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, Units, BLACK, PALETTE};
-use crate::zoo_args::{build_zoo, zoo_json, zoo_line};
+use crate::zoo_args::{zoo_json, zoo_line};
 use lugre::zoo::{ZooLoop, ZooModel};
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
@@ -183,7 +183,7 @@ pub(crate) fn run(args: &LoopArgs) -> Result<()> {
 }
 
 fn parse(args: &LoopArgs) -> Result<Request> {
-    let model = match build_zoo(&args.model)? {
+    let model = match args.model.build_zoo()? {
         Some(z) => Chosen::Zoo(z),
         None => Chosen::Classic(args.model.build()?),
     };
