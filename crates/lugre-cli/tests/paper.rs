@@ -70,6 +70,7 @@ fn every_figure_is_written_as_svg_png_and_csv() {
     for name in &names {
         let ok = name == "index.html"
             || name == "canudas1995"
+            || name == "models"
             || name == MARK
             || (name.starts_with("fig")
                 && (name.ends_with(".svg") || name.ends_with(".png") || name.ends_with(".csv")));
@@ -169,8 +170,8 @@ fn the_page_links_only_files_that_exist() {
             assert!(html.contains(&format!("id=\"{anchor}\"")), "#{anchor}");
             continue;
         }
-        if target == "canudas1995/index.html" {
-            // The second report, in its own folder.
+        if target == "canudas1995/index.html" || target == "models/index.html" {
+            // The second and third reports, each in its own folder.
             assert!(dir.join(target).is_file(), "{target} does not exist");
             continue;
         }
@@ -184,7 +185,7 @@ fn the_page_links_only_files_that_exist() {
     // Every figure, image and data file is reachable from the page.
     for name in names
         .iter()
-        .filter(|n| *n != "index.html" && *n != "canudas1995" && *n != MARK)
+        .filter(|n| *n != "index.html" && *n != "canudas1995" && *n != "models" && *n != MARK)
     {
         assert!(
             linked.contains(name),
@@ -340,16 +341,58 @@ fn the_second_report() {
         }
     }
     let html = std::fs::read_to_string(second.join("index.html")).unwrap();
-    for target in attribute_values(&html, "src")
+    links_only_its_own_files(&html, &names);
+    // The numbers shown: the stick-slip period and a break-away force.
+    assert!(html.contains("period"), "{html}");
+    assert!(html.contains("r = 10 N/s"), "{html}");
+}
+
+/// The third report: LuGre and every model of the core's zoo table on Fig. 15's input (one
+/// figure each) and on a nested input (one figure), with a page that links only its own files;
+/// LuGre's minor loop drifts, every Masing model's closes.
+#[test]
+fn the_third_report_compares_every_model_of_the_zoo() {
+    let (dir, _) = paper();
+    let third = dir.join("models");
+    let names = files(&third);
+    let models = 1 + lugre::zoo::MODELS.len();
+    for n in 1..=models + 1 {
+        for ext in ["svg", "png"] {
+            assert!(
+                names.contains(&format!("fig{n:02}.{ext}")),
+                "fig{n:02}.{ext}"
+            );
+        }
+    }
+    let html = std::fs::read_to_string(third.join("index.html")).unwrap();
+    links_only_its_own_files(&html, &names);
+    let lugre = html
+        .find("LuGre on its default values")
+        .expect("LuGre's figure");
+    assert!(
+        html[lugre..].contains("The minor loop does not close"),
+        "LuGre's minor loop drifts"
+    );
+    for spec in lugre::zoo::MODELS.iter().filter(|m| m.closes_minor_loops) {
+        let line = format!("{} on its default values", spec.label);
+        let at = html.find(&line).unwrap_or_else(|| panic!("{line}"));
+        assert!(
+            html[at..].contains("The minor loop closes: F_C − F_A = 0."),
+            "{}",
+            spec.label
+        );
+    }
+}
+
+/// Every image and link of a report's page is one of its folder's files, or the first report.
+fn links_only_its_own_files(html: &str, names: &BTreeSet<String>) {
+    for target in attribute_values(html, "src")
         .into_iter()
-        .chain(attribute_values(&html, "href"))
+        .chain(attribute_values(html, "href"))
     {
         if target == "../index.html" {
             continue;
         }
         assert!(names.contains(target), "{target} does not exist");
     }
-    // The numbers shown: the stick-slip period and a break-away force.
-    assert!(html.contains("period"), "{html}");
-    assert!(html.contains("r = 10 N/s"), "{html}");
 }

@@ -11,13 +11,13 @@ use crate::args::{
     check_files, ModelArgs, ModelChoice, OutputArgs, PeriodicInput, PeriodicInputArgs, PlotArgs,
 };
 use crate::fmt::{exact, sig};
-use crate::hysteresis::{arc_of, kind_name};
+use crate::hysteresis::{kind_name, Response};
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
 use crate::numbers::{parse_list, Whole};
 use crate::plot::{Curve, Figure, LineStyle, Marker, Shape, Units, BLACK, PALETTE};
 use crate::zoo_args::{zoo_json, zoo_line};
-use lugre::zoo::{ZooLoop, ZooModel};
+use lugre::zoo::ZooModel;
 
 /// Rows of a table printed before the rest is summarised (all of it is in --json / --csv).
 const MAX_TABLE_ROWS: usize = 40;
@@ -86,90 +86,10 @@ enum Chosen {
     Zoo(ZooModel),
 }
 
-/// The periodic response: LuGre's closed forms, or a model of the zoo with its loop.
-enum Source {
-    LuGre(HysteresisLoop),
-    Zoo(Box<(ZooModel, ZooLoop)>),
-}
-
-impl Source {
-    fn period(&self) -> f64 {
-        match self {
-            Source::LuGre(hl) => hl.period(),
-            Source::Zoo(z) => z.1.period(),
-        }
-    }
-
-    fn turning_points(&self) -> Vec<LoopPoint> {
-        match self {
-            Source::LuGre(hl) => hl.turning_loop_points(),
-            Source::Zoo(z) => {
-                let hl = &z.1;
-                (0..hl.len())
-                    .map(|k| LoopPoint {
-                        rho: hl.turning_rho()[k],
-                        u: hl.turning_points()[k],
-                        y: hl.turning_force()[k],
-                    })
-                    .collect()
-            }
-        }
-    }
-
-    fn work_per_period(&self) -> f64 {
-        match self {
-            Source::LuGre(hl) => hl.work_per_period(),
-            Source::Zoo(z) => z.1.work_per_period(),
-        }
-    }
-
-    /// The response at `rhos`.
-    fn points(&self, rhos: &[f64]) -> Vec<LoopPoint> {
-        match self {
-            Source::LuGre(hl) => rhos.iter().map(|&r| hl.point_at(r)).collect(),
-            Source::Zoo(z) => z.0.points(&z.1, rhos),
-        }
-    }
-
-    /// `n >= 2` points evenly spaced over one period, both ends included.
-    fn sample(&self, n: usize) -> Vec<LoopPoint> {
-        match self {
-            Source::LuGre(hl) => hl.sample(n),
-            Source::Zoo(z) => z.0.sample(&z.1, n).unwrap_or_default(),
-        }
-    }
-
-    /// The curve over `[rho0, rho1]`, through every turning point on it (for figures).
-    fn arc(&self, rho0: f64, rho1: f64) -> Vec<(f64, f64)> {
-        arc_of(
-            |r| self.points(r),
-            self.period(),
-            &self.turning_rho(),
-            rho0,
-            rho1,
-        )
-    }
-
-    /// The output's symbol and name: LuGre's loop `y°`, a model of the zoo's force `F`.
-    fn output(&self) -> (&'static str, &'static str) {
-        match self {
-            Source::LuGre(_) => ("y°", "friction force y°"),
-            Source::Zoo(_) => ("F", "force F"),
-        }
-    }
-
-    fn turning_rho(&self) -> Vec<f64> {
-        match self {
-            Source::LuGre(hl) => hl.turning_rho().to_vec(),
-            Source::Zoo(z) => z.1.turning_rho().to_vec(),
-        }
-    }
-}
-
 /// What `lugre loop` computes, every number finite: the loop, its loops, Theorem A for a
 /// bimodal input, and the points asked for (`--at`, `--samples`).
 struct Outcome {
-    hl: Source,
+    hl: Response,
     loops: Vec<Loop>,
     theorem_a: Option<TheoremA>,
     points: Option<Vec<LoopPoint>>,
@@ -212,12 +132,12 @@ fn compute(request: &Request) -> Result<Outcome> {
                 PeriodicInput::Bimodal(b) => Some(TheoremA::new(b, &hl)),
                 _ => None,
             };
-            (Source::LuGre(hl.clone()), hl.loops(), theorem_a)
+            (Response::LuGre(hl.clone()), hl.loops(), theorem_a)
         }
         Chosen::Zoo(model) => {
             let zl = model.loops(&turning)?;
             let loops = zl.loops().to_vec();
-            (Source::Zoo(Box::new((model.clone(), zl))), loops, None)
+            (Response::Zoo(Box::new((model.clone(), zl))), loops, None)
         }
     };
     check_loops_finite(&loops)?;
@@ -325,7 +245,7 @@ impl Outcome {
             Chosen::Classic(m) => j.raw(&m.to_json().to_string())?,
             Chosen::Zoo(m) => j.raw(&zoo_json(m).to_string())?,
         }
-        if let Source::LuGre(hl) = hl {
+        if let Response::LuGre(hl) = hl {
             j.field(",\"g0\":", hl.model().g0())?;
             j.field(",\"a\":", hl.model().a())?;
         }
@@ -360,7 +280,7 @@ impl Outcome {
     fn print_table(&self, out: &mut impl Write, model: &str) -> Result<()> {
         let hl = &self.hl;
         writeln!(out, "{model}")?;
-        if let Source::LuGre(hl) = hl {
+        if let Response::LuGre(hl) = hl {
             let m = hl.model();
             write!(
                 out,
@@ -532,7 +452,7 @@ fn more(out: &mut impl Write, n: usize) -> Result<()> {
 const MAX_DRAWN_MINOR_LOOPS: usize = 10;
 
 /// The loop in the (u, y°) plane as the paper's Fig. 15 draws it.
-fn loop_figure(hl: &Source, loops: &[Loop], units: &Units, model: &Chosen) -> Figure {
+fn loop_figure(hl: &Response, loops: &[Loop], units: &Units, model: &Chosen) -> Figure {
     let major = &loops[0];
     let mut minors: Vec<&Loop> = loops[1..].iter().collect();
     minors.sort_by(|p, q| {

@@ -262,8 +262,15 @@ pub(crate) fn page(r: &Report) -> String {
          The first report</a>: the figures of Ikhouane, Mañosa, Pujol.</p>\n",
         env!("CARGO_PKG_VERSION")
     );
+    figures_with_numbers(&mut h, r);
+    h.push_str("</body>\n</html>\n");
+    h
+}
+
+/// Each figure of `r` followed by the tables of numbers shown with it.
+pub(crate) fn figures_with_numbers(h: &mut String, r: &Report) {
     for f in &r.figures {
-        figure(&mut h, f);
+        figure(h, f);
         for (n, heading, rows) in &r.tables {
             if *n == f.number {
                 let _ = write!(h, "<div class=\"numbers\"><h3>{}</h3><table>", esc(heading));
@@ -274,6 +281,4 @@ pub(crate) fn page(r: &Report) -> String {
             }
         }
     }
-    h.push_str("</body>\n</html>\n");
-    h
 }

@@ -102,7 +102,10 @@ pub(crate) fn page(paper: &Paper) -> String {
     h.push_str("<li><a href=\"#numbers\">About the numbers</a></li>");
     h.push_str(
         "<li><a href=\"canudas1995/index.html\">Second report: friction in closed loop \
-         (Canudas de Wit et al. 1995, Figs. 2, 3, 4, 6, 8)</a></li></ul></nav>\n",
+         (Canudas de Wit et al. 1995, Figs. 2, 3, 4, 6, 8)</a></li>\
+         <li><a href=\"models/index.html\">Third report: LuGre next to every model of \
+         the zoo (closing and drifting minor \
+         loops)</a></li></ul></nav>\n",
     );
 
     for s in &sections {

@@ -24,6 +24,7 @@ mod convergence;
 mod examples;
 mod figures;
 mod html;
+mod models;
 
 use convergence::convergence_figures;
 use examples::{LoopExample, PaperInput};
@@ -48,6 +49,8 @@ pub(crate) struct Paper {
     pub(crate) examples: Vec<LoopExample>,
     /// The second report: the closed-loop experiments of Canudas de Wit et al. (1995).
     pub(crate) canudas: canudas::Report,
+    /// The third report: LuGre next to every model of the zoo.
+    pub(crate) models: canudas::Report,
 }
 
 pub(crate) fn run(args: &PaperArgs) -> Result<()> {
@@ -113,23 +116,23 @@ pub(crate) fn build() -> Result<Paper> {
         figures,
         examples: vec![example2, example3, example4, fig16, fig17],
         canudas: canudas::build()?,
+        models: models::build()?,
     })
 }
 
 /// Writes every file; returns their names in the order written.
 fn write_all(paper: &Paper, dir: &Path) -> Result<Vec<String>> {
     let mut written = write_report(&paper.figures, &html::page(paper), dir, "")?;
-    let second = dir.join(canudas::DIR);
-    std::fs::create_dir_all(&second)
-        .with_context(|| format!("cannot create '{}'", second.display()))?;
-    let prefix = format!("{}/", canudas::DIR);
-    let page = canudas::page(&paper.canudas);
-    written.extend(write_report(
-        &paper.canudas.figures,
-        &page,
-        &second,
-        &prefix,
-    )?);
+    for (sub, report, page) in [
+        (canudas::DIR, &paper.canudas, canudas::page(&paper.canudas)),
+        (models::DIR, &paper.models, models::page(&paper.models)),
+    ] {
+        let folder = dir.join(sub);
+        std::fs::create_dir_all(&folder)
+            .with_context(|| format!("cannot create '{}'", folder.display()))?;
+        let prefix = format!("{sub}/");
+        written.extend(write_report(&report.figures, &page, &folder, &prefix)?);
+    }
     Ok(written)
 }
 
@@ -204,6 +207,12 @@ fn print_summary(
         "  {}/                the second report: Canudas de Wit et al. (1995), Figs. 2, 3, 4, 6, 8 \
          (lugre dynamics)",
         canudas::DIR
+    )?;
+    writeln!(
+        out,
+        "  {}/                     the third report: LuGre next to every model of the zoo \
+         (lugre loop --model NAME)",
+        models::DIR
     )?;
     writeln!(out)?;
     for f in &paper.figures {
