@@ -1,7 +1,8 @@
-//! The loop and every minor loop with their energies of the Masing models of `lugre::zoo` for
-//! periodic inputs of random turning points, in turning points per second: Maxwell-slip with
-//! 100 elements (target: at least 10^6 turning points per second) and Prandtl-Ishlinskii with
-//! 100 play operators. The work per turning point is one segment map of every element.
+//! The loop and every minor loop with their energies of the models of `lugre::zoo` for
+//! periodic inputs of random turning points, in turning points per second: every model of the
+//! zoo's table on its defaults through `ZooModel` (target: at least 5 x 10^6 turning points per
+//! second each), Maxwell-slip with 100 elements (target: at least 10^6) and Prandtl-Ishlinskii
+//! with 100 play operators. The work per turning point is one segment map of the model.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lugre::zoo::{MaxwellSlip, PrandtlIshlinskii};
@@ -23,6 +24,20 @@ fn zoo(c: &mut Criterion) {
         .collect();
     let w: Vec<f64> = (0..elements).map(|i| 1.0 / (1 + i) as f64).collect();
     let prandtl = PrandtlIshlinskii::new(1.0, &r, &w).expect("valid parameters");
+    for spec in lugre::zoo::MODELS {
+        let model = lugre::zoo::ZooModel::new(spec.name, &[]).expect("the defaults are valid");
+        let mut group = c.benchmark_group(format!("defaults_{}", spec.name));
+        group.sample_size(10);
+        for n in [1_000, 100_000] {
+            // The input's range spans the defaults' break-away displacements (up to a few m).
+            let tp = random_turning_points(n, 8.0);
+            group.throughput(Throughput::Elements(n as u64));
+            group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
+                b.iter(|| black_box(model.loops(black_box(tp)).expect("finite").loops().len()))
+            });
+        }
+        group.finish();
+    }
     for (name, bank) in [
         ("maxwell_slip_100", maxwell.bank()),
         ("prandtl_ishlinskii_100", prandtl.bank()),
