@@ -723,3 +723,67 @@ fn the_table_names_what_is_wrong() {
         "stiffness and slip_force have different lengths (2 and 4)"
     );
 }
+
+/// The cycles of a measured history along a model's path (`ZooModel::cycle_energies`): on a
+/// periodic input repeated four times from rest, every full cycle of the last period is one of
+/// the periodic loop's minor loops with the same energies (1e-12), each cycle's work is the
+/// trapezoid integral of the exact path from its start to its closure (1e-12), and the totals
+/// add up (`W = dV + D`).
+#[test]
+fn cycles_of_a_history_along_a_masing_path() {
+    use lugre::zoo::ZooModel;
+    let period = alternating(7, 30, 1.5);
+    let model = ZooModel::new("maxwell-slip", &[]).unwrap();
+    let hl = model.loops(&TurningPoints::new(&period).unwrap()).unwrap();
+    let mut u: Vec<f64> = Vec::new();
+    for _ in 0..4 {
+        u.extend_from_slice(&period);
+    }
+    u.push(period[0]);
+    let mut history = lugre::cycles::count_cycles(&u, 0.0).unwrap();
+    let totals = model.cycle_energies(&u, &mut history.cycles);
+    let scale = 2.0 * 10.0;
+    let last = (3 * period.len()) as u64;
+    let minors: Vec<&lugre::Loop> = hl.loops()[1..].iter().collect();
+    let late: Vec<&lugre::Cycle> = history
+        .cycles
+        .iter()
+        .filter(|c| c.is_full() && c.start >= last)
+        .collect();
+    assert_eq!(
+        late.len(),
+        minors.len(),
+        "one cycle per minor loop in the last period"
+    );
+    for c in &late {
+        let e = c.energy.expect("a full cycle has its energy");
+        let l = minors
+            .iter()
+            .find(|l| l.start.u == u[c.start as usize] && l.reversal.u == u[c.end as usize])
+            .expect("the cycle is a minor loop of the periodic response");
+        assert!((e.arc.work - l.energy.work).abs() <= 1e-12 * scale);
+        assert!((e.arc.dissipation - l.energy.dissipation).abs() <= 1e-12 * scale);
+        assert_eq!(e.arc.closure_gap, 0.0, "a Masing cycle closes");
+    }
+    // Each cycle's work against the trapezoids of the exact path, from rest.
+    let ms = MaxwellSlip::new(&[0.25; 4], &[0.125, 0.375, 0.625, 0.875]).unwrap();
+    for c in history.cycles.iter().filter(|c| c.is_full()) {
+        let mut state = ms.bank().rest(u[0]);
+        for &x in &u[1..=c.start as usize] {
+            ms.bank().advance(&mut state, x);
+        }
+        let closure = c.closure.unwrap().index as usize;
+        let mut points: Vec<f64> = u[c.start as usize + 1..closure].to_vec();
+        points.push(u[c.start as usize]);
+        let w = path_work(ms.bank(), &mut state, &points);
+        let e = c.energy.unwrap();
+        assert!(
+            (e.arc.work - w).abs() <= 1e-12 * scale,
+            "{} vs {w}",
+            e.arc.work
+        );
+    }
+    let t = totals;
+    assert!((t.work - t.stored_energy_change - t.dissipation).abs() <= 1e-12 * scale);
+    assert!(t.dissipation > 0.0);
+}

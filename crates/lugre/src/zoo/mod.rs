@@ -58,6 +58,7 @@
 //! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
 mod engine;
+mod history;
 mod maxwell;
 mod prandtl;
 mod segment;

@@ -44,6 +44,9 @@ pub trait Segmental {
     /// points, the period running `u[r], u[r+1], ...` and wrapping), whose minimum is `min`.
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Self::State;
 
+    /// At rest at input `u` (every element unloaded, `z = 0`).
+    fn rest(&self, u: f64) -> Self::State;
+
     /// `dst = src` without allocating where the state allows it.
     fn assign(dst: &mut Self::State, src: &Self::State) {
         dst.clone_from(src);
@@ -74,6 +77,10 @@ impl Segmental for PlayBank {
 
     fn arc(&self, from: &MasingState, to: &MasingState, d: f64) -> ArcEnergy {
         PlayBank::arc(self, from, to, d)
+    }
+
+    fn rest(&self, u: f64) -> MasingState {
+        PlayBank::rest(self, u)
     }
 
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> MasingState {
@@ -148,6 +155,10 @@ impl<T: SingleState> Segmental for T {
             closure_gap: SingleState::force(self, to.u, to.z)
                 - SingleState::force(self, from.u, from.z),
         }
+    }
+
+    fn rest(&self, u: f64) -> Point {
+        Point { u, z: 0.0 }
     }
 
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Point {

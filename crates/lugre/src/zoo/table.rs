@@ -12,6 +12,7 @@
 //! distributions for these models.
 
 use super::{MaxwellSlip, PrandtlIshlinskii, ZooLoop};
+use crate::cycles::{Cycle, HistoryEnergy};
 use crate::error::{SamplesError, ZooError};
 use crate::input::TurningPoints;
 use crate::loops::LoopPoint;
@@ -226,6 +227,14 @@ impl ZooModel {
     /// See [`ZooLoop::new`].
     pub fn loops(&self, input: &TurningPoints) -> Result<ZooLoop, ZooError> {
         each!(self, m => ZooLoop::new(m, input))
+    }
+
+    /// The energies of each full cycle of `cycles` (counted on the history `u`, e.g. by
+    /// [`crate::cycles::count_cycles`]) along this model's path from rest at `u[0]`, filled
+    /// into the cycles, and the totals over the history (`docs/mathematics.md`, (H1)).
+    pub fn cycle_energies(&self, u: &[f64], cycles: &mut [Cycle]) -> HistoryEnergy {
+        let u0 = u.first().copied().unwrap_or(0.0);
+        each!(self, m => super::history::cycle_energies(m, m.rest(u0), u, cycles))
     }
 
     /// The periodic response of `hl` (computed by [`Self::loops`] of this model) at `rhos`.
