@@ -401,7 +401,7 @@ impl ModelArgs {
     pub(crate) fn build(&self) -> Result<ModelChoice> {
         if let Some(spec) = self.model.zoo() {
             bail!(
-                "--model {}: this command takes {} (the models of the zoo work with `lugre loop`)",
+                "--model {}: this command takes {} (the models of the zoo work with `lugre loop` and `lugre cycles`)",
                 spec.name,
                 Family::ALL.map(|f| f.name()).join(" or ")
             );

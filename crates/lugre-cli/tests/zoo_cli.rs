@@ -143,10 +143,42 @@ fn bad_requests_of_the_zoo_get_one_line() {
     );
     rejects(
         &["simulate", "--model", "maxwell-slip", "--sine", "1,1"],
-        "--model maxwell-slip: this command takes lugre or dahl (the models of the zoo work with `lugre loop`)",
+        "--model maxwell-slip: this command takes lugre or dahl (the models of the zoo work with `lugre loop` and `lugre cycles`)",
     );
     rejects(
         &["loop", "--model", "bouc", "--turning-points", TURNING],
         "bouc",
+    );
+}
+
+#[test]
+fn cycles_of_a_history_along_every_model_of_the_table() {
+    let values = [0.0, 4.0, 1.0, 3.0, -4.0, -1.0, -3.0, 4.0, 0.0];
+    let text = "0,4,1,3,-4,-1,-3,4,0";
+    for spec in MODELS {
+        let doc = accepts_json(&["cycles", "--model", spec.name, "--values", text, "--json"]);
+        assert_eq!(doc["model"]["kind"], spec.name);
+        let mut history = lugre::cycles::count_cycles(&values, 0.0).unwrap();
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        let totals = model.cycle_energies(&values, &mut history.cycles);
+        assert_eq!(f(&doc["history"]["work"]), totals.work, "{}", spec.name);
+        assert_eq!(f(&doc["history"]["dissipation"]), totals.dissipation);
+        let full: Vec<&lugre::Cycle> = history.cycles.iter().filter(|c| c.is_full()).collect();
+        let got: Vec<&serde_json::Value> = doc["cycles"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| f(&c["count"]) == 1.0)
+            .collect();
+        assert_eq!(got.len(), full.len());
+        for (g, c) in got.iter().zip(&full) {
+            let e = c.energy.unwrap();
+            assert_eq!(f(&g["work"]), e.arc.work, "{}", spec.name);
+            assert_eq!(f(&g["closure_gap"]), e.arc.closure_gap);
+        }
+    }
+    rejects(
+        &["cycles", "--model", "maxwell-slip", "--x0", "1", "--values", text],
+        "--x0 is the initial bristle state of LuGre and Dahl; the Maxwell-slip model starts from rest",
     );
 }

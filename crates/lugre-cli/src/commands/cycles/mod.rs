@@ -134,11 +134,16 @@ impl CyclesArgs {
     }
 }
 
-/// The model and initial state, when energies are wanted.
-struct Energy {
-    model: ModelChoice,
-    x0: f64,
+/// The model and initial state, when energies are wanted: LuGre or Dahl from `x0`, or a model
+/// of the zoo from rest.
+enum Energy {
+    Classic { model: ModelChoice, x0: f64 },
+    Zoo(lugre::zoo::ZooModel),
 }
+
+/// The most samples a history may have for the energies of a model of the zoo (held in memory:
+/// the states at the open cycles' starts are kept until their closures, `lugre::zoo`).
+const MAX_ZOO_SAMPLES: usize = 1 << 27;
 
 /// The request, from the flags (all checked before any input is read).
 struct Request<'a> {
@@ -152,9 +157,12 @@ struct Request<'a> {
 impl Request<'_> {
     /// The counter, with the energies of the model when one is named.
     fn counter(&self) -> Result<CycleCounter, lugre::HistoryError> {
-        let model = self.energy.as_ref().map(|e| e.model.rate_independent());
-        let x0 = self.energy.as_ref().map_or(0.0, |e| e.x0);
-        CycleCounter::new(self.gate)?.with_energy(model, x0)
+        match &self.energy {
+            Some(Energy::Classic { model, x0 }) => {
+                CycleCounter::new(self.gate)?.with_energy(Some(model.rate_independent()), *x0)
+            }
+            _ => CycleCounter::new(self.gate),
+        }
     }
 
     /// A counter's error, naming the input.
@@ -169,6 +177,9 @@ impl Request<'_> {
         sink: &mut S,
         check: impl Fn(&mut S) -> Result<()>,
     ) -> Result<CycleSummary> {
+        if let Some(Energy::Zoo(model)) = &self.energy {
+            return self.count_zoo(model, sink, check);
+        }
         let mut counter = self.counter()?;
         self.source.each_block(|block| {
             counter
@@ -177,6 +188,49 @@ impl Request<'_> {
             check(sink)
         })?;
         let summary = counter.finish(sink).map_err(|e| self.source_error(e))?;
+        check(sink)?;
+        check_history(&summary)?;
+        Ok(summary)
+    }
+}
+
+impl Request<'_> {
+    /// [`Self::count`] with the energies of a model of the zoo: the history in memory, counted,
+    /// each full cycle's energy along the model's path from rest, then the reversals and the
+    /// cycles passed to `sink`.
+    fn count_zoo<S: CycleSink>(
+        &self,
+        model: &lugre::zoo::ZooModel,
+        sink: &mut S,
+        check: impl Fn(&mut S) -> Result<()>,
+    ) -> Result<CycleSummary> {
+        let mut u = Vec::new();
+        self.source.each_block(|block| {
+            if u.len() + block.len() > MAX_ZOO_SAMPLES {
+                bail!(
+                    "{}: more than {MAX_ZOO_SAMPLES} samples; the energies of the {} model hold the history in memory (count the cycles without a model, or split the history)",
+                    self.source.name(),
+                    model.spec().label
+                );
+            }
+            u.extend_from_slice(block);
+            Ok(())
+        })?;
+        let mut counter = self.counter()?;
+        let mut history = lugre::cycles::Collect::default();
+        counter
+            .push_all(&u, &mut history)
+            .map_err(|e| self.source_error(e))?;
+        let mut summary = counter
+            .finish(&mut history)
+            .map_err(|e| self.source_error(e))?;
+        summary.energy = Some(model.cycle_energies(&u, &mut history.cycles));
+        for r in history.reversals {
+            sink.reversal(r);
+        }
+        for c in history.cycles {
+            sink.cycle(c);
+        }
         check(sink)?;
         check_history(&summary)?;
         Ok(summary)
@@ -260,7 +314,15 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
     let gate = args.gate.unwrap_or(0.0);
     // Validated here so that a bad flag is reported before any input is read.
     let counter = CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
-    let energy = if args.wants_energy() {
+    let energy = if let Some(model) = args.model.build_zoo()? {
+        if args.x0.is_some() {
+            bail!(
+                "--x0 is the initial bristle state of LuGre and Dahl; the {} model starts from rest",
+                model.spec().label
+            );
+        }
+        Some(Energy::Zoo(model))
+    } else if args.wants_energy() {
         // Values given are checked first, then that the model is named.
         let model = args.model.build()?;
         args.model.check_named(Needed::RateIndependent)?;
@@ -268,7 +330,7 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
         counter
             .with_energy(model.rate_independent(), x0)
             .map_err(|e| anyhow!("--x0: {e}"))?;
-        Some(Energy { model, x0 })
+        Some(Energy::Classic { model, x0 })
     } else {
         None
     };

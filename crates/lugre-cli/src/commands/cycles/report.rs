@@ -39,12 +39,20 @@ impl Report {
         j.field(",\"gate\":", gate)?;
         match (energy, s.energy) {
             (Some(e), Some(h)) => {
-                let ri = e.model.rate_independent();
                 j.raw(",\"model\":")?;
-                j.raw(&e.model.to_json().to_string())?;
-                j.field(",\"x0\":", e.x0)?;
-                j.field(",\"g0\":", ri.g0())?;
-                j.field(",\"a\":", ri.a())?;
+                match e {
+                    Energy::Classic { model, x0 } => {
+                        let ri = model.rate_independent();
+                        j.raw(&model.to_json().to_string())?;
+                        j.field(",\"x0\":", *x0)?;
+                        j.field(",\"g0\":", ri.g0())?;
+                        j.field(",\"a\":", ri.a())?;
+                    }
+                    Energy::Zoo(model) => {
+                        j.raw(&crate::zoo_args::zoo_json(model).to_string())?;
+                        j.raw(",\"x0\":null,\"g0\":null,\"a\":null")?;
+                    }
+                }
                 j.field(",\"history\":{\"y_start\":", h.y_start)?;
                 j.field(",\"y_end\":", h.y_end)?;
                 j.field(",\"work\":", h.work)?;
@@ -131,16 +139,22 @@ impl Report {
             if s.half_cycles == 1 { "cycle" } else { "cycles" },
             sig(self.max_range, 10)
         )?;
-        if let Some(e) = energy {
-            let ri = e.model.rate_independent();
-            writeln!(out, "{}", e.model.describe(Needed::RateIndependent))?;
-            writeln!(
-                out,
-                "g(0) = {}   a = sigma0/g(0) = {}   y*(0) = sigma0 x0 = {}",
-                sig(ri.g0(), 10),
-                sig(ri.a(), 10),
-                sig(ri.sigma0() * e.x0, 10)
-            )?;
+        match energy {
+            Some(Energy::Classic { model, x0 }) => {
+                let ri = model.rate_independent();
+                writeln!(out, "{}", model.describe(Needed::RateIndependent))?;
+                writeln!(
+                    out,
+                    "g(0) = {}   a = sigma0/g(0) = {}   y*(0) = sigma0 x0 = {}",
+                    sig(ri.g0(), 10),
+                    sig(ri.a(), 10),
+                    sig(ri.sigma0() * x0, 10)
+                )?;
+            }
+            Some(Energy::Zoo(model)) => {
+                writeln!(out, "{}; from rest", crate::zoo_args::zoo_line(model))?;
+            }
+            None => {}
         }
         Ok(())
     }
