@@ -824,8 +824,9 @@ fn list(best: &[(&'static str, f64)]) -> String {
         .join(", ")
 }
 
-/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii), or a
-/// loop of one that cannot be computed. Element parameters are named with their index.
+/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii,
+/// Bouc-Wen), or a loop of one that cannot be computed. Element parameters are named with
+/// their index.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ZooError {
@@ -860,6 +861,13 @@ pub enum ZooError {
     /// positive on the stretch starting at threshold `r`.
     #[error("the initial-loading slope w0 + sum of weights with threshold <= {threshold} is {slope}; it must be > 0 (weights sorted by threshold)", threshold = num(*.threshold), slope = num(*.slope))]
     NotIncreasing { threshold: f64, slope: f64 },
+    /// A scalar parameter of a model outside its domain: `condition` says the domain and why.
+    #[error("{name} must be {condition}, got {value}", value = num(*.value))]
+    Domain {
+        name: &'static str,
+        value: f64,
+        condition: &'static str,
+    },
     #[error("{elements} elements x {turning_points} turning points exceed the {limit} element states a loop may hold")]
     TooLarge {
         elements: usize,
