@@ -74,7 +74,7 @@
 //!
 //! with `R`, `Q` bounded and analytic in `e` near 0. Near `v = 0`, where `|v|^n` is not smooth,
 //! each function is its power series in `y = c t^n` or `y = v^n`, used while `y <= 1/8`
-//! (a geometric series of ratio 1/8: 19 terms reach 1e-17):
+//! (a geometric series of ratio 1/8: 21 terms, coefficients precomputed, reach 1e-18):
 //!
 //! ```text
 //! (B10) T_-(t) = t sum_k (-y)^k / (kn + 1),   E_-(t) = t² y sum_k (-y)^k / ((k+1) n + 2)
@@ -376,6 +376,7 @@ struct General {
     neg: Option<Antiderivatives>,
     /// `(T_-, E_-)` at `t0`.
     neg_at_t0: (f64, f64),
+    series: Series,
     /// The positive part's series holds on `v <= v0`, the table in `e` on `[0, 1 - v0]`.
     v0: f64,
     pos: Antiderivatives,
@@ -409,30 +410,48 @@ fn bernoulli_gap(n: f64, e: f64) -> f64 {
     sum
 }
 
-/// `(T_-(t), E_-(t))` by the series (B10), `y = c t^n <= 1/8`.
-fn neg_series(n: f64, c: f64, t: f64) -> (f64, f64) {
-    let y = c * t.powf(n);
-    let (mut time, mut loss, mut power, mut k) = (0.0, 0.0, 1.0f64, 0.0);
-    while power.abs() > 1e-18 || k == 0.0 {
-        time += power / (k * n + 1.0);
-        loss += power / ((k + 1.0) * n + 2.0);
-        power *= -y;
-        k += 1.0;
-    }
-    (t * time, t * t * y * loss)
+/// Terms of the series (B10): `y <= 1/8`, so the dropped terms are below `8^-21 < 1e-18`.
+const SERIES: usize = 21;
+
+/// The coefficients of (B10): `1/(kn + 1)`, `1/((k+1) n + 2)`, `1/(kn + 2)`.
+#[derive(Debug, Clone, PartialEq)]
+struct Series {
+    a: [f64; SERIES],
+    b: [f64; SERIES],
+    d: [f64; SERIES],
 }
 
-/// `(R, Q)` at `v = 1 - e` by the series (B10), `y = v^n <= 1/8`.
-fn pos_series(n: f64, v: f64) -> (f64, f64) {
-    let y = v.powf(n);
-    let (mut time, mut q, mut power, mut k) = (1.0, 0.0, y, 1.0);
-    while power > 1e-18 {
-        time += power / (k * n + 1.0);
-        q += power * (1.0 / (k * n + 1.0) - v / (k * n + 2.0));
-        power *= y;
-        k += 1.0;
+impl Series {
+    fn new(n: f64) -> Self {
+        let k = |k: usize| k as f64;
+        Self {
+            a: std::array::from_fn(|i| 1.0 / (k(i) * n + 1.0)),
+            b: std::array::from_fn(|i| 1.0 / ((k(i) + 1.0) * n + 2.0)),
+            d: std::array::from_fn(|i| 1.0 / (k(i) * n + 2.0)),
+        }
     }
-    (v * time + (-v).ln_1p() / n, -v - v * q)
+
+    /// `(T_-(t), E_-(t))`, `y = c t^n <= 1/8`.
+    #[inline]
+    fn negative(&self, t: f64, y: f64) -> (f64, f64) {
+        let (mut time, mut loss) = (0.0, 0.0);
+        for k in (0..SERIES).rev() {
+            time = time * -y + self.a[k];
+            loss = loss * -y + self.b[k];
+        }
+        (t * time, t * t * y * loss)
+    }
+
+    /// `(R, Q)` at `v`, `y = v^n <= 1/8`.
+    #[inline]
+    fn positive(&self, n: f64, v: f64, y: f64) -> (f64, f64) {
+        let (mut time, mut q) = (0.0, 0.0);
+        for k in (1..SERIES).rev() {
+            time = time * y + self.a[k];
+            q = q * y + (self.a[k] - v * self.d[k]);
+        }
+        (v * (1.0 + y * time) + (-v).ln_1p() / n, -v - v * y * q)
+    }
 }
 
 impl General {
@@ -464,14 +483,16 @@ impl General {
             ]
         };
         let pos = Antiderivatives::new(&f, 0.0, e1, tolerance)?;
-        let (r1, q1) = pos_series(n, v0);
+        let series = Series::new(n);
+        let (r1, q1) = series.positive(n, v0, v0.powf(n));
         let (f1, f2) = pos.eval_both(e1);
         Some(Self {
             n,
             c,
             t0,
             neg,
-            neg_at_t0: neg_series(n, c, t0),
+            neg_at_t0: series.negative(t0, c * t0.powf(n)),
+            series,
             v0,
             pos,
             shift: (r1 - f1, q1 - f2),
@@ -486,7 +507,7 @@ impl General {
                 let (a, b) = table.eval_both(t);
                 (self.neg_at_t0.0 + a, self.neg_at_t0.1 + b)
             }
-            _ => neg_series(self.n, self.c, t),
+            _ => self.series.negative(t, self.c * t.powf(self.n)),
         }
     }
 
@@ -495,7 +516,7 @@ impl General {
     fn neg_time(&self, t: f64) -> f64 {
         match &self.neg {
             Some(table) if t > self.t0 => self.neg_at_t0.0 + table.eval(0, t),
-            _ => neg_series(self.n, self.c, t).0,
+            _ => self.series.negative(t, self.c * t.powf(self.n)).0,
         }
     }
 
@@ -503,7 +524,7 @@ impl General {
     #[inline]
     fn pos(&self, v: f64, e: f64) -> (f64, f64) {
         if v <= self.v0 {
-            pos_series(self.n, v)
+            self.series.positive(self.n, v, v.powf(self.n))
         } else {
             let (a, b) = self.pos.eval_both(e);
             (self.shift.0 + a, self.shift.1 + b)
@@ -514,7 +535,7 @@ impl General {
     #[inline]
     fn pos_r(&self, v: f64, e: f64) -> f64 {
         if v <= self.v0 {
-            pos_series(self.n, v).0
+            self.series.positive(self.n, v, v.powf(self.n)).0
         } else {
             self.shift.0 + self.pos.eval(0, e)
         }

@@ -168,7 +168,7 @@ def main():
     print("// (kx, kw, rho, sigma, n), turning points, periodic force at each,")
     print("// loops (u_A, u_B, work, dissipation, stored_energy_change, closure_gap), major first")
     print("#[rustfmt::skip]")
-    print("const PERIODIC: &[([f64; 5], &[f64], &[f64], &[[f64; 6]])] = &[")
+    print("const PERIODIC: &[Case] = &[")
     for p, u, force, lp in cases:
         print("    (")
         print("        [" + ", ".join(r(x) for x in p) + "],")
