@@ -28,6 +28,9 @@
 5. Steady-state sweeps: lugre.sweep on a 50 x 50 grid of amplitudes and frequencies against
    scipy's Radau simulating points to their steady state at the same accuracy
    (bench/compare_sweep.py).
+6. Bouc-Wen: lugre's exact segment map (lugre::zoo::BoucWen, timed through the example binary
+   crates/lugre/examples/bouc_wen_loops.rs) against openseespy's BoucWen material on the same
+   periodic strain history, both scored against scipy (bench/compare_bouc_wen.py).
 
 Prints one table: case, method, time, error or agreement, ratio (time / lugre's time).
 See bench/README.md for the options and what exactly is timed.
@@ -57,7 +60,8 @@ STAGE_ENV = "LUGRE_BENCH_IN_VENV"
 TARGET = os.path.join(ROOT, os.environ.get("CARGO_TARGET_DIR", "target"))
 LUGRE_EXE = os.path.join(TARGET, "release", "lugre")
 
-REQUIREMENTS = ["numpy", "scipy", "rainflow>=3,<4", "mpmath", "mujoco>=3.7", "maturin==1.16.*"]
+REQUIREMENTS = ["numpy", "scipy", "rainflow>=3,<4", "mpmath", "mujoco>=3.7", "openseespy==3.7.1.2",
+                "maturin==1.16.*"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -596,6 +600,10 @@ def compare(args: argparse.Namespace) -> None:
         sys.path.insert(0, HERE)
         from compare_sweep import sweep_rows
         sweep_rows(rows, summary, log, fmt_time, fmt_ratio)
+    if args.only in (None, "bouc-wen"):
+        sys.path.insert(0, HERE)
+        from compare_bouc_wen import bouc_wen_rows
+        bouc_wen_rows(rows, summary, log, fmt_time, fmt_ratio)
     elapsed = time.perf_counter() - start
     end_load = machine_info()["load"]
 
@@ -629,9 +637,9 @@ def parse_args(argv):
                     help="use the environment as it is (no pip install, no build)")
     ap.add_argument("--no-build", action="store_true", help="install the PyPI packages but do not rebuild lugre")
     ap.add_argument("--no-cli", action="store_true", help="skip the `lugre` CLI rows (and its build)")
-    ap.add_argument("--only", choices=("simulation", "rainflow", "dynamics", "sweep"),
-                    help="run only the simulation cases, the rainflow counting, the closed-loop dynamics "
-                         "or the steady-state sweep")
+    ap.add_argument("--only", choices=("simulation", "rainflow", "dynamics", "sweep", "bouc-wen"),
+                    help="run only the simulation cases, the rainflow counting, the closed-loop dynamics, "
+                         "the steady-state sweep or Bouc-Wen against openseespy")
     ap.add_argument("--quick", action="store_true",
                     help="a smoke test: 10 / 2 periods, 10^5 and 10^6 samples, rtol 1e-6 and 1e-10")
     ap.add_argument("--rtols", type=lambda s: [float(v) for v in s.split(",")], default=None,

@@ -76,7 +76,7 @@ fn help(p: &ZooParameter) -> String {
     let default: Vec<String> = p.default.iter().map(|v| sig(*v, 10)).collect();
     format!(
         "{capitalized}: {} [{}]{shape} ({}; default {})",
-        p.domain,
+        p.domain.text(),
         p.unit,
         models_with(p.name),
         default.join(",")

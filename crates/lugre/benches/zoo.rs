@@ -2,10 +2,12 @@
 //! periodic inputs of random turning points, in turning points per second: every model of the
 //! zoo's table on its defaults through `ZooModel` (target: at least 5 x 10^6 turning points per
 //! second each), Maxwell-slip with 100 elements (target: at least 10^6) and Prandtl-Ishlinskii
-//! with 100 play operators. The work per turning point is one segment map of the model.
+//! with 100 play operators (one segment map of every element per turning point), Bouc-Wen at
+//! n = 1 (closed form) and n = 1.5, 2.5 (tables and Newton): one state, its periodic state by
+//! Newton on the period map.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use lugre::zoo::{MaxwellSlip, PrandtlIshlinskii};
+use lugre::zoo::{BoucWen, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
 use std::hint::black_box;
 
 mod common;
@@ -38,24 +40,29 @@ fn zoo(c: &mut Criterion) {
         }
         group.finish();
     }
-    for (name, bank) in [
-        ("maxwell_slip_100", maxwell.bank()),
-        ("prandtl_ishlinskii_100", prandtl.bank()),
-    ] {
-        let mut group = c.benchmark_group(name);
-        group.sample_size(10);
-        for n in [1_000, 100_000] {
-            let tp = random_turning_points(n, 1.0);
-            group.throughput(Throughput::Elements(n as u64));
-            group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
-                b.iter(|| {
-                    let hl = lugre::zoo::ZooLoop::new(bank, black_box(tp)).expect("finite");
-                    black_box(hl.loops().len())
-                })
-            });
-        }
-        group.finish();
+    loops(c, "maxwell_slip_100", maxwell.bank());
+    loops(c, "prandtl_ishlinskii_100", prandtl.bank());
+    for n in [1.0, 1.5, 2.5] {
+        let model = BoucWen::new(0.5, 1.0, 4.0, 0.75, n).expect("valid parameters");
+        loops(c, &format!("bouc_wen_n{n}"), &model);
     }
+}
+
+/// The loops of `model` for 10^3 and 10^5 random turning points.
+fn loops<M: Segmental>(c: &mut Criterion, name: &str, model: &M) {
+    let mut group = c.benchmark_group(name);
+    group.sample_size(10);
+    for n in [1_000, 100_000] {
+        let tp = random_turning_points(n, 1.0);
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_with_input(BenchmarkId::from_parameter(n), &tp, |b, tp| {
+            b.iter(|| {
+                let hl = ZooLoop::new(model, black_box(tp)).expect("finite");
+                black_box(hl.loops().len())
+            })
+        });
+    }
+    group.finish();
 }
 
 criterion_group!(benches, zoo);

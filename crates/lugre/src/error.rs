@@ -824,8 +824,9 @@ fn list(best: &[(&'static str, f64)]) -> String {
         .join(", ")
 }
 
-/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii), or a
-/// loop of one that cannot be computed. Element parameters are named with their index.
+/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii,
+/// Bouc-Wen), or a loop of one that cannot be computed. Element parameters are named with
+/// their index.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ZooError {
@@ -868,15 +869,15 @@ pub enum ZooError {
         name: String,
         known: String,
     },
-    /// A scalar parameter outside its domain (`condition` as the table writes it).
-    #[error("{name} must be {condition}, got {value}", value = num(*.value))]
-    Scalar {
-        name: &'static str,
-        condition: &'static str,
-        value: f64,
-    },
     #[error("{name} takes one value, got {count}")]
     NotScalar { name: &'static str, count: usize },
+    /// A scalar parameter of a model outside its domain: `condition` says the domain and why.
+    #[error("{name} must be {condition}, got {value}", value = num(*.value))]
+    Domain {
+        name: &'static str,
+        value: f64,
+        condition: &'static str,
+    },
     #[error("{elements} elements x {turning_points} turning points exceed the {limit} element states a loop may hold")]
     TooLarge {
         elements: usize,

@@ -653,16 +653,6 @@ fn a_single_state_model_gives_the_loops_of_lugres_engine() {
     }
 }
 
-/// A value outside the domain the table states for a parameter.
-fn outside(domain: &str) -> f64 {
-    match domain {
-        "> 0" => 0.0,
-        ">= 0" => -1.0,
-        "finite" => f64::NAN,
-        other => panic!("a domain the test does not know: {other}"),
-    }
-}
-
 #[test]
 fn every_model_of_the_table_runs_on_its_defaults_and_refuses_its_domains() {
     use lugre::zoo::{Shape, ZooModel, MODELS};
@@ -693,7 +683,7 @@ fn every_model_of_the_table_runs_on_its_defaults_and_refuses_its_domains() {
                 p.default.len()
             };
             let mut bad = p.default.to_vec();
-            bad[n - 1] = outside(p.domain);
+            bad[n - 1] = p.domain.outside();
             let err = ZooModel::new(spec.name, &[(p.name, &bad)]).unwrap_err();
             assert!(err.to_string().contains(p.name), "{}: {err}", p.name);
         }

@@ -57,6 +57,7 @@
 //! `(u_max + u_min)/2`. The pairing engine of [`crate::loops`] carries LuGre's relaxation sums;
 //! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
+mod bouc_wen;
 mod engine;
 mod history;
 mod maxwell;
@@ -64,11 +65,12 @@ mod prandtl;
 mod segment;
 mod table;
 
+pub use bouc_wen::BoucWen;
 pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};
-pub use table::{model_names, Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
+pub use table::{model_names, Domain, Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 
 use crate::kernel::ArcEnergy;
 
@@ -279,10 +281,10 @@ pub(crate) fn check_scalar(
     if value.is_finite() && ok {
         Ok(value)
     } else {
-        Err(crate::error::ZooError::Scalar {
+        Err(crate::error::ZooError::Domain {
             name,
-            condition,
             value,
+            condition,
         })
     }
 }

@@ -44,7 +44,7 @@ impl PrandtlIshlinskii {
     /// # Errors
     /// [`ZooError::Empty`] without operators, [`ZooError::LengthMismatch`],
     /// [`ZooError::NotFinite`] / [`ZooError::Negative`] (thresholds) naming the element,
-    /// [`ZooError::Scalar`] for `linear_weight` not finite and positive,
+    /// [`ZooError::Domain`] for `linear_weight` not finite and positive,
     /// [`ZooError::NotIncreasing`] when (P4) fails.
     pub fn new(linear_weight: f64, thresholds: &[f64], weights: &[f64]) -> Result<Self, ZooError> {
         check_lengths(("thresholds", thresholds.len()), ("weights", weights.len()))?;

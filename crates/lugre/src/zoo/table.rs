@@ -11,7 +11,7 @@
 //! LuGre's default loop on one figure; the literature has no canonical element
 //! distributions for these models.
 
-use super::{MaxwellSlip, PrandtlIshlinskii, ZooLoop};
+use super::{BoucWen, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
 use crate::cycles::{Cycle, HistoryEnergy};
 use crate::error::{SamplesError, ZooError};
 use crate::input::TurningPoints;
@@ -35,11 +35,47 @@ pub struct ZooParameter {
     pub unit: &'static str,
     /// What it is, in a few words.
     pub description: &'static str,
-    /// The values it may take, as the messages write them (each checked by the model's `new`).
-    pub domain: &'static str,
+    /// The values it may take (each checked by the model's `new`; a test checks they agree).
+    pub domain: Domain,
     pub shape: Shape,
     /// The default: one value for a scalar, the default elements for an array.
     pub default: &'static [f64],
+}
+
+/// The values a parameter of the zoo may take (each value of an element array alike).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Domain {
+    /// Finite and `> 0`.
+    Positive,
+    /// Finite and `>= 0`.
+    NonNegative,
+    /// Finite.
+    Finite,
+    /// Finite and in `[lo, hi]`.
+    Closed(f64, f64),
+}
+
+impl Domain {
+    /// The condition as help texts write it: `> 0`, `>= 0`, `finite`, `in [1, 100]`.
+    pub fn text(&self) -> String {
+        match self {
+            Domain::Positive => "> 0".into(),
+            Domain::NonNegative => ">= 0".into(),
+            Domain::Finite => "finite".into(),
+            Domain::Closed(lo, hi) if hi.is_infinite() => format!(">= {lo}"),
+            Domain::Closed(lo, hi) => format!("in [{lo}, {hi}]"),
+        }
+    }
+
+    /// A value outside the domain (for the test that each model's `new` refuses it).
+    pub fn outside(&self) -> f64 {
+        match self {
+            Domain::Positive => 0.0,
+            Domain::NonNegative => -1.0,
+            Domain::Finite => f64::NAN,
+            Domain::Closed(lo, _) => lo - 0.5 * lo.abs().max(1.0),
+        }
+    }
 }
 
 /// What a model of the zoo is and what lugre does with it.
@@ -68,7 +104,7 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             name: "stiffness",
             unit: "N/m",
             description: "element stiffnesses k_i",
-            domain: "> 0",
+            domain: Domain::Positive,
             shape: Shape::Elements,
             default: &[0.25, 0.25, 0.25, 0.25],
         },
@@ -76,7 +112,7 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             name: "slip_force",
             unit: "N",
             description: "element slip forces f_i",
-            domain: "> 0",
+            domain: Domain::Positive,
             shape: Shape::Elements,
             default: &[0.125, 0.375, 0.625, 0.875],
         },
@@ -94,7 +130,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             name: "linear_weight",
             unit: "N/m",
             description: "weight w0 of the input itself",
-            domain: "> 0",
+            domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[0.25],
         },
@@ -102,7 +138,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             name: "thresholds",
             unit: "m",
             description: "play-operator thresholds r_i",
-            domain: ">= 0",
+            domain: Domain::NonNegative,
             shape: Shape::Elements,
             default: &[0.5, 1.5, 2.5, 3.5],
         },
@@ -110,7 +146,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             name: "weights",
             unit: "N/m",
             description: "play-operator weights w_i (the loading slope w0 + sum of w_i with r_i <= r stays > 0)",
-            domain: "finite",
+            domain: Domain::Finite,
             shape: Shape::Elements,
             default: &[0.25, 0.25, 0.125, 0.125],
         },
@@ -118,8 +154,58 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
     closes_minor_loops: true,
 };
 
+const BOUC_WEN: ZooModelSpec = ZooModelSpec {
+    name: "bouc-wen",
+    label: "Bouc-Wen",
+    equations: "F = kx u + kw w, w' = rho (u' - sigma |u'| |w|^(n-1) w + (sigma - 1) u' |w|^n)",
+    reference: "Ikhouane and Rodellar, Systems with Hysteresis, Wiley 2007 (the normalized form)",
+    parameters: &[
+        ZooParameter {
+            name: "kx",
+            unit: "N/m",
+            description: "stiffness of the elastic part",
+            domain: Domain::NonNegative,
+            shape: Shape::Scalar,
+            default: &[0.0],
+        },
+        ZooParameter {
+            name: "kw",
+            unit: "N",
+            description: "force of the hysteretic part (|w| <= 1)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[2.0],
+        },
+        ZooParameter {
+            name: "rho",
+            unit: "1/m",
+            description: "inverse length of the hysteretic part (initial stiffness kx + kw rho)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[0.5],
+        },
+        ZooParameter {
+            name: "sigma",
+            unit: "1",
+            description: "shape: 1/2 linear unloading, 1 the Dahl model (n = 1); beta / (beta + gamma) of the classical form",
+            domain: Domain::Closed(0.5, f64::INFINITY),
+            shape: Shape::Scalar,
+            default: &[2.0 / 3.0],
+        },
+        ZooParameter {
+            name: "n",
+            unit: "1",
+            description: "sharpness of the transition to the plateau",
+            domain: Domain::Closed(1.0, super::bouc_wen::MAX_EXPONENT),
+            shape: Shape::Scalar,
+            default: &[1.0],
+        },
+    ],
+    closes_minor_loops: false,
+};
+
 /// Every model of the zoo, in the order `--help` lists them.
-pub const MODELS: [ZooModelSpec; 2] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII];
+pub const MODELS: [ZooModelSpec; 3] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII, BOUC_WEN];
 
 impl ZooModelSpec {
     /// The model called `name` (case-insensitive, blanks around ignored).
@@ -147,6 +233,7 @@ impl ZooModelSpec {
 pub enum ZooModel {
     MaxwellSlip(MaxwellSlip),
     PrandtlIshlinskii(PrandtlIshlinskii),
+    BoucWen(BoucWen),
 }
 
 /// Runs `$body` with `$m` bound to the concrete model (one dispatch for every method).
@@ -159,6 +246,10 @@ macro_rules! each {
             }
             ZooModel::PrandtlIshlinskii(x) => {
                 let $m = x.bank();
+                $body
+            }
+            ZooModel::BoucWen(x) => {
+                let $m = x;
                 $body
             }
         }
@@ -187,10 +278,17 @@ impl ZooModel {
             "maxwell-slip" => {
                 Self::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
             }
-            _ => Self::PrandtlIshlinskii(PrandtlIshlinskii::new(
+            "prandtl-ishlinskii" => Self::PrandtlIshlinskii(PrandtlIshlinskii::new(
                 value("linear_weight")[0],
                 value("thresholds"),
                 value("weights"),
+            )?),
+            _ => Self::BoucWen(BoucWen::new(
+                value("kx")[0],
+                value("kw")[0],
+                value("rho")[0],
+                value("sigma")[0],
+                value("n")[0],
             )?),
         })
     }
@@ -200,6 +298,7 @@ impl ZooModel {
         match self {
             Self::MaxwellSlip(_) => &MODELS[0],
             Self::PrandtlIshlinskii(_) => &MODELS[1],
+            Self::BoucWen(_) => &MODELS[2],
         }
     }
 
@@ -212,6 +311,10 @@ impl ZooModel {
                 m.thresholds().to_vec(),
                 m.weights().to_vec(),
             ],
+            Self::BoucWen(m) => [m.kx(), m.kw(), m.rho(), m.sigma(), m.n()]
+                .iter()
+                .map(|&x| vec![x])
+                .collect(),
         };
         self.spec()
             .parameters

@@ -1,0 +1,639 @@
+//! The normalized Bouc-Wen model (Ikhouane and Rodellar, "Systems with Hysteresis", Wiley
+//! 2007, ch. 2; Ikhouane, Mañosa and Rodellar, "Dynamic properties of the hysteretic Bouc-Wen
+//! model", Systems & Control Letters 56, 2007), its exact segment map and energies
+//! (`docs/mathematics.md#bouc-wen`).
+//!
+//! Input `u` (m), output `F` (N), state `w` (1), parameters `kx` (N/m), `kw` (N), `rho` (1/m),
+//! `sigma` (1), `n` (1):
+//!
+//! ```text
+//! (B1)  F = kx u + kw w
+//! (B2)  w' = rho (u' - sigma |u'| |w|^(n-1) w + (sigma - 1) u' |w|^n)
+//! ```
+//!
+//! The classical form `z' = A u' - beta |u'| |z|^(n-1) z - gamma u' |z|^n`,
+//! `F = alpha k u + (1 - alpha) k z` maps onto it by `z0 = (A / (beta + gamma))^(1/n)`,
+//! `w = z / z0`, `rho = A / z0`, `sigma = beta / (beta + gamma)`, `kx = alpha k`,
+//! `kw = (1 - alpha) k z0`.
+//!
+//! # Domains
+//!
+//! `rho > 0`, `sigma >= 1/2`, `n >= 1` are the class of Ikhouane, Mañosa and Rodellar that is
+//! bounded-input bounded-output for every initial state (`A > 0`, `beta + gamma > 0`,
+//! `beta >= gamma`; `n >= 1` makes (B2) Lipschitz, so its solution unique); `sigma >= 1/2` is
+//! also exactly what makes the dissipation (B5) nonnegative. `kw > 0`, `kx >= 0` (`kx = 0`:
+//! no elastic part, the Dahl model when `n = 1`, `sigma = 1`). The state stays in
+//! `[-1, 1]` ([`SingleState::bounds`]).
+//!
+//! # Segment map
+//!
+//! On a monotone segment of direction `s = ±1` let `v = s w` and `tau = rho s (u - u_a) >= 0`:
+//!
+//! ```text
+//! (B3)  dv/dtau = h(v) = 1 - v^n            (v >= 0)
+//!                      = 1 + c |v|^n        (v < 0),      c = 2 sigma - 1 >= 0
+//! ```
+//!
+//! `v` rises to 1 without reaching it. With `V` the stored energy, the work `W = ∫ F du`
+//! splits into
+//!
+//! ```text
+//! (B4)  V = kx u²/2 + kw w²/(2 rho)
+//! (B5)  D = W - ΔV = (kw / rho) ∫ phi(v) dtau,   phi = v^(n+1) (v >= 0), c |v|^(n+1) (v < 0)
+//! ```
+//!
+//! (`w dw/rho = w h du` on the segment, and `w - w h(w) = phi`.) For `n = 1` the map is in
+//! closed form, `t = -v` on the negative part, `K(t) = ∫_0^t c s²/(1 + c s) ds`:
+//!
+//! ```text
+//! (B6)  v < 0:  1 + c t = (1 + c t_a) e^(-c tau),  reaching 0 at tau_0 = ln(1 + c t_a) / c,
+//!               D rho / kw = K(t_a) - K(t_b),  K(t) = (ln(1 + c t) - c t + (c t)²/2) / c²
+//! (B7)  v >= 0: 1 - v = (1 - v_a) e^(-tau),
+//!               D rho / kw = tau - 2 (1 - v_a)(1 - e^(-tau)) + (1 - v_a)² (1 - e^(-2 tau)) / 2
+//! ```
+//!
+//! each through `expm1`/`ln_1p` (no exponential of a growing argument).
+//!
+//! # Any n >= 1
+//!
+//! The segment's exact relation between `tau` and `v`, and the dissipation, are integrals of
+//! known functions of `v`:
+//!
+//! ```text
+//! (B8)  tau = T(v_b) - T(v_a),   T' = 1 / h,     D rho / kw = E(v_b) - E(v_a),   E' = phi / h
+//! ```
+//!
+//! On the negative part (`t = -v`), `T_-(t) = ∫_0^t ds / (1 + c s^n)` and
+//! `E_-(t) = ∫_0^t c s^(n+1) / (1 + c s^n) ds` are bounded; on the positive part `T` and `E`
+//! grow like `-ln(1 - v) / n`, so with `e = 1 - v`, `x = -ln e`:
+//!
+//! ```text
+//! (B9)  T(v) = x / n + R(e),   E(v) = T(v) + Q(e),
+//!       R' = -(n e - P_n(e)) / (n e P_n(e)),   Q' = P_(n+1)(e) / P_n(e),   P_m = 1 - (1 - e)^m
+//! ```
+//!
+//! with `R`, `Q` bounded and analytic in `e` near 0. Near `v = 0`, where `|v|^n` is not smooth,
+//! each function is its power series in `y = c t^n` or `y = v^n`, used while `y <= 1/8`
+//! (a geometric series of ratio 1/8: 21 terms, coefficients precomputed, reach 1e-18):
+//!
+//! ```text
+//! (B10) T_-(t) = t sum_k (-y)^k / (kn + 1),   E_-(t) = t² y sum_k (-y)^k / ((k+1) n + 2)
+//!       T(v) = v sum_k y^k / (kn + 1),        Q = -v - v sum_(k>=1) y^k (1/(kn + 1) - v/(kn + 2))
+//! ```
+//!
+//! and elsewhere piecewise Chebyshev antiderivatives of the integrands, built in
+//! [`BoucWen::new`] ([`table`]): their dropped coefficients are below 1e-15, so `T`, `E`, `R`,
+//! `Q` carry an absolute error of at most ~1e-15 (the integrands are O(1) on ranges of length
+//! <= 1). Two quantities need a root: `v_b` from (B8) on the negative part, Newton in `t` on
+//! `T_-` (concave: started left of the root from the bound `t_b >= t_a - tau (1 + c t_a^n)`,
+//! its iterates rise monotonically), and on the positive part Newton in `x` on
+//! `x/n + R(e^(-x))` (concave, slope `e / P_n(e)` in `[1/n, 1]`, started at `x_a`):
+//!
+//! ```text
+//! (B11) the root to 1e-14 relative in x (1e-15 in t), so |Δw| <= 1e-14 + the tables' error;
+//!       |ΔD| <= (kw / rho) (4 eps tau + 4e-15)
+//! ```
+//!
+//! The dissipation on the positive part is `tau + Q(e_b) - Q(e_a)` (no quadrature at run
+//! time). Its absolute error is a few rounding units of `kw |Δu|` (relative to the segment's
+//! work scale, not to `D`, which vanishes at the rate `tau^3` on a short segment from `w = 0`).
+
+mod table;
+
+use super::{SingleState, ZooLoop};
+use crate::error::ZooError;
+use crate::input::TurningPoints;
+use table::Antiderivatives;
+
+/// The largest `n` accepted: `|v|^n` carries `n` rounding units, so the tables (B10) hold
+/// `T`, `E` to `1e-15 n` (1e-13 at this bound); beyond it the model is the elastic-perfectly
+/// plastic limit in all but name.
+pub const MAX_EXPONENT: f64 = 100.0;
+
+/// The normalized Bouc-Wen model (B1-B2) with validated parameters.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoucWen {
+    kx: f64,
+    kw: f64,
+    rho: f64,
+    sigma: f64,
+    n: f64,
+    shape: Shape,
+}
+
+/// How the segment map is evaluated: closed form (B6-B7) or the tables (B8-B11).
+#[derive(Debug, Clone, PartialEq)]
+enum Shape {
+    Linear { c: f64 },
+    General(Box<General>),
+}
+
+impl BoucWen {
+    /// `F = kx u + kw w`, `w' = rho (u' - sigma |u'| |w|^(n-1) w + (sigma - 1) u' |w|^n)`.
+    ///
+    /// # Errors
+    /// [`ZooError::Domain`] naming the first parameter outside its domain: `kx` finite `>= 0`,
+    /// `kw` finite `> 0`, `rho` finite `> 0`, `sigma` finite `>= 1/2` (with `2 sigma - 1`
+    /// finite), `n` finite in `[1, MAX_EXPONENT]`.
+    pub fn new(kx: f64, kw: f64, rho: f64, sigma: f64, n: f64) -> Result<Self, ZooError> {
+        check(
+            "kx",
+            kx,
+            kx.is_finite() && kx >= 0.0,
+            "a finite number >= 0 (N/m)",
+        )?;
+        check(
+            "kw",
+            kw,
+            kw.is_finite() && kw > 0.0,
+            "a finite number > 0 (N)",
+        )?;
+        check(
+            "rho",
+            rho,
+            rho.is_finite() && rho > 0.0,
+            "a finite number > 0 (1/m; A > 0 in the classical form)",
+        )?;
+        check(
+            "sigma",
+            sigma,
+            sigma.is_finite() && sigma >= 0.5 && (2.0 * sigma - 1.0).is_finite(),
+            "a finite number >= 1/2 (beta >= gamma: bounded output and nonnegative dissipation)",
+        )?;
+        check(
+            "n",
+            n,
+            n.is_finite() && (1.0..=MAX_EXPONENT).contains(&n),
+            "a finite number in [1, 100] (n >= 1: a unique solution; n <= 100: the segment map to 1e-13)",
+        )?;
+        let c = 2.0 * sigma - 1.0;
+        let shape = if n == 1.0 {
+            Shape::Linear { c }
+        } else {
+            Shape::General(Box::new(General::new(n, c).ok_or(ZooError::Overflow {
+                what: "the tables of the segment map",
+            })?))
+        };
+        Ok(Self {
+            kx,
+            kw,
+            rho,
+            sigma,
+            n,
+            shape,
+        })
+    }
+
+    /// The elastic stiffness `kx` (N/m).
+    pub fn kx(&self) -> f64 {
+        self.kx
+    }
+
+    /// The hysteretic force scale `kw` (N).
+    pub fn kw(&self) -> f64 {
+        self.kw
+    }
+
+    /// The rate `rho` (1/m) at which `w` approaches ±1.
+    pub fn rho(&self) -> f64 {
+        self.rho
+    }
+
+    /// The shape parameter `sigma` (1).
+    pub fn sigma(&self) -> f64 {
+        self.sigma
+    }
+
+    /// The exponent `n` (1).
+    pub fn n(&self) -> f64 {
+        self.n
+    }
+
+    /// The force at each turning point, from `w = w0` at `u0` (`w0` clamped to `[-1, 1]`).
+    pub fn response(&self, u0: f64, w0: f64, turning: &[f64]) -> Vec<f64> {
+        let (mut u, mut w) = (u0, w0.clamp(-1.0, 1.0));
+        turning
+            .iter()
+            .map(|&to| {
+                (w, _) = self.segment(u, w, to);
+                u = to;
+                SingleState::force(self, u, w)
+            })
+            .collect()
+    }
+
+    /// The loop and every minor loop for the periodic input `input`.
+    ///
+    /// # Errors
+    /// See [`ZooLoop::new`].
+    pub fn loops(&self, input: &TurningPoints) -> Result<ZooLoop, ZooError> {
+        ZooLoop::new(self, input)
+    }
+
+    /// `|v|^n`.
+    #[inline]
+    fn power(&self, x: f64) -> f64 {
+        if self.n == 1.0 {
+            x.abs()
+        } else {
+            x.abs().powf(self.n)
+        }
+    }
+}
+
+/// `Ok` when `ok`, else the domain error of `name`.
+fn check(
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    condition: &'static str,
+) -> Result<(), ZooError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ZooError::Domain {
+            name,
+            value,
+            condition,
+        })
+    }
+}
+
+impl SingleState for BoucWen {
+    #[inline]
+    fn force(&self, u: f64, w: f64) -> f64 {
+        self.kx * u + self.kw * w
+    }
+
+    #[inline]
+    fn stored_energy(&self, u: f64, w: f64) -> f64 {
+        0.5 * (self.kx * u * u + self.kw * w * w / self.rho)
+    }
+
+    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B11)
+    /// otherwise. `w_a` outside `[-1, 1]` is taken at the nearest bound.
+    #[inline]
+    fn segment(&self, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
+        if u_b == u_a || u_b.is_nan() || u_a.is_nan() {
+            return (w_a, 0.0);
+        }
+        let s = if u_b > u_a { 1.0 } else { -1.0 };
+        let tau = self.rho * (u_b - u_a).abs();
+        let v_a = (s * w_a).clamp(-1.0, 1.0);
+        let (v_b, d) = match &self.shape {
+            Shape::Linear { c } => linear(*c, v_a, tau),
+            Shape::General(g) => g.segment(v_a, tau),
+        };
+        (s * v_b, (self.kw / self.rho * d).max(0.0))
+    }
+
+    /// `rho h(s w)` (B3).
+    #[inline]
+    fn slope(&self, w: f64, up: bool) -> f64 {
+        let v = if up { w } else { -w };
+        let c = 2.0 * self.sigma - 1.0;
+        let h = if v >= 0.0 {
+            1.0 - self.power(v)
+        } else {
+            1.0 + c * self.power(v)
+        };
+        self.rho * h
+    }
+
+    fn bounds(&self) -> (f64, f64) {
+        (-1.0, 1.0)
+    }
+}
+
+/// `ln(1 + x) / x`, 1 at 0.
+#[inline]
+fn ln_1p_ratio(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        x.ln_1p() / x
+    }
+}
+
+/// `(1 - e^(-x)) / x`, 1 at 0.
+#[inline]
+fn expm1_ratio(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        -(-x).exp_m1() / x
+    }
+}
+
+/// `K(t) = ∫_0^t c s²/(1 + c s) ds` (B6) as `c t³ g(c t)`, `g(x) = (ln(1+x) - x + x²/2)/x³`:
+/// the series `1/3 - x/4 + x²/5 - ...` below `x = 1/4` (where the closed form cancels).
+fn dahl_loss(c: f64, t: f64) -> f64 {
+    let x = c * t;
+    let g = if x < 0.25 {
+        let (mut sum, mut power) = (0.0, 1.0f64);
+        for k in 3..40 {
+            sum += power / f64::from(k);
+            power *= -x;
+            if power.abs() < 1e-17 {
+                break;
+            }
+        }
+        sum
+    } else {
+        (x.ln_1p() - x + 0.5 * x * x) / (x * x * x)
+    };
+    c * t * t * t * g
+}
+
+/// The segment map for `n = 1` (B6-B7): `v_b` and `D rho / kw` from `v_a` after `tau`.
+#[inline]
+fn linear(c: f64, v_a: f64, tau: f64) -> (f64, f64) {
+    let (mut v, mut tau, mut d) = (v_a, tau, 0.0);
+    if v < 0.0 {
+        let t = -v;
+        let reach = t * ln_1p_ratio(c * t);
+        if tau < reach {
+            let t_b = (t * (-c * tau).exp() - tau * expm1_ratio(c * tau)).max(0.0);
+            return (-t_b, dahl_loss(c, t) - dahl_loss(c, t_b));
+        }
+        d = dahl_loss(c, t);
+        tau -= reach;
+        v = 0.0;
+    }
+    let e_a = 1.0 - v;
+    let (m1, m2) = (-(-tau).exp_m1(), -(-2.0 * tau).exp_m1());
+    let v_b = (v + e_a * m1).min(1.0);
+    (v_b, d + tau - 2.0 * e_a * m1 + 0.5 * e_a * e_a * m2)
+}
+
+/// The tables of (B8-B10) for one `(n, c)`.
+#[derive(Debug, Clone, PartialEq)]
+struct General {
+    n: f64,
+    c: f64,
+    /// The negative part's series (B10) holds on `t <= t0`, the table on `[t0, 1]`.
+    t0: f64,
+    neg: Option<Antiderivatives>,
+    /// `(T_-, E_-)` at `t0`.
+    neg_at_t0: (f64, f64),
+    series: Series,
+    /// The positive part's series holds on `v <= v0`, the table in `e` on `[0, 1 - v0]`.
+    v0: f64,
+    pos: Antiderivatives,
+    /// `R(e) = shift.0 + F_1(e)`, `Q(e) = shift.1 + F_2(e)`.
+    shift: (f64, f64),
+}
+
+/// `P_m(e) = 1 - (1 - e)^m`, accurate for small `e`.
+#[inline]
+fn complement(m: f64, e: f64) -> f64 {
+    -(m * (-e).ln_1p()).exp_m1()
+}
+
+/// `n e - P_n(e) >= 0`: its binomial series `sum_(k>=2) C(n,k) (-e)^k` below `e = 1/4` (where
+/// the difference cancels), the difference above.
+fn bernoulli_gap(n: f64, e: f64) -> f64 {
+    if e > 0.25 {
+        return n * e - complement(n, e);
+    }
+    let mut term = 0.5 * n * (n - 1.0) * e * e;
+    let mut sum = 0.0;
+    let mut k = 2.0;
+    while term != 0.0 && k < 400.0 {
+        sum += term;
+        if term.abs() <= 1e-18 * sum.abs() {
+            break;
+        }
+        term *= -(n - k) / (k + 1.0) * e;
+        k += 1.0;
+    }
+    sum
+}
+
+/// Terms of the series (B10): `y <= 1/8`, so the dropped terms are below `8^-21 < 1e-18`.
+const SERIES: usize = 21;
+
+/// The coefficients of (B10): `1/(kn + 1)`, `1/((k+1) n + 2)`, `1/(kn + 2)`.
+#[derive(Debug, Clone, PartialEq)]
+struct Series {
+    a: [f64; SERIES],
+    b: [f64; SERIES],
+    d: [f64; SERIES],
+}
+
+impl Series {
+    fn new(n: f64) -> Self {
+        let k = |k: usize| k as f64;
+        Self {
+            a: std::array::from_fn(|i| 1.0 / (k(i) * n + 1.0)),
+            b: std::array::from_fn(|i| 1.0 / ((k(i) + 1.0) * n + 2.0)),
+            d: std::array::from_fn(|i| 1.0 / (k(i) * n + 2.0)),
+        }
+    }
+
+    /// `(T_-(t), E_-(t))`, `y = c t^n <= 1/8`.
+    #[inline]
+    fn negative(&self, t: f64, y: f64) -> (f64, f64) {
+        let (mut time, mut loss) = (0.0, 0.0);
+        for k in (0..SERIES).rev() {
+            time = time * -y + self.a[k];
+            loss = loss * -y + self.b[k];
+        }
+        (t * time, t * t * y * loss)
+    }
+
+    /// `(R, Q)` at `v`, `y = v^n <= 1/8`.
+    #[inline]
+    fn positive(&self, n: f64, v: f64, y: f64) -> (f64, f64) {
+        let (mut time, mut q) = (0.0, 0.0);
+        for k in (1..SERIES).rev() {
+            time = time * y + self.a[k];
+            q = q * y + (self.a[k] - v * self.d[k]);
+        }
+        (v * (1.0 + y * time) + (-v).ln_1p() / n, -v - v * y * q)
+    }
+}
+
+impl General {
+    /// The tables for exponent `n` and `c = 2 sigma - 1`; `None` when one needs too many panels.
+    fn new(n: f64, c: f64) -> Option<Self> {
+        // |s|^n carries n rounding units: the integrands' noise, and so the tables' error.
+        let tolerance = 1e-15 * n;
+        let t0 = if c <= 0.125 {
+            1.0
+        } else {
+            (0.125 / c).powf(1.0 / n)
+        };
+        let neg = if t0 < 1.0 {
+            let f = |s: f64| {
+                let y = c * s.powf(n);
+                [1.0 / (1.0 + y), s * y / (1.0 + y)]
+            };
+            Some(Antiderivatives::new(&f, t0, 1.0, tolerance)?)
+        } else {
+            None
+        };
+        let v0 = 0.125f64.powf(1.0 / n);
+        let e1 = 1.0 - v0;
+        let f = |e: f64| {
+            let p = complement(n, e);
+            [
+                -bernoulli_gap(n, e) / (n * e * p),
+                complement(n + 1.0, e) / p,
+            ]
+        };
+        let pos = Antiderivatives::new(&f, 0.0, e1, tolerance)?;
+        let series = Series::new(n);
+        let (r1, q1) = series.positive(n, v0, v0.powf(n));
+        let (f1, f2) = pos.eval_both(e1);
+        Some(Self {
+            n,
+            c,
+            t0,
+            neg,
+            neg_at_t0: series.negative(t0, c * t0.powf(n)),
+            series,
+            v0,
+            pos,
+            shift: (r1 - f1, q1 - f2),
+        })
+    }
+
+    /// `(T_-(t), E_-(t))`.
+    #[inline]
+    fn neg(&self, t: f64) -> (f64, f64) {
+        match &self.neg {
+            Some(table) if t > self.t0 => {
+                let (a, b) = table.eval_both(t);
+                (self.neg_at_t0.0 + a, self.neg_at_t0.1 + b)
+            }
+            _ => self.series.negative(t, self.c * t.powf(self.n)),
+        }
+    }
+
+    /// `T_-(t)` alone.
+    #[inline]
+    fn neg_time(&self, t: f64) -> f64 {
+        match &self.neg {
+            Some(table) if t > self.t0 => self.neg_at_t0.0 + table.eval(0, t),
+            _ => self.series.negative(t, self.c * t.powf(self.n)).0,
+        }
+    }
+
+    /// `(R, Q)` at `v = 1 - e`.
+    #[inline]
+    fn pos(&self, v: f64, e: f64) -> (f64, f64) {
+        if v <= self.v0 {
+            self.series.positive(self.n, v, v.powf(self.n))
+        } else {
+            let (a, b) = self.pos.eval_both(e);
+            (self.shift.0 + a, self.shift.1 + b)
+        }
+    }
+
+    /// `R` at `v = 1 - e`.
+    #[inline]
+    fn pos_r(&self, v: f64, e: f64) -> f64 {
+        if v <= self.v0 {
+            self.series.positive(self.n, v, v.powf(self.n)).0
+        } else {
+            self.shift.0 + self.pos.eval(0, e)
+        }
+    }
+
+    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B11).
+    fn segment(&self, v_a: f64, tau: f64) -> (f64, f64) {
+        if v_a >= 0.0 {
+            return self.positive(v_a, tau);
+        }
+        let t_a = -v_a;
+        let (time, loss) = self.neg(t_a);
+        if tau >= time {
+            let (v, d) = self.positive(0.0, tau - time);
+            return (v, loss + d);
+        }
+        let target = time - tau;
+        let mut t = (t_a - tau * (1.0 + self.c * t_a.powf(self.n))).max(0.0);
+        for _ in 0..60 {
+            // Newton on the concave T_-: from the left, the iterates rise to the root.
+            let slope = 1.0 + self.c * t.powf(self.n);
+            let step = (target - self.neg_time(t)) * slope;
+            t = (t + step).clamp(0.0, t_a);
+            if step <= 1e-15 * slope {
+                break;
+            }
+        }
+        (-t, loss - self.neg(t).1)
+    }
+
+    /// The positive part (B9): `v_b` and `D rho / kw` from `v_a >= 0` after `tau`.
+    fn positive(&self, v_a: f64, tau: f64) -> (f64, f64) {
+        if v_a >= 1.0 {
+            return (1.0, tau);
+        }
+        let e_a = 1.0 - v_a;
+        let x_a = -(-v_a).ln_1p();
+        let (r_a, q_a) = self.pos(v_a, e_a);
+        let target = x_a / self.n + r_a + tau;
+        let (mut x, mut e, mut v, mut residual) = (x_a, e_a, v_a, -tau);
+        for _ in 0..60 {
+            // Newton on the concave x/n + R(e^-x): from x_a, the iterates rise to the root.
+            let slope = if e > 0.0 {
+                e / complement(self.n, e)
+            } else {
+                1.0 / self.n
+            };
+            let step = -residual / slope;
+            x += step;
+            e = (-x).exp();
+            v = -(-x).exp_m1();
+            if step <= 1e-14 * x.max(1.0) {
+                break;
+            }
+            residual = x / self.n + self.pos_r(v, e) - target;
+        }
+        (v, tau + self.pos(v, e).1 - q_a)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_tables_give_the_closed_form_at_n_1() {
+        for sigma in [0.5, 0.75, 1.0, 3.0, 40.0] {
+            let c = 2.0 * sigma - 1.0;
+            let g = General::new(1.0, c).unwrap();
+            for v_a in [-1.0, -0.7, -0.2, -1e-9, 0.0, 0.3, 0.9, 1.0 - 1e-12, 1.0] {
+                for tau in [1e-6, 0.01, 0.3, 1.0, 2.5, 7.0, 40.0] {
+                    let (v1, d1) = linear(c, v_a, tau);
+                    let (v2, d2) = g.segment(v_a, tau);
+                    assert!(
+                        (v1 - v2).abs() < 2e-14,
+                        "{sigma} {v_a} {tau}: v {v1} vs {v2}"
+                    );
+                    let scale = tau + 1.0;
+                    assert!(
+                        (d1 - d2).abs() < 1e-14 * scale,
+                        "{sigma} {v_a} {tau}: d {d1} vs {d2}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_tables_build_over_the_domain() {
+        for n in [1.0 + 1e-9, 1.5, 2.0, 3.7, 25.0, MAX_EXPONENT] {
+            for c in [0.0, 1.0, 1e3, 1e300] {
+                let g = General::new(n, c).unwrap_or_else(|| panic!("n {n} c {c}"));
+                let (v, d) = g.segment(-1.0, 3.0);
+                assert!(
+                    v.is_finite() && d.is_finite() && v > 0.0,
+                    "{n} {c}: {v} {d}"
+                );
+            }
+        }
+    }
+}
