@@ -342,7 +342,7 @@ impl ZooLoop {
     /// checked first as for LuGre's loop.
     ///
     /// # Errors
-    /// [`SamplesError::TooFew`] for `n < 2`, [`SamplesError::TooMany`] above
+    /// [`crate::error::SamplesError::TooFew`] for `n < 2`, [`crate::error::SamplesError::TooMany`] above
     /// [`crate::loops::MAX_SAMPLES`].
     pub fn try_sample<M: Segmental>(
         &self,
