@@ -182,3 +182,56 @@ fn cycles_of_a_history_along_every_model_of_the_table() {
         "--x0 is the initial bristle state of LuGre and Dahl; the Maxwell-slip model starts from rest",
     );
 }
+
+/// The README's claim: Bouc-Wen with sigma = 1, n = 1, kx = 0 is the Dahl model (rho, Fc = kw),
+/// whose loop LuGre's engine computes: the same numbers to 1e-14.
+#[test]
+fn bouc_wen_at_sigma_one_is_the_dahl_model() {
+    let tp = "4,1,3,-4";
+    let bw = accepts_json(&[
+        "loop",
+        "--model",
+        "bouc-wen",
+        "--sigma",
+        "1",
+        "--turning-points",
+        tp,
+        "--json",
+    ]);
+    let dahl = accepts_json(&[
+        "loop",
+        "--model",
+        "dahl",
+        "--rho",
+        "0.5",
+        "--fc",
+        "2",
+        "--turning-points",
+        tp,
+        "--json",
+    ]);
+    let close = |a: &serde_json::Value, b: &serde_json::Value| {
+        assert!(
+            (f(a) - f(b)).abs() <= 1e-14 * f(b).abs().max(1.0),
+            "{a} vs {b}"
+        );
+    };
+    for (a, b) in bw["turning_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(dahl["turning_points"].as_array().unwrap())
+    {
+        close(&a["y"], &b["y"]);
+    }
+    for (a, b) in bw["loops"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(dahl["loops"].as_array().unwrap())
+    {
+        for key in ["work", "stored_energy_change", "dissipation", "closure_gap"] {
+            close(&a[key], &b[key]);
+        }
+    }
+}
