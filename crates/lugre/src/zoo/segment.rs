@@ -200,6 +200,11 @@ fn fixed_point<T: SingleState>(model: &T, u: &[f64], r: usize, min: f64) -> f64 
         if g.abs() <= tolerance {
             return z;
         }
+        // A strong contraction (|T'| small, a long or large input): T(z) is within |T'| |g|
+        // of the fixed point, so one pass over the period suffices.
+        if (dg + 1.0).abs() * g.abs() <= tolerance {
+            return (z + g).clamp(lo, hi);
+        }
         // g is non-increasing: a positive value lies left of the roots.
         if g > 0.0 {
             lo = z;
