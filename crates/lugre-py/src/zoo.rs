@@ -20,8 +20,9 @@ use lugre::ZooError;
 ///
 /// An element array is any sequence or numpy array of real numbers (a number is one element),
 /// a scalar parameter a real number; a parameter not given takes the table's default. Invalid
-/// values raise ValueError with the message of `lugre loop --model NAME`; a keyword the model
-/// does not have, or a value of the wrong type, raises TypeError.
+/// values and a keyword the model does not have raise ValueError with the message of
+/// `lugre loop --model NAME` (and of C and MATLAB); a value of the wrong type raises
+/// TypeError naming the keyword.
 ///
 /// Attributes: name, label, parameters (a dict: each parameter by name, a float64 array for
 /// element arrays, a float for scalars). Method: loop(turning_points). Picklable.
@@ -53,28 +54,22 @@ fn given_values(
     Ok(out)
 }
 
-/// One parameter's values: a real number for a scalar, one or more for an element array.
+/// One parameter's values: a number, or a one-dimensional sequence or array of them (the core
+/// refuses more than one value for a scalar parameter, as every front end's).
 fn parameter_values(p: &ZooParameter, value: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
-    match p.shape {
-        Shape::Scalar => Ok(vec![real(value, p.name)?]),
-        Shape::Elements => {
-            let x = floats(value, p.name)?;
-            if x.shape.is_empty() {
-                Ok(x.data)
-            } else {
-                x.one_dimensional(p.name, value)
-            }
-        }
+    let x = floats(value, p.name)?;
+    if x.shape.is_empty() {
+        Ok(x.data)
+    } else {
+        x.one_dimensional(p.name, value)
     }
 }
 
-/// A core error as Python raises it: a parameter the model does not have is a TypeError (an
-/// unexpected keyword), every other refusal a ValueError.
+/// A core error as Python raises it: a ValueError with the core's message (a parameter the
+/// model does not have included: the name is a value here, the model being chosen by name,
+/// and C and MATLAB refuse it in the same words).
 fn zoo_error(e: ZooError) -> PyErr {
-    match e {
-        ZooError::UnknownParameter { .. } => PyTypeError::new_err(e.to_string()),
-        e => value_error(e),
-    }
+    value_error(e)
 }
 
 /// The model of the zoo called `name` (a `str`), or the core's refusal; LuGre and Dahl are
