@@ -7,7 +7,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
-use crate::convert::{float_repr, floats, list_repr, real, type_name, value_error, vec_out};
+use crate::convert::{float_repr, floats, list_repr, type_name, value_error, vec_out};
 use crate::loops::{loop_list, map_points, records_table, samples_n, PyCurve};
 use lugre::zoo::{Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 use lugre::ZooError;
