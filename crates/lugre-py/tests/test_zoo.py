@@ -219,3 +219,31 @@ def test_names_that_are_not_the_zoos():
     for name, cls in (("lugre", "LuGre"), ("dahl", "Dahl")):
         with pytest.raises(ValueError, match=f"use lugre.{cls}"):
             lugre.ZooModel(name)
+
+
+def test_the_docstring_example_runs():
+    import doctest
+
+    runner = doctest.DocTestRunner()
+    for test in doctest.DocTestFinder().find(lugre.ZooModel, "lugre.ZooModel", globs={"lugre": lugre}):
+        runner.run(test)
+    failed, attempted = runner.summarize(verbose=False)
+    assert (failed, attempted) == (0, 2)
+
+
+@pytest.mark.parametrize("name", MODELS)
+def test_bad_values_raise_and_never_crash(name):
+    """Anything at all for each parameter and for the input: a result or a ValueError/TypeError."""
+    bad = [None, "x", [], [math.nan], [math.inf, 1.0], [1e308, -1e308], np.zeros((2, 2)), object(), 1e400,
+           10**400, [True, False], np.array([1, 2], dtype=np.int8), np.arange(3.0)[::-1], {"a": 1}]
+    for p in lugre.ZOO_MODELS[name]["parameters"]:
+        for value in bad:
+            try:
+                lugre.ZooModel(name, **{p: value}).loop(INPUT).sample(3)
+            except (ValueError, TypeError) as e:
+                assert p in str(e), str(e)  # the message names the argument
+    for value in bad:
+        try:
+            lugre.ZooModel(name).loop(value)
+        except (ValueError, TypeError):
+            pass
