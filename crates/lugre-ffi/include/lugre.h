@@ -291,15 +291,17 @@ void lugre_loop_free(struct LugreLoop *hl);
 // its direction are dropped: at most the `n` given).
 enum LugreStatus lugre_loop_turning_len(const struct LugreLoop *hl, size_t *len);
 
-// The turning points: `u`, the total variation `rho` there and `y°` (any pointer may be NULL).
+// The turning points: `u`, the total variation `rho` there and `y°` (a model of the zoo: its
+// force) there (any pointer may be NULL).
 enum LugreStatus lugre_loop_turning(const struct LugreLoop *hl,
                                     double *u,
                                     double *rho,
                                     double *y,
                                     size_t cap);
 
-// The work per period (all of it dissipated) and the period (in `rho`, the input's total
-// variation over one period); either pointer may be NULL.
+// The work per period (LuGre's and Dahl's all dissipated; a model of the zoo's as its major
+// loop's `work`) and the period (in `rho`, the input's total variation over one period);
+// either pointer may be NULL.
 enum LugreStatus lugre_loop_summary(const struct LugreLoop *hl,
                                     double *work_per_period,
                                     double *period);
@@ -312,8 +314,9 @@ enum LugreStatus lugre_loop_table(const struct LugreLoop *hl,
                                   const struct LugreLoopColumns *columns,
                                   size_t cap);
 
-// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
-// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+// `y°` (a model of the zoo: its force) at `n >= 2` points evenly spaced in `rho` over one
+// period, both ends included (`rho = 0` and the period): `rho`, the input `u` and the output
+// there, each written to a buffer
 // of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 enum LugreStatus lugre_loop_sample(const struct LugreLoop *hl,
                                    size_t n,

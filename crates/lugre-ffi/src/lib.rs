@@ -458,7 +458,8 @@ pub extern "C" fn lugre_loop_turning_len(hl: *const LugreLoop, len: *mut usize) 
     })
 }
 
-/// The turning points: `u`, the total variation `rho` there and `y°` (any pointer may be NULL).
+/// The turning points: `u`, the total variation `rho` there and `y°` (a model of the zoo: its
+/// force) there (any pointer may be NULL).
 #[no_mangle]
 pub extern "C" fn lugre_loop_turning(
     hl: *const LugreLoop,
@@ -477,8 +478,9 @@ pub extern "C" fn lugre_loop_turning(
     })
 }
 
-/// The work per period (all of it dissipated) and the period (in `rho`, the input's total
-/// variation over one period); either pointer may be NULL.
+/// The work per period (LuGre's and Dahl's all dissipated; a model of the zoo's as its major
+/// loop's `work`) and the period (in `rho`, the input's total variation over one period);
+/// either pointer may be NULL.
 #[no_mangle]
 pub extern "C" fn lugre_loop_summary(
     hl: *const LugreLoop,
@@ -546,8 +548,9 @@ pub extern "C" fn lugre_loop_table(
     })
 }
 
-/// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
-/// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+/// `y°` (a model of the zoo: its force) at `n >= 2` points evenly spaced in `rho` over one
+/// period, both ends included (`rho = 0` and the period): `rho`, the input `u` and the output
+/// there, each written to a buffer
 /// of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 #[no_mangle]
 pub extern "C" fn lugre_loop_sample(
