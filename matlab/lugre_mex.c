@@ -9,6 +9,8 @@
  *   r = lugre_mex('dynamics', request_struct)
  *   [F, z] = lugre_mex('friction_step', x, dt, params, z0, x0)
  *   r = lugre_mex('fit', u, f, options)
+ *   [names, table] = lugre_mex('parameters', model)
+ *   models = lugre_mex('models')
  *
  * MATLAB's habits: a numeric argument (or struct field) of any real class (double, single,
  * int8 ... uint64) or logical is taken as double; a matrix (more than one row and more than
@@ -217,6 +219,75 @@ static LugreModel *model_of(const mxArray *s) {
     return m;
 }
 
+/* The model a parameter struct names in its field `model` (NULL: none, a LuGre struct). */
+static const char *model_name(const mxArray *params, char *out, size_t size) {
+    const mxArray *s = options_struct(params, "params", "struct('sigma0', 1e5, 'fc', 1)");
+    const mxArray *model = s == NULL ? NULL : mxGetField(s, 0, "model");
+    if (model == NULL) return NULL;
+    if (!mxIsChar(model) || mxGetString(model, out, size) != 0)
+        fail("params.model must be the name of a model, e.g. 'lugre', 'dahl' or 'maxwell-slip' (lugre_models lists them)");
+    return out;
+}
+
+/* A model of the zoo (or Dahl, by the same rule) from a struct: every field but `model` is a
+ * parameter by name, passed as it is to the C ABI, which knows the model's parameters, their
+ * shapes and domains (the gateway lists none). */
+static LugreStatus zoo_of(const char *model, const mxArray *s, LugreZoo **zoo, LugreModel **dahl) {
+    int fields = mxGetNumberOfFields(s);
+    size_t count = 0;
+    const char **names = (const char **)mxCalloc(fields > 0 ? fields : 1, sizeof(char *));
+    const double **values = (const double **)mxCalloc(fields > 0 ? fields : 1, sizeof(double *));
+    size_t *lens = (size_t *)mxCalloc(fields > 0 ? fields : 1, sizeof(size_t));
+    double *firsts = doubles(fields);
+    for (int k = 0; k < fields; k++) {
+        const char *name = mxGetFieldNameByNumber(s, k);
+        if (strcmp(name, "model") == 0) continue;
+        char field[80];
+        snprintf(field, sizeof field, "params.%s", name);
+        names[count] = name;
+        values[count] = vector(mxGetFieldByNumber(s, 0, k), field, &lens[count]);
+        firsts[count] = lens[count] == 1 ? values[count][0] : NAN;
+        count++;
+    }
+    if (strcmp(model, "dahl") == 0) {
+        for (size_t i = 0; i < count; i++)
+            if (lens[i] != 1)
+                mexErrMsgIdAndTxt(ERROR_ID, "params.%s must be a scalar, got %d values", names[i], (int)lens[i]);
+        return lugre_model_new_named(LUGRE_FAMILY_DAHL, count, names, firsts, dahl);
+    }
+    return lugre_zoo_new(model, count, names, values, lens, zoo);
+}
+
+/* The loop of the model `params` describes: LuGre's (its parameters, or a preset), Dahl's, or a
+ * zoo model's (params.model names it), for the turning points u[0..n]. */
+static LugreLoop *loop_of(const mxArray *params, const double *u, size_t n) {
+    char name[64];
+    const char *model = model_name(params, name, sizeof name);
+    LugreLoop *hl = NULL;
+    if (model == NULL || strcmp(model, "lugre") == 0) {
+        mxArray *copy = NULL;
+        if (model != NULL) {
+            /* LuGre's struct without its `model` field. */
+            copy = mxDuplicateArray(params);
+            mxRemoveField(copy, mxGetFieldNumber(copy, "model"));
+        }
+        LugreModel *m = model_of(copy != NULL ? copy : params);
+        if (copy != NULL) mxDestroyArray(copy);
+        LugreStatus st = lugre_loop_new(m, u, n, &hl);
+        lugre_model_free(m);
+        check(st);
+        return hl;
+    }
+    LugreZoo *zoo = NULL;
+    LugreModel *dahl = NULL;
+    check(zoo_of(model, params, &zoo, &dahl));
+    LugreStatus st = dahl != NULL ? lugre_loop_new(dahl, u, n, &hl) : lugre_zoo_loop_new(zoo, u, n, &hl);
+    lugre_zoo_free(zoo);
+    lugre_model_free(dahl);
+    check(st);
+    return hl;
+}
+
 static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const mxArray *n_arg) {
     size_t n = 0;
     const double *u = vector(u_arg, "u", &n);
@@ -228,11 +299,8 @@ static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const m
         if (!(points >= 0 && points <= 1e8 && points == floor(points)))
             mexErrMsgIdAndTxt(ERROR_ID, "n must be a whole number from 2 to 1e8, got %g", points);
     }
-    LugreModel *m = model_of(params);
-    LugreLoop *hl = NULL;
-    LugreStatus st = lugre_loop_new(m, u, n, &hl);
-    lugre_model_free(m);
-    check(st);
+    LugreLoop *hl = loop_of(params, u, n);
+    LugreStatus st;
     size_t k = 0, rows = 0;
     lugre_loop_turning_len(hl, &k);
     lugre_loop_table_len(hl, &rows);
@@ -735,20 +803,55 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     return fit_result(&r, f, fitted, n, full);
 }
 
-/* names = lugre_parameters(model): the model's parameter names ('lugre' or 'dahl'), in the
- * core's order, from the C ABI (the core's table). */
-static mxArray *parameter_names(int nrhs, const mxArray *prhs[]) {
-    char model[16] = "lugre";
+/* [names, table] = lugre_parameters(model) of a model of the zoo: the names, and a struct array
+ * of name, unit, description, domain, shape ('scalar' or 'elements') and default, from the C
+ * ABI's table. */
+static void zoo_parameters(const char *model, int nlhs, mxArray *plhs[]) {
+    LugreZooModelInfo info;
+    check(lugre_zoo_model_info(model, &info));
+    size_t count = info.parameters;
+    static const char *fields[] = {"name", "unit", "description", "domain", "shape", "default"};
+    mxArray *names = mxCreateCellMatrix(1, count);
+    mxArray *table = mxCreateStructMatrix(count, 1, 6, fields);
+    for (size_t i = 0; i < count; i++) {
+        LugreZooParameter p;
+        check(lugre_zoo_parameter(model, i, &p));
+        mxSetCell(names, i, mxCreateString(p.name));
+        const char *texts[] = {p.name, p.unit, p.description, p.domain,
+                               p.shape == LUGRE_ZOO_SCALAR ? "scalar" : "elements"};
+        for (int f = 0; f < 5; f++) mxSetFieldByNumber(table, i, f, mxCreateString(texts[f]));
+        mxArray *d = mxCreateDoubleMatrix(1, p.default_len, mxREAL);
+        if (p.default_len > 0) memcpy(mxGetPr(d), p.default_values, p.default_len * sizeof(double));
+        mxSetFieldByNumber(table, i, 5, d);
+    }
+    plhs[0] = names;
+    if (nlhs > 1) plhs[1] = table;
+    else mxDestroyArray(table);
+}
+
+/* models = lugre_models(): the names of the zoo's models, from the C ABI's table. */
+static mxArray *zoo_models(void) {
+    size_t count = 0;
+    while (lugre_zoo_model_name(count) != NULL) count++;
+    mxArray *names = mxCreateCellMatrix(1, count);
+    for (size_t i = 0; i < count; i++) mxSetCell(names, i, mxCreateString(lugre_zoo_model_name(i)));
+    return names;
+}
+
+/* names = lugre_parameters(model): the model's parameter names ('lugre', 'dahl' or a model of
+ * the zoo), in the core's order, from the C ABI (the core's table). */
+static void parameter_names(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
+    char model[64] = "lugre";
     if (nrhs > 0 && (!mxIsChar(prhs[0]) || mxGetString(prhs[0], model, sizeof model) != 0))
-        fail("model must be 'lugre' or 'dahl'");
+        fail("model must be the name of a model, e.g. 'lugre', 'dahl' or 'maxwell-slip' (lugre_models lists them)");
     int family;
     if (strcmp(model, "lugre") == 0) {
         family = LUGRE_FAMILY_LUGRE;
     } else if (strcmp(model, "dahl") == 0) {
         family = LUGRE_FAMILY_DAHL;
     } else {
-        mexErrMsgIdAndTxt(ERROR_ID, "model must be 'lugre' or 'dahl', got '%s'", model);
-        return NULL;
+        zoo_parameters(model, nlhs, plhs);
+        return;
     }
     size_t count = 0;
     const char *name = NULL;
@@ -759,7 +862,7 @@ static mxArray *parameter_names(int nrhs, const mxArray *prhs[]) {
         check(lugre_parameter_name(family, i, &name));
         mxSetCell(names, i, mxCreateString(name));
     }
-    return names;
+    plhs[0] = names;
 }
 
 void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
@@ -795,7 +898,9 @@ void mexFunction(int nlhs, mxArray *plhs[], int nrhs, const mxArray *prhs[]) {
         if (args < 2) fail("lugre_fit(u, f, options): u and f are needed");
         plhs[0] = fit_struct(args, a);
     } else if (strcmp(cmd, "parameters") == 0) {
-        plhs[0] = parameter_names(args, a);
+        parameter_names(nlhs, plhs, args, a);
+    } else if (strcmp(cmd, "models") == 0) {
+        plhs[0] = zoo_models();
     } else {
         mexErrMsgIdAndTxt(ERROR_ID, "lugre_mex: unknown call '%s'", cmd);
     }

@@ -139,7 +139,10 @@ function failures = test_lugre()
   failures += expect(isequal(lugre_parameters('dahl'), {'rho', 'fc'}), 'lugre_parameters: Dahl');
   names = lugre_parameters();
   failures += expect(numel(names) == 7 && strcmp(names{1}, 'sigma0'), 'lugre_parameters: LuGre');
-  failures += raises(@() lugre_parameters('bouc-wen'), 'model must be ''lugre'' or ''dahl'', got ''bouc-wen''');
+  failures += raises(@() lugre_parameters('no-such-model'), 'unknown model ''no-such-model'' (the models: ');
+  failures += raises(@() lugre_parameters(3), 'model must be the name of a model');
+  % Every model of the zoo, from the C ABI's table (none named here).
+  failures += zoo_models(cli);
   failures += raises(@() lugre_cycles([0 1 0], 0, struct('fs', 1.5)), 'the model is only partly named: give sigma0 too, or preset ''canudas1995''');
   failures += raises(@() lugre_friction_step([1e-6 2e-6 3e-6], [1e-3 1e-3 0], p), 'step 3 (x(3)): the displacement cannot move in a zero step');
 
@@ -198,6 +201,76 @@ function failures = test_lugre()
   else
     printf('test_lugre: %d checks FAILED\n', failures);
   end
+end
+
+function failures = zoo_models(cli)
+% Each model of the zoo on its defaults and on given arrays: the CLI's JSON to the last digit,
+% the struct first or second, any numeric class; bad input refused with the core's message.
+  failures = 0;
+  models = lugre_models();
+  failures += expect(iscellstr(models) && numel(models) >= 2, 'lugre_models: the zoo''s names');
+  u = [3 1 2 -3 0.5 -1];
+  for i = 1:numel(models)
+    model = models{i};
+    [names, table] = lugre_parameters(model);
+    failures += expect(isequal(names, {table.name}), [model ': lugre_parameters, names and table']);
+    given = struct('model', model);
+    flags = '';
+    for k = 1:numel(table)
+      d = table(k).default;
+      % Element arrays twice as long (each default element twice: valid whatever the model's
+      % own constraints are), scalars at their defaults: every parameter given.
+      if strcmp(table(k).shape, 'elements')
+        d = [d, d];
+      else
+        failures += expect(isscalar(d), [model ': a scalar default']);
+      end
+      given.(table(k).name) = d;
+      flags = [flags sprintf(' --%s=%s', strrep(table(k).name, '_', '-'), strjoin(arrayfun(@(x) sprintf('%.17g', x), d, 'UniformOutput', false), ','))];
+    end
+    for c = {{struct('model', model), ''}, {given, flags}}
+      [params, f] = deal(c{1}{:});
+      r = lugre_loop(u, params, 7);
+      j = cli(['loop --model ' model f ' --turning-points=3,1,2,-3,0.5,-1 --samples 7 --json']);
+      tp = between(j, '"turning_points":', '"loops":');
+      what = [model f];
+      failures += expect(isequal(r.y, numbers(tp, 'y')) && isequal(r.rho, numbers(tp, 'rho')), [what ': the turning points']);
+      failures += expect(isequal(r.loops.work, numbers(j, 'work')), [what ': work of each loop']);
+      failures += expect(isequal(r.loops.dissipation, numbers(j, 'dissipation')), [what ': dissipation of each loop']);
+      failures += expect(isequal(r.loops.stored_energy_change, numbers(j, 'stored_energy_change')), [what ': stored energy']);
+      failures += expect(isequal(r.loops.closure_gap, numbers(j, 'closure_gap')), [what ': closure gaps']);
+      failures += expect(isequal(r.work_per_period, numbers(j, 'work_per_period')) && isequal(r.period, numbers(j, 'period')), [what ': work per period']);
+      failures += expect(isequal(r.curve.y, numbers(j(strfind(j, '"points":'):end), 'y')), [what ': the curve']);
+      failures += expect(numel(r.loops.kind) == 3 && isequal(r.loops.parent, [0; 1; 1]), [what ': three loops, parents 1-based']);
+      % The struct first, and other numeric classes, are the same call.
+      failures += expect(isequal(lugre_loop(params, u, 7), r), [what ': the struct first']);
+    end
+    failures += expect(isequal(lugre_loop(int8(u * 2), struct('model', model)), lugre_loop(u * 2, struct('model', model))), ...
+                       [model ': an int8 input']);
+    % Bad input: the core's message, 1-based.
+    bad = struct('model', model);
+    bad.(table(1).name) = [NaN table(1).default(2:end)];
+    if strcmp(table(1).shape, 'elements')
+      failures += raises(@() lugre_loop(u, bad), [table(1).name '(1) must be ']);
+    else
+      failures += raises(@() lugre_loop(u, bad), [table(1).name ' must be ']);
+    end
+    failures += raises(@() lugre_loop(u, struct('model', model, 'no_such', 1)), ...
+                       sprintf('the %s model has no parameter ''no_such'' (its parameters: %s)', model, strjoin(names, ', ')));
+    bad = struct('model', model);
+    bad.(table(1).name) = ones(2);
+    failures += raises(@() lugre_loop(u, bad), ['params.' table(1).name ' must be a vector (one row or one column), got a 2x2 array']);
+    bad.(table(1).name) = 'a';
+    failures += raises(@() lugre_loop(u, bad), ['params.' table(1).name ' must be numeric or logical, got a char array']);
+  end
+  failures += raises(@() lugre_loop(u, struct('model', 'no-such-model')), 'unknown model ''no-such-model''');
+  failures += raises(@() lugre_loop(u, struct('model', 3)), 'params.model must be the name of a model');
+  % 'lugre' and 'dahl' by name are LuGre's and Dahl's loops.
+  failures += expect(isequal(lugre_loop(u, struct('model', 'lugre', 'sigma0', 6)), lugre_loop(u, struct('sigma0', 6))), ...
+                     'params.model = ''lugre''');
+  dahl = lugre_loop([-1 1 0 0.5], struct('model', 'dahl', 'rho', 2, 'fc', 1.5));
+  j = cli('loop --model dahl --rho 2 --fc 1.5 --turning-points=-1,1,0,0.5 --json');
+  failures += expect(isequal(dahl.loops.work, numbers(j, 'work')), 'params.model = ''dahl'': the CLI''s Dahl loop');
 end
 
 function path = record(names, columns)

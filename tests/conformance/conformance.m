@@ -334,11 +334,12 @@ function value = cast_field(classes, name, value)
 end
 
 function p = params_of(m, classes)
-% A parameter struct of the MEX functions (preset and values by the core's names).
+% A parameter struct of the MEX functions (preset and values by the core's names; a model of
+% the zoo by its name in `model`, its parameters by the table's names).
   p = struct();
   for name = fieldnames(m)'
     value = m.(name{1});
-    if ~strcmp(name{1}, 'preset')
+    if ~any(strcmp(name{1}, {'preset', 'model'}))
       value = cast_field(classes, name{1}, numbers(value));
     end
     p.(name{1}) = value;

@@ -190,6 +190,8 @@ def model_of(m):
     if m is None:
         return None
     m = dict(m)
+    if "model" in m:  # a model of the zoo by name, its parameters by the table's names
+        return lugre.ZooModel(m.pop("model"), **{k: numbers(v) for k, v in m.items()})
     if m.pop("family", None) == "dahl":
         return lugre.Dahl(**{k: number(v) for k, v in m.items()})
     values = {k: number(v) for k, v in m.items() if k != "preset"}

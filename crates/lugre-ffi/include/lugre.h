@@ -48,6 +48,12 @@ typedef struct LugreParams {
 // [`lugre_params_check_named`]: those of the rate-independent loop (energies along `y*`).
 #define LUGRE_NEEDED_RATE_INDEPENDENT 1
 
+// [`LugreZooParameter::shape`]: one number.
+#define LUGRE_ZOO_SCALAR 0
+
+// [`LugreZooParameter::shape`]: one number per element.
+#define LUGRE_ZOO_ELEMENTS 1
+
 // The outcome of a call.
 typedef enum LugreStatus {
   LUGRE_STATUS_OK = 0,
@@ -70,7 +76,8 @@ typedef struct LugreDynamics LugreDynamics;
 // A stateful friction element for host simulators.
 typedef struct LugreElement LugreElement;
 
-// The periodic hysteresis loop of one input.
+// The periodic hysteresis loop of one input: LuGre's or Dahl's ([`lugre_loop_new`]) or a
+// model of the zoo's ([`lugre_zoo_loop_new`]); the `lugre_loop_*` accessors serve both.
 typedef struct LugreLoop LugreLoop;
 
 // A validated friction model (LuGre, or Dahl as the LuGre model it equals).
@@ -78,6 +85,9 @@ typedef struct LugreModel LugreModel;
 
 // A solved run: the motion at the output times, its events, energies and headlines.
 typedef struct LugreMotion LugreMotion;
+
+// A validated model of the zoo.
+typedef struct LugreZoo LugreZoo;
 
 // The loop table's columns (each of the table's length; NULL skips a column). `kind` is 0 for
 // the major loop, 1 for a minor loop; `parent` is -1 for none.
@@ -200,6 +210,38 @@ typedef struct LugreMotionSummary {
   size_t loops;
 } LugreMotionSummary;
 
+// A model of the zoo's entry in the core's table (static strings).
+typedef struct LugreZooModelInfo {
+  // The name [`lugre_zoo_new`] takes, as `lugre loop --model`.
+  const char *name;
+  // The name in reports.
+  const char *label;
+  // The model's equations in one line.
+  const char *equations;
+  // The publication that defines it.
+  const char *reference;
+  // How many parameters it has ([`lugre_zoo_parameter`]'s indices).
+  size_t parameters;
+  // 1 when every minor loop closes (Masing behaviour).
+  int32_t closes_minor_loops;
+} LugreZooModelInfo;
+
+// A parameter of a model of the zoo (static strings and values).
+typedef struct LugreZooParameter {
+  // The name [`lugre_zoo_new`] takes.
+  const char *name;
+  // The unit with displacements in m and forces in N.
+  const char *unit;
+  const char *description;
+  // The values it may take, as the messages write them.
+  const char *domain;
+  // [`LUGRE_ZOO_SCALAR`] or [`LUGRE_ZOO_ELEMENTS`].
+  int32_t shape;
+  // The default: `default_len` values (1 for a scalar), static.
+  const double *default_values;
+  size_t default_len;
+} LugreZooParameter;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -249,15 +291,17 @@ void lugre_loop_free(struct LugreLoop *hl);
 // its direction are dropped: at most the `n` given).
 enum LugreStatus lugre_loop_turning_len(const struct LugreLoop *hl, size_t *len);
 
-// The turning points: `u`, the total variation `rho` there and `y°` (any pointer may be NULL).
+// The turning points: `u`, the total variation `rho` there and `y°` (a model of the zoo: its
+// force) there (any pointer may be NULL).
 enum LugreStatus lugre_loop_turning(const struct LugreLoop *hl,
                                     double *u,
                                     double *rho,
                                     double *y,
                                     size_t cap);
 
-// The work per period (all of it dissipated) and the period (in `rho`, the input's total
-// variation over one period); either pointer may be NULL.
+// The work per period (LuGre's and Dahl's all dissipated; a model of the zoo's as its major
+// loop's `work`) and the period (in `rho`, the input's total variation over one period);
+// either pointer may be NULL.
 enum LugreStatus lugre_loop_summary(const struct LugreLoop *hl,
                                     double *work_per_period,
                                     double *period);
@@ -270,8 +314,9 @@ enum LugreStatus lugre_loop_table(const struct LugreLoop *hl,
                                   const struct LugreLoopColumns *columns,
                                   size_t cap);
 
-// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
-// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+// `y°` (a model of the zoo: its force) at `n >= 2` points evenly spaced in `rho` over one
+// period, both ends included (`rho = 0` and the period): `rho`, the input `u` and the output
+// there, each written to a buffer
 // of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 enum LugreStatus lugre_loop_sample(const struct LugreLoop *hl,
                                    size_t n,
@@ -478,6 +523,51 @@ enum LugreStatus lugre_motion_columns(const struct LugreMotion *motion,
 // The run's summary (see [`LugreMotionSummary`]), to `out`.
 enum LugreStatus lugre_motion_summary(const struct LugreMotion *motion,
                                       struct LugreMotionSummary *out);
+
+// The name of model `index` of the zoo's table (static), or NULL past the last: the way to
+// list the models (`for (i = 0; lugre_zoo_model_name(i); i++)`).
+const char *lugre_zoo_model_name(size_t index);
+
+// The table's entry of the model called `model` to `out`.
+enum LugreStatus lugre_zoo_model_info(const char *model, struct LugreZooModelInfo *out);
+
+// Parameter `index` of the model called `model`, in the table's order, to `out`.
+enum LugreStatus lugre_zoo_parameter(const char *model,
+                                     size_t index,
+                                     struct LugreZooParameter *out);
+
+// The model of the zoo called `model` (case-insensitive; [`lugre_zoo_model_name`] lists
+// them) from `count` parameters given by name: `names[i]` (case-insensitive, each once) has
+// the `lens[i]` values at `values[i]` (one for a scalar parameter, one per element for an
+// element array); every parameter not given takes the table's default. Refused with the
+// core's message (an unknown model or parameter, a value outside its domain, arrays of
+// different lengths), as `lugre loop --model` refuses it.
+enum LugreStatus lugre_zoo_new(const char *model,
+                               size_t count,
+                               const char *const *names,
+                               const double *const *values,
+                               const size_t *lens,
+                               struct LugreZoo **out);
+
+void lugre_zoo_free(struct LugreZoo *zoo);
+
+// The values of parameter `index` of the model (the table's order; defaults included), to
+// `values` (`cap` of them; NULL skips) and their number to `len` (may be NULL): the model's
+// echo, as `lugre loop --json`'s `model`.
+enum LugreStatus lugre_zoo_value(const struct LugreZoo *zoo,
+                                 size_t index,
+                                 double *values,
+                                 size_t cap,
+                                 size_t *len);
+
+// The loop and every minor loop of the model for the periodic input with one period's
+// turning points `u[0..n]` (as `lugre loop --model NAME --turning-points`), read with the
+// `lugre_loop_*` functions (the output `y` is the model's force) and freed by
+// `lugre_loop_free`.
+enum LugreStatus lugre_zoo_loop_new(const struct LugreZoo *zoo,
+                                    const double *u,
+                                    size_t n,
+                                    struct LugreLoop **out);
 
 #ifdef __cplusplus
 }  // extern "C"

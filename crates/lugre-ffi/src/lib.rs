@@ -32,11 +32,17 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::OnceLock;
 
 mod dynamics;
+mod zoo;
 pub use dynamics::{
     lugre_dynamics_free, lugre_dynamics_new, lugre_dynamics_run, lugre_dynamics_set,
     lugre_dynamics_set_model, lugre_dynamics_set_points, lugre_dynamics_set_scenario,
     lugre_motion_columns, lugre_motion_free, lugre_motion_len, lugre_motion_summary, LugreDynamics,
     LugreMotion, LugreMotionSummary,
+};
+pub use zoo::{
+    lugre_zoo_free, lugre_zoo_loop_new, lugre_zoo_model_info, lugre_zoo_model_name, lugre_zoo_new,
+    lugre_zoo_parameter, lugre_zoo_value, LugreZoo, LugreZooModelInfo, LugreZooParameter,
+    LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
 };
 
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
@@ -83,9 +89,50 @@ pub struct LugreModel {
     dahl: Option<Dahl>,
 }
 
-/// The periodic hysteresis loop of one input.
+/// The periodic hysteresis loop of one input: LuGre's or Dahl's ([`lugre_loop_new`]) or a
+/// model of the zoo's ([`lugre_zoo_loop_new`]); the `lugre_loop_*` accessors serve both.
 pub struct LugreLoop {
-    hl: HysteresisLoop,
+    inner: Periodic,
+}
+
+/// What a [`LugreLoop`] holds.
+enum Periodic {
+    LuGre(HysteresisLoop),
+    /// The model is kept: the loop's points between turning points are walked on it.
+    Zoo(Box<(lugre::zoo::ZooModel, lugre::zoo::ZooLoop)>),
+}
+
+impl LugreLoop {
+    /// The turning points `u`, `rho` there and the output there.
+    fn turning(&self) -> [&[f64]; 3] {
+        match &self.inner {
+            Periodic::LuGre(hl) => [hl.turning_points(), hl.turning_rho(), hl.turning_y()],
+            Periodic::Zoo(z) => [z.1.turning_points(), z.1.turning_rho(), z.1.turning_force()],
+        }
+    }
+
+    /// The work per period and the period.
+    fn summary(&self) -> [f64; 2] {
+        match &self.inner {
+            Periodic::LuGre(hl) => [hl.work_per_period(), hl.period()],
+            Periodic::Zoo(z) => [z.1.work_per_period(), z.1.period()],
+        }
+    }
+
+    /// Every loop with its energies (LuGre's are made on demand, the zoo's are kept).
+    fn loops(&self) -> std::borrow::Cow<'_, [lugre::Loop]> {
+        match &self.inner {
+            Periodic::LuGre(hl) => hl.loops().into(),
+            Periodic::Zoo(z) => z.1.loops().into(),
+        }
+    }
+
+    fn sample(&self, n: usize) -> Result<Vec<lugre::LoopPoint>, lugre::SamplesError> {
+        match &self.inner {
+            Periodic::LuGre(hl) => hl.try_sample(n),
+            Periodic::Zoo(z) => z.0.sample(&z.1, n),
+        }
+    }
 }
 
 /// The rainflow cycles of a history, as columns.
@@ -387,7 +434,12 @@ pub extern "C" fn lugre_loop_new(
         let m = handle(model, "model")?;
         let tp = TurningPoints::new(input(u, n, "u")?)?;
         let hl = HysteresisLoop::new(m.rate_independent(), &tp)?;
-        set_out(out, LugreLoop { hl })
+        set_out(
+            out,
+            LugreLoop {
+                inner: Periodic::LuGre(hl),
+            },
+        )
     })
 }
 
@@ -401,12 +453,13 @@ pub extern "C" fn lugre_loop_free(hl: *mut LugreLoop) {
 #[no_mangle]
 pub extern "C" fn lugre_loop_turning_len(hl: *const LugreLoop, len: *mut usize) -> LugreStatus {
     guard(|| {
-        *handle_mut(len, "len")? = handle(hl, "loop")?.hl.turning_points().len();
+        *handle_mut(len, "len")? = handle(hl, "loop")?.turning()[0].len();
         Ok(())
     })
 }
 
-/// The turning points: `u`, the total variation `rho` there and `y°` (any pointer may be NULL).
+/// The turning points: `u`, the total variation `rho` there and `y°` (a model of the zoo: its
+/// force) there (any pointer may be NULL).
 #[no_mangle]
 pub extern "C" fn lugre_loop_turning(
     hl: *const LugreLoop,
@@ -416,17 +469,18 @@ pub extern "C" fn lugre_loop_turning(
     cap: usize,
 ) -> LugreStatus {
     guard(|| {
-        let hl = &handle(hl, "loop")?.hl;
-        capacity(hl.turning_points().len(), cap)?;
-        output(u, hl.turning_points());
-        output(rho, hl.turning_rho());
-        output(y, hl.turning_y());
+        let [tu, trho, ty] = handle(hl, "loop")?.turning();
+        capacity(tu.len(), cap)?;
+        output(u, tu);
+        output(rho, trho);
+        output(y, ty);
         Ok(())
     })
 }
 
-/// The work per period (all of it dissipated) and the period (in `rho`, the input's total
-/// variation over one period); either pointer may be NULL.
+/// The work per period (LuGre's and Dahl's all dissipated; a model of the zoo's as its major
+/// loop's `work`) and the period (in `rho`, the input's total variation over one period);
+/// either pointer may be NULL.
 #[no_mangle]
 pub extern "C" fn lugre_loop_summary(
     hl: *const LugreLoop,
@@ -434,9 +488,9 @@ pub extern "C" fn lugre_loop_summary(
     period: *mut f64,
 ) -> LugreStatus {
     guard(|| {
-        let hl = &handle(hl, "loop")?.hl;
-        output(work_per_period, &[hl.work_per_period()]);
-        output(period, &[hl.period()]);
+        let [work, p] = handle(hl, "loop")?.summary();
+        output(work_per_period, &[work]);
+        output(period, &[p]);
         Ok(())
     })
 }
@@ -445,7 +499,7 @@ pub extern "C" fn lugre_loop_summary(
 #[no_mangle]
 pub extern "C" fn lugre_loop_table_len(hl: *const LugreLoop, len: *mut usize) -> LugreStatus {
     guard(|| {
-        *handle_mut(len, "len")? = handle(hl, "loop")?.hl.loops().len();
+        *handle_mut(len, "len")? = handle(hl, "loop")?.loops().len();
         Ok(())
     })
 }
@@ -458,7 +512,7 @@ pub extern "C" fn lugre_loop_table(
     cap: usize,
 ) -> LugreStatus {
     guard(|| {
-        let loops = handle(hl, "loop")?.hl.loops();
+        let loops = handle(hl, "loop")?.loops();
         let c = handle(columns, "columns")?;
         capacity(loops.len(), cap)?;
         let col = |f: &dyn Fn(&lugre::Loop) -> f64| loops.iter().map(f).collect::<Vec<f64>>();
@@ -494,8 +548,9 @@ pub extern "C" fn lugre_loop_table(
     })
 }
 
-/// `y°` at `n >= 2` points evenly spaced in `rho` over one period, both ends included
-/// (`rho = 0` and the period): `rho`, the input `u` and `y°` there, each written to a buffer
+/// `y°` (a model of the zoo: its force) at `n >= 2` points evenly spaced in `rho` over one
+/// period, both ends included (`rho = 0` and the period): `rho`, the input `u` and the output
+/// there, each written to a buffer
 /// of `n` (any pointer may be NULL). `n < 2` is an error (a period has two ends).
 #[no_mangle]
 pub extern "C" fn lugre_loop_sample(
@@ -506,9 +561,8 @@ pub extern "C" fn lugre_loop_sample(
     y: *mut f64,
 ) -> LugreStatus {
     guard(|| {
-        let hl = &handle(hl, "loop")?.hl;
-        let points = hl
-            .try_sample(n)
+        let points = handle(hl, "loop")?
+            .sample(n)
             .map_err(|e| fail(LugreStatus::InvalidArgument, e.render("n")))?;
         let column = |f: fn(&lugre::LoopPoint) -> f64| points.iter().map(f).collect::<Vec<_>>();
         output(rho, &column(|p| p.rho));

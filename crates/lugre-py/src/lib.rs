@@ -13,6 +13,7 @@ mod models;
 mod read;
 mod simulate;
 mod sweep;
+mod zoo;
 
 use pyo3::prelude::*;
 
@@ -27,6 +28,8 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<loops::PyLoopPoint>()?;
     m.add_class::<loops::PyTheoremA>()?;
     m.add_class::<loops::PyCurve>()?;
+    m.add_class::<zoo::PyZooModel>()?;
+    m.add_class::<zoo::PyZooLoop>()?;
     m.add_function(wrap_pyfunction!(cycles::cycles, m)?)?;
     m.add_class::<chunk::PyChunkSummary>()?;
     m.add_class::<chunk::PyChunkPlan>()?;
@@ -51,6 +54,7 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(read::read, m)?)?;
     // The core's tables: the models' parameters, the columns of cycles and sampled loops.
     m.add("PARAMETERS", models::parameter_table(m.py())?)?;
+    m.add("ZOO_MODELS", zoo::zoo_table(m.py())?)?;
     m.add("CYCLE_COLUMNS", lugre::CycleColumns::NAMES)?;
     m.add("LOOP_COLUMNS", lugre::LoopPoint::COLUMNS)?;
     models::document(m)?;

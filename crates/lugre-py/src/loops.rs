@@ -189,8 +189,7 @@ impl PyHysteresisLoop {
     /// dissipation, closure_gap, parent and depth.
     #[getter]
     fn loops<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        let loops = self.rust_loops(py);
-        PyList::new(py, loops.iter().map(|l| PyLoop { inner: l.clone() }))
+        loop_list(py, self.rust_loops(py))
     }
 
     /// Every loop of `loops` as numpy columns, one row per loop in the same order: a dict
@@ -217,22 +216,22 @@ impl PyHysteresisLoop {
             "kind",
             gather_int(&|r| i64::from(r != major)).into_pyarray(py),
         )?;
-        let columns: [(&str, &dyn Fn(usize) -> f64); 13] = [
-            ("start_rho", &|r| rho[start[r]]),
-            ("start_u", &|r| u[start[r]]),
-            ("start_y", &|r| y[start[r]]),
-            ("reversal_rho", &|r| t.reversal_rho()[r]),
-            ("reversal_u", &|r| u[reversal[r]]),
-            ("reversal_y", &|r| y[reversal[r]]),
-            ("end_rho", &|r| t.end_rho()[r]),
-            ("end_u", &|r| t.end_u()[r]),
-            ("end_y", &|r| t.end_y()[r]),
-            ("work", &|r| t.work()[r]),
-            ("stored_energy_change", &|r| t.stored_energy_change()[r]),
-            ("dissipation", &|r| t.dissipation()[r]),
-            ("closure_gap", &|r| t.closure_gap()[r]),
+        let columns: [&dyn Fn(usize) -> f64; 13] = [
+            &|r| rho[start[r]],
+            &|r| u[start[r]],
+            &|r| y[start[r]],
+            &|r| t.reversal_rho()[r],
+            &|r| u[reversal[r]],
+            &|r| y[reversal[r]],
+            &|r| t.end_rho()[r],
+            &|r| t.end_u()[r],
+            &|r| t.end_y()[r],
+            &|r| t.work()[r],
+            &|r| t.stored_energy_change()[r],
+            &|r| t.dissipation()[r],
+            &|r| t.closure_gap()[r],
         ];
-        for (name, value) in columns {
+        for (name, value) in TABLE_COLUMNS.into_iter().zip(columns) {
             out.set_item(name, vec_out(py, gather(value)))?;
         }
         out.set_item(
@@ -266,27 +265,8 @@ impl PyHysteresisLoop {
     /// `rho, u, y = hl.sample(1001)`.
     #[pyo3(signature = (n=None), text_signature = "($self, n=1001)")]
     fn sample(&self, py: Python<'_>, n: Option<&Bound<'_, PyAny>>) -> PyResult<PyCurve> {
-        let n = match n {
-            Some(n) if !n.is_none() => count(n, "n")?,
-            _ => 1001,
-        };
-        let n = usize::try_from(n).unwrap_or(usize::MAX);
-        lugre::loops::check_samples(n).map_err(|e| PyValueError::new_err(e.render("n")))?;
-        let mut rho = try_vec(n)?;
-        let mut u = try_vec(n)?;
-        let mut y = try_vec(n)?;
-        py.detach(|| {
-            for p in self.hl.sample(n) {
-                rho.push(p.rho);
-                u.push(p.u);
-                y.push(p.y);
-            }
-        });
-        Ok(PyCurve {
-            rho: vec_out(py, rho).unbind(),
-            u: vec_out(py, u).unbind(),
-            y: vec_out(py, y).unbind(),
-        })
+        let n = samples_n(n)?;
+        PyCurve::from_points(py, n, || Ok::<_, lugre::SamplesError>(self.hl.sample(n)))
     }
 
     /// Number of turning points in one period.
@@ -322,6 +302,107 @@ impl PyHysteresisLoop {
     fn __traverse__(&self, visit: pyo3::PyVisit<'_>) -> Result<(), pyo3::PyTraverseError> {
         visit.call(&self.model)
     }
+}
+
+/// The float columns of a loop table (`loop_table`), between `kind` and `parent`, `depth`.
+const TABLE_COLUMNS: [&str; 13] = [
+    "start_rho",
+    "start_u",
+    "start_y",
+    "reversal_rho",
+    "reversal_u",
+    "reversal_y",
+    "end_rho",
+    "end_u",
+    "end_y",
+    "work",
+    "stored_energy_change",
+    "dissipation",
+    "closure_gap",
+];
+
+/// The loop records as a list of `lugre.Loop`.
+pub(crate) fn loop_list<'py>(
+    py: Python<'py>,
+    loops: &[lugre::Loop],
+) -> PyResult<Bound<'py, PyList>> {
+    PyList::new(py, loops.iter().map(|l| PyLoop { inner: l.clone() }))
+}
+
+/// The loop records as `loop_table`'s columns (rows in the records' order; `parent` -1 for
+/// none), for a loop whose engine keeps records rather than columns.
+pub(crate) fn records_table<'py>(
+    py: Python<'py>,
+    loops: &[lugre::Loop],
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let ints = |f: &dyn Fn(&lugre::Loop) -> i64| -> Vec<i64> { loops.iter().map(f).collect() };
+    out.set_item(
+        "kind",
+        ints(&|l| i64::from(l.kind != lugre::LoopKind::Major)).into_pyarray(py),
+    )?;
+    let columns: [fn(&lugre::Loop) -> f64; 13] = [
+        |l| l.start.rho,
+        |l| l.start.u,
+        |l| l.start.y,
+        |l| l.reversal.rho,
+        |l| l.reversal.u,
+        |l| l.reversal.y,
+        |l| l.end.rho,
+        |l| l.end.u,
+        |l| l.end.y,
+        |l| l.energy.work,
+        |l| l.energy.stored_energy_change,
+        |l| l.energy.dissipation,
+        |l| l.energy.closure_gap,
+    ];
+    for (name, f) in TABLE_COLUMNS.into_iter().zip(columns) {
+        out.set_item(name, vec_out(py, loops.iter().map(f).collect()))?;
+    }
+    out.set_item(
+        "parent",
+        ints(&|l| l.parent.map_or(-1, |p| p as i64)).into_pyarray(py),
+    )?;
+    out.set_item("depth", ints(&|l| l.depth as i64).into_pyarray(py))?;
+    Ok(out)
+}
+
+/// The `n` of `sample(n)`: 1001 when not given, checked as the core checks it.
+pub(crate) fn samples_n(n: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
+    let n = match n {
+        Some(n) if !n.is_none() => count(n, "n")?,
+        _ => 1001,
+    };
+    let n = usize::try_from(n).unwrap_or(usize::MAX);
+    lugre::loops::check_samples(n).map_err(|e| PyValueError::new_err(e.render("n")))?;
+    Ok(n)
+}
+
+/// `f(r)` for each of `rho`, elementwise (a float or a float64 array as [`map_floats`]), NaN
+/// where `r` is not finite; `f` is handed every finite value at once (one walk of the loop).
+pub(crate) fn map_points<'py>(
+    rho: &Bound<'py, PyAny>,
+    f: impl Fn(&[f64]) -> Vec<f64> + Send + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
+    let py = rho.py();
+    let x = crate::convert::floats(rho, "rho")?;
+    let finite: Vec<f64> = x.data.iter().copied().filter(|r| r.is_finite()).collect();
+    let mut values = py.detach(|| f(&finite)).into_iter();
+    let out: Vec<f64> = x
+        .data
+        .iter()
+        .map(|r| {
+            if r.is_finite() {
+                values.next().unwrap_or(f64::NAN)
+            } else {
+                f64::NAN
+            }
+        })
+        .collect();
+    if x.shape.is_empty() && !x.was_array {
+        return Ok(pyo3::types::PyFloat::new(py, out[0]).into_any());
+    }
+    crate::convert::array_out(py, out, &x.shape)
 }
 
 /// What `__reduce__` returns: a callable and its arguments.
@@ -666,6 +747,33 @@ pub struct PyCurve {
     rho: Py<PyAny>,
     u: Py<PyAny>,
     y: Py<PyAny>,
+}
+
+impl PyCurve {
+    /// The curve of the `n` points `points` makes (run detached).
+    pub(crate) fn from_points<E: std::fmt::Display + Send>(
+        py: Python<'_>,
+        n: usize,
+        points: impl FnOnce() -> Result<Vec<lugre::LoopPoint>, E> + Send,
+    ) -> PyResult<Self> {
+        let mut rho = try_vec(n)?;
+        let mut u = try_vec(n)?;
+        let mut y = try_vec(n)?;
+        py.detach(|| -> Result<(), E> {
+            for p in points()? {
+                rho.push(p.rho);
+                u.push(p.u);
+                y.push(p.y);
+            }
+            Ok(())
+        })
+        .map_err(value_error)?;
+        Ok(Self {
+            rho: vec_out(py, rho).unbind(),
+            u: vec_out(py, u).unbind(),
+            y: vec_out(py, y).unbind(),
+        })
+    }
 }
 
 #[pymethods]

@@ -95,12 +95,52 @@ fn point(rho: f64, u: f64, y: f64) -> Value {
 }
 
 fn run_loop(f: &Fields) -> Outcome {
-    let m = model(f.get("model"))?;
     let u = f.numbers("turning_points").expect("turning_points");
     let mut hl = ptr::null_mut();
-    status(lugre_loop_new(m.0, u.as_ptr(), u.len(), &mut hl))?;
+    let zoo = f.get("model").filter(|m| m.get("model").is_some());
+    match zoo {
+        Some(m) => zoo_loop(m, &u, &mut hl)?,
+        None => {
+            let m = model(f.get("model"))?;
+            status(lugre_loop_new(m.0, u.as_ptr(), u.len(), &mut hl))?;
+        }
+    }
     let result = loop_json(hl, f.get("samples"));
     lugre_loop_free(hl);
+    result
+}
+
+/// The loop of the zoo's model `m["model"]` whose parameters are the other keys of `m` (a
+/// number or an array each), given by name as a C caller gives them.
+fn zoo_loop(m: &Value, u: &[f64], hl: &mut *mut LugreLoop) -> Result<(), Failure> {
+    let name = m["model"].as_str().expect("model names the model");
+    let m = m.as_object().expect("model is an object");
+    let given: Vec<(CString, Vec<f64>)> = m
+        .iter()
+        .filter(|(k, _)| *k != "model")
+        .map(|(k, v)| {
+            let values = match v {
+                Value::Array(items) => items.iter().map(number).collect(),
+                v => vec![number(v)],
+            };
+            (CString::new(k.as_str()).unwrap(), values)
+        })
+        .collect();
+    let names: Vec<*const std::ffi::c_char> = given.iter().map(|(k, _)| k.as_ptr()).collect();
+    let values: Vec<*const f64> = given.iter().map(|(_, v)| v.as_ptr()).collect();
+    let lens: Vec<usize> = given.iter().map(|(_, v)| v.len()).collect();
+    let model = CString::new(name).unwrap();
+    let mut zoo = ptr::null_mut();
+    status(lugre_zoo_new(
+        model.as_ptr(),
+        names.len(),
+        names.as_ptr(),
+        values.as_ptr(),
+        lens.as_ptr(),
+        &mut zoo,
+    ))?;
+    let result = status(lugre_zoo_loop_new(zoo, u.as_ptr(), u.len(), hl));
+    lugre_zoo_free(zoo);
     result
 }
 

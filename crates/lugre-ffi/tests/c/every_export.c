@@ -90,6 +90,64 @@ static void loops(const LugreModel *m) {
     lugre_loop_free(hl);
 }
 
+/* Every model of the zoo's table, found by listing it (none named here): its parameters given
+ * by name at their defaults, its loop read through the LugreLoop accessors, bad input refused. */
+static void zoo(void) {
+    size_t count = 0;
+    while (lugre_zoo_model_name(count) != NULL) count++;
+    CHECK(count >= 2);
+    for (size_t i = 0; i < count; i++) {
+        const char *model = lugre_zoo_model_name(i);
+        LugreZooModelInfo info;
+        OK(lugre_zoo_model_info(model, &info));
+        enum { MOST = 64 };
+        CHECK(strcmp(info.name, model) == 0 && info.parameters >= 1 && info.parameters <= MOST);
+        if (info.parameters > MOST) continue;
+        const char *names[MOST];
+        const double *values[MOST];
+        size_t lens[MOST];
+        for (size_t k = 0; k < info.parameters; k++) {
+            LugreZooParameter p;
+            OK(lugre_zoo_parameter(model, k, &p));
+            CHECK(p.default_len >= 1 && (p.shape == LUGRE_ZOO_ELEMENTS || p.default_len == 1));
+            CHECK(p.shape == LUGRE_ZOO_SCALAR || p.shape == LUGRE_ZOO_ELEMENTS);
+            names[k] = p.name;
+            values[k] = p.default_values;
+            lens[k] = p.default_len;
+        }
+        LugreZooParameter past;
+        CHECK(lugre_zoo_parameter(model, info.parameters, &past) == LUGRE_STATUS_INVALID_ARGUMENT);
+        LugreZoo *z = NULL;
+        OK(lugre_zoo_new(model, info.parameters, names, values, lens, &z));
+        double echo[16];
+        size_t len = 0;
+        OK(lugre_zoo_value(z, 0, NULL, 0, &len));
+        CHECK(len == lens[0]);
+        OK(lugre_zoo_value(z, 0, echo, 16, NULL));
+        CHECK(echo[0] == values[0][0]);
+        const double u[] = {3, 1, 2, -3};
+        LugreLoop *hl = NULL;
+        OK(lugre_zoo_loop_new(z, u, 4, &hl));
+        size_t k = 0, rows = 0;
+        OK(lugre_loop_turning_len(hl, &k));
+        OK(lugre_loop_table_len(hl, &rows));
+        CHECK(k == 4 && rows == 2); /* the major loop and the minor loop 1 -> 2 -> 1 */
+        double work = 0, period = 0;
+        OK(lugre_loop_summary(hl, &work, &period));
+        CHECK(period == 14 && work != 0);
+        lugre_loop_free(hl);
+        lugre_zoo_free(z);
+        /* An unknown parameter: the core's message names the model's parameters. */
+        const char *bad[] = {"no_such_parameter"};
+        CHECK(lugre_zoo_new(model, 1, bad, values, lens, &z) == LUGRE_STATUS_INVALID_ARGUMENT);
+        CHECK(strstr(lugre_last_error(), names[0]) != NULL);
+    }
+    LugreZoo *z = NULL;
+    CHECK(lugre_zoo_new("no-such-model", 0, NULL, NULL, NULL, &z) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(z == NULL && strstr(lugre_last_error(), lugre_zoo_model_name(0)) != NULL);
+    lugre_zoo_free(NULL);
+}
+
 static void cycles(const LugreModel *m) {
     const double h[] = {-2, 1, -3, 5, -1, 3, -4, 4, -2};
     LugreCycles *cy = NULL;
@@ -234,6 +292,7 @@ int main(void) {
     lugre_model_free(m);
     lugre_model_free(NULL);
     fits();
+    zoo();
     if (failures == 0) printf("ok\n");
     return failures == 0 ? 0 : 1;
 }

@@ -22,6 +22,11 @@ Models: LuGre(sigma0=1, sigma1=1, sigma2=0, fc=1, fs=2, vs=1, beta=1) and Dahl(r
 (keyword arguments; the defaults are the paper's). Invalid values raise ValueError with the
 message the ``lugre`` command prints; arguments of the wrong type raise TypeError.
 
+The zoo's models (Maxwell-slip, Prandtl-Ishlinskii, ...; ``lugre.ZOO_MODELS`` is the core's table
+of them with their parameters, units, domains and defaults) through one class:
+``lugre.ZooModel("maxwell-slip", stiffness=[1, 2], slip_force=[1, 0.5]).loop([3, 1, 2, -3])``
+returns a ``ZooLoop`` with the surface of ``HysteresisLoop`` (loops and their energies, samples).
+
 Histories too large for one machine: ``lugre.dask`` (``pip install lugre[dask]``) counts a
 ``dask.array`` or a list of ``.npy`` files chunk by chunk, equal to ``lugre.cycles`` row for row;
 the chunk functions it schedules (``chunk_count``, ``chunk_merge``, ``ChunkPlan``, ...) are in
@@ -57,6 +62,7 @@ from ._lugre import (
     LOOP_COLUMNS,
     PARAMETERS,
     SWEEP_COLUMNS,
+    ZOO_MODELS,
     Curve,
     Dahl,
     HysteresisLoop,
@@ -64,6 +70,8 @@ from ._lugre import (
     LoopPoint,
     LuGre,
     TheoremA,
+    ZooLoop,
+    ZooModel,
     __version__,
     cycles,
     dynamics,
@@ -80,6 +88,7 @@ __all__ = [
     "LOOP_COLUMNS",
     "PARAMETERS",
     "SWEEP_COLUMNS",
+    "ZOO_MODELS",
     "Curve",
     "CyclesResult",
     "Dahl",
@@ -89,6 +98,8 @@ __all__ = [
     "LoopPoint",
     "LuGre",
     "TheoremA",
+    "ZooLoop",
+    "ZooModel",
     "__version__",
     "chunk",
     "cycles",
