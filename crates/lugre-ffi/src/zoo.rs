@@ -91,7 +91,7 @@ fn c_table() -> &'static CTable {
                 let parameters = m
                     .parameters
                     .iter()
-                    .map(|p| [c(p.name), c(p.unit), c(p.description), c(p.domain)])
+                    .map(|p| [c(p.name), c(p.unit), c(p.description), c(&p.domain.text())])
                     .collect();
                 (texts, parameters)
             })

@@ -154,7 +154,7 @@ fn the_table_as_c_reads_it() {
                     c_str(q.description),
                     c_str(q.domain)
                 ],
-                [p.name, p.unit, p.description, p.domain]
+                [p.name, p.unit, p.description, &p.domain.text()]
             );
             let shape = match p.shape {
                 Shape::Scalar => LUGRE_ZOO_SCALAR,

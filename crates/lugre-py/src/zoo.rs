@@ -330,7 +330,7 @@ pub(crate) fn zoo_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
             let row = PyDict::new(py);
             row.set_item("unit", p.unit)?;
             row.set_item("description", p.description)?;
-            row.set_item("domain", p.domain)?;
+            row.set_item("domain", p.domain.text())?;
             match p.shape {
                 Shape::Scalar => {
                     row.set_item("shape", "scalar")?;
