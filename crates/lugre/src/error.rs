@@ -22,6 +22,15 @@ pub fn num(x: f64) -> String {
     }
 }
 
+/// `x` as [`num`] shows it, or words where it is not a finite number.
+fn shown(x: f64) -> String {
+    if x.is_finite() {
+        num(x)
+    } else {
+        "a value that is not a finite number".into()
+    }
+}
+
 /// The residual RMS of a best point, in words where it is not a number.
 fn rms_text(rms: f64) -> String {
     if rms.is_finite() {
@@ -219,6 +228,13 @@ pub enum InputError {
 pub enum LoopError {
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
+    /// A scalar parameter outside its domain: its name, its value and the condition.
+    #[error("{name} must be {condition}, got {}", shown(*.value))]
+    OutOfDomain {
+        name: &'static str,
+        value: f64,
+        condition: String,
+    },
     #[error(transparent)]
     Input(#[from] InputError),
 }
@@ -868,6 +884,13 @@ pub enum ZooError {
     },
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
+    /// A scalar parameter outside its domain: its name, its value and the condition.
+    #[error("{name} must be {condition}, got {}", shown(*.value))]
+    OutOfDomain {
+        name: &'static str,
+        value: f64,
+        condition: String,
+    },
     #[error(transparent)]
     Input(#[from] InputError),
 }

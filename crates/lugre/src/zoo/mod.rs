@@ -57,11 +57,13 @@
 //! `(u_max + u_min)/2`. The pairing engine of [`crate::loops`] carries LuGre's relaxation sums;
 //! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
+mod elastoplastic;
 mod engine;
 mod maxwell;
 mod prandtl;
 mod segment;
 
+pub use elastoplastic::ElastoPlastic;
 pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
