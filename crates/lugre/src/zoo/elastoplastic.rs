@@ -54,10 +54,12 @@
 //! No closed form exists for the blend: `R`, `Φ`, `G` (1-D quadratures of analytic integrands)
 //! and `phi` (the root of (E5) for given `y`, by a safeguarded Newton in `ln e`) are built
 //! once in [`ElastoPlastic::new`] as piecewise Chebyshev series of degree 16-17, each piece
-//! refined until its last two coefficients are below `2e-16` of its largest. The segment map
-//! then costs one `exp` and three or four series. Error, checked against scipy's Radau and DOP853
-//! at rtol 1e-12 (`tests/zoo_elastoplastic.rs`) and against the tables' own Newton roots: `z`
-//! within 1e-13 `z_max`, the dissipation within 1e-13 `sigma0 z_max (z_max + |du|)` per segment.
+//! refined until its last two coefficients are below `5e-15` of its largest, in pairs on
+//! shared pieces: `(R, Φ)` and `(R, G)` in `e`, and `(phi, Φ or G)` in `y`. A segment in the
+//! blend then costs one `exp` and one or two evaluations (one pair each). Error, checked
+//! against Simpson's rule on the integrals and against scipy's Radau and DOP853 at rtol 1e-12
+//! (`tests/zoo_elastoplastic.rs`): `z` within 1e-13 `z_max`, the dissipation within 1e-13
+//! `sigma0 z_max (z_max + |du|)` per segment, and relative 1e-13 where it is not tiny.
 
 mod chebyshev;
 
@@ -78,21 +80,21 @@ pub struct ElastoPlastic {
     blend: Blend,
 }
 
-/// The blend in units of `z_max`: `delta = 1 - zba / z_max` and the tables (E5)-(E7).
+/// The blend in units of `z_max`: `delta = 1 - zba / z_max` and the tables (E5)-(E7), each
+/// pair of functions on shared pieces (one evaluation gives both).
 #[derive(Debug, Clone, PartialEq)]
 struct Blend {
     delta: f64,
     /// `pi / (2 delta)`.
     a: f64,
-    /// `R(e)` on `[0, delta]`.
-    forward: Table,
-    /// `phi(y)` on `[0, 1]`.
-    inverse: Table,
-    /// `Φ(e)` on `[delta/2, delta]`.
-    early: Table,
-    /// `G(e)` on `[0, delta/2]`.
-    deep: Table,
-    /// `tau(delta/2)` and `Φ(delta/2)`.
+    /// `(R, Φ)` of `e` on `[delta/2, delta]` (the start of the blend).
+    early: Table<2>,
+    /// `(R, G)` of `e` on `[0, delta/2]`.
+    deep: Table<2>,
+    /// `(phi, Φ(e(y)))` for `y >= y_split`, `(phi, G(e(y)))` below, on `[0, 1]`.
+    by_y: Table<2>,
+    /// `y` at `e = delta/2`, `tau` there, `Φ` there.
+    y_split: f64,
     tau_split: f64,
     phi_split: f64,
 }
@@ -274,28 +276,60 @@ impl Blend {
 
     fn new(delta: f64) -> Self {
         let a = 0.5 * std::f64::consts::PI / delta;
+        let split = 0.5 * delta;
         let mut blend = Self {
             delta,
             a,
-            forward: Table::fit(&|_| 0.0, &[0.0, delta]),
-            inverse: Table::fit(&|_| 0.0, &[0.0, 1.0]),
-            early: Table::fit(&|_| 0.0, &[0.5 * delta, delta]),
-            deep: Table::fit(&|_| 0.0, &[0.0, 0.5 * delta]),
+            early: Table::fit(&|_| [0.0; 2], &[split, delta]),
+            deep: Table::fit(&|_| [0.0; 2], &[0.0, split]),
+            by_y: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
+            y_split: 0.0,
             tau_split: 0.0,
             phi_split: 0.0,
         };
-        let split = 0.5 * delta;
-        blend.forward = Table::integral(&|e| blend.r(e), &[0.0, split, delta]);
-        blend.deep = Table::integral(&|e| blend.g(e), &[0.0, split]);
         let mut breaks: Vec<f64> = (0..Self::GRADED)
             .map(|k| delta - split * 0.5f64.powi(k))
             .collect();
         breaks.push(delta);
-        blend.early = Table::integral(&|e| blend.dissipation_density(e), &breaks);
-        blend.inverse = Table::fit(&|y| blend.phi_root(y), &[0.0, 0.5, 1.0]);
-        blend.tau_split = (delta / split).ln() + blend.forward.eval(split);
-        blend.phi_split = blend.early.eval(split);
+        blend.early = Table::integral(
+            &|e| [blend.r(e), blend.dissipation_density(e)],
+            &breaks,
+            [0.0; 2],
+        );
+        let [r_split, phi_split] = blend.early.eval(split);
+        blend.deep = Table::integral(&|e| [blend.r(e), blend.g(e)], &[0.0, split], [r_split, 0.0]);
+        blend.y_split = 0.5 * (-r_split).exp();
+        blend.tau_split = std::f64::consts::LN_2 + r_split;
+        blend.phi_split = phi_split;
+        // Graded toward y = 1 too: Φ(e(y)) ~ (1 - y)^3 there.
+        let mut breaks = vec![0.0];
+        breaks.extend((0..Self::GRADED).map(|k| 1.0 - (1.0 - blend.y_split) * 0.5f64.powi(k)));
+        breaks.push(1.0);
+        blend.by_y = Table::fit(
+            &|y| {
+                let e = blend.root(y);
+                let early = y >= blend.y_split;
+                let [r, d] = blend.at_e(e, early);
+                [delta * r.exp(), d]
+            },
+            &breaks,
+        );
         blend
+    }
+
+    /// `(R, Φ)` (`early`) or `(R, G)` at `e`.
+    #[inline]
+    fn at_e(&self, e: f64, early: bool) -> [f64; 2] {
+        if early {
+            self.early.eval(e)
+        } else {
+            self.deep.eval(e)
+        }
+    }
+
+    /// `R(e)`.
+    fn big_r(&self, e: f64) -> f64 {
+        self.at_e(e, e >= 0.5 * self.delta)[0]
     }
 
     /// `(x, S / e, sin(a e) / e)` at `e` (the last two finite at `e = 0`).
@@ -324,7 +358,7 @@ impl Blend {
         (2.0 - e + x * x * s_e) / (1.0 + x * s_e)
     }
 
-    /// `alpha x^2 / h`, the integrand of `Φ` (E7), `alpha = 1 - S`.
+    /// `alpha x^2 / h`, the integrand of `Φ` (E7).
     fn dissipation_density(&self, e: f64) -> f64 {
         let (x, s_e, _) = self.parts(e);
         // alpha = sin^2(pi theta / 2) from delta - e, not 1 - S: relative accuracy near zba.
@@ -332,16 +366,16 @@ impl Blend {
         alpha * x * x / (e * (1.0 + x * s_e))
     }
 
-    /// `phi(y) = e / y` with `ln(e / delta) - R(e) = ln y` (E5, E6): safeguarded Newton in
-    /// `ln e` on the bracket `ln y + ln delta + [R(0), 0]` (`R` is increasing and `<= 0`);
-    /// the derivative is `e / h(e)`, in `(0, 1]`.
-    fn phi_root(&self, y: f64) -> f64 {
+    /// `e` with `ln(e / delta) - R(e) = ln y` (E5, E6): safeguarded Newton in `ln e` on the
+    /// bracket `ln y + ln delta + [R(0), 0]` (`R` is increasing and `<= 0`); the derivative is
+    /// `e / h(e)`, in `(0, 1]`.
+    fn root(&self, y: f64) -> f64 {
         let target = y.ln() + self.delta.ln();
-        let (mut lo, mut hi) = (target + self.forward.eval(0.0), target);
+        let (mut lo, mut hi) = (target + self.big_r(0.0), target);
         let mut l = hi;
         for _ in 0..200 {
             let e = l.exp();
-            let f = l - target - self.forward.eval(e);
+            let f = l - target - self.big_r(e);
             if f > 0.0 {
                 hi = l;
             } else {
@@ -360,7 +394,7 @@ impl Blend {
                 break;
             }
         }
-        self.delta * self.forward.eval(l.exp()).exp()
+        l.exp()
     }
 
     /// From `e_a` over the length `l` (units of `z_max`): `e_b` and the dissipation (E7) in
@@ -368,24 +402,31 @@ impl Blend {
     #[inline]
     fn advance(&self, e_a: f64, l: f64) -> (f64, f64) {
         let split = 0.5 * self.delta;
-        let y_b = if e_a >= self.delta {
-            (-l).exp()
+        let early_a = e_a >= split;
+        // At the start of the blend R = Φ = 0.
+        let [r_a, d_a] = if e_a >= self.delta {
+            [0.0; 2]
         } else {
-            e_a / self.delta * (-self.forward.eval(e_a) - l).exp()
+            self.at_e(e_a, early_a)
         };
-        let e_b = (y_b * self.inverse.eval(y_b)).min(e_a);
-        let d = if e_b >= split {
-            self.early.eval(e_b) - self.early.eval(e_a)
-        } else if e_a <= split {
-            l - (self.deep.eval(e_b) - self.deep.eval(e_a))
+        let y_b = e_a / self.delta * (-r_a - l).exp();
+        let [phi, d_b] = self.by_y.eval(y_b);
+        let e_b = (y_b * phi).min(e_a);
+        let early_b = y_b >= self.y_split;
+        let d = if early_b && early_a {
+            d_b - d_a
+        } else if early_b {
+            // Both ends at the split, on either side by rounding: G at e_b instead.
+            l - (self.deep.eval(e_b)[1] - d_a)
+        } else if !early_a {
+            l - (d_b - d_a)
         } else {
             let tau_a = if e_a >= self.delta {
                 0.0
             } else {
-                (self.delta / e_a).ln() + self.forward.eval(e_a)
+                (self.delta / e_a).ln() + r_a
             };
-            let early = self.phi_split - self.early.eval(e_a);
-            early + (l - (self.tau_split - tau_a)) - self.deep.eval(e_b)
+            (self.phi_split - d_a) + (l - (self.tau_split - tau_a)) - d_b
         };
         (e_b, d.max(0.0))
     }
@@ -432,8 +473,8 @@ mod tests {
             let blend = Blend::new(delta);
             for k in 1..200 {
                 let e = delta * (k as f64 / 200.0).powi(3);
-                let y = e / delta * (-blend.forward.eval(e)).exp();
-                let back = y * blend.inverse.eval(y);
+                let y = e / delta * (-blend.big_r(e)).exp();
+                let back = y * blend.by_y.eval(y)[0];
                 assert!((back - e).abs() <= 1e-13 * delta, "{delta} {e} {back}");
             }
         }
