@@ -45,12 +45,28 @@ struct Piece<const K: usize> {
 
 impl<const K: usize> Table<K> {
     /// The values at `x` (the end pieces extend past the table's interval).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval(&self, x: f64) -> [f64; K] {
-        let last = self.map.len() - 1;
-        let i = self.breaks[1..=last].partition_point(|&b| b <= x);
+        let i = self.piece(x);
         let (m, inv) = self.map[i];
         clenshaw(&self.coef[i], (x - m) * inv)
+    }
+
+    /// The piece holding `x` (the first or last beyond the ends): a binary search whose steps
+    /// depend on the number of pieces only (conditional moves, no mispredicted branches).
+    #[inline(always)]
+    fn piece(&self, x: f64) -> usize {
+        let (mut lo, mut len) = (0, self.map.len());
+        while len > 1 {
+            let half = len / 2;
+            lo = if self.breaks[lo + half] <= x {
+                lo + half
+            } else {
+                lo
+            };
+            len -= half;
+        }
+        lo
     }
 
     /// The series of `f` from the initial `breaks`.
@@ -118,7 +134,7 @@ impl<const K: usize> Table<K> {
 }
 
 /// `sum_k c_k T_k(t)` for each of the `K` series, by the even/odd split.
-#[inline]
+#[inline(always)]
 fn clenshaw<const K: usize>(c: &[[f64; K]; STRIDE], t: f64) -> [f64; K] {
     let s = 2.0 * t * t - 1.0;
     let s2 = 2.0 * s;
