@@ -110,6 +110,19 @@ impl ElastoPlastic {
     /// finite, `sigma0 > 0`, `fc > 0`, `fs >= fc`, `0 <= zba < fc / sigma0` (the break-away
     /// displacement below every steady-state deflection `g(v) / sigma0`, Dupont et al.'s
     /// condition for stiction); [`ZooError::Overflow`] when `fs / sigma0` overflows.
+    ///
+    /// ```
+    /// use lugre::zoo::ElastoPlastic;
+    /// use lugre::TurningPoints;
+    /// let model = ElastoPlastic::new(1e5, 1.0, 1.5, 5e-6)?;
+    /// // Inside the break-away band (range below 2 zba): stiction, a closed elastic loop.
+    /// let small = model.loops(&TurningPoints::new(&[4e-6, -4e-6])?)?;
+    /// assert_eq!(small.loops()[0].energy.dissipation, 0.0);
+    /// // Beyond it the bristles slip in the blend and the loop dissipates.
+    /// let large = model.loops(&TurningPoints::new(&[1e-4, -1e-4])?)?;
+    /// assert!(large.work_per_period() > 0.0);
+    /// # Ok::<(), lugre::Error>(())
+    /// ```
     pub fn new(sigma0: f64, fc: f64, fs: f64, zba: f64) -> Result<Self, ZooError> {
         let out = |name, value, condition: String| ZooError::OutOfDomain {
             name,
