@@ -840,7 +840,8 @@ fn list(best: &[(&'static str, f64)]) -> String {
         .join(", ")
 }
 
-/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii), or a
+/// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii,
+/// elasto-plastic), or a
 /// loop of one that cannot be computed. Element parameters are named with their index.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
