@@ -841,8 +841,8 @@ fn list(best: &[(&'static str, f64)]) -> String {
 }
 
 /// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii,
-/// elasto-plastic), or a
-/// loop of one that cannot be computed. Element parameters are named with their index.
+/// elasto-plastic), or a loop of one that cannot be computed. Element parameters are named
+/// with their index, scalar ones with their condition.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ZooError {
