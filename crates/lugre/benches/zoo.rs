@@ -4,10 +4,11 @@
 //! second each), Maxwell-slip with 100 elements (target: at least 10^6) and Prandtl-Ishlinskii
 //! with 100 play operators (one segment map of every element per turning point), Bouc-Wen at
 //! n = 1 (closed form) and n = 1.5, 2.5 (tables and Newton): one state, its periodic state by
-//! Newton on the period map.
+//! Newton on the period map; the elasto-plastic model, its `z_max` a third of the largest step so
+//! that segments stick, slip in the blend and saturate.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use lugre::zoo::{BoucWen, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
+use lugre::zoo::{BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
 use std::hint::black_box;
 
 mod common;
@@ -46,6 +47,8 @@ fn zoo(c: &mut Criterion) {
         let model = BoucWen::new(0.5, 1.0, 4.0, 0.75, n).expect("valid parameters");
         loops(c, &format!("bouc_wen_n{n}"), &model);
     }
+    let elastoplastic = ElastoPlastic::new(1.0, 0.2, 0.3, 0.1).expect("valid parameters");
+    loops(c, "elastoplastic", &elastoplastic);
 }
 
 /// The loops of `model` for 10^3 and 10^5 random turning points.

@@ -22,6 +22,15 @@ pub fn num(x: f64) -> String {
     }
 }
 
+/// `x` as [`num`] shows it, or words where it is not a finite number.
+fn shown(x: f64) -> String {
+    if x.is_finite() {
+        num(x)
+    } else {
+        "a value that is not a finite number".into()
+    }
+}
+
 /// The residual RMS of a best point, in words where it is not a number.
 fn rms_text(rms: f64) -> String {
     if rms.is_finite() {
@@ -825,8 +834,8 @@ fn list(best: &[(&'static str, f64)]) -> String {
 }
 
 /// An invalid parameter of a model of [`crate::zoo`] (Maxwell-slip, Prandtl-Ishlinskii,
-/// Bouc-Wen), or a loop of one that cannot be computed. Element parameters are named with
-/// their index.
+/// Bouc-Wen, elasto-plastic), or a loop of one that cannot be computed. Element parameters are
+/// named with their index, scalar ones with their condition.
 #[derive(Debug, Clone, PartialEq, Error)]
 #[non_exhaustive]
 pub enum ZooError {
@@ -871,12 +880,13 @@ pub enum ZooError {
     },
     #[error("{name} takes one value, got {count}")]
     NotScalar { name: &'static str, count: usize },
-    /// A scalar parameter of a model outside its domain: `condition` says the domain and why.
-    #[error("{name} must be {condition}, got {value}", value = num(*.value))]
+    /// A scalar parameter of a model outside its domain: `condition` says the domain and why
+    /// (a value that is not finite is said in words).
+    #[error("{name} must be {condition}, got {}", shown(*.value))]
     Domain {
         name: &'static str,
         value: f64,
-        condition: &'static str,
+        condition: String,
     },
     #[error("{elements} elements x {turning_points} turning points exceed the {limit} element states a loop may hold")]
     TooLarge {

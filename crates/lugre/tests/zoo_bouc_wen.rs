@@ -53,7 +53,7 @@ fn each_parameter_outside_its_domain_is_named_with_its_value() {
         (BoucWen::new(1.0, 0.0, 1.0, 1.0, 1.0), "kw must be a finite number > 0 (N), got 0"),
         (
             BoucWen::new(1.0, 1.0, f64::INFINITY, 1.0, 1.0),
-            "rho must be a finite number > 0 (1/m; A > 0 in the classical form), got inf",
+            "rho must be a finite number > 0 (1/m; A > 0 in the classical form), got a value that is not a finite number",
         ),
         (
             BoucWen::new(1.0, 1.0, 1.0, 0.25, 1.0),

@@ -254,7 +254,7 @@ fn check(
         Err(ZooError::Domain {
             name,
             value,
-            condition,
+            condition: condition.into(),
         })
     }
 }

@@ -11,7 +11,7 @@
 //! LuGre's default loop on one figure; the literature has no canonical element
 //! distributions for these models.
 
-use super::{BoucWen, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
+use super::{BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
 use crate::cycles::{Cycle, HistoryEnergy};
 use crate::error::{SamplesError, ZooError};
 use crate::input::TurningPoints;
@@ -204,8 +204,50 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
     closes_minor_loops: false,
 };
 
+const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
+    name: "elastoplastic",
+    label: "Elasto-plastic",
+    equations: "F = sigma0 z, dz/du = 1 - alpha(z) z / z_max moving as z does (alpha = 0 for |z| <= zba: stiction), z_max = Fs / sigma0",
+    reference: "Dupont, Hayward, Armstrong and Altpeter, IEEE Trans. Automatic Control 47(5), 2002",
+    parameters: &[
+        ZooParameter {
+            name: "sigma0",
+            unit: "N/m",
+            description: "bristle stiffness",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[1.0],
+        },
+        ZooParameter {
+            name: "fc",
+            unit: "N",
+            description: "Coulomb force (zba < fc / sigma0)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[1.0],
+        },
+        ZooParameter {
+            name: "fs",
+            unit: "N",
+            description: "stiction force, the slow loop's plateau (fs >= fc)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[2.0],
+        },
+        ZooParameter {
+            name: "zba",
+            unit: "m",
+            description: "break-away displacement: purely elastic for |z| <= zba (zba < fc / sigma0)",
+            domain: Domain::NonNegative,
+            shape: Shape::Scalar,
+            default: &[0.5],
+        },
+    ],
+    closes_minor_loops: false,
+};
+
 /// Every model of the zoo, in the order `--help` lists them.
-pub const MODELS: [ZooModelSpec; 3] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII, BOUC_WEN];
+pub const MODELS: [ZooModelSpec; 4] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII, BOUC_WEN, ELASTOPLASTIC];
 
 impl ZooModelSpec {
     /// The model called `name` (case-insensitive, blanks around ignored).
@@ -234,6 +276,7 @@ pub enum ZooModel {
     MaxwellSlip(MaxwellSlip),
     PrandtlIshlinskii(PrandtlIshlinskii),
     BoucWen(BoucWen),
+    ElastoPlastic(ElastoPlastic),
 }
 
 /// Runs `$body` with `$m` bound to the concrete model (one dispatch for every method).
@@ -249,6 +292,10 @@ macro_rules! each {
                 $body
             }
             ZooModel::BoucWen(x) => {
+                let $m = x;
+                $body
+            }
+            ZooModel::ElastoPlastic(x) => {
                 let $m = x;
                 $body
             }
@@ -283,6 +330,12 @@ impl ZooModel {
                 value("thresholds"),
                 value("weights"),
             )?),
+            "elastoplastic" => Self::ElastoPlastic(ElastoPlastic::new(
+                value("sigma0")[0],
+                value("fc")[0],
+                value("fs")[0],
+                value("zba")[0],
+            )?),
             _ => Self::BoucWen(BoucWen::new(
                 value("kx")[0],
                 value("kw")[0],
@@ -299,6 +352,7 @@ impl ZooModel {
             Self::MaxwellSlip(_) => &MODELS[0],
             Self::PrandtlIshlinskii(_) => &MODELS[1],
             Self::BoucWen(_) => &MODELS[2],
+            Self::ElastoPlastic(_) => &MODELS[3],
         }
     }
 
@@ -312,6 +366,10 @@ impl ZooModel {
                 m.weights().to_vec(),
             ],
             Self::BoucWen(m) => [m.kx(), m.kw(), m.rho(), m.sigma(), m.n()]
+                .iter()
+                .map(|&x| vec![x])
+                .collect(),
+            Self::ElastoPlastic(m) => [m.sigma0(), m.fc(), m.fs(), m.zba()]
                 .iter()
                 .map(|&x| vec![x])
                 .collect(),
