@@ -3,14 +3,14 @@
 
 Each record is made by the independent generator (crates/lugre/tests/reference/servo_axis.py:
 scipy Radau at rtol 1e-10, then 0.5 um of position noise rounded to 0.1 um and 0.2 N of force
-noise, seed = record number) and fitted with
+noise, seeds FIRST..FIRST+N-1) and fitted with
 
     lugre fit --fit full --beta 2 --scale u=1e-3 --fix sigma2=40 --json [EXTRA...]
 
 Printed: per parameter the coverage of the 95 % intervals, the mean and RMS relative error, the
 RMS of the reported standard errors (relative), and the median wall time of one fit (the process included).
 
-    python3 scripts/servo_axis_monte_carlo.py [--records 200] [--lugre PATH]
+    python3 scripts/servo_axis_monte_carlo.py [--records 200] [--first-seed 1] [--lugre PATH]
         [--position-noise UM] [--force-noise N] [--resolution UM] [-- EXTRA...]
 
 Needs numpy and scipy; the binary defaults to target/release/lugre.
@@ -41,6 +41,7 @@ def generator():
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--records", type=int, default=200)
+    p.add_argument("--first-seed", type=int, default=1, help="seed of the first record (default 1)")
     p.add_argument("--position-noise", type=float, default=0.5, help="um (default 0.5)")
     p.add_argument("--force-noise", type=float, default=0.2, help="N (default 0.2)")
     p.add_argument("--resolution", type=float, default=0.1, help="um (default 0.1; 0: none)")
@@ -55,7 +56,7 @@ def main():
     times, warned, methods = [], 0, {}
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "record.csv")
-        for seed in range(1, a.records + 1):
+        for seed in range(a.first_seed, a.first_seed + a.records):
             with open(path, "w") as fh:
                 gen.write(fh, *gen.noisy(t, u, f, seed, a.position_noise, a.force_noise, a.resolution), 10)
             cmd = [a.lugre, "fit", "--input", path, "--fit", "full", "--beta", "2",

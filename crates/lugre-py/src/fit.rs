@@ -92,10 +92,12 @@ const FLOATS_PER_SAMPLE: usize = 48;
 ///
 /// Returns a dict:
 ///
-/// * "parameters": {name: {"value", "stderr", "ci95": (lo, hi), "at_bound"}} for the fitted
-///   parameters in the model's order (standard errors from the linearised covariance
-///   s^2 (J^T J)^-1, 95 % intervals value -+ t_quantile * stderr with Student's t on dof
-///   degrees of freedom; at_bound: the estimate sits on one of its bounds);
+/// * "parameters": {name: {"value", "stderr", "dof", "ci95": (lo, hi), "at_bound"}} for the
+///   fitted parameters in the model's order (standard errors from the linearised covariance
+///   s^2 (J^T J)^-1, or the Newey-West sandwich where the residuals are correlated, plus the
+///   share of a smoothed displacement's error; 95 % intervals value -+ t * stderr with Student's
+///   t on the estimate's own dof, m - p for the linearised covariance alone; at_bound: the
+///   estimate sits on one of its bounds);
 /// * "fixed": {name: value} of the parameters held (slow fit: only those of the loop);
 /// * "values": every parameter of the fitted model, estimates included (for a slow LuGre fit
 ///   the parameters the loop does not depend on keep the model's values), so
@@ -728,6 +730,7 @@ fn report_dict<'py>(
         let d = PyDict::new(py);
         d.set_item("value", e.value)?;
         d.set_item("stderr", e.stderr)?;
+        d.set_item("dof", e.dof)?;
         d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
         d.set_item("at_bound", e.at_bound)?;
         parameters.set_item(key(e.name), d)?;

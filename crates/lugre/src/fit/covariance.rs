@@ -13,16 +13,41 @@
 //! `Q` is `chi^2_K` for independent residuals; above its 95 % point (Wilson-Hilferty:
 //! `K (1 - 2/(9K) + 1.6449 sqrt(2/(9K)))^3`, within 1 % for `K >= 2`) the covariance is the
 //! sandwich with the Newey-West (Bartlett-kernel) estimate of the scores' long-run covariance,
-//! `s_i = J_i r_i` (`J_i` the row of the Jacobian):
+//! `s_i = J_i r~_i` (`J_i` the row of the Jacobian):
 //!
 //! ```text
 //! M   = sum_i s_i s_i^T + sum_{l=1..L} (1 - l/(L+1)) sum_i (s_i s_{i+l}^T + s_{i+l} s_i^T)
-//! Cov = m / (m - p) (J^T J)^-1 M (J^T J)^-1                                               (C2)
+//! Cov = (J^T J)^-1 M (J^T J)^-1                                                           (C2)
 //! ```
 //!
 //! with Andrews' (1991) plug-in bandwidth for an AR(1) fitted to the residuals:
 //! `L = floor(1.1447 (alpha m)^(1/3))`, `alpha = 4 rho_1^2 / (1 - rho_1^2)^2` (`rho_1` capped
 //! at 0.97), at least 1 and at most `m / 4`. Otherwise (S1) stands.
+//!
+//! **Leverage.** A residual is shorter than its error where the sample pulls the fit towards
+//! itself: `E r_i^2 = s^2 (1 - h_i)` for independent errors, with the leverage
+//! `h_i = J_i (J^T J)^-1 J_i^T`. The servo-axis record, which starts at full speed from
+//! `z = 0`, has `h_0 = 0.4` to `0.8`: its first sample nearly alone sets `sigma1`, and the
+//! sandwich with the raw residuals (and the factor `m / (m - p)` used before) gave `sigma1`
+//! standard errors from a quarter to 1.3 times the right one. The residuals are therefore
+//! scaled as in MacKinnon and White's HC2 (unbiased for independent errors of equal variance):
+//!
+//! ```text
+//! r~_i = r_i / sqrt(1 - min(h_i, 0.99))                                                    (C3)
+//! ```
+//!
+//! **Degrees of freedom.** Even unbiased, a variance that a few residuals estimate is itself
+//! uncertain. With `c_i = (J^T J)^-1 J_i^T` the weights of the estimates on the samples,
+//! `V_j = sum_i sum_k w_{i-k} c_ij c_kj r~_i r~_k` is a quadratic form in the errors; for
+//! independent errors of equal variance its mean and variance give (Satterthwaite) the
+//! effective degrees of freedom
+//!
+//! ```text
+//! nu_j = (sum_i c_ij^2)^2 / sum_i sum_{|l|<=L} w_l^2 c_ij^2 c_{i+l,j}^2     (w_0 = 1)      (C4)
+//! ```
+//!
+//! between 1 (one sample carries the parameter) and `m / (1 + 2 sum_l w_l^2)` (all samples
+//! alike); the interval uses them (S4 in `fit/stats.rs`).
 //!
 //! **Lack of fit.** Where the force noise `s_F` was estimated ([`super::noise`], eq. N1), a
 //! residual RMS above `1.3 s_F` says the model does not fit the data to their noise; a lag-1
@@ -35,6 +60,10 @@ use nalgebra::DMatrix;
 
 /// Lags of the Ljung-Box statistic (C1), at most.
 const LJUNG_BOX_LAGS: usize = 10;
+
+/// The largest leverage used in (C3): a sample that alone determines a parameter (`h_i = 1`)
+/// has a residual of 0 whatever its noise, and no correction recovers it.
+const MAX_LEVERAGE: f64 = 0.99;
 
 /// The largest lag-1 autocorrelation used in the bandwidth rule.
 const RHO_CAP: f64 = 0.97;
@@ -138,9 +167,10 @@ fn chi2_95(k: f64) -> f64 {
     k * (1.0 - c + Z95 * c.sqrt()).powi(3)
 }
 
-/// (C2) in the scaled variables of `stats` (columns of `J` divided by `scale`, `inv_r` the
-/// inverse of the scaled normal matrix, both for the `kept` columns): the covariance of the
-/// scaled parameters, and the lags used; `None` when the residuals look independent.
+/// (C2)-(C3) in the scaled variables of `stats` (columns of `J` divided by `scale`, `inv_r`
+/// the inverse of the scaled normal matrix, both for the `kept` columns): the covariance of the
+/// scaled parameters, the lags used and each parameter's effective degrees of freedom (C4);
+/// `None` when the residuals look independent.
 pub(crate) fn newey_west(
     jac: &DMatrix<f64>,
     kept: &[usize],
@@ -148,7 +178,7 @@ pub(crate) fn newey_west(
     inv_r: &DMatrix<f64>,
     r: &[f64],
     data_norm: f64,
-) -> Option<(DMatrix<f64>, usize)> {
+) -> Option<(DMatrix<f64>, usize, Vec<f64>)> {
     let m = r.len();
     let serial = SerialCorrelation::of(r);
     let rss: f64 = r.iter().map(|x| x * x).sum();
@@ -157,17 +187,24 @@ pub(crate) fn newey_west(
     }
     let lags = serial.bandwidth(m);
     let q = kept.len();
-    // Scores in the scaled variables, row by row.
-    let s: Vec<f64> = (0..m)
-        .flat_map(|i| kept.iter().map(move |&j| jac[(i, j)] / scale[j] * r[i]))
-        .collect();
+    // Per row: the weights c_i = (J^T J)^-1 J_i^T of the estimates on the sample, and the
+    // scores with the residual divided by sqrt(1 - h_i), h_i = J_i c_i (C3).
+    let mut c = vec![0.0; m * q];
+    let mut s = vec![0.0; m * q];
+    for i in 0..m {
+        let row = nalgebra::DVector::from_iterator(q, kept.iter().map(|&j| jac[(i, j)] / scale[j]));
+        let weights = inv_r * &row;
+        let leverage = row.dot(&weights);
+        let ri = r[i] / (1.0 - leverage.min(MAX_LEVERAGE)).sqrt();
+        for a in 0..q {
+            c[i * q + a] = weights[a];
+            s[i * q + a] = row[a] * ri;
+        }
+    }
+    let bartlett = |l: usize| 1.0 - l as f64 / (lags + 1) as f64;
     let mut meat = DMatrix::zeros(q, q);
     for l in 0..=lags {
-        let w = if l == 0 {
-            1.0
-        } else {
-            1.0 - l as f64 / (lags + 1) as f64
-        };
+        let w = bartlett(l);
         for i in 0..m - l {
             let (a, b) = (&s[i * q..(i + 1) * q], &s[(i + l) * q..(i + l + 1) * q]);
             for x in 0..q {
@@ -178,9 +215,31 @@ pub(crate) fn newey_west(
             }
         }
     }
-    let p = q as f64;
-    let cov = inv_r * meat * inv_r * (m as f64 / (m as f64 - p));
-    Some((cov, lags))
+    let cov = inv_r * meat * inv_r;
+    // (C4): (sum_i c_i^2)^2 / sum_i sum_|l|<=L w_l^2 c_i^2 c_{i+l}^2, per parameter.
+    let dof = (0..q)
+        .map(|a| {
+            let c2 = |i: usize| c[i * q + a] * c[i * q + a];
+            let total: f64 = (0..m).map(c2).sum();
+            let spread: f64 = (0..=lags)
+                .map(|l| {
+                    let w = bartlett(l);
+                    let pairs: f64 = (0..m - l).map(|i| c2(i) * c2(i + l)).sum();
+                    if l == 0 {
+                        pairs
+                    } else {
+                        2.0 * w * w * pairs
+                    }
+                })
+                .sum();
+            if spread > 0.0 {
+                total * total / spread
+            } else {
+                (m - q) as f64
+            }
+        })
+        .collect();
+    Some((cov, lags, dof))
 }
 
 /// Why the estimates or their intervals may not be trusted.
@@ -330,7 +389,13 @@ mod tests {
         let scale = [(m as f64).sqrt()];
         let inv_r = DMatrix::from_element(1, 1, 1.0);
         // Alternating residuals are correlated (rho_1 = -1): Newey-West with the capped rho.
-        let (cov, lags) = newey_west(&jac, &[0], &scale, &inv_r, &r, 1.0).unwrap();
+        let (cov, lags, dof) = newey_west(&jac, &[0], &scale, &inv_r, &r, 1.0).unwrap();
+        // Equal weights c_i = 1/m on every sample: (C4) is m^2 / (m + 2 sum_l w_l^2 (m - l)).
+        let pairs: f64 = (1..=lags)
+            .map(|l| (1.0 - l as f64 / (lags + 1) as f64).powi(2) * (m - l) as f64)
+            .sum();
+        let want = (m * m) as f64 / (m as f64 + 2.0 * pairs);
+        assert!((dof[0] / want - 1.0).abs() < 1e-12, "{dof:?} vs {want}");
         assert!(lags >= 1);
         // Bartlett weights shrink the alternating sum towards 0, never below.
         assert!(cov[(0, 0)] >= 0.0 && cov[(0, 0)] < 1.0, "{cov}");

@@ -27,11 +27,12 @@
 //! forward sensitivities of the simulation's recursion (eqs. X1-X4 in `fit/full.rs`) and
 //! several starts (the first from the data; the best end point wins).
 //!
-//! **Noise** ([`noise`], eqs. N1-N2). Both fits estimate the position and force noise from
+//! **Noise** ([`noise`], eqs. N1-N4). Both fits estimate the position and force noise from
 //! the record's third differences and report them ([`FitReport::noise`]); the full fit reads
 //! an equally spaced noisy displacement as the smooth motion nearest the samples (a smoothing
-//! spline whose residual equals the position noise), since the least-squares fit treats the
-//! input as exact. [`Noise::Off`] takes the samples as given.
+//! spline with end conditions from the data, its smoothing chosen by Mallows' `C_L` for the
+//! position noise), since the least-squares fit treats the input as exact. [`Noise::Off`]
+//! takes the samples as given.
 //!
 //! Both minimise `sum_i (y_i(p) - F_i)^2` with the `levenberg-marquardt` crate (MINPACK's
 //! trust-region method). Bounds `lo < p < hi` (default `0 < p < inf`: every parameter is
@@ -51,7 +52,11 @@
 //! (`stats::t_quantile_975`; 1.96 for large samples). They assume independent errors of equal
 //! variance on `F` and a correct model, and are symmetric in the parameter itself. On
 //! synthetic data with 1 % noise they cover the truth at their nominal rate (the ignored test
-//! `intervals_cover_the_truth_at_their_nominal_rate`).
+//! `intervals_cover_the_truth_at_their_nominal_rate`). Where the residuals are correlated the
+//! covariance is the Newey-West sandwich with leverage-scaled residuals (C1-C4 in
+//! `fit/covariance.rs`), a smoothed displacement adds its own share (S3), and each interval
+//! then uses Student's t on its estimate's effective degrees of freedom ([`Estimate::dof`],
+//! S4).
 //!
 //! **Identifiability.** A parameter the data cannot determine is an error naming it and why
 //! ([`FitError::Unidentifiable`], [`Why`]), not a number: it has no effect on the output
@@ -120,9 +125,13 @@ use spec::Resolved;
 pub struct Estimate {
     pub name: &'static str,
     pub value: f64,
-    /// Standard error (S1).
+    /// Standard error (S1; C2-C3 where the residuals are correlated; plus S3 for a smoothed
+    /// displacement).
     pub stderr: f64,
-    /// The 95 % confidence interval (S2).
+    /// The degrees of freedom of the standard error (S4): `m - p` for (S1) alone, fewer where a
+    /// few samples or a few draws carry its estimate.
+    pub dof: f64,
+    /// The 95 % confidence interval, `value -+ t_{0.975, dof} stderr` (S2, S4).
     pub ci95: [f64; 2],
     /// The estimate sits on one of its bounds (the interval then means little).
     pub at_bound: bool,
@@ -600,6 +609,10 @@ pub fn fit_full(
         Noise::Auto => noise::prepare_full(t, u, f),
         Noise::Off => (None, noise::levels(u, f, PositionHandling::AsGiven)),
     };
+    let (smoothed, smoother) = match smoothed {
+        Some((x, s)) => (Some(x), Some(s)),
+        None => (None, None),
+    };
     let u = smoothed.as_deref().unwrap_or(u);
     let f_all = f;
     let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
@@ -689,8 +702,8 @@ pub fn fit_full(
         out.y
     };
     // A smoothed record: the estimates move with the smoothing's error too (S3).
-    let input_effects = match levels.handling {
-        PositionHandling::Smoothed { lambda } => {
+    let input_effects = match &smoother {
+        Some(smoother) => {
             // The output alone (no derivatives) for another reading of the input.
             let model_at = |uk: &[f64]| -> Option<Vec<f64>> {
                 let mut e = full::Exact::new(resolved.family, Vec::new(), t, uk, x0)
@@ -699,12 +712,12 @@ pub fn fit_full(
                 let mut none = nalgebra::DMatrix::zeros(uk.len(), 0);
                 e.evaluate(&outcome.values, &mut y, &mut none).then_some(y)
             };
-            noise::input_effects(u, levels.position, lambda, model_at)
+            noise::input_effects(u, levels.position, smoother, model_at)
                 .into_iter()
                 .map(|dy| rows.iter().map(|&i| dy[i]).collect())
                 .collect()
         }
-        _ => Vec::new(),
+        None => Vec::new(),
     };
     let mut r = report(
         FitKind::Full,
@@ -778,7 +791,7 @@ fn report(
     }
     let estimates: Vec<Estimate> = (0..names.len())
         .map(|j| {
-            let half = unc.t * unc.stderr[j];
+            let half = unc.estimate_t[j] * unc.stderr[j];
             let b = resolved.bounds[j];
             let mut ci95 = [b.clamp(values[j] - half), b.clamp(values[j] + half)];
             if at_bound[j] {
@@ -792,6 +805,7 @@ fn report(
                 name: names[j],
                 value: values[j],
                 stderr: unc.stderr[j],
+                dof: unc.estimate_dof[j],
                 ci95,
                 at_bound: at_bound[j],
             }

@@ -27,6 +27,19 @@
 //!
 //! the linearised covariance of the least-squares estimate under that error.
 //!
+//! **Degrees of freedom.** Each variance is an estimate with its own degrees of freedom: `m - p`
+//! for (S1), `nu_C` of (C4) for the sandwich (few where a few samples carry a parameter, e.g.
+//! `sigma1` on a record that starts at full speed from `z = 0`, whose first sample alone is
+//! `(sigma1 + sigma2) v`), `K - 1` for (S3). The interval of parameter `j` uses Student's t on
+//! the Welch-Satterthwaite degrees of freedom of the sum `V = V_F + V_u`:
+//!
+//! ```text
+//! nu_j = V^2 / (V_F^2 / nu_F + V_u^2 / (K - 1))        CI95_j = p_j -+ t_{0.975, nu_j} se_j   (S4)
+//! ```
+//!
+//! (Satterthwaite 1946; with the sandwich this is the Bell-McCaffrey correction that Imbens and
+//! Kolesar 2016 recommend with HC2 residuals, C3).
+//!
 //! A parameter is reported as not identifiable (an error, not a number) when
 //! * its column of `J` is zero relative to the force: it has no effect on the output
 //!   (`|p_j J_j| <= 1e-12 |F|`), e.g. `vs` when `Fs = Fc`;
@@ -34,9 +47,12 @@
 //!   `1e-5` of its effect, so `(J^T J)^-1` keeps too few digits to mean anything; the parameters
 //!   with a weight of at least 0.2 in that combination (the eigenvector of the smallest
 //!   eigenvalue) are named;
-//! * its 95 % interval reaches 0: `t se_j >= |p_j|`. The data then cannot tell the parameter
-//!   from 0 nor from twice its value: e.g. `sigma1` from quasi-static data, whose effect
-//!   `sigma1 z'` is far below the noise.
+//! * its 95 % interval reaches 0: `t se_j >= |p_j|`, with `t = t_{0.975, m-p}` and `se_j` from
+//!   the model-based covariance (S1) + (S3), the information in the data at the estimated noise.
+//!   The data then cannot tell the parameter from 0 nor from twice its value: e.g. `sigma1`
+//!   from quasi-static data, whose effect `sigma1 z'` is far below the noise. (The sandwich
+//!   measures how far the residuals are from the model's noise, not what the data determine:
+//!   where it widens an interval to 0, the interval is reported, clipped at the bound.)
 //!
 //! A parameter at one of its bounds (see [`super::FitReport`]; e.g. `sigma2 = 0` on data without
 //! viscous friction) is exempt from the first and third tests: its effect vanishes with its
@@ -63,7 +79,11 @@ const COLLINEAR_WEIGHT: f64 = 0.2;
 #[derive(Debug, Clone)]
 pub(crate) struct Uncertainty {
     pub stderr: Vec<f64>,
+    /// `t_{0.975, m-p}` (S2).
     pub t: f64,
+    /// Each estimate's degrees of freedom (S4) and its interval's factor `t_{0.975, nu}`.
+    pub estimate_dof: Vec<f64>,
+    pub estimate_t: Vec<f64>,
     /// Correlation matrix of the estimates.
     pub correlation: Vec<Vec<f64>>,
     /// Condition number of the scaled normal matrix `R`.
@@ -166,19 +186,32 @@ pub(crate) fn uncertainty(
     let s2 = rss / dof;
     let t = t_quantile_975(dof);
     // (S1), or (C2) where the residuals are correlated: the covariance of the scaled
-    // parameters.
-    let (cov, method) =
+    // parameters, and the degrees of freedom of each variance.
+    let (cov, method, force_dof) =
         match covariance::newey_west(jac, &kept, &scale, &inv_r, residuals, data_norm) {
-            Some((cov, lags)) => (cov, Covariance::NeweyWest { lags }),
-            None => (inv_r.clone() * s2, Covariance::Classical),
+            Some((cov, lags, dof)) => (cov, Covariance::NeweyWest { lags }, dof),
+            None => (inv_r.clone() * s2, Covariance::Classical, vec![dof; q]),
         };
-    let cov = cov + input_covariance(jac, &kept, &scale, &inv_r, input_effects);
+    let input = input_covariance(jac, &kept, &scale, &inv_r, input_effects);
+    // (S4): each variance's degrees of freedom, and its interval's t factor.
+    let input_dof = input_effects.len().saturating_sub(1) as f64;
+    let estimate_dof: Vec<f64> = (0..q)
+        .map(|a| satterthwaite(cov[(a, a)], force_dof[a], input[(a, a)], input_dof))
+        .collect();
+    let estimate_t: Vec<f64> = estimate_dof.iter().map(|&d| t_quantile_975(d)).collect();
+    // The identifiability test reads the information in the data, the model-based covariance
+    // (S1) + (S3) with t_{m-p}; the residual-based sandwich (C2), with its few degrees of
+    // freedom where a few samples carry a parameter, widens the reported interval only.
+    let model_stderr: Vec<f64> = (0..q)
+        .map(|a| (s2 * inv_r[(a, a)] + input[(a, a)]).sqrt() / scale[kept[a]])
+        .collect();
+    let cov = cov + input;
     let stderr: Vec<f64> = (0..q)
         .map(|a| cov[(a, a)].sqrt() / scale[kept[a]])
         .collect();
     for a in 0..q {
         let j = kept[a];
-        let relative_half_width = t * stderr[a] / values[j].abs();
+        let relative_half_width = t * model_stderr[a] / values[j].abs();
         // NaN (a zero estimate) counts as unidentifiable too; an estimate at its bound has an
         // interval that reaches the bound.
         if !at_bound[j] && (relative_half_width.is_nan() || relative_half_width >= 1.0) {
@@ -186,7 +219,7 @@ pub(crate) fn uncertainty(
                 name: names[j],
                 value: values[j],
                 why: Why::WideInterval {
-                    stderr: stderr[a],
+                    stderr: model_stderr[a],
                     relative_half_width,
                 },
             });
@@ -209,6 +242,8 @@ pub(crate) fn uncertainty(
     Ok(Uncertainty {
         stderr,
         t,
+        estimate_dof,
+        estimate_t,
         correlation,
         condition,
         method,
@@ -258,9 +293,20 @@ fn input_covariance(
     cov
 }
 
+/// (S4): the degrees of freedom of the variance `force + input`, the first estimated with
+/// `force_dof` degrees of freedom, the second with `input_dof` (Welch-Satterthwaite); `force_dof`
+/// alone without an input share.
+fn satterthwaite(force: f64, force_dof: f64, input: f64, input_dof: f64) -> f64 {
+    if !(input > 0.0 && input_dof > 0.0) {
+        return force_dof;
+    }
+    let total = force + input;
+    total * total / (force * force / force_dof + input * input / input_dof)
+}
+
 /// The 97.5 % quantile of Student's t distribution with `dof >= 1` degrees of freedom (the
-/// half-width factor of a two-sided 95 % interval): exact for 1 and 2 degrees of freedom, else
-/// Hill's approximation (G. W. Hill, "Algorithm 396: Student's t-quantiles", CACM 13, 1970),
+/// half-width factor of a two-sided 95 % interval): exact for 1 and 2 degrees of freedom,
+/// between them interpolated (within 3 %, never below), else Hill's approximation (G. W. Hill, "Algorithm 396: Student's t-quantiles", CACM 13, 1970),
 /// within 2e-6 relative for every `dof` (checked against mpmath below); 1.96 (the normal
 /// quantile) in the limit.
 pub(crate) fn t_quantile_975(dof: f64) -> f64 {
@@ -278,8 +324,13 @@ pub(crate) fn t_quantile_975(dof: f64) -> f64 {
         // Cauchy: cot(pi P / 2).
         return 1.0 / (std::f64::consts::FRAC_PI_2 * P).tan();
     }
-    if dof == 2.0 {
-        return (2.0 / (P * (2.0 - P)) - 2.0).sqrt();
+    if dof <= 2.0 {
+        let t1 = 1.0 / (std::f64::consts::FRAC_PI_2 * P).tan();
+        let t2 = (2.0 / (P * (2.0 - P)) - 2.0).sqrt();
+        // Between 1 and 2 (an effective dof, S4): log t linear in 1 / dof between the exact
+        // ends, high by at most 3 % (Hill's formula is not meant for dof < 2).
+        let x = (1.0 / dof - 1.0) / (0.5 - 1.0);
+        return (t1.ln() + x * (t2.ln() - t1.ln())).exp();
     }
     let n = dof;
     let a = 1.0 / (n - 0.5);
@@ -332,6 +383,29 @@ mod tests {
             let got = t_quantile_975(dof);
             assert!(
                 ((got - want) / want).abs() < 2e-6,
+                "dof {dof}: {got} vs {want}"
+            );
+        }
+        // Fractional degrees of freedom (S4): scipy.stats.t.ppf(0.975, dof). Below 2, Hill's
+        // approximation is high by up to 3 % (a wider interval).
+        for (dof, want, tol) in [
+            (1.01, 12.412738499102536, 0.03),
+            (1.05, 11.361907668693245, 0.03),
+            (1.1, 10.2768012862812, 0.03),
+            (1.2, 8.648826510748867, 0.03),
+            (1.3, 7.500529325562029, 0.03),
+            (1.5, 6.016663104427929, 0.03),
+            (1.7, 5.1188389882530565, 0.03),
+            (1.9, 4.527118077100328, 0.03),
+            (1.99, 4.323438865678835, 0.03),
+            (2.5, 3.5746548420036817, 2e-5),
+            (3.7, 2.8675207071911895, 2e-5),
+            (12.4, 2.171043117662886, 2e-5),
+            (150.5, 1.9758519492008906, 2e-5),
+        ] {
+            let got = t_quantile_975(dof);
+            assert!(
+                got >= want * (1.0 - 2e-6) && (got - want) / want < tol,
                 "dof {dof}: {got} vs {want}"
             );
         }

@@ -255,14 +255,14 @@ pub(super) fn print_table(
             sig(e.stderr, 4),
             sig(e.ci95[0], 8),
             sig(e.ci95[1], 8),
-            if e.at_bound { "  (at its bound)" } else { "" }
+            own_dof(r, e)
         )?;
     }
     write_fixed(w, r.fixed.iter().map(|(n, v)| (label(r, n, normal), *v)))?;
     writeln!(w)?;
     writeln!(
         w,
-        "residual RMS {}   ({} degrees of freedom; intervals: value -+ {} standard errors, Student's t)",
+        "residual RMS {}   ({} degrees of freedom; intervals: value -+ {} standard errors, Student's t, unless noted)",
         sig(r.rms, 6),
         r.dof,
         sig(r.t_quantile, 6)
@@ -336,7 +336,19 @@ fn print_correlation(w: &mut impl Write, r: &FitReport, normal: bool) -> Result<
     Ok(())
 }
 
-/// `{"parameters": {name: {"value", "stderr", "ci95": [lo, hi], "at_bound"}}, "rms",
+/// The note after an estimate's row: at its bound, or an interval whose t has fewer degrees of
+/// freedom than the fit's (S4).
+fn own_dof(r: &FitReport, e: &lugre::fit::Estimate) -> String {
+    if e.at_bound {
+        "  (at its bound)".to_string()
+    } else if e.dof < r.dof as f64 - 0.5 {
+        format!("  (t on {:.1} degrees of freedom)", e.dof)
+    } else {
+        String::new()
+    }
+}
+
+/// `{"parameters": {name: {"value", "stderr", "dof", "ci95": [lo, hi], "at_bound"}}, "rms",
 /// "iterations", ...}` (keys may be added, never renamed).
 pub(super) fn write_json<W: Write>(
     mut j: JsonOut<W>,
@@ -354,6 +366,8 @@ pub(super) fn write_json<W: Write>(
         num_or_null(&mut j, e.value)?;
         j.raw(",\"stderr\":")?;
         num_or_null(&mut j, e.stderr)?;
+        j.raw(",\"dof\":")?;
+        num_or_null(&mut j, e.dof)?;
         j.raw(",\"ci95\":[")?;
         num_or_null(&mut j, e.ci95[0])?;
         j.raw(",")?;
