@@ -90,7 +90,8 @@ impl ZooLoop {
             state: start.clone(),
             d: 0.0,
         }];
-        let mut found = Vec::new();
+        // At most one loop per two turning points: reserved once, never moved by growth.
+        let mut found = Vec::with_capacity(n / 2 + 1);
         let mut d_period = 0.0;
         self.force[r] = bank.force(&start);
         for j in 1..=n {
@@ -265,20 +266,33 @@ impl ZooLoop {
 /// The major loop and the minor loops ordered by start (longer arcs first on a tie), with
 /// parents and depths: rainflow arcs are nested or disjoint, so one stack sweep finds each
 /// loop's smallest container.
-fn nest(major: Loop, mut found: Vec<Found>) -> Vec<Loop> {
-    found.sort_by(|x, y| x.from.total_cmp(&y.from).then(y.to.total_cmp(&x.to)));
-    let mut out = Vec::with_capacity(found.len() + 1);
+fn nest(major: Loop, found: Vec<Found>) -> Vec<Loop> {
+    // Sorted by key, not by record: a record is ~150 bytes, moved once rather than per swap.
+    let mut order: Vec<(f64, f64, usize)> = found
+        .iter()
+        .enumerate()
+        .map(|(i, f)| (f.from, f.to, i))
+        .collect();
+    order.sort_unstable_by(|x, y| {
+        x.0.total_cmp(&y.0)
+            .then(y.1.total_cmp(&x.1))
+            .then(x.2.cmp(&y.2))
+    });
+    let mut records: Vec<Option<Loop>> = found.into_iter().map(|f| Some(f.record)).collect();
+    let mut out = Vec::with_capacity(records.len() + 1);
     out.push(major);
     let mut open: Vec<(f64, usize)> = Vec::new();
-    for f in found {
-        while open.last().is_some_and(|&(to, _)| to <= f.from) {
+    for (from, to, i) in order {
+        while open.last().is_some_and(|&(end, _)| end <= from) {
             open.pop();
         }
         let parent = open.last().map_or(0, |&(_, i)| i);
-        let mut record = f.record;
+        let Some(mut record) = records[i].take() else {
+            continue;
+        };
         record.parent = Some(parent);
         record.depth = out[parent].depth + 1;
-        open.push((f.to, out.len()));
+        open.push((to, out.len()));
         out.push(record);
     }
     out
