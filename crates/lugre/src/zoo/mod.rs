@@ -58,6 +58,7 @@
 //! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
 mod bouc_wen;
+mod element;
 mod engine;
 mod history;
 mod maxwell;
@@ -66,6 +67,7 @@ mod segment;
 mod table;
 
 pub use bouc_wen::BoucWen;
+pub use element::ZooElement;
 pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
