@@ -89,3 +89,100 @@ fn an_unknown_unit_is_named() {
         "the unit \"furlong\" has no SI base units in lugre-fmu's zoo::UNITS: add it there"
     );
 }
+
+/// The FMI calls of a zoo FMU as a host makes them: model exchange refused at instantiation,
+/// configuration mode only for a model with element arrays, the values counted per variable.
+#[test]
+fn a_zoo_instance_through_the_fmi_functions() {
+    use crate::tests::last_logged;
+    use crate::*;
+    use std::ptr::{null, null_mut};
+    let _serial = crate::tests::SERIAL
+        .lock()
+        .unwrap_or_else(|e| e.into_inner());
+    let instantiate = |spec, me: bool| {
+        let token = std::ffi::CString::new(zoo::token(spec)).unwrap();
+        if me {
+            let log = Some(crate::tests::collect as _);
+            fmi3InstantiateModelExchange(
+                c"z".as_ptr(),
+                token.as_ptr(),
+                null(),
+                false,
+                false,
+                null_mut(),
+                log,
+            )
+        } else {
+            crate::tests::co_simulation(&token)
+        }
+    };
+    let bouc_wen = MODELS
+        .iter()
+        .find(|m| zoo::default_elements(m).is_none())
+        .unwrap();
+    assert!(instantiate(bouc_wen, true).is_null());
+    assert_eq!(
+        last_logged(),
+        format!(
+            "lugre-{}.fmu is co-simulation only (a rate-independent element has no continuous state)",
+            bouc_wen.name
+        )
+    );
+    let cs = instantiate(bouc_wen, false);
+    assert_eq!(fmi3EnterConfigurationMode(cs), Status::Error);
+    assert_eq!(
+        last_logged(),
+        "fmi3EnterConfigurationMode: this FMU has no structural parameters"
+    );
+    fmi3FreeInstance(cs);
+
+    let arrays = MODELS
+        .iter()
+        .find(|m| zoo::default_elements(m).is_some())
+        .unwrap();
+    let n = zoo::default_elements(arrays).unwrap();
+    let cs = instantiate(arrays, false);
+    let first = vr::PARAMETERS;
+    let values = vec![1.0; n + 1];
+    assert_eq!(
+        fmi3SetFloat64(cs, [first].as_ptr(), 1, values.as_ptr(), n + 1),
+        Status::Error
+    );
+    assert_eq!(
+        last_logged(),
+        format!(
+            "1 value references for {} values: their variables hold {n}",
+            n + 1
+        )
+    );
+    assert_eq!(
+        fmi3SetFloat64(cs, [first, zoo::vr::U].as_ptr(), 2, values.as_ptr(), n + 1),
+        Status::Ok
+    );
+    assert_eq!(fmi3EnterConfigurationMode(cs), Status::Ok);
+    assert_eq!(
+        fmi3SetUInt64(cs, [zoo::vr::ELEMENTS].as_ptr(), 1, [1].as_ptr(), 1),
+        Status::Ok
+    );
+    assert_eq!(fmi3ExitConfigurationMode(cs), Status::Ok);
+    let mut count = [0_u64];
+    assert_eq!(
+        fmi3GetUInt64(cs, [zoo::vr::ELEMENTS].as_ptr(), 1, count.as_mut_ptr(), 1),
+        Status::Ok
+    );
+    assert_eq!(count, [1]);
+    assert_eq!(
+        fmi3EnterInitializationMode(cs, false, 0.0, 0.0, false, 0.0),
+        Status::Ok
+    );
+    assert_eq!(fmi3ExitInitializationMode(cs), Status::Error);
+    assert!(
+        last_logged().ends_with(
+            "has no values for elements = 1: set its 1 values before the end of initialization"
+        ),
+        "{}",
+        last_logged()
+    );
+    fmi3FreeInstance(cs);
+}
