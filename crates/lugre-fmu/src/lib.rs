@@ -303,6 +303,8 @@ struct Fmu {
     tolerance: Option<f64>,
     phase: Phase,
     unit: Box<dyn Unit>,
+    /// The model has arrays (`unit.structural()`, which does not change).
+    arrays: bool,
 }
 
 impl Fmu {
@@ -316,6 +318,17 @@ impl Fmu {
             Model::Mass => Box::new(mass::Mass::new(kind)),
             Model::Friction => Box::new(friction::Friction::new(kind)),
             Model::Zoo(spec) => Box::new(zoo::Zoo::new(spec)),
+        }
+    }
+
+    /// How many values the variable at `r` holds: 1 but for the arrays, which only a model
+    /// with structural parameters has (their dimensions); a scalar model's calls skip asking.
+    #[inline]
+    fn size(&self, r: u32) -> usize {
+        if self.arrays {
+            self.unit.size(r)
+        } else {
+            1
         }
     }
 
@@ -456,6 +469,7 @@ fn instantiate(
             log_error(environment, log, &message);
             return std::ptr::null_mut();
         }
+        let unit = Fmu::fresh(kind, model);
         let fmu = Fmu {
             environment,
             log,
@@ -465,7 +479,8 @@ fn instantiate(
             start: 0.0,
             tolerance: None,
             phase: Phase::Instantiated,
-            unit: Fmu::fresh(kind, model),
+            arrays: unit.structural(),
+            unit,
         };
         Box::into_raw(Box::new(fmu)).cast::<c_void>()
     })
@@ -632,7 +647,7 @@ pub extern "C" fn fmi3GetFloat64(
         check_count(fmu, vrs, values.len())?;
         let mut at = 0;
         for r in vrs {
-            let out = &mut values[at..at + fmu.unit.size(*r)];
+            let out = &mut values[at..at + fmu.size(*r)];
             fmu.unit.get_values(*r, out)?;
             if out.iter().any(|v| !v.is_finite()) {
                 return Err(format!("{} is not finite", fmu.unit.name_of(*r)));
@@ -666,7 +681,7 @@ pub extern "C" fn fmi3SetFloat64(
         check_count(fmu, vrs, values.len())?;
         let mut at = 0;
         for r in vrs {
-            let these = &values[at..at + fmu.unit.size(*r)];
+            let these = &values[at..at + fmu.size(*r)];
             if let Some(bad) = these.iter().find(|v| !v.is_finite()) {
                 return Err(format!(
                     "the value of {} must be a finite number, got {}",
@@ -879,7 +894,7 @@ fn one_each(n_vrs: usize, n_values: usize) -> Result<(), String> {
 fn check_count(fmu: &Fmu, vrs: &[u32], n: usize) -> Result<(), String> {
     let want = vrs
         .iter()
-        .fold(0_usize, |sum, r| sum.saturating_add(fmu.unit.size(*r)));
+        .fold(0_usize, |sum, r| sum.saturating_add(fmu.size(*r)));
     if want != n {
         return Err(format!(
             "{} value references for {n} values: their variables hold {want}",
