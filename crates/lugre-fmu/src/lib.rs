@@ -5,10 +5,21 @@
 //! * `lugre-friction.fmu` ([`friction`]): the friction element, relative displacement in,
 //!   friction force out;
 //! * `lugre-mass.fmu` ([`mass`]): the mass with friction of `lugre dynamics`, drive force in,
-//!   position, velocity and friction out.
+//!   position, velocity and friction out;
+//! * `lugre-NAME.fmu` ([`zoo`]), one for each model of the core's zoo table (Maxwell-slip,
+//!   Prandtl-Ishlinskii, Bouc-Wen, ...): the model as a rate-independent hysteresis element in
+//!   co-simulation, displacement in, force, work and dissipation out, with no code of its own
+//!   here (the token names the table's entry; the description is written from the table).
 //!
-//! `bash scripts/build-fmu.sh` bundles this library with `fmu/lugre-friction.xml` and
-//! `fmu/lugre-mass.xml`.
+//! `bash scripts/build-fmu.sh` bundles this library with `fmu/lugre-friction.xml`,
+//! `fmu/lugre-mass.xml` and each `fmu/zoo/NAME.xml`.
+//!
+//! **Why one FMU per zoo model** rather than one FMU with a String parameter naming the model:
+//! an FMU's variables are fixed by its description, so one FMU for all would list every model's
+//! parameters (most of them unused by the model chosen) with dimensions that could not follow
+//! the choice; one description per model lists exactly that model's parameters with their
+//! units, defaults and array dimensions, as a host's parameter dialog shows them. Adding a model
+//! to the table adds its FMU (`scripts/write-tables.sh`), with no code here.
 //!
 //! **Why hand-written.** The FMI 3.0 C interface is a flat list of functions over plain types;
 //! writing them here against the standard's signatures (`fmi3FunctionTypes.h`) costs no
@@ -59,6 +70,9 @@ pub mod friction;
 pub mod mass;
 #[cfg(test)]
 mod tests;
+pub mod zoo;
+#[cfg(test)]
+mod zoo_tests;
 
 pub use friction::TOKEN as FRICTION_TOKEN;
 pub use mass::TOKEN as MASS_TOKEN;
@@ -107,11 +121,34 @@ pub(crate) enum Kind {
     CoSimulation,
 }
 
+/// Which FMU an instance is (from its instantiation token).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Model {
+    Friction,
+    Mass,
+    /// A model of the core's zoo table.
+    Zoo(&'static lugre::zoo::ZooModelSpec),
+}
+
+impl Model {
+    fn of_token(token: &[u8]) -> Option<Self> {
+        if token == FRICTION_TOKEN.as_bytes() {
+            Some(Self::Friction)
+        } else if token == MASS_TOKEN.as_bytes() {
+            Some(Self::Mass)
+        } else {
+            zoo::model_of(token).map(Self::Zoo)
+        }
+    }
+}
+
 /// Where an instance is in FMI 3.0's state machine: each call is allowed in some of these.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Phase {
     /// After instantiation or `fmi3Reset`.
     Instantiated,
+    /// Structural parameters can be set.
+    Configuration,
     Initialization,
     Event,
     /// Model exchange, between events.
@@ -125,6 +162,7 @@ impl Phase {
     fn name(self) -> &'static str {
         match self {
             Phase::Instantiated => "the instantiated state (after instantiation or fmi3Reset)",
+            Phase::Configuration => "configuration mode",
             Phase::Initialization => "initialization mode",
             Phase::Event => "event mode",
             Phase::ContinuousTime => "continuous-time mode",
@@ -137,21 +175,55 @@ impl Phase {
 /// What a model provides to the FMI functions. Values are checked finite before `set`.
 pub(crate) trait Unit {
     fn name_of(&self, vr: u32) -> &'static str;
+    /// How many Float64 values the variable at `vr` holds (an array's length; 1 for a scalar
+    /// and for a reference no variable has, which `get`/`set` then refuse).
+    fn size(&self, _vr: u32) -> usize {
+        1
+    }
     /// The value at `vr` (an error for an unknown reference or a value that cannot be had).
     fn get(&self, vr: u32) -> Result<f64, String>;
+    /// The `size(vr)` values at `vr` into `out` (as long).
+    fn get_values(&self, vr: u32, out: &mut [f64]) -> Result<(), String> {
+        out[0] = self.get(vr)?;
+        Ok(())
+    }
     fn set(&mut self, vr: u32, value: f64) -> Result<(), String>;
+    /// Sets the `size(vr)` values at `vr` (`values` as long, each finite).
+    fn set_values(&mut self, vr: u32, values: &[f64]) -> Result<(), String> {
+        self.set(vr, values[0])
+    }
+    /// Whether the model has structural parameters (set in configuration mode).
+    fn structural(&self) -> bool {
+        false
+    }
+    /// The UInt64 variable at `vr` (the structural parameters).
+    fn get_count(&self, vr: u32) -> Result<u64, String> {
+        Err(format!("no UInt64 variable has value reference {vr}"))
+    }
+    fn set_count(&mut self, vr: u32, _value: u64) -> Result<(), String> {
+        Err(format!("no UInt64 variable has value reference {vr}"))
+    }
     /// The end of initialization: the parameters checked, the state set.
     fn initialize(&mut self, start: f64, tolerance: Option<f64>) -> Result<(), String>;
     fn set_time(&mut self, t: f64);
     /// The instance's time (what `get(vr::TIME)` returns, without its error path).
     fn time(&self) -> f64;
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String>;
-    fn states(&self) -> Vec<f64>;
+    /// Model exchange's continuous states (none by default: a co-simulation-only model).
+    fn states(&self) -> Vec<f64> {
+        Vec::new()
+    }
     /// `states` has the model's number of states (checked by the caller).
-    fn set_states(&mut self, states: &[f64]);
-    fn derivatives(&self) -> Result<Vec<f64>, String>;
-    fn nominals(&self) -> Vec<f64>;
-    fn indicators(&self) -> Vec<f64>;
+    fn set_states(&mut self, _states: &[f64]) {}
+    fn derivatives(&self) -> Result<Vec<f64>, String> {
+        Ok(Vec::new())
+    }
+    fn nominals(&self) -> Vec<f64> {
+        Vec::new()
+    }
+    fn indicators(&self) -> Vec<f64> {
+        Vec::new()
+    }
 }
 
 /// A friction parameter's value, or the error for a reference no variable has.
@@ -224,13 +296,15 @@ struct Fmu {
     environment: *mut c_void,
     log: LogMessage,
     kind: Kind,
-    token: &'static str,
+    model: Model,
     /// Co-simulation: `fmi3ExitInitializationMode` enters event mode rather than step mode.
     event_mode_used: bool,
     start: f64,
     tolerance: Option<f64>,
     phase: Phase,
     unit: Box<dyn Unit>,
+    /// The model has arrays (`unit.structural()`, which does not change).
+    arrays: bool,
 }
 
 impl Fmu {
@@ -239,11 +313,22 @@ impl Fmu {
         Status::Error
     }
 
-    fn fresh(kind: Kind, token: &'static str) -> Box<dyn Unit> {
-        if token == MASS_TOKEN {
-            Box::new(mass::Mass::new(kind))
+    fn fresh(kind: Kind, model: Model) -> Box<dyn Unit> {
+        match model {
+            Model::Mass => Box::new(mass::Mass::new(kind)),
+            Model::Friction => Box::new(friction::Friction::new(kind)),
+            Model::Zoo(spec) => Box::new(zoo::Zoo::new(spec)),
+        }
+    }
+
+    /// How many values the variable at `r` holds: 1 but for the arrays, which only a model
+    /// with structural parameters has (their dimensions); a scalar model's calls skip asking.
+    #[inline]
+    fn size(&self, r: u32) -> usize {
+        if self.arrays {
+            self.unit.size(r)
         } else {
-            Box::new(friction::Friction::new(kind))
+            1
         }
     }
 
@@ -368,10 +453,7 @@ fn instantiate(
     catch_unwind(|| {
         // SAFETY: a NUL-terminated string from the host.
         let given = (!token.is_null()).then(|| unsafe { CStr::from_ptr(token) }.to_bytes());
-        let token = [FRICTION_TOKEN, MASS_TOKEN]
-            .into_iter()
-            .find(|t| given == Some(t.as_bytes()));
-        let Some(token) = token else {
+        let Some(model) = given.and_then(Model::of_token) else {
             log_error(
                 environment,
                 log,
@@ -379,16 +461,26 @@ fn instantiate(
             );
             return std::ptr::null_mut();
         };
+        if let (Model::Zoo(spec), Kind::ModelExchange) = (model, kind) {
+            let message = format!(
+                "lugre-{}.fmu is co-simulation only (a rate-independent element has no continuous state)",
+                spec.name
+            );
+            log_error(environment, log, &message);
+            return std::ptr::null_mut();
+        }
+        let unit = Fmu::fresh(kind, model);
         let fmu = Fmu {
             environment,
             log,
             kind,
-            token,
+            model,
             event_mode_used,
             start: 0.0,
             tolerance: None,
             phase: Phase::Instantiated,
-            unit: Fmu::fresh(kind, token),
+            arrays: unit.structural(),
+            unit,
         };
         Box::into_raw(Box::new(fmu)).cast::<c_void>()
     })
@@ -535,7 +627,7 @@ pub extern "C" fn fmi3Terminate(instance: Instance) -> Status {
 #[no_mangle]
 pub extern "C" fn fmi3Reset(instance: Instance) -> Status {
     with(instance, |fmu| {
-        fmu.unit = Fmu::fresh(fmu.kind, fmu.token);
+        fmu.unit = Fmu::fresh(fmu.kind, fmu.model);
         fmu.phase = Phase::Instantiated;
         Ok(())
     })
@@ -552,19 +644,15 @@ pub extern "C" fn fmi3GetFloat64(
     with(instance, |fmu| {
         fmu.expect("fmi3GetFloat64", AFTER_INSTANTIATION)?;
         let (vrs, values) = (slice(vrs, n_vrs), slice_mut(values, n_values));
-        if vrs.len() != values.len() {
-            return Err(format!(
-                "{} value references for {} values",
-                vrs.len(),
-                values.len()
-            ));
-        }
-        for (r, out) in vrs.iter().zip(values.iter_mut()) {
-            let value = fmu.unit.get(*r)?;
-            if !value.is_finite() {
+        check_count(fmu, vrs, values.len())?;
+        let mut at = 0;
+        for r in vrs {
+            let out = &mut values[at..at + fmu.size(*r)];
+            fmu.unit.get_values(*r, out)?;
+            if out.iter().any(|v| !v.is_finite()) {
                 return Err(format!("{} is not finite", fmu.unit.name_of(*r)));
             }
-            *out = value;
+            at += out.len();
         }
         Ok(())
     })
@@ -590,23 +678,21 @@ pub extern "C" fn fmi3SetFloat64(
             ],
         )?;
         let (vrs, values) = (slice(vrs, n_vrs), slice(values, n_values));
-        if vrs.len() != values.len() {
-            return Err(format!(
-                "{} value references for {} values",
-                vrs.len(),
-                values.len()
-            ));
-        }
-        vrs.iter().zip(values).try_for_each(|(r, value)| {
-            if !value.is_finite() {
+        check_count(fmu, vrs, values.len())?;
+        let mut at = 0;
+        for r in vrs {
+            let these = &values[at..at + fmu.size(*r)];
+            if let Some(bad) = these.iter().find(|v| !v.is_finite()) {
                 return Err(format!(
                     "the value of {} must be a finite number, got {}",
                     fmu.unit.name_of(*r),
-                    num(*value)
+                    num(*bad)
                 ));
             }
-            fmu.unit.set(*r, *value)
-        })
+            fmu.unit.set_values(*r, these)?;
+            at += these.len();
+        }
+        Ok(())
     })
 }
 
@@ -796,6 +882,86 @@ pub extern "C" fn fmi3DoStep(
     })
 }
 
+/// As many values as value references (scalar variables).
+fn one_each(n_vrs: usize, n_values: usize) -> Result<(), String> {
+    if n_vrs != n_values {
+        return Err(format!("{n_vrs} value references for {n_values} values"));
+    }
+    Ok(())
+}
+
+/// `n` values for the value references `vrs`: as many as their variables hold.
+fn check_count(fmu: &Fmu, vrs: &[u32], n: usize) -> Result<(), String> {
+    let want = vrs
+        .iter()
+        .fold(0_usize, |sum, r| sum.saturating_add(fmu.size(*r)));
+    if want != n {
+        return Err(format!(
+            "{} value references for {n} values: their variables hold {want}",
+            vrs.len()
+        ));
+    }
+    Ok(())
+}
+
+#[no_mangle]
+pub extern "C" fn fmi3GetUInt64(
+    instance: Instance,
+    vrs: *const u32,
+    n_vrs: usize,
+    values: *mut u64,
+    n_values: usize,
+) -> Status {
+    with(instance, |fmu| {
+        let (vrs, values) = (slice(vrs, n_vrs), slice_mut(values, n_values));
+        one_each(vrs.len(), values.len())?;
+        for (r, out) in vrs.iter().zip(values.iter_mut()) {
+            *out = fmu.unit.get_count(*r)?;
+        }
+        Ok(())
+    })
+}
+
+/// Sets structural parameters: in configuration mode only (FMI 3.0, variability fixed).
+#[no_mangle]
+pub extern "C" fn fmi3SetUInt64(
+    instance: Instance,
+    vrs: *const u32,
+    n_vrs: usize,
+    values: *const u64,
+    n_values: usize,
+) -> Status {
+    with(instance, |fmu| {
+        fmu.expect("fmi3SetUInt64", &[Phase::Configuration])?;
+        let (vrs, values) = (slice(vrs, n_vrs), slice(values, n_values));
+        one_each(vrs.len(), values.len())?;
+        vrs.iter()
+            .zip(values)
+            .try_for_each(|(r, v)| fmu.unit.set_count(*r, *v))
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn fmi3EnterConfigurationMode(instance: Instance) -> Status {
+    with(instance, |fmu| {
+        fmu.expect("fmi3EnterConfigurationMode", &[Phase::Instantiated])?;
+        if !fmu.unit.structural() {
+            return Err("fmi3EnterConfigurationMode: this FMU has no structural parameters".into());
+        }
+        fmu.phase = Phase::Configuration;
+        Ok(())
+    })
+}
+
+#[no_mangle]
+pub extern "C" fn fmi3ExitConfigurationMode(instance: Instance) -> Status {
+    with(instance, |fmu| {
+        fmu.expect("fmi3ExitConfigurationMode", &[Phase::Configuration])?;
+        fmu.phase = Phase::Instantiated;
+        Ok(())
+    })
+}
+
 /// The phases after `fmi3EnterInitializationMode`, where values can be read.
 const AFTER_INSTANTIATION: &[Phase] = &[
     Phase::Initialization,
@@ -860,7 +1026,6 @@ unsupported!(fmi3GetUInt16(instance: Instance, _vr: *const c_void, _nvr: usize, 
 unsupported!(fmi3GetInt32(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3GetUInt32(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3GetInt64(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
-unsupported!(fmi3GetUInt64(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3GetBoolean(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3GetString(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3GetBinary(instance: Instance, _vr: *const c_void, _nvr: usize, _sizes: *const c_void, _v: *const c_void, _nv: usize));
@@ -873,7 +1038,6 @@ unsupported!(fmi3SetUInt16(instance: Instance, _vr: *const c_void, _nvr: usize, 
 unsupported!(fmi3SetInt32(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3SetUInt32(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3SetInt64(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
-unsupported!(fmi3SetUInt64(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3SetBoolean(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3SetString(instance: Instance, _vr: *const c_void, _nvr: usize, _v: *const c_void, _nv: usize));
 unsupported!(fmi3SetBinary(instance: Instance, _vr: *const c_void, _nvr: usize, _sizes: *const c_void, _v: *const c_void, _nv: usize));
@@ -888,8 +1052,6 @@ unsupported!(fmi3SerializeFMUState(instance: Instance, _s: *const c_void, _b: *c
 unsupported!(fmi3DeserializeFMUState(instance: Instance, _b: *const c_void, _n: usize, _s: *const c_void));
 unsupported!(fmi3GetDirectionalDerivative(instance: Instance, _u: *const c_void, _nu: usize, _k: *const c_void, _nk: usize, _s: *const c_void, _ns: usize, _o: *const c_void, _no: usize));
 unsupported!(fmi3GetAdjointDerivative(instance: Instance, _u: *const c_void, _nu: usize, _k: *const c_void, _nk: usize, _s: *const c_void, _ns: usize, _o: *const c_void, _no: usize));
-unsupported!(fmi3EnterConfigurationMode(instance: Instance));
-unsupported!(fmi3ExitConfigurationMode(instance: Instance));
 unsupported!(fmi3GetIntervalDecimal(instance: Instance, _vr: *const c_void, _n: usize, _i: *const c_void, _q: *const c_void));
 unsupported!(fmi3GetIntervalFraction(instance: Instance, _vr: *const c_void, _n: usize, _c: *const c_void, _r: *const c_void, _q: *const c_void));
 unsupported!(fmi3GetShiftDecimal(instance: Instance, _vr: *const c_void, _n: usize, _s: *const c_void));

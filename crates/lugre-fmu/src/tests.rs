@@ -195,10 +195,13 @@ fn a_drift_is_seen() {
     assert_eq!(fmi_unit(Parameter::Sigma1), "N.s/m");
 }
 
+/// Held by each test that reads [`last_logged`], so that another's messages do not come between.
+pub(crate) static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 /// The messages the FMU logged, collected by the host's callback below.
 static LOGGED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
 
-unsafe extern "C" fn collect(
+pub(crate) unsafe extern "C" fn collect(
     _env: *mut std::ffi::c_void,
     _status: crate::Status,
     _category: *const std::ffi::c_char,
@@ -212,8 +215,27 @@ unsafe extern "C" fn collect(
         .push(text.to_string_lossy().into_owned());
 }
 
-fn last_logged() -> String {
+pub(crate) fn last_logged() -> String {
     LOGGED.lock().unwrap().last().cloned().unwrap_or_default()
+}
+
+/// A co-simulation instance of the FMU of `token`, logging to [`collect`].
+pub(crate) fn co_simulation(token: &std::ffi::CStr) -> crate::Instance {
+    use std::ptr::{null, null_mut};
+    crate::fmi3InstantiateCoSimulation(
+        c"m".as_ptr(),
+        token.as_ptr(),
+        null(),
+        false,
+        false,
+        false,
+        false,
+        null(),
+        0,
+        null_mut(),
+        Some(collect),
+        null(),
+    )
 }
 
 /// FMI 3.0's order, called as a host calls it: out of order is `fmi3Error` with a message,
@@ -221,6 +243,7 @@ fn last_logged() -> String {
 #[test]
 fn calls_out_of_order_are_errors() {
     use crate::*;
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     use std::ptr::{null, null_mut};
     let token = std::ffi::CString::new(MASS_TOKEN).unwrap();
     let me = fmi3InstantiateModelExchange(
@@ -248,20 +271,7 @@ fn calls_out_of_order_are_errors() {
     assert!(last_logged().starts_with("fmi3DoStep is not allowed in the instantiated state"));
     fmi3FreeInstance(me);
 
-    let cs = fmi3InstantiateCoSimulation(
-        c"m".as_ptr(),
-        token.as_ptr(),
-        null(),
-        false,
-        false,
-        false,
-        false,
-        null(),
-        0,
-        null_mut(),
-        Some(collect),
-        null(),
-    );
+    let cs = co_simulation(&token);
     assert_eq!(
         fmi3EnterInitializationMode(cs, false, 0.0, 0.0, false, 0.0),
         Status::Ok

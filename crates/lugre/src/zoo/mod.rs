@@ -59,6 +59,7 @@
 
 mod bouc_wen;
 mod elastoplastic;
+mod element;
 mod engine;
 mod history;
 mod maxwell;
@@ -68,6 +69,7 @@ mod table;
 
 pub use bouc_wen::BoucWen;
 pub use elastoplastic::ElastoPlastic;
+pub use element::ZooElement;
 pub use engine::{ZooLoop, MAX_STATES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;

@@ -11,7 +11,9 @@
 //! LuGre's default loop on one figure; the literature has no canonical element
 //! distributions for these models.
 
-use super::{BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooLoop};
+use super::{
+    BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooElement, ZooLoop,
+};
 use crate::cycles::{Cycle, HistoryEnergy};
 use crate::error::{SamplesError, ZooError};
 use crate::input::TurningPoints;
@@ -401,6 +403,15 @@ impl ZooModel {
     /// The periodic response of `hl` (computed by [`Self::loops`] of this model) at `rhos`.
     pub fn points(&self, hl: &ZooLoop, rhos: &[f64]) -> Vec<LoopPoint> {
         each!(self, m => hl.points(m, rhos))
+    }
+
+    /// This model as a hysteresis element at rest at input `u`, to be driven one monotone
+    /// segment at a time ([`ZooElement`]).
+    ///
+    /// # Errors
+    /// [`ZooError::Domain`] for a non-finite `u`.
+    pub fn element(&self, u: f64) -> Result<ZooElement, ZooError> {
+        each!(self, m => ZooElement::at_rest(self, m, u))
     }
 
     /// `n` points of the loop `hl` evenly spaced over one period.
