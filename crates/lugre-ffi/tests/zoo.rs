@@ -354,7 +354,7 @@ fn cycles_of_a_history_are_the_cores() {
         let model = ZooModel::new(spec.name, &[]).unwrap();
         for gate in [0.0, 2.5] {
             let mut cy = ptr::null_mut();
-            let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), gate, &mut cy);
+            let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), gate, ptr::null(), &mut cy);
             assert_eq!(s, LugreStatus::Ok, "{}", last_error());
             let mut n = 0;
             assert_eq!(lugre_cycles_len(cy, &mut n), LugreStatus::Ok);
@@ -395,17 +395,26 @@ fn cycles_of_a_history_are_the_cores() {
         }
         let mut cy = ptr::null_mut();
         let bad = [0.0, f64::NAN];
-        let s = lugre_zoo_cycles_new(z, bad.as_ptr(), 2, 0.0, &mut cy);
+        let s = lugre_zoo_cycles_new(z, bad.as_ptr(), 2, 0.0, ptr::null(), &mut cy);
         assert_eq!(s, LugreStatus::InvalidArgument);
         assert_eq!(last_error(), "u[1] must be a finite number, got NaN");
-        let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), -1.0, &mut cy);
+        let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), -1.0, ptr::null(), &mut cy);
         assert_eq!(s, LugreStatus::InvalidArgument);
         assert_eq!(
             last_error(),
             "the gate must be a finite number >= 0, got -1"
         );
         assert!(cy.is_null(), "nothing written on failure");
-        let s = lugre_zoo_cycles_new(ptr::null(), h.as_ptr(), 2, 0.0, &mut cy);
+        let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), 0.0, &0.0, &mut cy);
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert_eq!(
+            last_error(),
+            format!(
+                "x0 is the initial bristle state of LuGre and Dahl; the {} model starts from rest",
+                spec.label
+            )
+        );
+        let s = lugre_zoo_cycles_new(ptr::null(), h.as_ptr(), 2, 0.0, ptr::null(), &mut cy);
         assert_eq!(
             (s, last_error().as_str()),
             (LugreStatus::NullPointer, "zoo is NULL")

@@ -140,7 +140,10 @@ static void zoo(void) {
          * nine samples closes (the ASTM example's (-1, 3), here (1, 3)) with its energies. */
         const double h[] = {0, 4, 1, 3, -4, -1, -3, 4, 0};
         LugreCycles *cy = NULL;
-        OK(lugre_zoo_cycles_new(z, h, 9, 0, &cy));
+        OK(lugre_zoo_cycles_new(z, h, 9, 0, NULL, &cy));
+        const double x0 = 0;
+        CHECK(lugre_zoo_cycles_new(z, h, 9, 0, &x0, &cy) == LUGRE_STATUS_INVALID_ARGUMENT);
+        CHECK(strstr(lugre_last_error(), "starts from rest") != NULL);
         size_t nc = 0;
         OK(lugre_cycles_len(cy, &nc));
         double cw[9] = {0}, cc[9] = {0}, cd[9] = {0};
