@@ -52,7 +52,7 @@ use lugre::HistoryError;
 #[pyfunction]
 #[pyo3(
     signature = (series, gate=None, model=None, x0=None, *, reversals=None, closures=None),
-    text_signature = "(series, gate=0.0, model=None, x0=0.0, *, reversals=True, closures=True)"
+    text_signature = "(series, gate=0.0, model=None, x0=None, *, reversals=True, closures=True)"
 )]
 pub fn cycles<'py>(
     py: Python<'py>,
