@@ -3,7 +3,7 @@
  * lugre_dynamics, lugre_friction_step, lugre_fit), not directly:
  *
  *   r = lugre_mex('loop', u, params, n)
- *   r = lugre_mex('cycles', u, gate, params_or_empty, x0)
+ *   r = lugre_mex('cycles', u, gate, params_or_empty, x0_or_empty)
  *   r = lugre_mex('simulate', t, x, params, z0)
  *   r = lugre_mex('dynamics', name, times, rtol)
  *   r = lugre_mex('dynamics', request_struct)
@@ -258,6 +258,16 @@ static LugreStatus zoo_of(const char *model, const mxArray *s, LugreZoo **zoo, L
     return lugre_zoo_new(model, count, names, values, lens, zoo);
 }
 
+/* LuGre's parameter struct without its field `model` (params.model = 'lugre'): a copy in
+ * `*copy`, destroyed by the caller; the struct itself when it names no model. */
+static const mxArray *lugre_fields(const mxArray *params, const char *model, mxArray **copy) {
+    *copy = NULL;
+    if (model == NULL) return params;
+    *copy = mxDuplicateArray(params);
+    mxRemoveField(*copy, mxGetFieldNumber(*copy, "model"));
+    return *copy;
+}
+
 /* The loop of the model `params` describes: LuGre's (its parameters, or a preset), Dahl's, or a
  * zoo model's (params.model names it), for the turning points u[0..n]. */
 static LugreLoop *loop_of(const mxArray *params, const double *u, size_t n) {
@@ -266,12 +276,7 @@ static LugreLoop *loop_of(const mxArray *params, const double *u, size_t n) {
     LugreLoop *hl = NULL;
     if (model == NULL || strcmp(model, "lugre") == 0) {
         mxArray *copy = NULL;
-        if (model != NULL) {
-            /* LuGre's struct without its `model` field. */
-            copy = mxDuplicateArray(params);
-            mxRemoveField(copy, mxGetFieldNumber(copy, "model"));
-        }
-        LugreModel *m = model_of(copy != NULL ? copy : params);
+        LugreModel *m = model_of(lugre_fields(params, model, &copy));
         if (copy != NULL) mxDestroyArray(copy);
         LugreStatus st = lugre_loop_new(m, u, n, &hl);
         lugre_model_free(m);
@@ -348,16 +353,15 @@ static mxArray *loop_struct(const mxArray *u_arg, const mxArray *params, const m
     return struct_of(7, top, v);
 }
 
-static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
-    size_t n = 0;
-    const double *u = vector(prhs[0], "u", &n);
-    double gate = nrhs > 1 && !mxIsEmpty(prhs[1]) ? scalar(prhs[1], "gate") : 0.0;
-    double x0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "x0") : 0.0;
+/* The cycles of u[0..n] with LuGre's energies (params: its parameters or a preset; NULL: no
+ * model) from x0. */
+static LugreCycles *lugre_cycles_of(const mxArray *params, const double *u, size_t n, double gate,
+                                    double x0) {
     LugreModel *m = NULL;
-    if (nrhs > 2 && !mxIsEmpty(prhs[2])) {
+    if (params != NULL) {
         /* The values are checked first (model_of), then that the model is named. */
-        m = model_of(prhs[2]);
-        LugreStatus st = named(prhs[2], LUGRE_NEEDED_RATE_INDEPENDENT);
+        m = model_of(params);
+        LugreStatus st = named(params, LUGRE_NEEDED_RATE_INDEPENDENT);
         if (st != LUGRE_STATUS_OK) lugre_model_free(m);
         check(st);
     }
@@ -365,6 +369,45 @@ static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
     LugreStatus st = lugre_cycles_new(u, n, gate, m, x0, &cy);
     lugre_model_free(m);
     check(st);
+    return cy;
+}
+
+/* The cycles of u[0..n] with the energies of the model `params` describes: LuGre's (from x0),
+ * or a zoo model's (params.model names it; from rest, x0 refused by the C ABI). */
+static LugreCycles *cycles_of(const mxArray *params, const double *u, size_t n, double gate,
+                              const double *x0) {
+    char name[64];
+    const char *model = params == NULL ? NULL : model_name(params, name, sizeof name);
+    double start = x0 != NULL ? *x0 : 0.0;
+    /* Dahl's energies along a measured history are not taken here (its struct is refused as
+     * LuGre's); LuGre's struct may say model = 'lugre'. */
+    int lugre = model == NULL || strcmp(model, "lugre") == 0;
+    if (lugre || strcmp(model, "dahl") == 0) {
+        mxArray *copy = NULL;
+        const mxArray *fields = lugre && params != NULL ? lugre_fields(params, model, &copy) : params;
+        LugreCycles *cy = lugre_cycles_of(fields, u, n, gate, start);
+        if (copy != NULL) mxDestroyArray(copy);
+        return cy;
+    }
+    LugreZoo *zoo = NULL;
+    LugreModel *dahl = NULL;
+    check(zoo_of(model, params, &zoo, &dahl));
+    LugreCycles *cy = NULL;
+    LugreStatus st = lugre_zoo_cycles_new(zoo, u, n, gate, x0, &cy);
+    lugre_zoo_free(zoo);
+    check(st);
+    return cy;
+}
+
+static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
+    size_t n = 0;
+    const double *u = vector(prhs[0], "u", &n);
+    double gate = nrhs > 1 && !mxIsEmpty(prhs[1]) ? scalar(prhs[1], "gate") : 0.0;
+    /* x0 given ([] or missing: not given). */
+    double x0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "x0") : 0.0;
+    const double *given = nrhs > 3 && !mxIsEmpty(prhs[3]) ? &x0 : NULL;
+    const mxArray *params = nrhs > 2 && !mxIsEmpty(prhs[2]) ? prhs[2] : NULL;
+    LugreCycles *cy = cycles_of(params, u, n, gate, given);
     size_t rows = 0;
     lugre_cycles_len(cy, &rows);
     double *range = doubles(rows), *mean = doubles(rows), *count = doubles(rows);
@@ -372,7 +415,7 @@ static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
     double *diss = doubles(rows), *gap = doubles(rows);
     int64_t *start = ints(rows), *end = ints(rows), *closure = ints(rows);
     LugreCycleColumns c = {range, mean, count, start, end, closure, pos, work, stored, diss, gap};
-    st = lugre_cycles_columns(cy, &c, rows);
+    LugreStatus st = lugre_cycles_columns(cy, &c, rows);
     lugre_cycles_free(cy);
     check(st);
     /* The closure position is a sample index with a fraction: 1-based for full cycles too. */

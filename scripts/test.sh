@@ -11,17 +11,17 @@
 #      the CLI's JSON); Octave is installed from Debian when run as root, else skipped loudly;
 #      (the C ABI's example program is built and run by the Rust tests of crates/lugre-ffi;)
 #   3. the Python package: a virtual environment (.venv, or $LUGRE_VENV) with maturin, numpy,
-#      pytest and dask[distributed,dataframe] (lugre.dask's tests, one on a 2-worker
-#      LocalCluster), the package built from crates/lugre-py and installed into it, its pytest
-#      suite;
+#      pytest, dask[distributed,dataframe] (lugre.dask's tests, one on a 2-worker
+#      LocalCluster) and hysteresis 2.0.5 (loop areas), the package built from crates/lugre-py
+#      and installed into it, its pytest suite;
 #   4. the FMI 3.0 FMUs (scripts/build-fmu.sh) validated and simulated by fmpy (PyPI, installed
 #      into the same environment): tests/fmu;
 #   5. the conformance table (tests/conformance/cases.json: one input, the same answer from
 #      every front end): through the CLI and the C ABI in step 1 (crates/lugre-cli/tests/
 #      conformance.rs), the MEX functions in step 2, Python and the FMUs last.
 #
-# Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy, pytest
-# and dask from PyPI. Re-runs reuse the environment and cargo's build cache.
+# Needs cargo and python3 (>= 3.9, with venv); the first run downloads maturin, numpy, pytest,
+# dask and hysteresis from PyPI. Re-runs reuse the environment and cargo's build cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -79,8 +79,9 @@ export VIRTUAL_ENV="$venv"
 export PATH="$VIRTUAL_ENV/bin:$PATH"
 py="$VIRTUAL_ENV/bin/python"
 pip=("$py" -m pip install --quiet --disable-pip-version-check)
-# dask[distributed,dataframe]: lugre.dask's tests (one on a 2-worker LocalCluster).
-"${pip[@]}" 'maturin==1.16.*' numpy pytest 'dask[distributed,dataframe]>=2024.1'
+# dask[distributed,dataframe]: lugre.dask's tests (one on a 2-worker LocalCluster);
+# hysteresis: the loop areas every loop's work is checked against (test_zoo_areas.py).
+"${pip[@]}" 'maturin==1.16.*' numpy pytest 'dask[distributed,dataframe]>=2024.1' 'hysteresis==2.0.5'
 # The venv's maturin builds the wheel (no isolated build environment to download each time);
 # cargo rebuilds only what changed.
 "${pip[@]}" --no-build-isolation --force-reinstall --no-deps ./crates/lugre-py

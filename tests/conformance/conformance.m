@@ -289,7 +289,7 @@ function got = mex_answer(c)
       if isfield(f, 'model')
         params = params_of(f.model, classes);
       end
-      r = lugre_cycles(cast_as('history', numbers(f.history)), field_or(f, 'gate', 0), params, field_or(f, 'x0', 0));
+      r = lugre_cycles(cast_as('history', numbers(f.history)), field_or(f, 'gate', 0), params, field_or(f, 'x0', []));
       got = cycles_answer(r, isfield(f, 'model'));
     case 'simulate'
       r = lugre_simulate(numbers(f.t), numbers(f.x), params_of(field_or(f, 'model', struct()), classes), field_or(f, 'x0', 0));

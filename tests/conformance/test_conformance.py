@@ -218,7 +218,8 @@ def py_loop(f):
 
 def py_cycles(f):
     model = model_of(f.get("model"))
-    r = lugre.cycles(numbers(f["history"]), number(f.get("gate", 0.0)), model, number(f.get("x0", 0.0)))["cycles"]
+    x0 = number(f["x0"]) if "x0" in f else None  # given only when the case gives it
+    r = lugre.cycles(numbers(f["history"]), number(f.get("gate", 0.0)), model, x0)["cycles"]
     rows = []
     for k in range(len(r["range"])):
         full = r["count"][k] == 1.0

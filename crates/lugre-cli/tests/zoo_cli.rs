@@ -179,7 +179,7 @@ fn cycles_of_a_history_along_every_model_of_the_table() {
     }
     rejects(
         &["cycles", "--model", "maxwell-slip", "--x0", "1", "--values", text],
-        "--x0 is the initial bristle state of LuGre and Dahl; the Maxwell-slip model starts from rest",
+        "--x0: x0 is the initial bristle state of LuGre and Dahl; the Maxwell-slip model starts from rest",
     );
 }
 

@@ -569,6 +569,20 @@ enum LugreStatus lugre_zoo_loop_new(const struct LugreZoo *zoo,
                                     size_t n,
                                     struct LugreLoop **out);
 
+// The rainflow cycles of the history `u[0..n]` with the noise gate `gate` (0: none), each full
+// cycle with its energies along the model's path from rest at `u[0]` (as `lugre cycles --model
+// NAME`), read with `lugre_cycles_len` and `lugre_cycles_columns` and freed by
+// `lugre_cycles_free`. The history is held whole: more than the core's
+// `lugre::zoo::MAX_HISTORY_SAMPLES` (2^27) samples are refused, before anything is allocated.
+// `x0` is NULL: the model starts from rest; an initial state given (as to `lugre_cycles_new`)
+// is refused with the core's message, as `lugre cycles --model NAME --x0` refuses it.
+enum LugreStatus lugre_zoo_cycles_new(const struct LugreZoo *zoo,
+                                      const double *u,
+                                      size_t n,
+                                      double gate,
+                                      const double *x0,
+                                      struct LugreCycles **out);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

@@ -15,6 +15,9 @@
 //! lugre_zoo_new("maxwell-slip", 2, names, values, lens, &m);
 //! double u[] = {3, 1, 2, -3};
 //! lugre_zoo_loop_new(m, u, 4, &hl);   /* then lugre_loop_turning, lugre_loop_table, ... */
+//! double h[] = {0, 4, 1, 3, -4, -1, -3, 4, 0};
+//! LugreCycles *cy;
+//! lugre_zoo_cycles_new(m, h, 9, 0.0, NULL, &cy); /* then lugre_cycles_len, lugre_cycles_columns */
 //! ```
 
 use std::ffi::{c_char, CString};
@@ -25,7 +28,7 @@ use lugre::TurningPoints;
 
 use super::{
     capacity, fail, free, guard, handle, handle_mut, input, output, set_out, text, values, Failure,
-    LugreLoop, LugreStatus, Periodic,
+    LugreCycles, LugreLoop, LugreStatus, Periodic,
 };
 
 /// A validated model of the zoo.
@@ -307,5 +310,39 @@ pub extern "C" fn lugre_zoo_loop_new(
                 inner: Periodic::Zoo(Box::new((m.clone(), zl))),
             },
         )
+    })
+}
+
+/// The rainflow cycles of the history `u[0..n]` with the noise gate `gate` (0: none), each full
+/// cycle with its energies along the model's path from rest at `u[0]` (as `lugre cycles --model
+/// NAME`), read with `lugre_cycles_len` and `lugre_cycles_columns` and freed by
+/// `lugre_cycles_free`. The history is held whole: more than the core's
+/// `lugre::zoo::MAX_HISTORY_SAMPLES` (2^27) samples are refused, before anything is allocated.
+/// `x0` is NULL: the model starts from rest; an initial state given (as to `lugre_cycles_new`)
+/// is refused with the core's message, as `lugre cycles --model NAME --x0` refuses it.
+#[no_mangle]
+pub extern "C" fn lugre_zoo_cycles_new(
+    zoo: *const LugreZoo,
+    u: *const f64,
+    n: usize,
+    gate: f64,
+    x0: *const f64,
+    out: *mut *mut LugreCycles,
+) -> LugreStatus {
+    guard(|| {
+        let m = &handle(zoo, "zoo")?.model;
+        if !x0.is_null() {
+            let label = m.spec().label;
+            return Err(lugre::HistoryError::StartsFromRest { model: label }.into());
+        }
+        let u = input(u, n, "u")?;
+        lugre::zoo::check_held(m, u.len())
+            .map_err(|e| fail(LugreStatus::InvalidArgument, format!("u: {e}")))?;
+        let mut columns = lugre::CycleColumns::new()
+            .with_reversals(false)
+            .with_closures(true)
+            .with_energy(true);
+        m.count_cycles(u, gate, &mut columns)?;
+        set_out(out, LugreCycles { columns })
     })
 }

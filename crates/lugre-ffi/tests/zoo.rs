@@ -342,3 +342,83 @@ fn null_pointers_are_refused_by_name() {
     );
     lugre_zoo_free(ptr::null_mut());
 }
+
+/// `lugre_zoo_cycles_new` through `lugre_cycles_columns`: every model of the table on its
+/// defaults gives the core's count and energies (`ZooModel::count_cycles`) to the last bit,
+/// with and without a gate; bad input is refused with the core's message.
+#[test]
+fn cycles_of_a_history_are_the_cores() {
+    let h = [0.0, 4.0, 1.0, 3.0, -4.0, -1.0, -3.0, 4.0, 0.0];
+    for spec in MODELS {
+        let z = zoo(spec.name, &[]).unwrap();
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        for gate in [0.0, 2.5] {
+            let mut cy = ptr::null_mut();
+            let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), gate, ptr::null(), &mut cy);
+            assert_eq!(s, LugreStatus::Ok, "{}", last_error());
+            let mut n = 0;
+            assert_eq!(lugre_cycles_len(cy, &mut n), LugreStatus::Ok);
+            // The columns compared; the others are skipped (NULL).
+            let mut d: Vec<Vec<f64>> = (0..6).map(|_| vec![0.0; n]).collect();
+            let mut start = vec![0i64; n];
+            let columns = LugreCycleColumns {
+                range: d[0].as_mut_ptr(),
+                mean: ptr::null_mut(),
+                count: d[1].as_mut_ptr(),
+                start: start.as_mut_ptr(),
+                end: ptr::null_mut(),
+                closure: ptr::null_mut(),
+                closure_position: ptr::null_mut(),
+                work: d[2].as_mut_ptr(),
+                stored_energy_change: d[3].as_mut_ptr(),
+                dissipation: d[4].as_mut_ptr(),
+                closure_gap: d[5].as_mut_ptr(),
+            };
+            assert_eq!(lugre_cycles_columns(cy, &columns, n), LugreStatus::Ok);
+            lugre_cycles_free(cy);
+            let mut want = lugre::cycles::Collect::default();
+            model.count_cycles(&h, gate, &mut want).unwrap();
+            assert_eq!(n, want.cycles.len());
+            for (k, c) in want.cycles.iter().enumerate() {
+                assert_eq!(
+                    (d[0][k], d[1][k], start[k]),
+                    (c.range, c.count, c.start as i64)
+                );
+                // C's 0 where the core has none (half cycles).
+                let e = c.energy.map_or([0.0; 4], |e| {
+                    let a = e.arc;
+                    [a.work, a.stored_energy_change, a.dissipation, a.closure_gap]
+                });
+                let got = [d[2][k], d[3][k], d[4][k], d[5][k]];
+                assert_eq!(got.map(f64::to_bits), e.map(f64::to_bits), "{}", spec.name);
+            }
+        }
+        let mut cy = ptr::null_mut();
+        let bad = [0.0, f64::NAN];
+        let s = lugre_zoo_cycles_new(z, bad.as_ptr(), 2, 0.0, ptr::null(), &mut cy);
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert_eq!(last_error(), "u[1] must be a finite number, got NaN");
+        let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), -1.0, ptr::null(), &mut cy);
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert_eq!(
+            last_error(),
+            "the gate must be a finite number >= 0, got -1"
+        );
+        assert!(cy.is_null(), "nothing written on failure");
+        let s = lugre_zoo_cycles_new(z, h.as_ptr(), h.len(), 0.0, &0.0, &mut cy);
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert_eq!(
+            last_error(),
+            format!(
+                "x0 is the initial bristle state of LuGre and Dahl; the {} model starts from rest",
+                spec.label
+            )
+        );
+        let s = lugre_zoo_cycles_new(ptr::null(), h.as_ptr(), 2, 0.0, ptr::null(), &mut cy);
+        assert_eq!(
+            (s, last_error().as_str()),
+            (LugreStatus::NullPointer, "zoo is NULL")
+        );
+        lugre_zoo_free(z);
+    }
+}

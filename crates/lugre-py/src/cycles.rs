@@ -11,11 +11,15 @@ use pyo3::types::{PyBool, PyDict, PyType};
 
 use crate::convert::{self, real, type_name, value_error, vec_out};
 use crate::models::lugre_of;
+use crate::zoo::PyZooModel;
+use lugre::HistoryError;
 
 /// Reversals and ASTM E1049-85 rainflow cycles of a measured history `series` (samples joined
-/// by straight lines, not periodic), where each full cycle's loop closes and, with a `model`
-/// (LuGre or Dahl), the energies over each loop's arc from the rate-independent response y*
-/// (eq. 6) started at y*(0) = sigma0 x0.
+/// by straight lines, not periodic), where each full cycle's loop closes and, with a `model`,
+/// the energies over each loop's arc: for LuGre or Dahl along the rate-independent response y*
+/// (eq. 6) started at y*(0) = sigma0 x0; for a `lugre.ZooModel` along the model's exact path
+/// from rest at series[0] (no `x0`; the history is held in memory, at most 2^27 samples), as
+/// `lugre cycles --model NAME`.
 ///
 /// `gate` >= 0 ignores reversals smaller than it (a hysteresis band filter; 0 is no gate).
 /// Cycles follow the conventions of the Python package `rainflow` 3.x (same cycles, same
@@ -43,11 +47,12 @@ use crate::models::lugre_of;
 /// what is not needed (less memory and time for long histories).
 ///
 /// Invalid input raises ValueError with the message of `lugre cycles` and the C ABI (a sample
-/// that is not a finite number, fewer than 2 samples, a bad gate or x0).
+/// that is not a finite number, fewer than 2 samples, a bad gate or x0, x0 with a model of the
+/// zoo); a model of another type raises TypeError.
 #[pyfunction]
 #[pyo3(
     signature = (series, gate=None, model=None, x0=None, *, reversals=None, closures=None),
-    text_signature = "(series, gate=0.0, model=None, x0=0.0, *, reversals=True, closures=True)"
+    text_signature = "(series, gate=0.0, model=None, x0=None, *, reversals=True, closures=True)"
 )]
 pub fn cycles<'py>(
     py: Python<'py>,
@@ -63,19 +68,23 @@ pub fn cycles<'py>(
         Some(g) => real(g, "gate")?,
         None => 0.0,
     };
-    let x0 = match x0.filter(|x| !x.is_none()) {
-        Some(x) => real(x, "x0")?,
-        None => 0.0,
-    };
+    let x0 = x0
+        .filter(|x| !x.is_none())
+        .map(|x| real(x, "x0"))
+        .transpose()?;
     let keep_reversals = flag(reversals, "reversals")?;
     let keep_closures = flag(closures, "closures")?;
     let model = match model.filter(|m| !m.is_none()) {
         None => None,
-        Some(m) => Some(lugre_of(m)?.rate_independent()),
+        Some(m) => Some(energy_model(m, x0)?),
     };
     let u = u.as_slice();
+    let columns = CycleColumns::new()
+        .with_reversals(keep_reversals)
+        .with_closures(keep_closures)
+        .with_energy(model.is_some());
     let (columns, summary) = py
-        .detach(|| count(u, gate, model, x0, keep_reversals, keep_closures))
+        .detach(|| count(u, gate, model, x0.unwrap_or(0.0), columns))
         .map_err(value_error)?;
     let result = to_dict(py, columns, &summary)?;
     // The class is looked up once, not in the package's module at every call.
@@ -98,25 +107,59 @@ fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
     })
 }
 
-/// Counts `u` into columns (room for every reversal and cycle there can be, one per sample,
-/// so that counting never reallocates), trimmed at the end. A history of 0 or 1 samples is
+/// The model whose energies a count follows: LuGre's or Dahl's y*, or a model of the zoo.
+enum Energy {
+    Classic(lugre::RateIndependent),
+    Zoo(Box<lugre::zoo::ZooModel>),
+}
+
+/// The `model` argument of [`cycles`]; a model of the zoo starts from rest, so an `x0` given
+/// with one is refused in the core's words.
+fn energy_model(m: &Bound<'_, PyAny>, x0: Option<f64>) -> PyResult<Energy> {
+    let Ok(zoo) = m.cast::<PyZooModel>() else {
+        return match lugre_of(m) {
+            Ok(l) => Ok(Energy::Classic(l.rate_independent())),
+            Err(_) => Err(PyTypeError::new_err(format!(
+                "model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got {}",
+                type_name(m)
+            ))),
+        };
+    };
+    let model = zoo.get().model();
+    if x0.is_some() {
+        let label = model.spec().label;
+        return Err(value_error(HistoryError::StartsFromRest { model: label }));
+    }
+    Ok(Energy::Zoo(Box::new(model.clone())))
+}
+
+/// Counts `u` into `c` (room for every reversal and cycle there can be, one per sample, so
+/// that counting never reallocates), trimmed at the end. A history of 0 or 1 samples is
 /// refused, as by `lugre cycles` and the C ABI (the core's one rule).
 fn count(
     u: &[f64],
     gate: f64,
-    model: Option<lugre::RateIndependent>,
+    model: Option<Energy>,
     x0: f64,
-    keep_reversals: bool,
-    keep_closures: bool,
-) -> Result<(CycleColumns, lugre::CycleSummary), lugre::HistoryError> {
-    let mut counter = lugre::CycleCounter::new(gate)?.with_energy(model, x0)?;
-    let mut c = CycleColumns::new()
-        .with_reversals(keep_reversals)
-        .with_closures(keep_closures)
-        .with_energy(model.is_some());
+    mut c: CycleColumns,
+) -> Result<(CycleColumns, lugre::CycleSummary), HistoryError> {
+    if let Some(Energy::Zoo(z)) = &model {
+        // Checked before the columns take room for the history.
+        lugre::zoo::check_held(z, u.len())?;
+    }
     c.reserve_for_samples(u.len());
-    counter.push_all(u, &mut c)?;
-    let summary = counter.finish(&mut c)?;
+    let summary = match model {
+        Some(Energy::Zoo(z)) => z.count_cycles(u, gate, &mut c)?,
+        classic => {
+            let ri = match classic {
+                Some(Energy::Classic(m)) => Some(m),
+                _ => None,
+            };
+            let mut counter = lugre::CycleCounter::new(gate)?.with_energy(ri, x0)?;
+            counter.push_all(u, &mut c)?;
+            counter.finish(&mut c)?
+        }
+    };
     c.shrink_to_fit();
     Ok((c, summary))
 }

@@ -32,6 +32,13 @@ pub struct PyZooModel {
     inner: ZooModel,
 }
 
+impl PyZooModel {
+    /// The core's model.
+    pub(crate) fn model(&self) -> &ZooModel {
+        &self.inner
+    }
+}
+
 /// The values of `parameters` by name (keywords of [`PyZooModel::new`]), as the core takes
 /// them; the core checks names against the model's table.
 fn given_values(

@@ -250,3 +250,82 @@ def test_bad_values_raise_and_never_crash(name):
             lugre.ZooModel(name).loop(value)
         except (ValueError, TypeError):
             pass
+
+
+# ---- cycles of a measured history along a model's path (lugre.cycles with a ZooModel)
+
+HISTORY = [0.0, 4.0, 1.0, 3.0, -4.0, -1.0, -3.0, 4.0, 0.0, 2.0, 1.5, 2.5, -0.5]
+ENERGY = ("work", "stored_energy_change", "dissipation", "closure_gap")
+
+
+@pytest.mark.parametrize("name", MODELS)
+@pytest.mark.parametrize("gate", [0.0, 1.25])
+def test_cycles_are_the_command_lines_to_the_last_bit(name, gate, lugre_cli):
+    """lugre.cycles(u, gate, ZooModel(name)) gives `lugre cycles --model NAME --json`'s
+    cycles, energies and totals, bit for bit."""
+    given = scaled(name)
+    r = lugre.cycles(np.array(HISTORY), gate, lugre.ZooModel(name, **given))
+    args = ["cycles", "--model", name, f"--values={','.join(repr(x) for x in HISTORY)}",
+            f"--gate={gate!r}", "--json"]
+    for p, v in given.items():
+        args.append(f"{flag(p)}={','.join(repr(float(x)) for x in np.atleast_1d(v))}")
+    doc = lugre_cli(args)
+    assert doc["model"]["kind"] == name
+    rows = doc["cycles"]
+    c = r["cycles"]
+    assert len(c["range"]) == len(rows) and any(row["count"] == 1.0 for row in rows)
+    for k, row in enumerate(rows):
+        full = row["count"] == 1.0
+        for col in ("range", "mean", "count", "start", "end"):
+            same_bits(c[col][k].item(), row[col], f"{name} {col}[{k}]")
+        for col in ("closure", "closure_position", *ENERGY):
+            if full:
+                same_bits(c[col][k].item(), row[col], f"{name} {col}[{k}]")
+            else:
+                assert row[col] is None
+                assert c[col][k] == -1 if col == "closure" else math.isnan(c[col][k])
+    same_bits(r["summary"]["energy"], doc["history"])
+    assert r["reversals"]["u"].tolist() == [x["u"] for x in doc["reversals"]]
+
+
+@pytest.mark.parametrize("name", MODELS)
+def test_cycles_refuse_what_the_command_line_refuses(name, lugre_cli_error):
+    m = lugre.ZooModel(name)
+    label = lugre.ZOO_MODELS[name]["label"]
+    message = f"x0 is the initial bristle state of LuGre and Dahl; the {label} model starts from rest"
+    for x0 in (0.0, 1.0):
+        with pytest.raises(ValueError) as e:
+            lugre.cycles(HISTORY, model=m, x0=x0)
+        assert str(e.value) == message
+    assert lugre_cli_error(["cycles", "--model", name, "--x0", "1", "--values", "0,1,0"]) == f"--x0: {message}"
+    with pytest.raises(ValueError, match=r"^u\[1\] must be a finite number, got NaN$"):
+        lugre.cycles([0.0, math.nan, 1.0], model=m)
+    with pytest.raises(ValueError, match=r"^a history needs at least 2 samples, got 1$"):
+        lugre.cycles([0.0], model=m)
+
+
+def test_cycles_name_the_models_they_take():
+    with pytest.raises(TypeError) as e:
+        lugre.cycles(HISTORY, model="maxwell-slip")
+    assert str(e.value) == "model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got str"
+
+
+def test_dask_refuses_a_model_of_the_zoo_in_chunks_and_takes_it_per_file(tmp_path):
+    """lugre.dask.count/cycles follow a model in chunks only for LuGre and Dahl: a model of
+    the zoo is refused with one line before any task runs; cycles_many counts each file whole,
+    as lugre.cycles."""
+    ld = pytest.importorskip("lugre.dask")
+    da = pytest.importorskip("dask.array")
+    m = lugre.ZooModel(MODELS[0])
+    x = da.from_array(np.array(HISTORY), chunks=5)
+    with pytest.raises(ValueError) as e:
+        ld.cycles(x, model=m)
+    assert str(e.value) == (
+        f"lugre.dask: the energies of a model of the zoo ({MODELS[0]}) are not computed in "
+        "chunks (its path runs from rest over the whole history); count the history with "
+        "lugre.cycles, or here without a model")
+    path = tmp_path / "h.npy"
+    np.save(path, np.array(HISTORY))
+    df = ld.cycles_many([str(path)], model=m)
+    want = lugre.cycles(np.array(HISTORY), model=m, reversals=False)["cycles"]
+    np.testing.assert_array_equal(df["work"].to_numpy(), want["work"])

@@ -280,6 +280,19 @@ pub enum HistoryError {
     EnergyAfterStart { samples: u64 },
     #[error("the energies of the cycle closing at u[{index}] overflow f64 (values too large)")]
     EnergyOverflow { index: u64 },
+    #[error(
+        "the energies along the history overflow f64 for this model and input (values too large)"
+    )]
+    TotalsOverflow,
+    /// An initial state given for a model of the zoo, which starts from rest at `u[0]`.
+    #[error(
+        "x0 is the initial bristle state of LuGre and Dahl; the {model} model starts from rest"
+    )]
+    StartsFromRest { model: &'static str },
+    /// A history too long for the energies of a model of the zoo (held in memory:
+    /// [`crate::zoo::MAX_HISTORY_SAMPLES`]).
+    #[error("more than {limit} samples; the energies of the {model} model hold the history in memory (count the cycles without a model, or split the history)")]
+    HeldTooLong { limit: usize, model: &'static str },
     #[error("a histogram needs at least 1 bin, got {bins}")]
     NoBins { bins: usize },
     #[error("histogram bounds must be finite with min <= max, got [{min}, {max}]", min = num(*.min), max = num(*.max))]

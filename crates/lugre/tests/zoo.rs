@@ -831,7 +831,7 @@ fn an_element_driven_step_by_step_is_the_exact_path() {
         }
         let before = (element.input(), element.force(), element.work());
         let err = element.advance(f64::NAN).unwrap_err();
-        assert_eq!(err.to_string(), "u must be finite, got NaN");
+        assert_eq!(err.to_string(), "u must be a finite number, got a value that is not a finite number");
         assert_eq!(before, (element.input(), element.force(), element.work()));
     }
 }
@@ -867,4 +867,62 @@ fn an_element_by_hand_and_at_any_step_size() {
             assert!((x - y).abs() <= 1e-13 * x.abs().max(1.0), "{x} vs {y}");
         }
     }
+}
+
+/// `ZooModel::count_cycles`, what every front end calls: the counter's cycles and reversals
+/// with the energies of `cycle_energies`, the gate applied, and the refusals in the core's
+/// words (too long a history before anything is read; a bad sample; the totals of a model whose
+/// energies overflow f64).
+#[test]
+fn count_cycles_is_the_count_with_the_energies_along_the_path() {
+    use lugre::cycles::Collect;
+    use lugre::zoo::{check_held, ZooModel, MAX_HISTORY_SAMPLES};
+    let u = [0.0, 4.0, 1.0, 3.0, -4.0, -1.0, -3.0, 4.0, 0.0];
+    for spec in lugre::zoo::MODELS {
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        for gate in [0.0, 2.5] {
+            let mut want = lugre::cycles::count_cycles(&u, gate).unwrap();
+            let totals = model.cycle_energies(&u, &mut want.cycles);
+            let mut got = Collect::default();
+            let summary = model.count_cycles(&u, gate, &mut got).unwrap();
+            assert_eq!(got.cycles, want.cycles, "{} gate {gate}", spec.name);
+            assert_eq!(got.reversals, want.reversals);
+            assert_eq!(summary.energy, Some(totals));
+            assert_eq!(summary.full_cycles, want.summary.full_cycles);
+        }
+        let e = check_held(&model, MAX_HISTORY_SAMPLES + 1).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "more than 134217728 samples; the energies of the {} model hold the history in memory (count the cycles without a model, or split the history)",
+                spec.label
+            )
+        );
+        assert!(check_held(&model, MAX_HISTORY_SAMPLES).is_ok());
+        let e = model
+            .count_cycles(&[0.0, f64::NAN], 0.0, &mut Collect::default())
+            .unwrap_err();
+        assert_eq!(e.to_string(), "u[1] must be a finite number, got NaN");
+    }
+    let pi = ZooModel::new("prandtl-ishlinskii", &[]).unwrap();
+    // A cycle's own energies stay finite (differences of states); its forces need not.
+    let stiff = ZooModel::new("prandtl-ishlinskii", &[("linear_weight", &[1e10])]).unwrap();
+    let e = stiff
+        .count_cycles(
+            &[0.0, 2e300, -2e300, 1e300, -1e300, 2e300],
+            0.0,
+            &mut Collect::default(),
+        )
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "the energies of the cycle closing at u[5] overflow f64 (values too large)"
+    );
+    let e = pi
+        .count_cycles(&[0.0, 1e300, -1e300], 0.0, &mut Collect::default())
+        .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "the energies along the history overflow f64 for this model and input (values too large)"
+    );
 }

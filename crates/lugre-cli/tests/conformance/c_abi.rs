@@ -110,9 +110,17 @@ fn run_loop(f: &Fields) -> Outcome {
     result
 }
 
-/// The loop of the zoo's model `m["model"]` whose parameters are the other keys of `m` (a
-/// number or an array each), given by name as a C caller gives them.
+/// The loop of the zoo's model `m["model"]` (see [`zoo_model`]).
 fn zoo_loop(m: &Value, u: &[f64], hl: &mut *mut LugreLoop) -> Result<(), Failure> {
+    let zoo = zoo_model(m)?;
+    let result = status(lugre_zoo_loop_new(zoo, u.as_ptr(), u.len(), hl));
+    lugre_zoo_free(zoo);
+    result
+}
+
+/// The zoo's model `m["model"]` whose parameters are the other keys of `m` (a number or an
+/// array each), given by name as a C caller gives them; freed by the caller.
+fn zoo_model(m: &Value) -> Result<*mut LugreZoo, Failure> {
     let name = m["model"].as_str().expect("model names the model");
     let m = m.as_object().expect("model is an object");
     let given: Vec<(CString, Vec<f64>)> = m
@@ -139,9 +147,7 @@ fn zoo_loop(m: &Value, u: &[f64], hl: &mut *mut LugreLoop) -> Result<(), Failure
         lens.as_ptr(),
         &mut zoo,
     ))?;
-    let result = status(lugre_zoo_loop_new(zoo, u.as_ptr(), u.len(), hl));
-    lugre_zoo_free(zoo);
-    result
+    Ok(zoo)
 }
 
 fn loop_json(hl: *mut LugreLoop, samples: Option<&Value>) -> Outcome {
@@ -222,16 +228,27 @@ fn loop_json(hl: *mut LugreLoop, samples: Option<&Value>) -> Outcome {
 fn cycles(f: &Fields) -> Outcome {
     let h = f.numbers("history").expect("history");
     let with_model = f.get("model").is_some();
-    let m = with_model.then(|| model(f.get("model"))).transpose()?;
+    let gate = f.num("gate").unwrap_or(0.0);
     let mut c = ptr::null_mut();
-    status(lugre_cycles_new(
-        h.as_ptr(),
-        h.len(),
-        f.num("gate").unwrap_or(0.0),
-        m.as_ref().map_or(ptr::null(), |m| m.0),
-        f.num("x0").unwrap_or(0.0),
-        &mut c,
-    ))?;
+    if let Some(m) = f.get("model").filter(|m| m.get("model").is_some()) {
+        // A model of the zoo: x0 passed only when the case gives it (to be refused).
+        let zoo = zoo_model(m)?;
+        let x0 = f.num("x0");
+        let x0 = x0.as_ref().map_or(ptr::null(), |x| x as *const f64);
+        let s = lugre_zoo_cycles_new(zoo, h.as_ptr(), h.len(), gate, x0, &mut c);
+        lugre_zoo_free(zoo);
+        status(s)?;
+    } else {
+        let m = with_model.then(|| model(f.get("model"))).transpose()?;
+        status(lugre_cycles_new(
+            h.as_ptr(),
+            h.len(),
+            gate,
+            m.as_ref().map_or(ptr::null(), |m| m.0),
+            f.num("x0").unwrap_or(0.0),
+            &mut c,
+        ))?;
+    }
     let mut n = 0;
     status(lugre_cycles_len(c, &mut n))?;
     let mut d: Vec<Vec<f64>> = (0..8).map(|_| vec![0.0; n]).collect();

@@ -136,6 +136,27 @@ static void zoo(void) {
         OK(lugre_loop_summary(hl, &work, &period));
         CHECK(period == 14 && work != 0);
         lugre_loop_free(hl);
+        /* The cycles of a history along the model's path from rest: one full cycle of the
+         * nine samples closes (the ASTM example's (-1, 3), here (1, 3)) with its energies. */
+        const double h[] = {0, 4, 1, 3, -4, -1, -3, 4, 0};
+        LugreCycles *cy = NULL;
+        OK(lugre_zoo_cycles_new(z, h, 9, 0, NULL, &cy));
+        const double x0 = 0;
+        CHECK(lugre_zoo_cycles_new(z, h, 9, 0, &x0, &cy) == LUGRE_STATUS_INVALID_ARGUMENT);
+        CHECK(strstr(lugre_last_error(), "starts from rest") != NULL);
+        size_t nc = 0;
+        OK(lugre_cycles_len(cy, &nc));
+        double cw[9] = {0}, cc[9] = {0}, cd[9] = {0};
+        LugreCycleColumns cols = {0};
+        cols.count = cc;
+        cols.work = cw;
+        cols.dissipation = cd;
+        CHECK(nc <= 9);
+        OK(lugre_cycles_columns(cy, &cols, nc));
+        size_t full = 0;
+        for (size_t i = 0; i < nc; i++) full += cc[i] == 1 && cw[i] == cw[i];
+        CHECK(full >= 1);
+        lugre_cycles_free(cy);
         lugre_zoo_free(z);
         /* An unknown parameter: the core's message names the model's parameters. */
         const char *bad[] = {"no_such_parameter"};

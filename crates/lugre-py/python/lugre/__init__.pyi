@@ -346,14 +346,15 @@ class CyclesResult(Dict[str, Any]):
 def cycles(
     series: _Reals,
     gate: _Real = 0.0,
-    model: Optional[Union[LuGre, Dahl]] = None,
-    x0: _Real = 0.0,
+    model: Optional[Union[LuGre, Dahl, ZooModel]] = None,
+    x0: Optional[_Real] = None,
     *,
     reversals: bool = True,
     closures: bool = True,
 ) -> CyclesResult:
     """Reversals and ASTM E1049-85 rainflow cycles of a measured history, with loop closure and,
-    with a model, the energy of each full cycle, as columns of numpy arrays."""
+    with a model, the energy of each full cycle, as columns of numpy arrays (LuGre and Dahl from
+    y*(0) = sigma0 x0, default 0; a ZooModel from rest at series[0], no x0)."""
     ...
 
 @type_check_only

@@ -1,6 +1,6 @@
 """Rainflow counts of histories too large for one machine, on Dask (``pip install lugre[dask]``).
 
-``lugre.dask.cycles(x, model=None, x0=0.0)`` counts a 1-D ``dask.array`` (or a list of ``.npy``
+``lugre.dask.cycles(x, model=None, x0=None)`` counts a 1-D ``dask.array`` (or a list of ``.npy``
 files read as one history, in order) chunk by chunk and returns a ``dask.dataframe`` with the
 columns of ``lugre.cycles(...)["cycles"]``, **equal to the single pass row for row**: the same
 ranges, means, counts, start/end indices, closure indices and positions, in the same order
@@ -20,6 +20,10 @@ time of each stage.
 The core package never imports Dask; this module needs ``dask[distributed,dataframe]``. It
 runs on the scheduler Dask would use anyway: a ``distributed.Client`` if one is active
 (``Client("tcp://scheduler:8786")`` for a real cluster), else threads.
+
+A model of the zoo (``lugre.ZooModel``) is refused by ``count`` and ``cycles`` with one line:
+its energies follow the model's path from rest over the whole history, which is held in memory
+(``lugre.cycles`` does it, up to 2^27 samples); ``cycles_many`` takes one, each file whole.
 
 The noise gate is not available here (``gate`` must be 0): whether a turn is a reversal
 depends on how far the history later comes back, which a chunk cannot know; count gated
@@ -267,7 +271,13 @@ def _merge_tree(summaries: list, fan_in: int) -> tuple:
     return level[0], opens
 
 
-def _check_model(model: Any, x0: float, gate: float) -> None:
+def _check_model(model: Any, x0: Optional[float], gate: float) -> None:
+    if isinstance(model, _lugre.ZooModel):
+        raise ValueError(
+            f"lugre.dask: the energies of a model of the zoo ({model.name}) are not computed in "
+            "chunks (its path runs from rest over the whole history); count the history with "
+            "lugre.cycles, or here without a model"
+        )
     if gate != 0:
         raise ValueError(
             "lugre.dask: gate > 0 is not available in distributed mode (whether a turn is a "
@@ -279,7 +289,7 @@ def _check_model(model: Any, x0: float, gate: float) -> None:
     _single_cycles([0.0, 1.0], 0.0, model, x0, reversals=False)
 
 
-def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+def count(x: Any, model: Any = None, x0: Optional[float] = None, gate: float = 0.0, *,
           check_order: bool = True, merge_fan_in: int = 8) -> dict:
     """Counts the history ``x`` in chunks on Dask; returns a dict with "cycles" (a persisted
     ``dask.dataframe``, see ``cycles``), "summary" (that of ``lugre.cycles``), "chunks", "stages"
@@ -334,7 +344,7 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
     if energy:
         tic = time.perf_counter()
         spans = plan.energy_spans()
-        y0 = model.sigma0 * x0
+        y0 = model.sigma0 * (0.0 if x0 is None else x0)
         guesses = _chunk.chunk_guess_entries(model, y0, list(bounds_v))
 
         def energy_task(k: int, y: float) -> Any:
@@ -381,7 +391,7 @@ def count(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
     return {"cycles": df, "summary": summary, "chunks": n, "stages": stages, "entries": entries}
 
 
-def cycles(x: Any, model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+def cycles(x: Any, model: Any = None, x0: Optional[float] = None, gate: float = 0.0, *,
            check_order: bool = True) -> "dd.DataFrame":
     """The rainflow cycles of the history ``x`` (see ``count``) as a persisted
     ``dask.dataframe`` with the columns of ``lugre.cycles(...)["cycles"]`` ("range", "mean",
@@ -404,7 +414,8 @@ def _series_of(path: str, column: Optional[str]) -> np.ndarray:
     return d[role]
 
 
-def _cycles_file(path: str, column: Optional[str], gate: float, model: Any, x0: float) -> "pd.DataFrame":
+def _cycles_file(path: str, column: Optional[str], gate: float, model: Any,
+                 x0: Optional[float]) -> "pd.DataFrame":
     u = _series_of(path, column)
     try:
         r = _single_cycles(u, gate, model, x0, reversals=False)
@@ -415,13 +426,15 @@ def _cycles_file(path: str, column: Optional[str], gate: float, model: Any, x0: 
     return df
 
 
-def cycles_many(paths: Sequence[Any], model: Any = None, x0: float = 0.0, gate: float = 0.0, *,
+def cycles_many(paths: Sequence[Any], model: Any = None, x0: Optional[float] = None,
+                gate: float = 0.0, *,
                 column: Optional[str] = None) -> "pd.DataFrame":
     """The cycles of independent records, one task per file, as one pandas table with a "file"
     column first; the gate is allowed (each file is counted whole). A file is a ``.npy`` array,
     or a data file read by ``lugre.read`` (the ``lugre`` command's reader): the series is its
     column ``column`` (default "u": a header's u, x, position or displacement; or a column's
-    own name), other columns ignored, a time column checked."""
+    own name), other columns ignored, a time column checked. A ``lugre.ZooModel`` is taken
+    here (each file is held whole, as by ``lugre.cycles``), not by ``count``."""
     names = [os.fspath(p) for p in paths]
     for p in names:
         if not os.path.isfile(p):

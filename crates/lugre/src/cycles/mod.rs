@@ -181,6 +181,25 @@ pub struct HistoryEnergy {
     pub dissipation: f64,
 }
 
+impl HistoryEnergy {
+    /// The totals are finite numbers ([`HistoryError::TotalsOverflow`] otherwise: the
+    /// energies of a model and input with values too large for f64).
+    pub fn check_finite(&self) -> Result<(), HistoryError> {
+        let values = [
+            self.work,
+            self.stored_energy_change,
+            self.dissipation,
+            self.y_start,
+            self.y_end,
+        ];
+        if values.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(HistoryError::TotalsOverflow)
+        }
+    }
+}
+
 /// What a finished count reports besides the reversals and cycles.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CycleSummary {

@@ -161,7 +161,7 @@ fn finite_input(u: f64) -> Result<f64, ZooError> {
         Err(ZooError::Domain {
             name: "u",
             value: u,
-            condition: "finite".into(),
+            condition: "a finite number".into(),
         })
     }
 }

@@ -14,9 +14,70 @@
 //! however long the history before `A`. The states at the open cycles' starts are kept until
 //! their closures (as many as the rainflow stack holds).
 
-use super::Segmental;
-use crate::cycles::{Cycle, CycleEnergy, HistoryEnergy};
+use super::{Segmental, ZooModel};
+use crate::cycles::{
+    Collect, Cycle, CycleCounter, CycleEnergy, CycleSink, CycleSummary, HistoryEnergy,
+};
+use crate::error::HistoryError;
 use crate::kernel::numerics::DoubleDouble;
+
+/// The most samples a history may have for the energies of a model of the zoo: the history,
+/// its reversals and cycles are held in memory (the states at the open cycles' starts are kept
+/// until their closures), about 200 bytes a sample at most. Every front end refuses more with
+/// [`HistoryError::HeldTooLong`] ([`check_held`]).
+pub const MAX_HISTORY_SAMPLES: usize = 1 << 27;
+
+/// Refuses a history of `samples` samples for the energies of `model` when it is longer than
+/// [`MAX_HISTORY_SAMPLES`] (a reader calls it before holding more).
+pub fn check_held(model: &ZooModel, samples: usize) -> Result<(), HistoryError> {
+    if samples > MAX_HISTORY_SAMPLES {
+        return Err(HistoryError::HeldTooLong {
+            limit: MAX_HISTORY_SAMPLES,
+            model: model.spec().label,
+        });
+    }
+    Ok(())
+}
+
+/// Reversals and rainflow cycles of `u` with the noise gate `gate`, every full cycle with its
+/// energies along the path of `model` from rest at `u[0]`, passed to `sink` (reversals first,
+/// then the cycles in the order they close, as [`CycleCounter`] passes them); returns the
+/// summary with the totals along the history. What `lugre cycles --model NAME` reports.
+pub(crate) fn count(
+    model: &ZooModel,
+    u: &[f64],
+    gate: f64,
+    sink: &mut impl CycleSink,
+) -> Result<CycleSummary, HistoryError> {
+    check_held(model, u.len())?;
+    let mut counter = CycleCounter::new(gate)?;
+    let mut history = Collect::default();
+    counter.push_all(u, &mut history)?;
+    let mut summary = counter.finish(&mut history)?;
+    let totals = model.cycle_energies(u, &mut history.cycles);
+    for c in &history.cycles {
+        let Some(e) = c.energy else { continue };
+        let a = e.arc;
+        let values = [a.work, a.stored_energy_change, a.dissipation, a.closure_gap];
+        if !values
+            .iter()
+            .chain(&[e.y_start, e.y_closure])
+            .all(|x| x.is_finite())
+        {
+            let index = c.closure.map_or(c.end, |k| k.index);
+            return Err(HistoryError::EnergyOverflow { index });
+        }
+    }
+    totals.check_finite()?;
+    summary.energy = Some(totals);
+    for r in history.reversals {
+        sink.reversal(r);
+    }
+    for c in history.cycles {
+        sink.cycle(c);
+    }
+    Ok(summary)
+}
 
 /// A start state kept until its cycle closes: the cycle's index, the state, `D(A)`.
 type Open<S> = (usize, S, DoubleDouble);

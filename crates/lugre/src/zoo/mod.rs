@@ -71,6 +71,7 @@ pub use bouc_wen::BoucWen;
 pub use elastoplastic::ElastoPlastic;
 pub use element::ZooElement;
 pub use engine::{ZooLoop, MAX_STATES};
+pub use history::{check_held, MAX_HISTORY_SAMPLES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};

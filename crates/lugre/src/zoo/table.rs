@@ -14,8 +14,8 @@
 use super::{
     BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooElement, ZooLoop,
 };
-use crate::cycles::{Cycle, HistoryEnergy};
-use crate::error::{SamplesError, ZooError};
+use crate::cycles::{Cycle, CycleSink, CycleSummary, HistoryEnergy};
+use crate::error::{HistoryError, SamplesError, ZooError};
 use crate::input::TurningPoints;
 use crate::loops::LoopPoint;
 
@@ -398,6 +398,25 @@ impl ZooModel {
     pub fn cycle_energies(&self, u: &[f64], cycles: &mut [Cycle]) -> HistoryEnergy {
         let u0 = u.first().copied().unwrap_or(0.0);
         each!(self, m => super::history::cycle_energies(m, m.rest(u0), u, cycles))
+    }
+
+    /// Reversals and rainflow cycles of the history `u` with the noise gate `gate` (as
+    /// [`crate::CycleCounter`] counts them), each full cycle with its energies along this
+    /// model's path from rest at `u[0]`, passed to `sink`; returns the summary with the totals
+    /// along the history. The history is held whole: at most
+    /// [`super::MAX_HISTORY_SAMPLES`] samples.
+    ///
+    /// # Errors
+    /// The counter's ([`HistoryError`]: a sample not finite, fewer than 2 samples, a bad gate),
+    /// [`HistoryError::HeldTooLong`], and [`HistoryError::EnergyOverflow`] or
+    /// [`HistoryError::TotalsOverflow`] where the energies overflow f64.
+    pub fn count_cycles(
+        &self,
+        u: &[f64],
+        gate: f64,
+        sink: &mut impl CycleSink,
+    ) -> Result<CycleSummary, HistoryError> {
+        super::history::count(self, u, gate, sink)
     }
 
     /// The periodic response of `hl` (computed by [`Self::loops`] of this model) at `rhos`.

@@ -141,10 +141,6 @@ enum Energy {
     Zoo(lugre::zoo::ZooModel),
 }
 
-/// The most samples a history may have for the energies of a model of the zoo (held in memory:
-/// the states at the open cycles' starts are kept until their closures, `lugre::zoo`).
-const MAX_ZOO_SAMPLES: usize = 1 << 27;
-
 /// The request, from the flags (all checked before any input is read).
 struct Request<'a> {
     gate: f64,
@@ -206,31 +202,14 @@ impl Request<'_> {
     ) -> Result<CycleSummary> {
         let mut u = Vec::new();
         self.source.each_block(|block| {
-            if u.len() + block.len() > MAX_ZOO_SAMPLES {
-                bail!(
-                    "{}: more than {MAX_ZOO_SAMPLES} samples; the energies of the {} model hold the history in memory (count the cycles without a model, or split the history)",
-                    self.source.name(),
-                    model.spec().label
-                );
-            }
+            lugre::zoo::check_held(model, u.len() + block.len())
+                .map_err(|e| self.source_error(e))?;
             u.extend_from_slice(block);
             Ok(())
         })?;
-        let mut counter = self.counter()?;
-        let mut history = lugre::cycles::Collect::default();
-        counter
-            .push_all(&u, &mut history)
+        let summary = model
+            .count_cycles(&u, self.gate, sink)
             .map_err(|e| self.source_error(e))?;
-        let mut summary = counter
-            .finish(&mut history)
-            .map_err(|e| self.source_error(e))?;
-        summary.energy = Some(model.cycle_energies(&u, &mut history.cycles));
-        for r in history.reversals {
-            sink.reversal(r);
-        }
-        for c in history.cycles {
-            sink.cycle(c);
-        }
         check(sink)?;
         check_history(&summary)?;
         Ok(summary)
@@ -316,10 +295,10 @@ fn parse(args: &CyclesArgs) -> Result<Request<'_>> {
     let counter = CycleCounter::new(gate).map_err(|e| anyhow!("--gate: {e}"))?;
     let energy = if let Some(model) = args.model.build_zoo()? {
         if args.x0.is_some() {
-            bail!(
-                "--x0 is the initial bristle state of LuGre and Dahl; the {} model starts from rest",
-                model.spec().label
-            );
+            let e = lugre::HistoryError::StartsFromRest {
+                model: model.spec().label,
+            };
+            bail!("--x0: {e}");
         }
         Some(Energy::Zoo(model))
     } else if args.wants_energy() {
@@ -394,15 +373,8 @@ fn second_pass(
 
 /// The totals along the history are finite (checked before anything is printed).
 fn check_history(summary: &CycleSummary) -> Result<()> {
-    let Some(h) = summary.energy else {
-        return Ok(());
-    };
-    if [h.work, h.stored_energy_change, h.dissipation, h.y_end]
-        .iter()
-        .all(|x| x.is_finite())
-    {
-        Ok(())
-    } else {
-        bail!("the energies along the history overflow f64 for this model and input (values too large)")
+    match summary.energy {
+        Some(h) => Ok(h.check_finite()?),
+        None => Ok(()),
     }
 }
