@@ -211,7 +211,7 @@ fn model_help() -> String {
         format!("{label} ({})", symbols.join(", "))
     };
     format!(
-        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w; or, for `lugre loop`, {}",
+        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w; or, for `lugre loop` and `lugre cycles`, {}",
         list(ModelKind::Lugre),
         list(ModelKind::Dahl),
         crate::zoo_args::models_help()
@@ -271,11 +271,12 @@ impl ParameterFlags {
         };
         let capitalized = capitalized(p.description());
         format!(
-            "{capitalized}: {} {}{unit} ({}; default {})",
+            "{capitalized}: {} {}{unit} ({}; default {}){}",
             p.symbol(),
             p.domain().condition(),
             models.join(" and "),
-            sig(p.default_value(), 10)
+            sig(p.default_value(), 10),
+            crate::zoo_args::shared_help(p.name())
         )
     }
 }

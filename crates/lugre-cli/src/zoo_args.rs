@@ -57,6 +57,24 @@ pub(crate) fn owners(flag_given: &str) -> String {
     names.join(", ")
 }
 
+/// For a LuGre or Dahl flag that a model of the zoo takes too (`--rho` of Bouc-Wen): `; also
+/// Bouc-Wen (default 0.5)`, each such model with its own default; empty otherwise.
+pub(crate) fn shared_help(name: &str) -> String {
+    let items: Vec<String> = MODELS
+        .iter()
+        .filter_map(|m| m.parameter(name).map(|p| (m, p)))
+        .map(|(m, p)| {
+            let default: Vec<String> = p.default.iter().map(|v| sig(*v, 10)).collect();
+            format!("{}, default {}", m.label, default.join(","))
+        })
+        .collect();
+    if items.is_empty() {
+        String::new()
+    } else {
+        format!("; also {}", items.join("; "))
+    }
+}
+
 /// The zoo's part of `--model`'s help: each model with its parameters.
 pub(crate) fn models_help() -> String {
     let items: Vec<String> = MODELS

@@ -235,3 +235,27 @@ fn bouc_wen_at_sigma_one_is_the_dahl_model() {
         }
     }
 }
+
+/// Every parameter of every model of the table has a flag in `--help` whose help gives the
+/// model and the default (its own flag, or the LuGre/Dahl flag of the same name with "also").
+#[test]
+fn every_parameter_of_the_table_is_a_flag_with_its_default() {
+    let help = accepts(&["loop", "--help"]);
+    for spec in MODELS {
+        for p in spec.parameters {
+            let flag = format!("--{} ", p.name.replace('_', "-"));
+            let line = help
+                .lines()
+                .find(|l| l.trim_start().starts_with(&flag))
+                .unwrap_or_else(|| panic!("{flag}in --help"));
+            let default: Vec<String> = p
+                .default
+                .iter()
+                .map(|v| format!("{}", (v * 1e10).round() / 1e10))
+                .collect();
+            let own = format!("({}; default {})", spec.label, default.join(","));
+            let shared = format!("also {}, default {}", spec.label, default.join(","));
+            assert!(line.contains(&own) || line.contains(&shared), "{line}");
+        }
+    }
+}

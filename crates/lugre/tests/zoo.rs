@@ -831,7 +831,10 @@ fn an_element_driven_step_by_step_is_the_exact_path() {
         }
         let before = (element.input(), element.force(), element.work());
         let err = element.advance(f64::NAN).unwrap_err();
-        assert_eq!(err.to_string(), "u must be a finite number, got a value that is not a finite number");
+        assert_eq!(
+            err.to_string(),
+            "u must be a finite number, got a value that is not a finite number"
+        );
         assert_eq!(before, (element.input(), element.force(), element.work()));
     }
 }
