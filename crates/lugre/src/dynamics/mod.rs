@@ -1,6 +1,7 @@
 //! Closed-loop friction dynamics: a mass driven by forces, a spring and a controller, with
-//! LuGre (or Dahl) friction, solved to a stated accuracy with the instants where the velocity
-//! changes sign located as events.
+//! LuGre (or Dahl) friction, or the elasto-plastic friction of Dupont et al. (2002)
+//! ([`FrictionLaw`], (D1)-(D2)), solved to a stated accuracy with the instants where the
+//! velocity changes sign located as events.
 //!
 //! ```text
 //! M x'' = F_d(t, x, x', q) - F                 x(0) = x'(0) = 0, z(0) = 0, q(0) = 0
