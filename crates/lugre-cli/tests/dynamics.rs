@@ -415,3 +415,68 @@ fn flags_on_a_scenario_replace_its_fields() {
     let drive: Vec<f64> = j["drive"].as_array().unwrap().iter().map(f).collect();
     assert!(drive.iter().all(|d| *d > 0.5), "{drive:?}");
 }
+
+/// `--model elastoplastic` through the zoo's flags: on a scenario over Table I, the positions
+/// of the core's scipy reference (`crates/lugre/tests/reference/dynamics/elastoplastic_dynamics.py`,
+/// Radau at rtol 1e-12: x at 8, 10 and 15 s of stick-slip with zba = 5e-6 m), the model echoed
+/// by name, and the refusals in one line.
+#[test]
+fn elastoplastic_friction_from_the_zoo_flags() {
+    let j = accepts_json(&[
+        "dynamics",
+        "--model",
+        "elastoplastic",
+        "--scenario",
+        "stick-slip",
+        "--zba",
+        "5e-6",
+        "--times",
+        "0,8,10,15",
+        "--rtol",
+        "1e-11",
+        "--json",
+    ]);
+    let x: Vec<f64> = j["x"].as_array().unwrap().iter().map(f).collect();
+    let want = [
+        0.0,
+        0.0721748171072542,
+        0.6281298925070146,
+        0.9142700510848314,
+    ];
+    for (got, want) in x.iter().zip(want) {
+        assert!((got - want).abs() <= 1e-9, "{got} vs {want}");
+    }
+    let m = &j["model"];
+    assert_eq!(m["kind"], "elastoplastic");
+    assert_eq!(f(&m["zba"]), 5e-6);
+    assert_eq!(f(&m["sigma0"]), 1e5);
+    assert_eq!(f(&m["vs"]), 1e-3);
+    // LuGre's runs name their law too.
+    let j = accepts_json(&["dynamics", "--scenario", "lag", "--samples", "2", "--json"]);
+    assert_eq!(j["model"]["kind"], "lugre");
+    // Table I with the table's default zba = 0.5 m: above Fc / sigma0.
+    rejects(
+        &[
+            "dynamics",
+            "--model",
+            "elastoplastic",
+            "--scenario",
+            "stick-slip",
+        ],
+        "zba must be >= 0 and < fc / sigma0 = 0.00001",
+    );
+    rejects(
+        &[
+            "dynamics",
+            "--model",
+            "bouc-wen",
+            "--scenario",
+            "stick-slip",
+        ],
+        "--model bouc-wen: lugre dynamics takes lugre, dahl or elastoplastic",
+    );
+    rejects(
+        &["dynamics", "--scenario", "stick-slip", "--zba", "1e-6"],
+        "--zba is a parameter of --model elastoplastic",
+    );
+}

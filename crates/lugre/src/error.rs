@@ -617,6 +617,9 @@ pub enum DynamicsError {
     },
     #[error("the tolerance {name} must be a number in (0, 1) (atol: > 0), got {value}", value = num(*.value))]
     BadTolerance { name: &'static str, value: f64 },
+    /// The elasto-plastic break-away displacement outside `[0, min(Fc, Fs) / sigma0)`.
+    #[error("zba must be a finite number >= 0 and < min(Fc, Fs) / sigma0 = {limit} (the break-away displacement below every steady-state deflection), got {value}", value = num(*.value), limit = num(*.limit))]
+    BadBreakaway { value: f64, limit: f64 },
     /// Output times that are not finite, not increasing or outside the run.
     #[error(transparent)]
     Data(#[from] DataError),

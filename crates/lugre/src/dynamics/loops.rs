@@ -16,12 +16,13 @@
 //! `lugre loop` on the same turning points (its work per period, all of it dissipated): for slow
 //! drives the two agree to `O(rate)` (`crates/lugre/tests/dynamics.rs` shows it).
 
-use super::{Motion, System, Tolerances};
+use super::{FrictionLaw, Motion, System, Tolerances};
 use crate::cycles::count_cycles;
 use crate::error::Error;
 use crate::input::TurningPoints;
 use crate::loops::HysteresisLoop;
 use crate::simulate::uniform_times;
+use crate::zoo::ElastoPlastic;
 
 type Result<T> = std::result::Result<T, Error>;
 
@@ -45,7 +46,8 @@ pub struct FrictionLoop {
     pub bristle_energy_change: f64,
     /// `work - bristle_energy_change`.
     pub dissipation: f64,
-    /// The work per period of `lugre loop` on the same turning points.
+    /// The work per period of `lugre loop` on the same turning points (of the same friction
+    /// law: LuGre's slow loop, or the elasto-plastic model's).
     pub rate_independent_work: f64,
 }
 
@@ -128,10 +130,18 @@ fn one_loop(
         .collect();
     let mut turning_points = vec![m.x[start]];
     turning_points.extend(inner.iter().map(|&r| m.x[r]));
-    let periodic = HysteresisLoop::new(
-        system.model().rate_independent(),
-        &TurningPoints::new(&turning_points)?,
-    )?;
+    let input = TurningPoints::new(&turning_points)?;
+    let rate_independent_work = match system.law() {
+        FrictionLaw::LuGre => {
+            HysteresisLoop::new(system.model().rate_independent(), &input)?.work_per_period()
+        }
+        FrictionLaw::ElastoPlastic { zba } => {
+            let p = system.model().params();
+            ElastoPlastic::new(p.sigma0, p.fc, p.fs, zba)?
+                .loops(&input)?
+                .work_per_period()
+        }
+    };
     Ok(FrictionLoop {
         t_start: m.t[start],
         t_turn: inner.first().map_or(t_c, |&r| m.t[r]),
@@ -140,6 +150,6 @@ fn one_loop(
         work,
         bristle_energy_change: stored,
         dissipation: work - stored,
-        rate_independent_work: periodic.work_per_period(),
+        rate_independent_work,
     })
 }

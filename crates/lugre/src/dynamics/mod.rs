@@ -1,6 +1,7 @@
 //! Closed-loop friction dynamics: a mass driven by forces, a spring and a controller, with
-//! LuGre (or Dahl) friction, solved to a stated accuracy with the instants where the velocity
-//! changes sign located as events.
+//! LuGre (or Dahl) friction, or the elasto-plastic friction of Dupont et al. (2002)
+//! ([`FrictionLaw`], (D1)-(D2)), solved to a stated accuracy with the instants where the
+//! velocity changes sign located as events.
 //!
 //! ```text
 //! M x'' = F_d(t, x, x', q) - F                 x(0) = x'(0) = 0, z(0) = 0, q(0) = 0
@@ -123,10 +124,49 @@ pub struct Pid {
     pub setpoint: Steps,
 }
 
+/// The friction law of the bristle state: LuGre's (Dahl's as its special case) or the
+/// elasto-plastic model of Dupont et al. (2002), both on the [`LuGre`] model's `sigma0`,
+/// `sigma1`, `g` and `f`. With `w = sgn(v) z` and `z_ss = g(v) / sigma0`:
+///
+/// ```text
+/// (D1)  LuGre            z' = v (1 - w / z_ss)             = v - sigma0 |v| z / g(v)
+/// (D2)  elasto-plastic   z' = v (1 - alpha(w) w / z_ss)    alpha: 0 for w <= zba, the sine
+///                                                          blend up to z_ss, 1 beyond
+/// ```
+///
+/// and `F = sigma0 z + sigma1 z' + f(v)` for both. (D2) is affine in `v` at a frozen sign but
+/// not in `z`: the blend is `C^1` in `z` at `|z| = zba` and `|z| = z_ss` (the error control
+/// copes: `tests/dynamics_elastoplastic.rs` against scipy).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub enum FrictionLaw {
+    /// (D1).
+    #[default]
+    LuGre,
+    /// (D2) with the break-away displacement `zba` (m), `0 <= zba < min(Fc, Fs) / sigma0`.
+    ElastoPlastic { zba: f64 },
+}
+
+impl FrictionLaw {
+    /// The name reports echo: `lugre` or `elastoplastic` (the zoo table's).
+    pub fn name(&self) -> &'static str {
+        match self {
+            FrictionLaw::LuGre => "lugre",
+            FrictionLaw::ElastoPlastic { .. } => "elastoplastic",
+        }
+    }
+
+    /// Whether the rate is affine in `z` at a frozen sign (the Jacobian's `z` column may then
+    /// be a difference over a whole scale).
+    fn affine_in_z(&self) -> bool {
+        matches!(self, FrictionLaw::LuGre)
+    }
+}
+
 /// The one-degree-of-freedom system.
 #[derive(Debug, Clone)]
 pub struct System<G = Stribeck, F = Viscous> {
     model: LuGre<G, F>,
+    law: FrictionLaw,
     mass: f64,
     damping: f64,
     force: Option<Profile>,
@@ -143,6 +183,7 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         positive("the mass", mass)?;
         Ok(Self {
             model,
+            law: FrictionLaw::LuGre,
             mass,
             damping: 0.0,
             force: None,
@@ -216,6 +257,11 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         Ok(self)
     }
 
+    /// The friction law ([`FrictionLaw::LuGre`] unless [`System::with_elastoplastic`]).
+    pub fn law(&self) -> FrictionLaw {
+        self.law
+    }
+
     pub fn model(&self) -> &LuGre<G, F> {
         &self.model
     }
@@ -284,9 +330,30 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     #[inline]
     pub(crate) fn friction(&self, v: f64, z: f64, s: f64) -> (f64, f64) {
         let m = &self.model;
-        let speed = if s == 0.0 { v.abs() } else { s * v };
-        let dz = v - m.sigma0() * speed * z / m.g(v);
+        let dz = match self.law {
+            FrictionLaw::LuGre => {
+                let speed = if s == 0.0 { v.abs() } else { s * v };
+                v - m.sigma0() * speed * z / m.g(v)
+            }
+            FrictionLaw::ElastoPlastic { zba } => {
+                let (slip, _) = self.slip(v, z, s, zba);
+                v - slip
+            }
+        };
         (m.sigma0() * z + m.sigma1() * dz + m.f(v), dz)
+    }
+
+    /// (D2)'s slip rate `v alpha(w) w / z_ss` (what `z'` lacks of `v`) and the friction power
+    /// it dissipates in the bristles, `sigma0 alpha w^2 |v| / z_ss`, with `|v| = s v`.
+    #[inline]
+    fn slip(&self, v: f64, z: f64, s: f64, zba: f64) -> (f64, f64) {
+        let m = &self.model;
+        let sign = if s == 0.0 { v.signum() } else { s };
+        let (w, speed) = (sign * z, sign * v);
+        let z_ss = m.g(v) / m.sigma0();
+        let a = crate::zoo::elastoplastic_alpha(w, zba, z_ss);
+        let ratio = a * w / z_ss;
+        (v * ratio, m.sigma0() * ratio * w * speed)
     }
 
     /// The power put in by the drive and the power dissipated, in state `y` with the sign `s`
@@ -299,9 +366,14 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
             None => (state_v, 0.0),
         };
         let (friction, dz) = self.friction(v, z, s);
-        let speed = if s == 0.0 { v.abs() } else { s * v };
-        let dissipated_friction =
-            m.sigma0() * m.sigma0() * speed * z * z / m.g(v) + m.sigma1() * dz * v + m.f(v) * v;
+        let bristles = match self.law {
+            FrictionLaw::LuGre => {
+                let speed = if s == 0.0 { v.abs() } else { s * v };
+                m.sigma0() * m.sigma0() * speed * z * z / m.g(v)
+            }
+            FrictionLaw::ElastoPlastic { zba } => self.slip(v, z, s, zba).1,
+        };
+        let dissipated_friction = bristles + m.sigma1() * dz * v + m.f(v) * v;
         if self.velocity.is_some() {
             return [(self.mass * dv + friction) * v, dissipated_friction];
         }
@@ -348,6 +420,24 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         let (friction, dz) = self.friction(v, z, s);
         let a = (self.drive_force(t, x, v, q) - friction) / self.mass;
         [v, a, dz, self.deviation(t, x)]
+    }
+}
+
+impl System<Stribeck, Viscous> {
+    /// The elasto-plastic friction law (D2) with break-away displacement `zba` on this
+    /// system's model (its `sigma0`, `sigma1`, Stribeck `g` and viscous `f`).
+    ///
+    /// # Errors
+    /// [`DynamicsError::BadBreakaway`] unless `0 <= zba < min(Fc, Fs) / sigma0` (below every
+    /// steady-state deflection `g(v) / sigma0`: Dupont et al.'s condition for stiction).
+    pub fn with_elastoplastic(mut self, zba: f64) -> Result<Self, DynamicsError> {
+        let p = self.model.params();
+        let limit = p.fc.min(p.fs) / p.sigma0;
+        if !(zba.is_finite() && zba >= 0.0 && zba < limit) {
+            return Err(DynamicsError::BadBreakaway { value: zba, limit });
+        }
+        self.law = FrictionLaw::ElastoPlastic { zba };
+        Ok(self)
     }
 }
 

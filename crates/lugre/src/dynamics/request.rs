@@ -84,6 +84,8 @@ enum Output {
 pub struct Request {
     scenario: Option<Scenario>,
     model: Option<Given<LuGre>>,
+    /// The elasto-plastic break-away displacement: the friction law (D2) on the model.
+    elastoplastic: Option<f64>,
     mass: Option<Given<f64>>,
     damping: Option<Given<f64>>,
     force: Option<Given<Force>>,
@@ -125,6 +127,14 @@ impl Request {
     /// The friction model.
     pub fn with_model(mut self, model: LuGre) -> Self {
         self.model = user(Field::Model, model);
+        self
+    }
+
+    /// The elasto-plastic friction law ([`super::FrictionLaw::ElastoPlastic`]) with the
+    /// break-away displacement `zba` (m) on the model (given or the scenario's); checked
+    /// against the model by [`Request::build`].
+    pub fn with_elastoplastic(mut self, zba: f64) -> Self {
+        self.elastoplastic = Some(zba);
         self
     }
 
@@ -376,6 +386,7 @@ impl Request {
         let mine = self.clone();
         let user_drives = mine.drives_the_mass();
         out.model = mine.model.or(out.model);
+        out.elastoplastic = mine.elastoplastic;
         out.mass = mine.mass.or(out.mass);
         out.damping = mine.damping.or(out.damping);
         if mine.force.is_some() {
@@ -436,6 +447,9 @@ impl Request {
             .clone();
         let mass = r.mass.as_ref().map_or(Self::DEFAULT_MASS, |m| m.value);
         let mut system = System::new(model, mass)?;
+        if let Some(zba) = r.elastoplastic {
+            system = system.with_elastoplastic(zba)?;
+        }
         // The scenario's line, then one per field the user gave.
         let mut description: Vec<String> = r
             .scenario

@@ -661,7 +661,13 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
                 }
                 self.out.stats.rhs_evaluations += 2;
             } else {
-                up[c] += scale;
+                // A law not affine in z (the elasto-plastic blend): a forward difference small
+                // against the scale of z.
+                up[c] += if c == 2 && !self.system.law.affine_in_z() {
+                    1e-7 * scale
+                } else {
+                    scale
+                };
                 let d = up[c] - y[c];
                 let fu = self.system.rate(t, &up, s);
                 for r in 0..N {
@@ -726,7 +732,11 @@ impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
         let rate = self.system.rate(t, y, s);
         let (v, z) = (y[1], y[2]);
         let force = |v: f64, z: f64| self.system.friction(v, z, s).0;
-        let dz = z.abs() + self.atol[2];
+        let dz = if self.system.law.affine_in_z() {
+            z.abs() + self.atol[2]
+        } else {
+            1e-6 * (z.abs() + self.atol[2] / self.rtol)
+        };
         let dv = 1e-6 * (v.abs() + self.atol[1] / self.rtol);
         let by_z = (force(v, z + dz) - force(v, z - dz)) / (2.0 * dz);
         let by_v = (force(v + dv, z) - force(v - dv, z)) / (2.0 * dv);

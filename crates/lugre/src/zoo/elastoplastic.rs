@@ -70,8 +70,26 @@ use crate::error::{num, ZooError};
 use crate::input::TurningPoints;
 use chebyshev::Table;
 
+/// `alpha` of (E2) for the deflection `w` in the direction of motion (`w = sgn(v) z`: `w < 0`
+/// is a deflection against the motion), the break-away displacement `zba` and the steady-state
+/// deflection `z_ss > zba`: 0 up to `zba`, the sine blend `sin^2(pi theta / 2)` with
+/// `theta = (w - zba) / (z_ss - zba)`, 1 from `z_ss` on. The one blend of the slow loop
+/// (`z_ss = z_max`) and of the finite-rate dynamics (`z_ss = g(v) / sigma0`). It is `C^1` in
+/// `w` (its slope vanishes at both ends), not `C^2`.
+#[inline]
+pub fn alpha(w: f64, zba: f64, z_ss: f64) -> f64 {
+    if w <= zba {
+        0.0
+    } else if w >= z_ss {
+        1.0
+    } else {
+        let half = 0.5 * std::f64::consts::PI * (w - zba) / (z_ss - zba);
+        half.sin().powi(2)
+    }
+}
+
 /// The elasto-plastic model's rate-independent part: validated parameters and the tables of
-/// its blend.
+/// its blend, with the rate-dependent parameters its finite-rate form adds.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ElastoPlastic {
     sigma0: f64,
@@ -80,6 +98,30 @@ pub struct ElastoPlastic {
     zba: f64,
     z_max: f64,
     blend: Blend,
+    rate: Rate,
+}
+
+/// The parameters of (E1) that the slow loop does not use: micro-damping `sigma1` (N s/m),
+/// viscous `sigma2` (N s/m), Stribeck velocity `vs` (m/s) and exponent `beta`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Rate {
+    sigma1: f64,
+    sigma2: f64,
+    vs: f64,
+    beta: f64,
+}
+
+impl Default for Rate {
+    /// LuGre's defaults ([`crate::model::Parameter::default_value`]).
+    fn default() -> Self {
+        use crate::model::Parameter;
+        Self {
+            sigma1: Parameter::Sigma1.default_value(),
+            sigma2: Parameter::Sigma2.default_value(),
+            vs: Parameter::Vs.default_value(),
+            beta: Parameter::Beta.default_value(),
+        }
+    }
 }
 
 /// The blend in units of `z_max`: `delta = 1 - zba / z_max` and the tables (E5)-(E7), each
@@ -165,6 +207,7 @@ impl ElastoPlastic {
             zba,
             z_max,
             blend: Blend::new(delta),
+            rate: Rate::default(),
         })
     }
 
@@ -195,13 +238,63 @@ impl ElastoPlastic {
 
     /// `alpha(w)` of (E3) for the deflection `w` in the direction of motion.
     pub fn alpha(&self, w: f64) -> f64 {
-        if w <= self.zba {
-            0.0
-        } else if w >= self.z_max {
-            1.0
-        } else {
-            let half = 0.5 * std::f64::consts::PI * (w - self.zba) / (self.z_max - self.zba);
-            half.sin().powi(2)
+        alpha(w, self.zba, self.z_max)
+    }
+
+    /// The rate-dependent parameters `(sigma1, sigma2, vs, beta)` (the slow loop ignores
+    /// them): what `lugre dynamics` needs beside `sigma0, fc, fs, zba`.
+    ///
+    /// # Errors
+    /// [`ZooError::Domain`] naming the parameter: `sigma1, sigma2 >= 0`, `vs, beta > 0`.
+    pub fn with_rate(
+        mut self,
+        sigma1: f64,
+        sigma2: f64,
+        vs: f64,
+        beta: f64,
+    ) -> Result<Self, ZooError> {
+        for (name, value, positive) in [
+            ("sigma1", sigma1, false),
+            ("sigma2", sigma2, false),
+            ("vs", vs, true),
+            ("beta", beta, true),
+        ] {
+            let ok = value.is_finite() && (value > 0.0 || (!positive && value == 0.0));
+            if !ok {
+                let condition = if positive { "> 0" } else { ">= 0" };
+                return Err(ZooError::Domain {
+                    name,
+                    value,
+                    condition: condition.into(),
+                });
+            }
+        }
+        self.rate = Rate {
+            sigma1,
+            sigma2,
+            vs,
+            beta,
+        };
+        Ok(self)
+    }
+
+    /// The rate-dependent parameters `(sigma1, sigma2, vs, beta)`.
+    pub fn rate(&self) -> [f64; 4] {
+        let r = self.rate;
+        [r.sigma1, r.sigma2, r.vs, r.beta]
+    }
+
+    /// The finite-rate model's LuGre parts: `sigma0, sigma1`, the Stribeck curve
+    /// `g(v) = fc + (fs - fc) exp(-|v / vs|^beta)` (`z_ss = g / sigma0`) and `f(v) = sigma2 v`.
+    pub fn lugre_params(&self) -> crate::model::LuGreParams {
+        crate::model::LuGreParams {
+            sigma0: self.sigma0,
+            sigma1: self.rate.sigma1,
+            sigma2: self.rate.sigma2,
+            fc: self.fc,
+            fs: self.fs,
+            vs: self.rate.vs,
+            beta: self.rate.beta,
         }
     }
 

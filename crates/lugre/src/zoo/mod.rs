@@ -68,6 +68,7 @@ mod segment;
 mod table;
 
 pub use bouc_wen::BoucWen;
+pub(crate) use elastoplastic::alpha as elastoplastic_alpha;
 pub use elastoplastic::ElastoPlastic;
 pub use element::ZooElement;
 pub use engine::{ZooLoop, MAX_STATES};

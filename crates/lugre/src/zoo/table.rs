@@ -18,6 +18,7 @@ use crate::cycles::{Cycle, CycleSink, CycleSummary, HistoryEnergy};
 use crate::error::{HistoryError, SamplesError, ZooError};
 use crate::input::TurningPoints;
 use crate::loops::LoopPoint;
+use crate::model::Parameter;
 
 /// Whether a parameter is one number or one number per element.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -244,9 +245,31 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
             shape: Shape::Scalar,
             default: &[0.5],
         },
+        // The finite rate's (`lugre dynamics`), with LuGre's names, units and defaults; the
+        // slow loop ignores them.
+        lugre_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
+        lugre_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
+        lugre_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
+        lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
     ],
     closes_minor_loops: false,
 };
+
+/// The zoo's entry of LuGre's parameter `p` (name, unit, description, domain from the model
+/// table of [`Parameter`]) with its `default`.
+const fn lugre_parameter(p: Parameter, default: &'static [f64]) -> ZooParameter {
+    ZooParameter {
+        name: p.name(),
+        unit: p.unit(),
+        description: p.description(),
+        domain: match p.domain() {
+            crate::model::Domain::Positive => Domain::Positive,
+            crate::model::Domain::NonNegative => Domain::NonNegative,
+        },
+        shape: Shape::Scalar,
+        default,
+    }
+}
 
 /// Every model of the zoo, in the order `--help` lists them.
 pub const MODELS: [ZooModelSpec; 4] = [MAXWELL_SLIP, PRANDTL_ISHLINSKII, BOUC_WEN, ELASTOPLASTIC];
@@ -332,12 +355,20 @@ impl ZooModel {
                 value("thresholds"),
                 value("weights"),
             )?),
-            "elastoplastic" => Self::ElastoPlastic(ElastoPlastic::new(
-                value("sigma0")[0],
-                value("fc")[0],
-                value("fs")[0],
-                value("zba")[0],
-            )?),
+            "elastoplastic" => Self::ElastoPlastic(
+                ElastoPlastic::new(
+                    value("sigma0")[0],
+                    value("fc")[0],
+                    value("fs")[0],
+                    value("zba")[0],
+                )?
+                .with_rate(
+                    value("sigma1")[0],
+                    value("sigma2")[0],
+                    value("vs")[0],
+                    value("beta")[0],
+                )?,
+            ),
             _ => Self::BoucWen(BoucWen::new(
                 value("kx")[0],
                 value("kw")[0],
@@ -373,6 +404,7 @@ impl ZooModel {
                 .collect(),
             Self::ElastoPlastic(m) => [m.sigma0(), m.fc(), m.fs(), m.zba()]
                 .iter()
+                .chain(m.rate().iter())
                 .map(|&x| vec![x])
                 .collect(),
         };

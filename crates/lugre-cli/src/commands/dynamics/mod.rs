@@ -4,10 +4,13 @@
 
 use anyhow::{anyhow, bail, Result};
 use clap::Args;
-use lugre::dynamics::{EventKind, Field, FrictionLoop, Motion, Outcome, Plan, Request, Scenario};
+use lugre::dynamics::{
+    EventKind, Field, FrictionLaw, FrictionLoop, Motion, Outcome, Plan, Request, Scenario,
+};
 use lugre::fit::Family;
 use lugre::model::Parameter;
-use lugre::{DynamicsError, LuGre};
+use lugre::zoo::ZooModel;
+use lugre::{DynamicsError, LuGre, LuGreParams};
 use std::io::Write;
 
 use crate::args::{model_line, ModelArgs, OutputArgs, PlotArgs};
@@ -210,7 +213,9 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(name) = &args.scenario {
         r = r.with_scenario(Scenario::named(name)?);
     }
-    if let Some(model) = named_model(&args.model)? {
+    if let Some((model, zba)) = elastoplastic(&args.model, args.scenario.is_some())? {
+        r = r.with_model(model).with_elastoplastic(zba);
+    } else if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
     }
     if let Some(m) = args.mass {
@@ -303,8 +308,65 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
     Ok(Some(model))
 }
 
+/// The elasto-plastic friction (`--model elastoplastic`) as the LuGre model of its
+/// `sigma0, sigma1, sigma2, fc, fs, vs, beta` and its `zba`; `None` for LuGre and Dahl. On a
+/// scenario, the parameters not given are the scenario's (Table I), `zba` the table's.
+///
+/// # Errors
+/// Another model of the zoo (no finite-rate form here), the zoo's checks of the values.
+fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<(LuGre, f64)>> {
+    let Some(spec) = m.model.zoo() else {
+        return Ok(None);
+    };
+    if spec.name != (FrictionLaw::ElastoPlastic { zba: 0.0 }).name() {
+        bail!(
+            "--model {}: lugre dynamics takes {} or elastoplastic (the other models of the zoo have no finite-rate form here)",
+            spec.name,
+            Family::ALL.map(|f| f.name()).join(", ")
+        );
+    }
+    let base: Vec<(Parameter, f64)> = if on_scenario {
+        LuGreParams::canudas_de_wit_1995().named().to_vec()
+    } else {
+        Vec::new()
+    };
+    match m.build_zoo_over(&base)? {
+        None => Ok(None),
+        Some(ZooModel::ElastoPlastic(ep)) => {
+            let model = LuGre::from_params(ep.lugre_params()).map_err(|e| anyhow!(e))?;
+            Ok(Some((model, ep.zba())))
+        }
+        Some(other) => bail!("--model {}: no finite-rate form", other.spec().name),
+    }
+}
+
+/// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.
+fn model_json(r: &Plan) -> serde_json::Value {
+    let p = r.system.model().params();
+    let mut j = serde_json::json!({ "kind": r.system.law().name() });
+    for (q, v) in p.named() {
+        j[q.name()] = v.into();
+    }
+    if let FrictionLaw::ElastoPlastic { zba } = r.system.law() {
+        j["zba"] = zba.into();
+    }
+    j
+}
+
 /// The model of the run in one line: the one the flags name, else the scenario's (Table I).
 fn model_text(m: &ModelArgs, r: &Plan) -> Result<String> {
+    if let FrictionLaw::ElastoPlastic { zba } = r.system.law() {
+        let values: Vec<String> = r
+            .system
+            .model()
+            .params()
+            .named()
+            .iter()
+            .map(|(p, v)| format!("{} = {}", p.name(), sig(*v, 10)))
+            .chain(std::iter::once(format!("zba = {}", sig(zba, 10))))
+            .collect();
+        return Ok(format!("Elasto-plastic: {}", values.join(", ")));
+    }
     if m.names_any() {
         return Ok(m.build()?.describe(Needed::All));
     }
@@ -505,6 +567,8 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Plan, o: &Outcome) -> std::io::Re
         j.raw("}")?;
     }
     j.raw("]")?;
+    j.raw(",\"model\":")?;
+    j.raw(&model_json(r).to_string())?;
     let s = m.stats;
     j.raw(&format!(
         ",\"stats\":{{\"steps\":{},\"rejected\":{},\"rhs_evaluations\":{},\"jacobians\":{},\"restarts\":{}}}",

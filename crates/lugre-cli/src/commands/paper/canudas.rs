@@ -4,7 +4,7 @@
 //! numbers, in `canudas1995/` (its own `index.html`, linked from the first).
 
 use anyhow::Result;
-use lugre::dynamics::{EventKind, Scenario, Tolerances};
+use lugre::dynamics::{EventKind, Motion, Request, Scenario, Tolerances};
 use lugre::{LuGre, LuGreParams};
 use std::fmt::Write;
 
@@ -29,9 +29,32 @@ fn table1() -> Result<LuGre> {
     Ok(LuGre::from_params(LuGreParams::canudas_de_wit_1995())?)
 }
 
+/// The elasto-plastic friction's break-away displacement beside LuGre's: half of `Fc / sigma0`
+/// of Table I (purely elastic up to 0.5 N).
+const ZBA: f64 = 5e-6;
+
+/// The experiment's setup with Table I, 1 kg, and the elasto-plastic law (`zba`) or LuGre's.
+fn setup(sc: Scenario, zba: Option<f64>) -> Result<lugre::dynamics::Setup> {
+    let r = Request::new().with_scenario(sc).with_model(table1()?);
+    let r = match zba {
+        Some(zba) => r.with_elastoplastic(zba),
+        None => r,
+    };
+    Ok(r.build()?)
+}
+
 /// The experiment's run at the solver's default tolerance, sampled `n + 1` times.
 fn run(sc: Scenario, n: usize) -> Result<(lugre::dynamics::Motion, lugre::dynamics::Setup)> {
-    let setup = sc.setup(table1()?, 1.0)?;
+    run_law(sc, n, None)
+}
+
+/// [`run`] with the elasto-plastic law (`zba`) or LuGre's.
+fn run_law(
+    sc: Scenario,
+    n: usize,
+    zba: Option<f64>,
+) -> Result<(lugre::dynamics::Motion, lugre::dynamics::Setup)> {
+    let setup = setup(sc, zba)?;
     let times = lugre::simulate::uniform_times(0.0, setup.t_end, 1, n);
     let m = setup
         .system
@@ -61,32 +84,49 @@ pub(crate) fn build() -> Result<Report> {
 
     // Fig. 2: pre-sliding displacement against the applied force.
     let (m, _) = run(Scenario::Presliding, 6500)?;
-    let points = m
-        .drive
-        .iter()
-        .zip(&m.x)
-        .map(|(f, x)| (*f, x * 1e6))
-        .collect();
+    let (ep, _) = run_law(Scenario::Presliding, 6500, Some(ZBA))?;
+    let force_x = |m: &Motion| -> Vec<(f64, f64)> {
+        m.drive
+            .iter()
+            .zip(&m.x)
+            .map(|(f, x)| (*f, x * 1e6))
+            .collect()
+    };
+    let points = force_x(&m);
     figures.push(paper_figure(
         2,
         "pre-sliding displacement",
         "Pre-sliding displacement x (µm) against the applied force (N), the force ramped to \
-         ±1.425 N (95 % of Fs) with holds at 10-15, 35-40 and 60-65 s."
+         ±1.425 N (95 % of Fs) with holds at 10-15, 35-40 and 60-65 s; dashed: the \
+         elasto-plastic friction of Dupont et al. (2002) on the same Table I with zba = 5 µm \
+         (purely elastic up to 0.5 N)."
             .into(),
         Figure::new("applied force [N]", "displacement x [µm]")
             .title("Fig. 2: pre-sliding displacement")
-            .curve(Curve::new(points, LineStyle::Solid, PALETTE[0]).key("x")),
+            .curve(
+                Curve::new(points, LineStyle::Solid, PALETTE[0])
+                    .label("LuGre")
+                    .key("x"),
+            )
+            .curve(
+                Curve::new(force_x(&ep), LineStyle::Dashed, PALETTE[1])
+                    .label("elasto-plastic")
+                    .key("x_elastoplastic"),
+            ),
         ["force", "x_um"],
     ));
-    let at = |t: f64| {
+    let at = |m: &Motion, t: f64| {
         m.t.iter()
             .position(|&s| (s - t).abs() < 1e-9)
             .map(|i| m.x[i])
     };
     let mut rows = Vec::new();
     for t in [10.0, 15.0, 40.0, 65.0] {
-        if let Some(x) = at(t) {
-            rows.push((format!("x({t} s)"), format!("{} µm", sig(x * 1e6, 10))));
+        if let (Some(x), Some(x_ep)) = (at(&m, t), at(&ep, t)) {
+            rows.push((
+                format!("x({t} s): LuGre / elasto-plastic"),
+                format!("{} / {} µm", sig(x * 1e6, 10), sig(x_ep * 1e6, 10)),
+            ));
         }
     }
     tables.push((2, "Pre-sliding", rows));
@@ -120,13 +160,24 @@ pub(crate) fn build() -> Result<Report> {
     // Fig. 4: break-away force against the force rate.
     let rates = [1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 25.0, 30.0];
     let mut points = Vec::new();
+    let mut points_ep = Vec::new();
     let mut rows = Vec::new();
     for rate in rates {
-        let setup = Scenario::Breakaway { rate }.setup(table1()?, 1.0)?;
-        if let Some(b) = setup.system.breakaway(setup.t_end, Tolerances::default())? {
+        let breakaway = |zba| -> Result<_> {
+            let setup = setup(Scenario::Breakaway { rate }, zba)?;
+            Ok(setup.system.breakaway(setup.t_end, Tolerances::default())?)
+        };
+        if let Some(b) = breakaway(None)? {
             points.push((rate, b.force));
             rows.push((
                 format!("r = {rate} N/s"),
+                format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
+            ));
+        }
+        if let Some(b) = breakaway(Some(ZBA))? {
+            points_ep.push((rate, b.force));
+            rows.push((
+                format!("r = {rate} N/s, elasto-plastic"),
                 format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
             ));
         }
@@ -136,31 +187,48 @@ pub(crate) fn build() -> Result<Report> {
         "break-away force",
         "Break-away force (the first peak of the friction force under F = r t) against the force \
          rate r, 1 to 30 N/s: the faster the ramp, the lower the break-away force. (Above about \
-         35 N/s the first maximum is a shallow bump just above Fc, no longer a break-away peak.)"
+         35 N/s the first maximum is a shallow bump just above Fc, no longer a break-away peak.) \
+         Dashed: the elasto-plastic friction (zba = 5 µm)."
             .into(),
         Figure::new("force rate r [N/s]", "break-away force [N]")
             .title("Fig. 4: break-away force")
-            .curve(Curve::new(points, LineStyle::Solid, PALETTE[0]).key("breakaway")),
+            .curve(
+                Curve::new(points, LineStyle::Solid, PALETTE[0])
+                    .label("LuGre")
+                    .key("breakaway"),
+            )
+            .curve(
+                Curve::new(points_ep, LineStyle::Dashed, PALETTE[1])
+                    .label("elasto-plastic")
+                    .key("breakaway_elastoplastic"),
+            ),
         ["rate", "force"],
     ));
     tables.push((4, "Break-away", rows));
 
     // Fig. 6: stick-slip.
     let (m, _) = run(Scenario::StickSlip, 3000)?;
+    let (ep, _) = run_law(Scenario::StickSlip, 3000, Some(ZBA))?;
     let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
+    let x_ep = ep.t.iter().zip(&ep.x).map(|(t, x)| (*t, *x)).collect();
     let end = m.t.iter().map(|t| (*t, 0.1 * t)).collect();
     figures.push(paper_figure(
         6,
         "stick-slip",
         "Stick-slip: a spring of 2 N/m pulled at 0.1 m/s (dashed: its free end) and the mass's \
-         position x."
+         position x, with LuGre friction and with the elasto-plastic friction (zba = 5 µm)."
             .into(),
         Figure::new("time t [s]", "position [m]")
             .title("Fig. 6: stick-slip")
             .curve(
                 Curve::new(x, LineStyle::Solid, PALETTE[0])
-                    .label("mass x")
+                    .label("mass x, LuGre")
                     .key("x"),
+            )
+            .curve(
+                Curve::new(x_ep, LineStyle::Solid, PALETTE[1])
+                    .label("mass x, elasto-plastic")
+                    .key("x_elastoplastic"),
             )
             .curve(
                 Curve::new(end, LineStyle::Dashed, BLACK)
@@ -169,34 +237,8 @@ pub(crate) fn build() -> Result<Report> {
             ),
         ["t", "x"],
     ));
-    let onsets: Vec<f64> = m
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::VelocityUp)
-        .map(|e| e.t)
-        .collect();
-    let mut rows = vec![(
-        "slip onsets (v rising through 0.1 m/s)".to_string(),
-        onsets
-            .iter()
-            .map(|t| format!("{} s", sig(*t, 10)))
-            .collect::<Vec<_>>()
-            .join(", "),
-    )];
-    if onsets.len() >= 2 {
-        rows.push((
-            "period".into(),
-            format!("{} s", sig(onsets[1] - onsets[0], 10)),
-        ));
-    }
-    rows.push((
-        "energy: drive in / dissipated".into(),
-        format!(
-            "{} J / {} J",
-            sig(m.energy.input, 8),
-            sig(m.energy.dissipated, 8)
-        ),
-    ));
+    let mut rows = stick_slip_rows(&m, "");
+    rows.extend(stick_slip_rows(&ep, ", elasto-plastic"));
     tables.push((6, "Stick-slip", rows));
 
     // Fig. 8: PID hunting.
@@ -246,6 +288,39 @@ pub(crate) fn build() -> Result<Report> {
     Ok(Report { figures, tables })
 }
 
+/// The numbers of a stick-slip run: slip onsets, period, energies (`tag` after each name).
+fn stick_slip_rows(m: &Motion, tag: &str) -> Vec<(String, String)> {
+    let onsets: Vec<f64> = m
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::VelocityUp)
+        .map(|e| e.t)
+        .collect();
+    let mut rows = vec![(
+        format!("slip onsets (v rising through 0.1 m/s){tag}"),
+        onsets
+            .iter()
+            .map(|t| format!("{} s", sig(*t, 10)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    )];
+    if onsets.len() >= 2 {
+        rows.push((
+            format!("period{tag}"),
+            format!("{} s", sig(onsets[1] - onsets[0], 10)),
+        ));
+    }
+    rows.push((
+        format!("energy: drive in / dissipated{tag}"),
+        format!(
+            "{} J / {} J",
+            sig(m.energy.input, 8),
+            sig(m.energy.dissipated, 8)
+        ),
+    ));
+    rows
+}
+
 /// The report's `index.html`.
 pub(crate) fn page(r: &Report) -> String {
     let mut h = String::with_capacity(32 * 1024);
@@ -258,7 +333,10 @@ pub(crate) fn page(r: &Report) -> String {
          TAC 40(3), 1995, recomputed by <code>lugre paper</code> (lugre {}) with the \
          paper's Table I (σ0 = 10⁵ N/m, σ1 = √10⁵ N s/m, σ2 = 0.4 N s/m, Fc = 1 N, Fs = 1.5 N, \
          vs = 10⁻³ m/s) and a 1 kg mass, at the solver's default tolerance (rtol 10⁻⁸). Each \
-         experiment is also <code>lugre dynamics --scenario NAME</code>. <a href=\"../index.html\">\
+         experiment is also <code>lugre dynamics --scenario NAME</code>. Figs. 2, 4 and 6 show \
+         beside LuGre the elasto-plastic friction of Dupont, Hayward, Armstrong and Altpeter \
+         (IEEE TAC 47(5), 2002) on the same Table I with zba = 5 µm (<code>lugre dynamics \
+         --model elastoplastic --zba 5e-6 --scenario NAME</code>). <a href=\"../index.html\">\
          The first report</a>: the figures of Ikhouane, Mañosa, Pujol.</p>\n",
         env!("CARGO_PKG_VERSION")
     );
