@@ -482,6 +482,12 @@ enum LugreStatus lugre_dynamics_set_scenario(struct LugreDynamics *request, cons
 enum LugreStatus lugre_dynamics_set_model(struct LugreDynamics *request,
                                           const struct LugreModel *model);
 
+// A model of the zoo as the friction (copied: the model may be freed after): the
+// elasto-plastic one (`lugre_zoo_new("elastoplastic", ...)`, its `sigma0, sigma1, sigma2,
+// fc, fs, vs, beta, zba`); the other models are refused with the core's message.
+enum LugreStatus lugre_dynamics_set_zoo(struct LugreDynamics *request,
+                                        const struct LugreZoo *model);
+
 // A field from `n` numbers: one for `mass`, `damping`, `force_rate`, `spring`, `pull`,
 // `setpoint`, `t_end`, `samples`, `rtol`, `atol`, `loops` (0 or 1); three for `pid`
 // (`Kp, Ki, Kv`); the output times for `times`. Two fields that cannot hold together (two

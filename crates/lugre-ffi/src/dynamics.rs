@@ -21,6 +21,7 @@ use super::{
     fail, free, guard, handle, handle_mut, input, output, set_out, text, Failure, LugreModel,
     LugreStatus,
 };
+use crate::zoo::LugreZoo;
 
 /// A dynamics request being built (see [`lugre_dynamics_new`]).
 pub struct LugreDynamics {
@@ -134,6 +135,17 @@ pub extern "C" fn lugre_dynamics_set_model(
     change(request, |r| {
         Ok(r.with_model(handle(model, "model")?.model.clone()))
     })
+}
+
+/// A model of the zoo as the friction (copied: the model may be freed after): the
+/// elasto-plastic one (`lugre_zoo_new("elastoplastic", ...)`, its `sigma0, sigma1, sigma2,
+/// fc, fs, vs, beta, zba`); the other models are refused with the core's message.
+#[no_mangle]
+pub extern "C" fn lugre_dynamics_set_zoo(
+    request: *mut LugreDynamics,
+    model: *const LugreZoo,
+) -> LugreStatus {
+    change(request, |r| Ok(r.with_zoo(&handle(model, "model")?.model)?))
 }
 
 /// A field from `n` numbers: one for `mass`, `damping`, `force_rate`, `spring`, `pull`,

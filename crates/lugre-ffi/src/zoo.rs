@@ -33,7 +33,7 @@ use super::{
 
 /// A validated model of the zoo.
 pub struct LugreZoo {
-    model: ZooModel,
+    pub(crate) model: ZooModel,
 }
 
 /// [`LugreZooParameter::shape`]: one number.

@@ -9,6 +9,7 @@ use pyo3::types::{PyDict, PyList, PyType};
 
 use crate::convert::{count, floats, real, type_name, value_error, vec_out};
 use crate::models::lugre_of;
+use crate::zoo::PyZooModel;
 use lugre::dynamics::{Field, Motion, Outcome, Plan, Request, Scenario};
 
 /// The motion of a mass with friction, from rest.
@@ -20,8 +21,10 @@ use lugre::dynamics::{Field, Motion, Outcome, Plan, Request, Scenario};
 /// The keywords are the fields of the core's request (`lugre::dynamics::Request`, whose docs
 /// give every default); `lugre dynamics` takes the same as flags.
 ///
-/// * model: a lugre.LuGre or lugre.Dahl; required unless a scenario gives Table I of Canudas
-///   de Wit et al. (1995); mass in kg (default 1);
+/// * model: a lugre.LuGre or lugre.Dahl, or lugre.ZooModel("elastoplastic", ...) (the
+///   elasto-plastic law of Dupont et al. (2002) with all its parameters as the model holds
+///   them: sigma0, sigma1, sigma2, fc, fs, vs, beta, zba); required unless a scenario gives
+///   Table I of Canudas de Wit et al. (1995); mass in kg (default 1);
 /// * scenario: "presliding", "breakaway", "stick-slip", "lag", "pid": the experiments of
 ///   Canudas de Wit et al. (1995) as presets; every keyword given on top replaces that field
 ///   (pid=(3, 8, 6) on "pid" keeps its set point 1 m; force_rate on "breakaway" changes the
@@ -69,7 +72,7 @@ pub fn dynamics<'py>(
         r = r.with_scenario(scenario_of(&name)?);
     }
     if let Some(m) = given(model) {
-        r = r.with_model(lugre_of(&m)?);
+        r = with_model(r, &m)?;
     }
     // One number each, through the core's own translation (as the C ABI's and MATLAB's).
     let scalars = [
@@ -126,6 +129,22 @@ pub fn dynamics<'py>(
     let plan = r.build().map_err(request_error)?;
     let outcome = py.detach(|| plan.run()).map_err(value_error)?;
     result(py, &plan, outcome)
+}
+
+/// `model=`: a lugre.LuGre or lugre.Dahl, or a lugre.ZooModel (the core takes the
+/// elasto-plastic one and refuses the others).
+fn with_model(r: Request, m: &Bound<'_, PyAny>) -> PyResult<Request> {
+    if let Ok(zoo) = m.cast::<PyZooModel>() {
+        return r.with_zoo(zoo.get().model()).map_err(request_error);
+    }
+    lugre_of(m)
+        .map_err(|_| {
+            PyTypeError::new_err(format!(
+                "model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got {}",
+                type_name(m)
+            ))
+        })
+        .map(|l| r.with_model(l))
 }
 
 /// `setpoint=`: a number, a flat list of numbers (counted by the core: one is expected), or

@@ -475,6 +475,13 @@ fn dynamics(f: &Fields) -> Outcome {
                 let s = CString::new(s.as_str()).unwrap();
                 status(lugre_dynamics_set_scenario(d.0, s.as_ptr()))?;
             }
+            // A model of the zoo by its name (the elasto-plastic one), else LuGre's.
+            ("model", m) if m.get("model").is_some() => {
+                let zoo = zoo_model(m)?;
+                let result = status(lugre_dynamics_set_zoo(d.0, zoo));
+                lugre_zoo_free(zoo);
+                result?
+            }
             ("model", m) => status(lugre_dynamics_set_model(d.0, model(Some(m))?.0))?,
             // Points: [[t, value], ...].
             (_, Value::Array(a)) if a.first().is_some_and(Value::is_array) => {

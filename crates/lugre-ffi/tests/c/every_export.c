@@ -296,6 +296,30 @@ static void dynamics(const LugreModel *m) {
     lugre_motion_free(NULL);
     lugre_dynamics_free(d);
     lugre_dynamics_free(NULL);
+
+    /* The zoo's elasto-plastic law as the friction; another model of the zoo refused. */
+    LugreZoo *ep = NULL, *ms = NULL;
+    const char *zn[1] = {"zba"};
+    double zv = 0.25;
+    const double *zp[1] = {&zv};
+    size_t zl[1] = {1};
+    OK(lugre_zoo_new("elastoplastic", 1, zn, zp, zl, &ep));
+    OK(lugre_zoo_new("maxwell-slip", 0, NULL, NULL, NULL, &ms));
+    OK(lugre_dynamics_new(&d));
+    OK(lugre_dynamics_set_zoo(d, ep));
+    OK(lugre_dynamics_set(d, "force_rate", &rate, 1));
+    OK(lugre_dynamics_set(d, "t_end", &end, 1));
+    OK(lugre_dynamics_run(d, &run));
+    OK(lugre_motion_summary(run, &s));
+    CHECK(s.steps > 0 && s.energy_input > 0);
+    CHECK(fabs(s.energy_input - (s.stored_end - s.stored_start) - s.dissipated) < 1e-6);
+    lugre_motion_free(run);
+    CHECK(lugre_dynamics_set_zoo(d, ms) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strstr(lugre_last_error(), "model maxwell-slip: the dynamics take") != NULL);
+    CHECK(lugre_dynamics_set_zoo(d, NULL) == LUGRE_STATUS_NULL_POINTER);
+    lugre_dynamics_free(d);
+    lugre_zoo_free(ep);
+    lugre_zoo_free(ms);
 }
 
 int main(void) {

@@ -130,6 +130,25 @@ impl Request {
         self
     }
 
+    /// A model of the zoo as the friction: the elasto-plastic one
+    /// ([`crate::zoo::ZooModel::ElastoPlastic`]) is the LuGre model of its `sigma0, sigma1,
+    /// sigma2, fc, fs, vs, beta` with its `zba` ([`Request::with_model`],
+    /// [`Request::with_elastoplastic`]); the front ends' one way in.
+    ///
+    /// # Errors
+    /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo; the model's checks.
+    pub fn with_zoo(self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
+        match model {
+            crate::zoo::ZooModel::ElastoPlastic(ep) => {
+                let lugre = LuGre::from_params(ep.lugre_params())?;
+                Ok(self.with_model(lugre).with_elastoplastic(ep.zba()))
+            }
+            other => Err(DynamicsError::NoFiniteRate {
+                model: other.spec().name,
+            }),
+        }
+    }
+
     /// The elasto-plastic friction law ([`super::FrictionLaw::ElastoPlastic`]) with the
     /// break-away displacement `zba` (m) on the model (given or the scenario's); checked
     /// against the model by [`Request::build`].

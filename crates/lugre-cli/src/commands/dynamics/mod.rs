@@ -213,8 +213,8 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(name) = &args.scenario {
         r = r.with_scenario(Scenario::named(name)?);
     }
-    if let Some((model, zba)) = elastoplastic(&args.model, args.scenario.is_some())? {
-        r = r.with_model(model).with_elastoplastic(zba);
+    if let Some(zoo) = elastoplastic(&args.model, args.scenario.is_some())? {
+        r = r.with_zoo(&zoo)?;
     } else if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
     }
@@ -308,36 +308,26 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
     Ok(Some(model))
 }
 
-/// The elasto-plastic friction (`--model elastoplastic`) as the LuGre model of its
-/// `sigma0, sigma1, sigma2, fc, fs, vs, beta` and its `zba`; `None` for LuGre and Dahl. On a
+/// The elasto-plastic friction (`--model elastoplastic`, its `sigma0, sigma1, sigma2, fc, fs,
+/// vs, beta, zba`) for [`Request::with_zoo`]; `None` for LuGre and Dahl. On a
 /// scenario, the parameters not given are the scenario's (Table I), `zba` the table's.
 ///
 /// # Errors
 /// Another model of the zoo (no finite-rate form here), the zoo's checks of the values.
-fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<(LuGre, f64)>> {
+fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<ZooModel>> {
     let Some(spec) = m.model.zoo() else {
         return Ok(None);
     };
     if spec.name != (FrictionLaw::ElastoPlastic { zba: 0.0 }).name() {
-        bail!(
-            "--model {}: lugre dynamics takes {} or elastoplastic (the other models of the zoo have no finite-rate form here)",
-            spec.name,
-            Family::ALL.map(|f| f.name()).join(", ")
-        );
+        // The core's refusal, the same in every front end.
+        bail!(DynamicsError::NoFiniteRate { model: spec.name });
     }
     let base: Vec<(Parameter, f64)> = if on_scenario {
         LuGreParams::canudas_de_wit_1995().named().to_vec()
     } else {
         Vec::new()
     };
-    match m.build_zoo_over(&base)? {
-        None => Ok(None),
-        Some(ZooModel::ElastoPlastic(ep)) => {
-            let model = LuGre::from_params(ep.lugre_params()).map_err(|e| anyhow!(e))?;
-            Ok(Some((model, ep.zba())))
-        }
-        Some(other) => bail!("--model {}: no finite-rate form", other.spec().name),
-    }
+    m.build_zoo_over(&base)
 }
 
 /// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.
