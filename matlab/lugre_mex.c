@@ -550,6 +550,19 @@ static mxArray *scalar_struct(int count, const char **names, const double *value
     return struct_of(count, names, v);
 }
 
+/* The model of the zoo a request's model struct names (params.model other than 'lugre' and
+ * 'dahl', e.g. 'elastoplastic'), with its parameters by name; NULL for LuGre's struct. */
+static LugreZoo *zoo_request(const mxArray *model) {
+    char name[64];
+    const char *zoo_name = model == NULL ? NULL : model_name(model, name, sizeof name);
+    if (zoo_name == NULL || strcmp(zoo_name, "lugre") == 0 || strcmp(zoo_name, "dahl") == 0)
+        return NULL;
+    LugreZoo *zoo = NULL;
+    LugreModel *dahl = NULL;
+    check(zoo_of(zoo_name, model, &zoo, &dahl));
+    return zoo;
+}
+
 /* r = lugre_dynamics(request): every field of the core's request by its name. */
 static mxArray *dynamics_request(const mxArray *s) {
     if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
@@ -572,6 +585,8 @@ static mxArray *dynamics_request(const mxArray *s) {
         }
     }
     LugreParams p;
+    LugreZoo *zoo = zoo_request(model);
+    if (zoo != NULL) model = NULL;
     if (model != NULL) {
         /* The values are checked first (a model made and dropped), then that it is named. */
         lugre_model_free(model_of(model));
@@ -584,6 +599,12 @@ static mxArray *dynamics_request(const mxArray *s) {
     LugreMotion *run = NULL;
     check_request(lugre_dynamics_new(&d), d, m, run);
     if (scenario[0] != '\0') check_request(lugre_dynamics_set_scenario(d, scenario), d, m, run);
+    if (zoo != NULL) {
+        /* Copied by the request; the core refuses a model of the zoo without dynamics. */
+        LugreStatus st = lugre_dynamics_set_zoo(d, zoo);
+        lugre_zoo_free(zoo);
+        check_request(st, d, m, run);
+    }
     if (model != NULL) {
         check_request(lugre_model_new(&p, &m), d, m, run);
         check_request(lugre_dynamics_set_model(d, m), d, m, run);
