@@ -137,3 +137,15 @@ def test_a_prescribed_velocity_reports_its_drive():
     np.testing.assert_allclose(r["drive"], 2.0 * dv + r["friction"], rtol=1e-12, atol=1e-15)
     e = r["energy"]
     assert abs(e["input"] - (e["stored_end"] - e["stored_start"]) - e["dissipated"]) < 1e-9 * e["input"]
+
+
+def test_a_model_of_the_zoo_as_the_friction():
+    # The elasto-plastic law runs; the other models of the zoo are refused by the core.
+    ep = lugre.ZooModel("elastoplastic", sigma0=1e5, sigma1=300, sigma2=0.4, fc=1, fs=1.5,
+                        vs=1e-3, beta=2, zba=5e-6)
+    r = lugre.dynamics(ep, scenario="stick-slip", t_end=30, samples=11)
+    assert r["x"][-1] > 1 and len(r["events"]) > 4
+    with pytest.raises(ValueError, match="model maxwell-slip: the dynamics take lugre, dahl or elastoplastic"):
+        lugre.dynamics(lugre.ZooModel("maxwell-slip"), scenario="stick-slip")
+    with pytest.raises(TypeError, match="model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got int"):
+        lugre.dynamics(3, scenario="lag")
