@@ -82,7 +82,16 @@ pub(crate) fn build() -> Result<Report> {
     let mut figures = Vec::new();
     let mut tables = Vec::new();
 
-    // Fig. 2: pre-sliding displacement against the applied force.
+    fig02(&mut figures, &mut tables)?;
+    fig03(&mut figures)?;
+    fig04(&mut figures, &mut tables)?;
+    fig06(&mut figures, &mut tables)?;
+    fig08(&mut figures, &mut tables)?;
+    Ok(Report { figures, tables })
+}
+
+/// Fig. 2: pre-sliding displacement against the applied force.
+fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let (m, _) = run(Scenario::Presliding, 6500)?;
     let (ep, _) = run_law(Scenario::Presliding, 6500, Some(ZBA))?;
     let force_x = |m: &Motion| -> Vec<(f64, f64)> {
@@ -130,8 +139,11 @@ pub(crate) fn build() -> Result<Report> {
         }
     }
     tables.push((2, "Pre-sliding", rows));
+    Ok(())
+}
 
-    // Fig. 3: frictional lag, friction against velocity for three frequencies.
+/// Fig. 3: frictional lag, friction against velocity for three frequencies.
+fn fig03(figures: &mut Vec<PaperFigure>) -> Result<()> {
     let mut fig =
         Figure::new("velocity v [mm/s]", "friction F [N]").title("Fig. 3: frictional lag");
     for (i, w) in [1.0, 10.0, 25.0].into_iter().enumerate() {
@@ -156,8 +168,11 @@ pub(crate) fn build() -> Result<Report> {
         fig,
         ["v_mm_s", "friction"],
     ));
+    Ok(())
+}
 
-    // Fig. 4: break-away force against the force rate.
+/// Fig. 4: break-away force against the force rate.
+fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let rates = [1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 25.0, 30.0];
     let mut points = Vec::new();
     let mut points_ep = Vec::new();
@@ -205,8 +220,11 @@ pub(crate) fn build() -> Result<Report> {
         ["rate", "force"],
     ));
     tables.push((4, "Break-away", rows));
+    Ok(())
+}
 
-    // Fig. 6: stick-slip.
+/// Fig. 6: stick-slip.
+fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let (m, _) = run(Scenario::StickSlip, 3000)?;
     let (ep, _) = run_law(Scenario::StickSlip, 3000, Some(ZBA))?;
     let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
@@ -240,8 +258,11 @@ pub(crate) fn build() -> Result<Report> {
     let mut rows = stick_slip_rows(&m, "");
     rows.extend(stick_slip_rows(&ep, ", elasto-plastic"));
     tables.push((6, "Stick-slip", rows));
+    Ok(())
+}
 
-    // Fig. 8: PID hunting.
+/// Fig. 8: PID hunting.
+fn fig08(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let (m, _) = run(Scenario::Pid, 5000)?;
     let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
     let xd = vec![(0.0, 1.0), (100.0, 1.0)];
@@ -284,8 +305,7 @@ pub(crate) fn build() -> Result<Report> {
             late.join("; "),
         )],
     ));
-
-    Ok(Report { figures, tables })
+    Ok(())
 }
 
 /// The numbers of a stick-slip run: slip onsets, period, energies (`tag` after each name).
