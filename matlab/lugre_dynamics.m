@@ -9,8 +9,9 @@ function r = lugre_dynamics(request, times, rtol)
 %     model     a params struct as lugre_loop takes (struct('preset', 'canudas1995') or
 %               struct('sigma0', 1e5, 'sigma1', 316, 'fc', 1, 'fs', 1.5, 'vs', 1e-3, 'beta', 2)),
 %               or the zoo's elasto-plastic law struct('model', 'elastoplastic', 'zba', 5e-6,
-%               ...) (its sigma0, sigma1, sigma2, fc, fs, vs, beta, zba; the others at the
-%               table's defaults); needed unless a scenario gives Table I
+%               ...) (its sigma0, sigma1, sigma2, fc, fs, vs, beta, zba; the others the
+%               scenario's Table I, else the table's defaults); needed unless a scenario
+%               gives Table I
 %     mass, damping, force_rate, spring, pull, t_end, rtol, atol, samples, loops   numbers
 %     pid       [Kp Ki Kv];  setpoint  a number, or an N-by-2 matrix [t xd] of steps
 %     force, input, end, velocity   N-by-2 matrices [t value] (linear between the points)

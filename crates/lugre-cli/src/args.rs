@@ -389,27 +389,12 @@ impl ModelArgs {
     /// The model of the zoo the flags name, or `None` for LuGre and Dahl
     /// ([`crate::zoo_args::build`]).
     pub(crate) fn build_zoo(&self) -> Result<Option<lugre::zoo::ZooModel>> {
-        self.build_zoo_over(&[])
-    }
-
-    /// [`Self::build_zoo`] with the values `base` (a scenario's) for the parameters of LuGre's
-    /// names not given by a flag.
-    pub(crate) fn build_zoo_over(
-        &self,
-        base: &[(Parameter, f64)],
-    ) -> Result<Option<lugre::zoo::ZooModel>> {
         let Some(spec) = self.model.zoo() else {
             return Ok(None);
         };
-        // The flags' values after the base's: the last value of a name wins.
-        let classic: Vec<(Parameter, f64)> = base
-            .iter()
-            .copied()
-            .chain(
-                Parameter::ALL
-                    .into_iter()
-                    .filter_map(|p| self.given(p).map(|v| (p, v))),
-            )
+        let classic: Vec<(Parameter, f64)> = Parameter::ALL
+            .into_iter()
+            .filter_map(|p| self.given(p).map(|v| (p, v)))
             .collect();
         crate::zoo_args::build(spec, self.preset.is_some(), &self.zoo, &classic).map(Some)
     }

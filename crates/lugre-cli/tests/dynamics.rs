@@ -422,21 +422,16 @@ fn flags_on_a_scenario_replace_its_fields() {
 /// by name, and the refusals in one line.
 #[test]
 fn elastoplastic_friction_from_the_zoo_flags() {
-    let j = accepts_json(&[
-        "dynamics",
-        "--model",
-        "elastoplastic",
-        "--scenario",
-        "stick-slip",
-        "--zba",
-        "5e-6",
-        "--times",
-        "0,8,10,15",
-        "--rtol",
-        "1e-11",
-        "--json",
-    ]);
-    let x: Vec<f64> = j["x"].as_array().unwrap().iter().map(f).collect();
+    // The stick-slip run sampled at the reference's times, with `zba` flags or none.
+    let stick_slip = |zba: &[&str]| {
+        let head = ["dynamics", "--model", "elastoplastic", "--scenario"];
+        let tail = ["stick-slip", "--times", "0,8,10,15", "--rtol", "1e-11"];
+        let args: Vec<&str> = head.iter().chain(&tail).chain(zba).copied().collect();
+        let j = accepts_json(&[args.as_slice(), &["--json"]].concat());
+        let x: Vec<f64> = j["x"].as_array().unwrap().iter().map(f).collect();
+        (j, x)
+    };
+    let (j, x) = stick_slip(&["--zba", "5e-6"]);
     let want = [
         0.0,
         0.0721748171072542,
@@ -454,7 +449,11 @@ fn elastoplastic_friction_from_the_zoo_flags() {
     // LuGre's runs name their law too.
     let j = accepts_json(&["dynamics", "--scenario", "lag", "--samples", "2", "--json"]);
     assert_eq!(j["model"]["kind"], "lugre");
-    // Table I with the table's default zba = 0.5 m: above Fc / sigma0.
+    // Table I with zba not given: Fc / (2 sigma0) = 5e-6 m, the run above to the last bit.
+    let (j, x2) = stick_slip(&[]);
+    assert_eq!(f(&j["model"]["zba"]), 5e-6);
+    assert_eq!(x, x2);
+    // A zba given at or above Fc / sigma0 of Table I.
     rejects(
         &[
             "dynamics",
@@ -462,6 +461,8 @@ fn elastoplastic_friction_from_the_zoo_flags() {
             "elastoplastic",
             "--scenario",
             "stick-slip",
+            "--zba",
+            "1e-5",
         ],
         "zba must be >= 0 and < fc / sigma0 = 0.00001",
     );

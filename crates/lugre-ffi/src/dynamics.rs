@@ -139,7 +139,8 @@ pub extern "C" fn lugre_dynamics_set_model(
 
 /// A model of the zoo as the friction (copied: the model may be freed after): the
 /// elasto-plastic one (`lugre_zoo_new("elastoplastic", ...)`, its `sigma0, sigma1, sigma2,
-/// fc, fs, vs, beta, zba`); the other models are refused with the core's message.
+/// fc, fs, vs, beta, zba`; on a scenario, those `lugre_zoo_new` was not given are the
+/// scenario's, Table I); the other models are refused with the core's message.
 #[no_mangle]
 pub extern "C" fn lugre_dynamics_set_zoo(
     request: *mut LugreDynamics,

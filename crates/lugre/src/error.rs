@@ -674,6 +674,9 @@ pub enum DynamicsError {
     },
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// A zoo model's values together, e.g. a scenario's `Fc` under a named `zba`.
+    #[error(transparent)]
+    Zoo(#[from] ZooError),
 }
 
 impl DynamicsError {

@@ -307,3 +307,49 @@ fn loops_default_per_scenario() {
     let pid = Request::new().with_scenario(Scenario::Pid).build().unwrap();
     assert!(!pid.loops);
 }
+
+/// A zoo model as the friction on a scenario: the parameters its maker named are kept, the
+/// others are the scenario's (Table I), and an unnamed `zba` is `fc / (2 sigma0)` at that
+/// scale; without a scenario the model is taken as built. Every front end passes a
+/// `ZooModel` here, so they all run the same friction for the same named values.
+#[test]
+fn a_zoo_model_on_a_scenario_takes_the_unnamed_parameters_from_table_i() {
+    use lugre::dynamics::FrictionLaw;
+    use lugre::zoo::ZooModel;
+    let plan = |zoo: &ZooModel, scenario: Option<Scenario>| {
+        let mut r = Request::new();
+        if let Some(s) = scenario {
+            r = r.with_scenario(s);
+        } else {
+            r = r.with_force_rate(1.0).unwrap().with_t_end(1.0).unwrap();
+        }
+        r.with_zoo(zoo).unwrap().build().unwrap()
+    };
+    let only_zba = ZooModel::new("elastoplastic", &[("zba", &[4e-6])]).unwrap();
+    let p = plan(&only_zba, Some(Scenario::Breakaway { rate: 10.0 }));
+    assert_eq!(p.system.model().params(), table1().params());
+    assert_eq!(p.system.law(), FrictionLaw::ElastoPlastic { zba: 4e-6 });
+
+    let nothing = ZooModel::new("elastoplastic", &[]).unwrap();
+    let p = plan(&nothing, Some(Scenario::StickSlip));
+    assert_eq!(p.system.model().params(), table1().params());
+    assert_eq!(p.system.law(), FrictionLaw::ElastoPlastic { zba: 0.5e-5 });
+
+    // A named value wins over Table I; zba still follows the resolved fc / sigma0.
+    let fc = ZooModel::new("elastoplastic", &[("fc", &[1.2]), ("fs", &[1.4])]).unwrap();
+    let p = plan(&fc, Some(Scenario::StickSlip));
+    let q = p.system.model().params();
+    assert_eq!((q.sigma0, q.fc, q.fs, q.vs), (1e5, 1.2, 1.4, 1e-3));
+    assert_eq!(
+        p.system.law(),
+        FrictionLaw::ElastoPlastic {
+            zba: 0.5 * 1.2 / 1e5
+        }
+    );
+
+    // No scenario: the model as built, the table's defaults included.
+    let p = plan(&nothing, None);
+    let q = p.system.model().params();
+    assert_eq!((q.sigma0, q.fc, q.fs), (1.0, 1.0, 2.0));
+    assert_eq!(p.system.law(), FrictionLaw::ElastoPlastic { zba: 0.5 });
+}

@@ -767,3 +767,31 @@ const PERIODIC: [Periodic; 3] = [
         ],
     },
 ];
+
+/// `zba` not given is `fc / (2 sigma0)` at any scale (the table's default `0.5` m is its value
+/// at the defaults `fc = 1` N, `sigma0 = 1` N/m), so naming Table I's stiffness alone builds
+/// a model; a `zba` given is kept.
+#[test]
+fn an_unnamed_break_away_displacement_follows_the_scale() {
+    use lugre::zoo::{ZooKind, ZooModel, MODELS};
+    let zba = |m: &ZooModel| match m.kind() {
+        ZooKind::ElastoPlastic(ep) => ep.zba(),
+        _ => unreachable!(),
+    };
+    let spec = MODELS.iter().find(|m| m.name == "elastoplastic").unwrap();
+    let default = |n: &str| spec.parameter(n).unwrap().default[0];
+    assert_eq!(
+        default("zba"),
+        ElastoPlastic::DEFAULT_ZBA_FRACTION * default("fc") / default("sigma0")
+    );
+    let table_i = ZooModel::new("elastoplastic", &[("sigma0", &[1e5])]).unwrap();
+    assert_eq!(zba(&table_i), 5e-6);
+    assert!(!table_i.is_named("zba") && table_i.is_named("sigma0"));
+    let given = ZooModel::new("elastoplastic", &[("zba", &[0.25])]).unwrap();
+    assert_eq!(zba(&given), 0.25);
+    // Over a base: unnamed values replaced, named kept, zba following the new scale.
+    let over = given.over(&[("sigma0", 2.0), ("zba", 0.1)]).unwrap();
+    assert_eq!((zba(&over), over.named()[0].1[0]), (0.25, 2.0));
+    let over = table_i.over(&[("sigma0", 7.0), ("fc", 2.0)]).unwrap();
+    assert_eq!((zba(&over), over.named()[0].1[0]), (0.5 * 2.0 / 1e5, 1e5));
+}

@@ -83,7 +83,7 @@ struct Request {
 /// the zoo.
 enum Chosen {
     Classic(ModelChoice),
-    Zoo(ZooModel),
+    Zoo(Box<ZooModel>),
 }
 
 /// What `lugre loop` computes, every number finite: the loop, its loops, Theorem A for a
@@ -104,7 +104,7 @@ pub(crate) fn run(args: &LoopArgs) -> Result<()> {
 
 fn parse(args: &LoopArgs) -> Result<Request> {
     let model = match args.model.build_zoo()? {
-        Some(z) => Chosen::Zoo(z),
+        Some(z) => Chosen::Zoo(Box::new(z)),
         None => Chosen::Classic(args.model.build()?),
     };
     let input = args.input.build()?;
@@ -137,7 +137,11 @@ fn compute(request: &Request) -> Result<Outcome> {
         Chosen::Zoo(model) => {
             let zl = model.loops(&turning)?;
             let loops = zl.loops().to_vec();
-            (Response::Zoo(Box::new((model.clone(), zl))), loops, None)
+            (
+                Response::Zoo(Box::new(((**model).clone(), zl))),
+                loops,
+                None,
+            )
         }
     };
     check_loops_finite(&loops)?;

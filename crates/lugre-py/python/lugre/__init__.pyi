@@ -637,7 +637,7 @@ class DynamicsResult(Dict[str, Any]):
 
 
 def dynamics(
-    model: Optional[Union[LuGre, Dahl]] = None,
+    model: Optional[Union[LuGre, Dahl, ZooModel]] = None,
     *,
     scenario: Optional[Literal["presliding", "breakaway", "stick-slip", "lag", "pid"]] = None,
     mass: Optional[float] = None,

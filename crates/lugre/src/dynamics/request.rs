@@ -86,6 +86,9 @@ pub struct Request {
     model: Option<Given<LuGre>>,
     /// The elasto-plastic break-away displacement: the friction law (D2) on the model.
     elastoplastic: Option<f64>,
+    /// A model of the zoo as the friction, its parameters not named taken from the scenario's
+    /// model where it has them ([`Request::with_zoo`]).
+    zoo: Option<crate::zoo::ZooModel>,
     mass: Option<Given<f64>>,
     damping: Option<Given<f64>>,
     force: Option<Given<Force>>,
@@ -131,22 +134,43 @@ impl Request {
     }
 
     /// A model of the zoo as the friction: the elasto-plastic one
-    /// ([`crate::zoo::ZooModel::ElastoPlastic`]) is the LuGre model of its `sigma0, sigma1,
+    /// ([`crate::zoo::ZooKind::ElastoPlastic`]) is the LuGre model of its `sigma0, sigma1,
     /// sigma2, fc, fs, vs, beta` with its `zba` ([`Request::with_model`],
-    /// [`Request::with_elastoplastic`]); the front ends' one way in.
+    /// [`Request::with_elastoplastic`]); the front ends' one way in. On a scenario, each of
+    /// those the model's maker did not name ([`crate::zoo::ZooModel::is_named`]) is the
+    /// scenario's (Table I), so that every front end runs the same friction for the same
+    /// named values.
     ///
     /// # Errors
-    /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo; the model's checks.
-    pub fn with_zoo(self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
-        match model {
-            crate::zoo::ZooModel::ElastoPlastic(ep) => {
-                let lugre = LuGre::from_params(ep.lugre_params())?;
-                Ok(self.with_model(lugre).with_elastoplastic(ep.zba()))
+    /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo.
+    pub fn with_zoo(mut self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
+        match model.kind() {
+            crate::zoo::ZooKind::ElastoPlastic(_) => {
+                self.zoo = Some(model.clone());
+                Ok(self)
             }
-            other => Err(DynamicsError::NoFiniteRate {
-                model: other.spec().name,
+            _ => Err(DynamicsError::NoFiniteRate {
+                model: model.spec().name,
             }),
         }
+    }
+
+    /// The zoo model's friction on the request: its LuGre model and law, over `base` (a
+    /// scenario's model) for the parameters not named.
+    fn apply_zoo(&mut self, base: Option<&LuGre>) -> Result<(), DynamicsError> {
+        let Some(zoo) = self.zoo.take() else {
+            return Ok(());
+        };
+        let values: Vec<(&str, f64)> = base
+            .map(|m| m.params().named().map(|(p, v)| (p.name(), v)).to_vec())
+            .unwrap_or_default();
+        let zoo = zoo.over(&values)?;
+        if let crate::zoo::ZooKind::ElastoPlastic(ep) = zoo.kind() {
+            let lugre = LuGre::from_params(ep.lugre_params())?;
+            self.model = user(Field::Model, lugre);
+            self.elastoplastic = Some(ep.zba());
+        }
+        Ok(())
     }
 
     /// The elasto-plastic friction law ([`super::FrictionLaw::ElastoPlastic`]) with the
@@ -385,7 +409,9 @@ impl Request {
     /// scenario's.
     fn merged(&self) -> Result<Request, DynamicsError> {
         let Some(scenario) = self.scenario else {
-            return Ok(self.clone());
+            let mut out = self.clone();
+            out.apply_zoo(None)?;
+            return Ok(out);
         };
         // The break-away's ramp and end follow a rate given on top of it.
         let scenario = match (scenario, &self.force) {
@@ -406,6 +432,9 @@ impl Request {
         let user_drives = mine.drives_the_mass();
         out.model = mine.model.or(out.model);
         out.elastoplastic = mine.elastoplastic;
+        let base = out.model.as_ref().map(|m| m.value.clone());
+        out.zoo = mine.zoo;
+        out.apply_zoo(base.as_ref())?;
         out.mass = mine.mass.or(out.mass);
         out.damping = mine.damping.or(out.damping);
         if mine.force.is_some() {

@@ -165,6 +165,11 @@ impl ElastoPlastic {
     /// assert!(large.work_per_period() > 0.0);
     /// # Ok::<(), lugre::Error>(())
     /// ```
+    /// The break-away displacement where none is given, as a fraction of `fc / sigma0` (the
+    /// deflection at the Coulomb force), so that it fits any scale: the zoo table's default
+    /// (`0.5` m at `fc = 1` N, `sigma0 = 1` N/m), and `5e-6` m on Table I's.
+    pub const DEFAULT_ZBA_FRACTION: f64 = 0.5;
+
     pub fn new(sigma0: f64, fc: f64, fs: f64, zba: f64) -> Result<Self, ZooError> {
         let out = |name, value, condition: String| ZooError::Domain {
             name,

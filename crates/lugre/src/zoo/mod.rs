@@ -76,7 +76,9 @@ pub use history::{check_held, MAX_HISTORY_SAMPLES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};
-pub use table::{model_names, Domain, Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
+pub use table::{
+    model_names, Domain, Shape, ZooKind, ZooModel, ZooModelSpec, ZooParameter, MODELS,
+};
 
 use crate::kernel::ArcEnergy;
 

@@ -240,7 +240,7 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
         ZooParameter {
             name: "zba",
             unit: "m",
-            description: "break-away displacement: purely elastic for |z| <= zba (zba < fc / sigma0)",
+            description: "break-away displacement: purely elastic for |z| <= zba (zba < fc / sigma0; not given: fc / (2 sigma0))",
             domain: Domain::NonNegative,
             shape: Shape::Scalar,
             default: &[0.5],
@@ -295,9 +295,29 @@ impl ZooModelSpec {
     }
 }
 
-/// A model of the zoo, built from the table.
+/// A model of the zoo, built from the table ([`ZooModel::new`]): its kind and values, and
+/// which parameters were named (the others took the table's default, and take a base's value
+/// where one applies: [`ZooModel::over`]).
 #[derive(Debug, Clone, PartialEq)]
-pub enum ZooModel {
+pub struct ZooModel {
+    kind: ZooKind,
+    /// Bit `i` set: the table's parameter `i` was given to [`ZooModel::new`] (a model has
+    /// fewer than 64 parameters: checked at compile time below).
+    given: u64,
+}
+
+// Each model's parameters fit the bits of `ZooModel::given`.
+const _: () = {
+    let mut i = 0;
+    while i < MODELS.len() {
+        assert!(MODELS[i].parameters.len() < 64);
+        i += 1;
+    }
+};
+
+/// The concrete model of a [`ZooModel`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum ZooKind {
     MaxwellSlip(MaxwellSlip),
     PrandtlIshlinskii(PrandtlIshlinskii),
     BoucWen(BoucWen),
@@ -307,20 +327,20 @@ pub enum ZooModel {
 /// Runs `$body` with `$m` bound to the concrete model (one dispatch for every method).
 macro_rules! each {
     ($self:expr, $m:ident => $body:expr) => {
-        match $self {
-            ZooModel::MaxwellSlip(x) => {
+        match &$self.kind {
+            ZooKind::MaxwellSlip(x) => {
                 let $m = x.bank();
                 $body
             }
-            ZooModel::PrandtlIshlinskii(x) => {
+            ZooKind::PrandtlIshlinskii(x) => {
                 let $m = x.bank();
                 $body
             }
-            ZooModel::BoucWen(x) => {
+            ZooKind::BoucWen(x) => {
                 let $m = x;
                 $body
             }
-            ZooModel::ElastoPlastic(x) => {
+            ZooKind::ElastoPlastic(x) => {
                 let $m = x;
                 $body
             }
@@ -342,25 +362,35 @@ impl ZooModel {
             known: model_names(),
         })?;
         let values = resolve(spec, given)?;
+        let is_given = |name: &str| {
+            given
+                .iter()
+                .any(|(n, _)| n.trim().eq_ignore_ascii_case(name))
+        };
         let value = |name: &str| -> &[f64] {
             let i = spec.parameters.iter().position(|p| p.name == name);
             i.map_or(&[], |i| &values[i])
         };
-        Ok(match spec.name {
+        let kind = match spec.name {
             "maxwell-slip" => {
-                Self::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
+                ZooKind::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
             }
-            "prandtl-ishlinskii" => Self::PrandtlIshlinskii(PrandtlIshlinskii::new(
+            "prandtl-ishlinskii" => ZooKind::PrandtlIshlinskii(PrandtlIshlinskii::new(
                 value("linear_weight")[0],
                 value("thresholds"),
                 value("weights"),
             )?),
-            "elastoplastic" => Self::ElastoPlastic(
+            "elastoplastic" => ZooKind::ElastoPlastic(
                 ElastoPlastic::new(
                     value("sigma0")[0],
                     value("fc")[0],
                     value("fs")[0],
-                    value("zba")[0],
+                    scaled_zba(
+                        is_given("zba"),
+                        value("zba")[0],
+                        value("fc")[0],
+                        value("sigma0")[0],
+                    ),
                 )?
                 .with_rate(
                     value("sigma1")[0],
@@ -369,40 +399,90 @@ impl ZooModel {
                     value("beta")[0],
                 )?,
             ),
-            _ => Self::BoucWen(BoucWen::new(
+            _ => ZooKind::BoucWen(BoucWen::new(
                 value("kx")[0],
                 value("kw")[0],
                 value("rho")[0],
                 value("sigma")[0],
                 value("n")[0],
             )?),
+        };
+        let given = spec
+            .parameters
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| is_given(p.name))
+            .fold(0u64, |bits, (i, _)| bits | 1 << i);
+        Ok(Self { kind, given })
+    }
+
+    /// This model with `base`'s value for each scalar parameter of the same name that was not
+    /// named (a scenario's Table I under the elasto-plastic model), the named ones kept, the
+    /// others at their defaults (a default that follows other values, as elasto-plastic's
+    /// `zba`, follows the new ones). The result remembers the same names as named.
+    ///
+    /// # Errors
+    /// The model's own checks of the values together (e.g. `zba < fc / sigma0`).
+    pub fn over(&self, base: &[(&str, f64)]) -> Result<Self, ZooError> {
+        let named = self.named();
+        let given: Vec<(&str, Vec<f64>)> = named
+            .into_iter()
+            .filter_map(|(name, values)| {
+                if self.is_named(name) {
+                    return Some((name, values));
+                }
+                let b = base.iter().find(|(b, _)| b.eq_ignore_ascii_case(name));
+                b.filter(|_| values.len() == 1)
+                    .map(|(_, v)| (name, vec![*v]))
+            })
+            .collect();
+        let refs: Vec<(&str, &[f64])> = given.iter().map(|(n, v)| (*n, v.as_slice())).collect();
+        let kind = Self::new(self.spec().name, &refs)?.kind;
+        Ok(Self {
+            kind,
+            given: self.given,
         })
+    }
+
+    /// Whether the parameter `name` was given to [`ZooModel::new`] (not the table's default).
+    pub fn is_named(&self, name: &str) -> bool {
+        let i = self
+            .spec()
+            .parameters
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(name));
+        i.is_some_and(|i| self.given >> i & 1 == 1)
+    }
+
+    /// The concrete model.
+    pub fn kind(&self) -> &ZooKind {
+        &self.kind
     }
 
     /// The model's entry in the table.
     pub fn spec(&self) -> &'static ZooModelSpec {
-        match self {
-            Self::MaxwellSlip(_) => &MODELS[0],
-            Self::PrandtlIshlinskii(_) => &MODELS[1],
-            Self::BoucWen(_) => &MODELS[2],
-            Self::ElastoPlastic(_) => &MODELS[3],
+        match &self.kind {
+            ZooKind::MaxwellSlip(_) => &MODELS[0],
+            ZooKind::PrandtlIshlinskii(_) => &MODELS[1],
+            ZooKind::BoucWen(_) => &MODELS[2],
+            ZooKind::ElastoPlastic(_) => &MODELS[3],
         }
     }
 
     /// Each parameter by name with its values, in the table's order (what reports echo).
     pub fn named(&self) -> Vec<(&'static str, Vec<f64>)> {
-        let values: Vec<Vec<f64>> = match self {
-            Self::MaxwellSlip(m) => vec![m.stiffness().to_vec(), m.slip_force().to_vec()],
-            Self::PrandtlIshlinskii(m) => vec![
+        let values: Vec<Vec<f64>> = match &self.kind {
+            ZooKind::MaxwellSlip(m) => vec![m.stiffness().to_vec(), m.slip_force().to_vec()],
+            ZooKind::PrandtlIshlinskii(m) => vec![
                 vec![m.linear_weight()],
                 m.thresholds().to_vec(),
                 m.weights().to_vec(),
             ],
-            Self::BoucWen(m) => [m.kx(), m.kw(), m.rho(), m.sigma(), m.n()]
+            ZooKind::BoucWen(m) => [m.kx(), m.kw(), m.rho(), m.sigma(), m.n()]
                 .iter()
                 .map(|&x| vec![x])
                 .collect(),
-            Self::ElastoPlastic(m) => [m.sigma0(), m.fc(), m.fs(), m.zba()]
+            ZooKind::ElastoPlastic(m) => [m.sigma0(), m.fc(), m.fs(), m.zba()]
                 .iter()
                 .chain(m.rate().iter())
                 .map(|&x| vec![x])
@@ -482,6 +562,17 @@ pub fn model_names() -> String {
         .chain(MODELS.iter().map(|m| m.name))
         .collect();
     names.join(", ")
+}
+
+/// Elasto-plastic's `zba`: the one given, else `fc / (2 sigma0)` (the table's default where
+/// that is not a finite number, so that `new` names the parameter at fault).
+fn scaled_zba(given: bool, zba: f64, fc: f64, sigma0: f64) -> f64 {
+    let scaled = ElastoPlastic::DEFAULT_ZBA_FRACTION * fc / sigma0;
+    if given || !scaled.is_finite() {
+        zba
+    } else {
+        scaled
+    }
 }
 
 /// Each parameter's values: the given ones, else the default.

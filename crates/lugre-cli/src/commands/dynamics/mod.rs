@@ -10,7 +10,7 @@ use lugre::dynamics::{
 use lugre::fit::Family;
 use lugre::model::Parameter;
 use lugre::zoo::ZooModel;
-use lugre::{DynamicsError, LuGre, LuGreParams};
+use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
 use crate::args::{model_line, ModelArgs, OutputArgs, PlotArgs};
@@ -213,7 +213,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(name) = &args.scenario {
         r = r.with_scenario(Scenario::named(name)?);
     }
-    if let Some(zoo) = elastoplastic(&args.model, args.scenario.is_some())? {
+    if let Some(zoo) = elastoplastic(&args.model)? {
         r = r.with_zoo(&zoo)?;
     } else if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
@@ -309,12 +309,12 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
 }
 
 /// The elasto-plastic friction (`--model elastoplastic`, its `sigma0, sigma1, sigma2, fc, fs,
-/// vs, beta, zba`) for [`Request::with_zoo`]; `None` for LuGre and Dahl. On a
-/// scenario, the parameters not given are the scenario's (Table I), `zba` the table's.
+/// vs, beta, zba`) for [`Request::with_zoo`]; `None` for LuGre and Dahl. On a scenario, the
+/// core takes the parameters not given from the scenario (Table I).
 ///
 /// # Errors
 /// Another model of the zoo (no finite-rate form here), the zoo's checks of the values.
-fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<ZooModel>> {
+fn elastoplastic(m: &ModelArgs) -> Result<Option<ZooModel>> {
     let Some(spec) = m.model.zoo() else {
         return Ok(None);
     };
@@ -322,12 +322,7 @@ fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<ZooModel>> {
         // The core's refusal, the same in every front end.
         bail!(DynamicsError::NoFiniteRate { model: spec.name });
     }
-    let base: Vec<(Parameter, f64)> = if on_scenario {
-        LuGreParams::canudas_de_wit_1995().named().to_vec()
-    } else {
-        Vec::new()
-    };
-    m.build_zoo_over(&base)
+    m.build_zoo()
 }
 
 /// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.
