@@ -211,7 +211,7 @@ fn model_help() -> String {
         format!("{label} ({})", symbols.join(", "))
     };
     format!(
-        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w; or, for `lugre loop` and `lugre cycles`, {}",
+        "Model: {} with g(v) = Fc + (Fs - Fc) exp(-|v/vs|^beta), f(v) = sigma2 v; or {} with w' = rho (u' - |u'| w), y = Fc w; or, for `lugre loop`, `lugre cycles` and `lugre simulate`, {}",
         list(ModelKind::Lugre),
         list(ModelKind::Dahl),
         crate::zoo_args::models_help()
@@ -402,7 +402,7 @@ impl ModelArgs {
     pub(crate) fn build(&self) -> Result<ModelChoice> {
         if let Some(spec) = self.model.zoo() {
             bail!(
-                "--model {}: this command takes {} (the models of the zoo work with `lugre loop` and `lugre cycles`)",
+                "--model {}: this command takes {} (the models of the zoo work with `lugre loop`, `lugre cycles` and `lugre simulate`)",
                 spec.name,
                 Family::ALL.map(|f| f.name()).join(" or ")
             );

@@ -143,7 +143,7 @@ fn bad_requests_of_the_zoo_get_one_line() {
     );
     rejects(
         &["simulate", "--model", "maxwell-slip", "--sine", "1,1"],
-        "--model maxwell-slip: this command takes lugre or dahl (the models of the zoo work with `lugre loop` and `lugre cycles`)",
+        "--sine is an option of LuGre's and Dahl's simulation; --model maxwell-slip is simulated from rest at the input's own samples",
     );
     rejects(
         &["loop", "--model", "bouc", "--turning-points", TURNING],

@@ -230,6 +230,9 @@ pub enum LoopError {
     Overflow { what: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
+    /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).
+    #[error(transparent)]
+    Model(#[from] ModelError),
 }
 
 /// A count of loop samples out of range ([`crate::HysteresisLoop::try_sample`]). Each front end
@@ -920,6 +923,9 @@ pub enum ZooError {
     Overflow { what: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
+    /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).
+    #[error(transparent)]
+    Model(#[from] ModelError),
 }
 
 /// Any error of the library.

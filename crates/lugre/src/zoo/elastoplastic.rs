@@ -64,6 +64,7 @@
 //! relative in the dissipation at worst).
 
 mod chebyshev;
+mod rate;
 
 use super::{SingleState, ZooLoop};
 use crate::error::{num, ZooError};
@@ -124,13 +125,21 @@ impl Default for Rate {
     }
 }
 
+/// The blend's integrands in units of its steady deflection (`z_max` of the slow loop,
+/// `z_ss(v)` at finite rate): `delta = 1 - zba / z_max`, `a = pi / (2 delta)`, no tables
+/// (cheap to build for each velocity).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Shape {
+    delta: f64,
+    /// `pi / (2 delta)`.
+    a: f64,
+}
+
 /// The blend in units of `z_max`: `delta = 1 - zba / z_max` and the tables (E5)-(E7), each
 /// pair of functions on shared pieces (one evaluation gives both).
 #[derive(Debug, Clone, PartialEq)]
 struct Blend {
-    delta: f64,
-    /// `pi / (2 delta)`.
-    a: f64,
+    shape: Shape,
     /// `(R, Φ)` of `e` on `[delta/2, delta]` (the start of the blend).
     early: Table<2>,
     /// `(R, G)` of `e` on `[0, delta/2]`.
@@ -352,23 +361,18 @@ impl SingleState for ElastoPlastic {
         let du = u_b - u_a;
         let s = if du >= 0.0 { 1.0 } else { -1.0 };
         let w = s * z_a;
-        let mut length = du.abs();
-        if w + length <= self.zba || du == 0.0 {
-            return (z_a + du, 0.0);
+        match Leg::of(w, du.abs(), self.zba, self.z_max, self.blend.shape.delta) {
+            Leg::Elastic(w_b) => (s * w_b, 0.0),
+            Leg::Above => {
+                let (w_b, d) = self.above(w, du.abs());
+                (s * w_b, d)
+            }
+            Leg::Blend { e_a, l } => {
+                let (e_b, d) = self.blend.advance(e_a, l);
+                let scale = self.sigma0 * self.z_max * self.z_max;
+                (s * (self.z_max - self.z_max * e_b), scale * d)
+            }
         }
-        if w >= self.z_max {
-            let (w_b, d) = self.above(w, length);
-            return (s * w_b, d);
-        }
-        let e_a = if w <= self.zba {
-            length -= self.zba - w;
-            self.blend.delta
-        } else {
-            ((self.z_max - w) / self.z_max).min(self.blend.delta)
-        };
-        let (e_b, d) = self.blend.advance(e_a, length / self.z_max);
-        let scale = self.sigma0 * self.z_max * self.z_max;
-        (s * (self.z_max - self.z_max * e_b), scale * d)
     }
 
     fn slope(&self, z: f64, up: bool) -> f64 {
@@ -392,11 +396,10 @@ impl Blend {
     const GRADED: i32 = 24;
 
     fn new(delta: f64) -> Self {
-        let a = 0.5 * std::f64::consts::PI / delta;
+        let shape = Shape::new(delta);
         let split = 0.5 * delta;
         let mut blend = Self {
-            delta,
-            a,
+            shape,
             early: Table::fit(&|_| [0.0; 2], &[split, delta]),
             deep: Table::fit(&|_| [0.0; 2], &[0.0, split]),
             by_y: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
@@ -446,27 +449,19 @@ impl Blend {
 
     /// `R(e)`.
     fn big_r(&self, e: f64) -> f64 {
-        self.at_e(e, e >= 0.5 * self.delta)[0]
+        self.at_e(e, e >= 0.5 * self.shape.delta)[0]
     }
 
-    /// `(x, S / e, sin(a e) / e)` at `e` (the last two finite at `e = 0`).
-    #[inline]
     fn parts(&self, e: f64) -> (f64, f64, f64) {
-        let sn = sin_quarter(self.a * e);
-        let sinc = if e > 0.0 { sn / e } else { self.a };
-        (1.0 - e, sn * sinc, sinc)
+        self.shape.parts(e)
     }
 
-    /// `h(e) = e + x S`, the slope `dw/d|u|`.
     fn h(&self, e: f64) -> f64 {
-        let (x, s_e, _) = self.parts(e);
-        e * (1.0 + x * s_e)
+        self.shape.h(e)
     }
 
-    /// `1/h - 1/e = -x (S/e^2) / (1 + x S/e)`, the integrand of `R` (E5).
     fn r(&self, e: f64) -> f64 {
-        let (x, s_e, sinc) = self.parts(e);
-        -x * sinc * sinc / (1.0 + x * s_e)
+        self.shape.r(e)
     }
 
     /// `(1 - alpha x^2) / h = (2 - e + x^2 S/e) / (1 + x S/e)`, the integrand of `G` (E7).
@@ -479,7 +474,7 @@ impl Blend {
     fn dissipation_density(&self, e: f64) -> f64 {
         let (x, s_e, _) = self.parts(e);
         // alpha = sin^2(pi theta / 2) from delta - e, not 1 - S: relative accuracy near zba.
-        let alpha = sin_quarter(self.a * (self.delta - e)).powi(2);
+        let alpha = sin_quarter(self.shape.a * (self.shape.delta - e)).powi(2);
         alpha * x * x / (e * (1.0 + x * s_e))
     }
 
@@ -487,7 +482,7 @@ impl Blend {
     /// bracket `ln y + ln delta + [R(0), 0]` (`R` is increasing and `<= 0`); the derivative is
     /// `e / h(e)`, in `(0, 1]`.
     fn root(&self, y: f64) -> f64 {
-        let target = y.ln() + self.delta.ln();
+        let target = y.ln() + self.shape.delta.ln();
         let (mut lo, mut hi) = (target + self.big_r(0.0), target);
         let mut l = hi;
         for _ in 0..200 {
@@ -518,15 +513,15 @@ impl Blend {
     /// units of `sigma0 z_max^2`.
     #[inline]
     fn advance(&self, e_a: f64, l: f64) -> (f64, f64) {
-        let split = 0.5 * self.delta;
+        let split = 0.5 * self.shape.delta;
         let early_a = e_a >= split;
         // At the start of the blend R = Φ = 0.
-        let [r_a, d_a] = if e_a >= self.delta {
+        let [r_a, d_a] = if e_a >= self.shape.delta {
             [0.0; 2]
         } else {
             self.at_e(e_a, early_a)
         };
-        let y_b = e_a / self.delta * (-r_a - l).exp();
+        let y_b = e_a / self.shape.delta * (-r_a - l).exp();
         let [phi, d_b] = self.by_y.eval(y_b);
         let e_b = (y_b * phi).min(e_a);
         let early_b = y_b >= self.y_split;
@@ -538,14 +533,77 @@ impl Blend {
         } else if !early_a {
             l - (d_b - d_a)
         } else {
-            let tau_a = if e_a >= self.delta {
+            let tau_a = if e_a >= self.shape.delta {
                 0.0
             } else {
-                (self.delta / e_a).ln() + r_a
+                (self.shape.delta / e_a).ln() + r_a
             };
             (self.phi_split - d_a) + (l - (self.tau_split - tau_a)) - d_b
         };
         (e_b, d.max(0.0))
+    }
+}
+
+/// Where a monotone stretch of length `length` from `w` (the deflection in the direction of
+/// motion) runs, for the break-away `zba` and the steady deflection `z_ss` (`z_max` of the
+/// slow loop, `g(v) / sigma0` at finite rate; `delta = 1 - zba / z_ss`): (E3)'s three parts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Leg {
+    /// In the elastic band the whole way: `w + length` at its end.
+    Elastic(f64),
+    /// From above `z_ss` (`alpha = 1`, only from a state outside the bounds).
+    Above,
+    /// Into or in the blend: from `e_a` over the length `l` in units of `z_ss` (the elastic
+    /// part before it removed).
+    Blend { e_a: f64, l: f64 },
+}
+
+impl Leg {
+    fn of(w: f64, length: f64, zba: f64, z_ss: f64, delta: f64) -> Self {
+        if w + length <= zba || length == 0.0 {
+            return Leg::Elastic(w + length);
+        }
+        if w >= z_ss {
+            return Leg::Above;
+        }
+        let (e_a, rest) = if w <= zba {
+            (delta, length - (zba - w))
+        } else {
+            (((z_ss - w) / z_ss).min(delta), length)
+        };
+        Leg::Blend {
+            e_a,
+            l: rest / z_ss,
+        }
+    }
+}
+
+impl Shape {
+    fn new(delta: f64) -> Self {
+        Self {
+            delta,
+            a: 0.5 * std::f64::consts::PI / delta,
+        }
+    }
+
+    /// `(x, S / e, sin(a e) / e)` at `e` (the last two finite at `e = 0`).
+    #[inline]
+    fn parts(&self, e: f64) -> (f64, f64, f64) {
+        let sn = sin_quarter(self.a * e);
+        let sinc = if e > 0.0 { sn / e } else { self.a };
+        (1.0 - e, sn * sinc, sinc)
+    }
+
+    /// `h(e) = e + x S`, the slope `dw/d|u|`.
+    fn h(&self, e: f64) -> f64 {
+        let (x, s_e, _) = self.parts(e);
+        e * (1.0 + x * s_e)
+    }
+
+    /// `1/h - 1/e = -x (S/e^2) / (1 + x S/e)`, the integrand of `R` (E5).
+    fn r(&self, e: f64) -> f64 {
+        let (x, s_e, sinc) = self.parts(e);
+        -x * sinc * sinc / (1.0 + x * s_e)
     }
 }
 

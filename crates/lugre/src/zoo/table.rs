@@ -545,6 +545,54 @@ impl ZooModel {
         each!(self, m => ZooElement::at_rest(self, m, u))
     }
 
+    /// The force at each sample of the input `u` at the times `t` (linear in `t` between
+    /// samples) from rest at `u[0]`: the exact path of a rate-independent model (each interval
+    /// one monotone segment, its exact segment map; `t` only checked), the finite-rate response
+    /// of a model with rate dependence (elasto-plastic: (E1) with the interval's velocity,
+    /// `docs/mathematics.md#elasto-plastic-at-finite-rate`; at a sample the value just after
+    /// it, as LuGre's [`crate::Simulator`] reports).
+    ///
+    /// # Errors
+    /// [`ZooError::LengthMismatch`] for `t` and `u` of different lengths, [`ZooError::Input`]
+    /// for none, a value not finite or `t` not strictly increasing (naming the column, the
+    /// index and the value), [`ZooError::Overflow`] where the force overflows.
+    ///
+    /// ```
+    /// use lugre::zoo::ZooModel;
+    /// let model = ZooModel::new("elastoplastic", &[("sigma1", &[0.0]), ("sigma2", &[0.0])])?;
+    /// let force = model.simulate(&[0.0, 1.0, 2.0], &[0.0, 0.25, 0.5])?;
+    /// // Inside the break-away band (zba = 0.5 m): purely elastic, F = sigma0 u.
+    /// assert_eq!(force, vec![0.0, 0.25, 0.5]);
+    /// # Ok::<(), lugre::Error>(())
+    /// ```
+    pub fn simulate(&self, t: &[f64], u: &[f64]) -> Result<Vec<f64>, ZooError> {
+        check_samples(t, u)?;
+        match &self.kind {
+            // Rate-independent for now; the Generalized Maxwell-slip's finite rate goes here.
+            ZooKind::MaxwellSlip(_) => self.exact_path(u),
+            ZooKind::PrandtlIshlinskii(_) | ZooKind::BoucWen(_) => self.exact_path(u),
+            ZooKind::ElastoPlastic(m) => m.simulate_rate(t, u),
+        }
+    }
+
+    /// The force at each sample of `u` along the model's rate-independent path from rest at
+    /// `u[0]` (each step one monotone segment, the exact segment map): the slow limit of
+    /// [`Self::simulate`] for every model.
+    ///
+    /// # Errors
+    /// [`ZooError::Input`] for no sample or one not finite, [`ZooError::Overflow`].
+    pub fn exact_path(&self, u: &[f64]) -> Result<Vec<f64>, ZooError> {
+        crate::input::check_all_finite("u", u)?;
+        let mut element = self.element(u[0])?;
+        let mut out = Vec::with_capacity(u.len());
+        out.push(element.force());
+        for &x in &u[1..] {
+            element.advance(x)?;
+            out.push(element.force());
+        }
+        Ok(out)
+    }
+
     /// `n` points of the loop `hl` evenly spaced over one period.
     ///
     /// # Errors
@@ -573,6 +621,21 @@ fn scaled_zba(given: bool, zba: f64, fc: f64, sigma0: f64) -> f64 {
     } else {
         scaled
     }
+}
+
+/// `t` and `u` of one length, at least one sample, finite, `t` strictly increasing.
+fn check_samples(t: &[f64], u: &[f64]) -> Result<(), ZooError> {
+    if t.len() != u.len() {
+        return Err(ZooError::LengthMismatch {
+            first: "t",
+            n_first: t.len(),
+            second: "u",
+            n_second: u.len(),
+        });
+    }
+    crate::input::check_times(t)?;
+    crate::input::check_all_finite("u", u)?;
+    Ok(())
 }
 
 /// Each parameter's values: the given ones, else the default.

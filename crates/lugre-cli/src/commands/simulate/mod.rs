@@ -26,6 +26,7 @@ use lugre_io::Role;
 
 mod drive;
 mod output;
+mod zoo;
 
 use drive::build_drive;
 use output::{print_table, response_figure, write_csv, write_json};
@@ -149,6 +150,9 @@ struct Request {
 
 pub(crate) fn run(args: &SimulateArgs) -> Result<()> {
     check_files(args.input.input.as_deref(), &args.output, Some(&args.plot))?;
+    if let Some(model) = args.model.build_zoo()? {
+        return zoo::run(args, &model);
+    }
     let request = parse(args)?;
     let mut out = compute(&request)?;
     if let Some((t, n)) = &request.normal {
@@ -277,17 +281,7 @@ fn report(args: &SimulateArgs, r: &Request, out: &Trajectory) -> Result<()> {
     } else {
         let mut w = std::io::BufWriter::new(stdout.lock());
         print_table(&mut w, r, out)?;
-        if let Some(path) = &args.output.csv {
-            writeln!(
-                w,
-                "\nWrote t,u,z,dz,y ({} rows) to {}",
-                out.len(),
-                path.display()
-            )?;
-        }
-        if let Some(path) = &args.plot.path {
-            writeln!(w, "Drew y against t and y against u to {}", path.display())?;
-        }
+        output::print_written(&mut w, args, "t,u,z,dz,y", out.len())?;
         w.flush()?;
     }
     Ok(())

@@ -113,20 +113,34 @@ pub(super) fn print_table(w: &mut impl Write, r: &Request, out: &Trajectory) -> 
         sig(out.t[imax], 10),
         sig(out.y[n - 1], 10),
     )?;
+    print_rows(
+        w,
+        &["t", "u", "z", "z'", "y"],
+        &[&out.t, &out.u, &out.z, &out.dz, &out.y],
+    )
+}
+
+/// The header and the first [`TABLE_HEAD`] rows of `columns`, then how many more there are.
+pub(super) fn print_rows(
+    w: &mut impl Write,
+    headers: &[&str],
+    columns: &[&Vec<f64>],
+) -> Result<()> {
+    let line = |cells: Vec<String>| {
+        let cells: Vec<String> = cells.iter().map(|c| format!("{c:>16}")).collect();
+        cells.join(" ")
+    };
     writeln!(
         w,
-        "\n{:>16} {:>16} {:>16} {:>16} {:>16}",
-        "t", "u", "z", "z'", "y"
+        "\n{}",
+        line(headers.iter().map(|h| h.to_string()).collect())
     )?;
+    let n = columns.first().map_or(0, |c| c.len());
     for i in 0..n.min(TABLE_HEAD) {
         writeln!(
             w,
-            "{:>16} {:>16} {:>16} {:>16} {:>16}",
-            sig(out.t[i], 10),
-            sig(out.u[i], 10),
-            sig(out.z[i], 10),
-            sig(out.dz[i], 10),
-            sig(out.y[i], 10)
+            "{}",
+            line(columns.iter().map(|c| sig(c[i], 10)).collect())
         )?;
     }
     if n > TABLE_HEAD {
@@ -136,6 +150,22 @@ pub(super) fn print_table(w: &mut impl Write, r: &Request, out: &Trajectory) -> 
             "",
             n - TABLE_HEAD
         )?;
+    }
+    Ok(())
+}
+
+/// What was written: the CSV's `columns` (`rows` of them) and the figure.
+pub(super) fn print_written(
+    w: &mut impl Write,
+    args: &super::SimulateArgs,
+    columns: &str,
+    rows: usize,
+) -> Result<()> {
+    if let Some(path) = &args.output.csv {
+        writeln!(w, "\nWrote {columns} ({rows} rows) to {}", path.display())?;
+    }
+    if let Some(path) = &args.plot.path {
+        writeln!(w, "Drew y against t and y against u to {}", path.display())?;
     }
     Ok(())
 }
