@@ -224,6 +224,8 @@ typedef struct LugreZooModelInfo {
   size_t parameters;
   // 1 when every minor loop closes (Masing behaviour).
   int32_t closes_minor_loops;
+  // 1 when the model has a finite-rate form ([`lugre_dynamics_set_zoo`] takes it).
+  int32_t finite_rate;
 } LugreZooModelInfo;
 
 // A parameter of a model of the zoo (static strings and values).
@@ -484,7 +486,8 @@ enum LugreStatus lugre_dynamics_set_model(struct LugreDynamics *request,
 
 // A model of the zoo as the friction (copied: the model may be freed after): the
 // elasto-plastic one (`lugre_zoo_new("elastoplastic", ...)`, its `sigma0, sigma1, sigma2,
-// fc, fs, vs, beta, zba`); the other models are refused with the core's message.
+// fc, fs, vs, beta, zba`; on a scenario, those `lugre_zoo_new` was not given are the
+// scenario's, Table I); the other models are refused with the core's message.
 enum LugreStatus lugre_dynamics_set_zoo(struct LugreDynamics *request,
                                         const struct LugreZoo *model);
 

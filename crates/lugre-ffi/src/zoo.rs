@@ -57,6 +57,8 @@ pub struct LugreZooModelInfo {
     pub parameters: usize,
     /// 1 when every minor loop closes (Masing behaviour).
     pub closes_minor_loops: i32,
+    /// 1 when the model has a finite-rate form ([`lugre_dynamics_set_zoo`] takes it).
+    pub finite_rate: i32,
 }
 
 /// A parameter of a model of the zoo (static strings and values).
@@ -145,6 +147,7 @@ pub extern "C" fn lugre_zoo_model_info(
             reference: texts[3].as_ptr(),
             parameters: m.parameters.len(),
             closes_minor_loops: i32::from(m.closes_minor_loops),
+            finite_rate: i32::from(m.finite_rate),
         };
         Ok(())
     })

@@ -142,6 +142,7 @@ fn the_table_as_c_reads_it() {
         assert_eq!(c_str(info.reference), spec.reference);
         assert_eq!(info.parameters, spec.parameters.len());
         assert_eq!(info.closes_minor_loops, i32::from(spec.closes_minor_loops));
+        assert_eq!(info.finite_rate, i32::from(spec.finite_rate));
         for (i, p) in spec.parameters.iter().enumerate() {
             let mut q = std::mem::MaybeUninit::<LugreZooParameter>::uninit();
             let s = lugre_zoo_parameter(name.as_ptr(), i, q.as_mut_ptr());

@@ -327,7 +327,7 @@ impl PyZooLoop {
 }
 
 /// `lugre.ZOO_MODELS`: the core's zoo table, `{name: {"label", "equations", "reference",
-/// "closes_minor_loops", "parameters": {name: {"unit", "description", "domain", "shape"
+/// "closes_minor_loops", "finite_rate", "parameters": {name: {"unit", "description", "domain", "shape"
 /// ("scalar" or "elements"), "default" (a float, or a list for an element array)}}}}`.
 pub(crate) fn zoo_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let table = PyDict::new(py);
@@ -355,6 +355,7 @@ pub(crate) fn zoo_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
         entry.set_item("equations", m.equations)?;
         entry.set_item("reference", m.reference)?;
         entry.set_item("closes_minor_loops", m.closes_minor_loops)?;
+        entry.set_item("finite_rate", m.finite_rate)?;
         entry.set_item("parameters", parameters)?;
         table.set_item(m.name, entry)?;
     }

@@ -662,8 +662,8 @@ pub enum DynamicsError {
     NotPoints { field: Field },
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoModel,
-    /// A model of the zoo without a finite-rate form (only the elasto-plastic one has one).
-    #[error("model {model}: the dynamics take lugre, dahl or elastoplastic (the other models of the zoo have no finite-rate form here)")]
+    /// A model of the zoo without a finite-rate form ([`crate::zoo::ZooModelSpec::finite_rate`]).
+    #[error("model {model}: the dynamics take {} (the other models of the zoo have no finite-rate form here)", crate::zoo::dynamics_model_names())]
     NoFiniteRate { model: &'static str },
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoDrive,

@@ -353,3 +353,20 @@ fn a_zoo_model_on_a_scenario_takes_the_unnamed_parameters_from_table_i() {
     assert_eq!((q.sigma0, q.fc, q.fs), (1.0, 1.0, 2.0));
     assert_eq!(p.system.law(), FrictionLaw::ElastoPlastic { zba: 0.5 });
 }
+
+/// The table's `finite_rate` is what the dynamics take: every model with it is accepted as a
+/// friction, every other one refused with the message listing the ones there are.
+#[test]
+fn the_dynamics_take_the_models_with_a_finite_rate_form() {
+    use lugre::zoo::{dynamics_model_names, ZooModel, MODELS};
+    for spec in MODELS {
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        let r = Request::new().with_zoo(&model);
+        assert_eq!(r.is_ok(), spec.finite_rate, "{}", spec.name);
+        if let Err(e) = r {
+            let names = dynamics_model_names();
+            assert!(names.starts_with("lugre, dahl") && names.contains(" or "));
+            assert!(e.to_string().contains(&names), "{e}");
+        }
+    }
+}

@@ -453,3 +453,19 @@ fn bad_samples_are_named() {
     assert!(m.contains('u') && m.contains("NaN"), "{m}");
     assert!(!message(&[], &[]).is_empty());
 }
+
+/// The table's `finite_rate` is what `simulate` does: a model without it gives one answer at
+/// any time scale, one with it answers to the rate (a thousand times faster, another force).
+#[test]
+fn the_rate_matters_exactly_for_the_models_with_a_finite_rate_form() {
+    use lugre::zoo::MODELS;
+    let u = [0.0, 0.3, 1.5, -2.0, 0.7, 2.5];
+    let t: Vec<f64> = (0..u.len()).map(|i| i as f64).collect();
+    let fast: Vec<f64> = t.iter().map(|t| t * 1e-3).collect();
+    for spec in MODELS {
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        let slow = model.simulate(&t, &u).unwrap();
+        let quick = model.simulate(&fast, &u).unwrap();
+        assert_eq!(slow != quick, spec.finite_rate, "{}", spec.name);
+    }
+}

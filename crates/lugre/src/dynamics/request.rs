@@ -144,15 +144,13 @@ impl Request {
     /// # Errors
     /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo.
     pub fn with_zoo(mut self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
-        match model.kind() {
-            crate::zoo::ZooKind::ElastoPlastic(_) => {
-                self.zoo = Some(model.clone());
-                Ok(self)
-            }
-            _ => Err(DynamicsError::NoFiniteRate {
+        if !model.spec().finite_rate {
+            return Err(DynamicsError::NoFiniteRate {
                 model: model.spec().name,
-            }),
+            });
         }
+        self.zoo = Some(model.clone());
+        Ok(self)
     }
 
     /// The zoo model's friction on the request: its LuGre model and law, over `base` (a

@@ -77,7 +77,8 @@ pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};
 pub use table::{
-    model_names, Domain, Shape, ZooKind, ZooModel, ZooModelSpec, ZooParameter, MODELS,
+    dynamics_model_names, model_names, Domain, Shape, ZooKind, ZooModel, ZooModelSpec,
+    ZooParameter, MODELS,
 };
 
 use crate::kernel::ArcEnergy;

@@ -95,6 +95,10 @@ pub struct ZooModelSpec {
     pub parameters: &'static [ZooParameter],
     /// Every minor loop closes (Masing behaviour).
     pub closes_minor_loops: bool,
+    /// The model has a finite-rate form: it is a friction of `lugre dynamics`
+    /// ([`crate::dynamics::Request::with_zoo`]) and [`ZooModel::simulate`] runs it at the
+    /// input's rate (a test checks both agree with this).
+    pub finite_rate: bool,
 }
 
 const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
@@ -121,6 +125,7 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
         },
     ],
     closes_minor_loops: true,
+    finite_rate: false,
 };
 
 const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
@@ -155,6 +160,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
         },
     ],
     closes_minor_loops: true,
+    finite_rate: false,
 };
 
 const BOUC_WEN: ZooModelSpec = ZooModelSpec {
@@ -205,6 +211,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
         },
     ],
     closes_minor_loops: false,
+    finite_rate: false,
 };
 
 const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
@@ -253,6 +260,7 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
         lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
     ],
     closes_minor_loops: false,
+    finite_rate: true,
 };
 
 /// The zoo's entry of LuGre's parameter `p` (name, unit, description, domain from the model
@@ -610,6 +618,20 @@ pub fn model_names() -> String {
         .chain(MODELS.iter().map(|m| m.name))
         .collect();
     names.join(", ")
+}
+
+/// The models `lugre dynamics` takes, as its messages list them: `lugre, dahl or
+/// elastoplastic` (LuGre and Dahl, then each model of the zoo with a finite-rate form).
+pub fn dynamics_model_names() -> String {
+    let classic = crate::fit::Family::ALL.map(|f| f.name());
+    let names: Vec<&str> = classic
+        .into_iter()
+        .chain(MODELS.iter().filter(|m| m.finite_rate).map(|m| m.name))
+        .collect();
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => names.join(", "),
+    }
 }
 
 /// Elasto-plastic's `zba`: the one given, else `fc / (2 sigma0)` (the table's default where

@@ -9,7 +9,6 @@ use lugre::dynamics::{
 };
 use lugre::fit::Family;
 use lugre::model::Parameter;
-use lugre::zoo::ZooModel;
 use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
@@ -213,7 +212,9 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(name) = &args.scenario {
         r = r.with_scenario(Scenario::named(name)?);
     }
-    if let Some(zoo) = elastoplastic(&args.model)? {
+    // A model of the zoo (`--model elastoplastic`): the core refuses one without a finite-rate
+    // form and, on a scenario, takes the parameters not given from Table I.
+    if let Some(zoo) = args.model.build_zoo()? {
         r = r.with_zoo(&zoo)?;
     } else if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
@@ -306,23 +307,6 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
     let model = m.build()?.lugre();
     m.check_named(Needed::All)?;
     Ok(Some(model))
-}
-
-/// The elasto-plastic friction (`--model elastoplastic`, its `sigma0, sigma1, sigma2, fc, fs,
-/// vs, beta, zba`) for [`Request::with_zoo`]; `None` for LuGre and Dahl. On a scenario, the
-/// core takes the parameters not given from the scenario (Table I).
-///
-/// # Errors
-/// Another model of the zoo (no finite-rate form here), the zoo's checks of the values.
-fn elastoplastic(m: &ModelArgs) -> Result<Option<ZooModel>> {
-    let Some(spec) = m.model.zoo() else {
-        return Ok(None);
-    };
-    if spec.name != (FrictionLaw::ElastoPlastic { zba: 0.0 }).name() {
-        // The core's refusal, the same in every front end.
-        bail!(DynamicsError::NoFiniteRate { model: spec.name });
-    }
-    m.build_zoo()
 }
 
 /// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.

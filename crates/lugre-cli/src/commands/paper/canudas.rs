@@ -5,6 +5,7 @@
 
 use anyhow::Result;
 use lugre::dynamics::{EventKind, Motion, Request, Scenario, Tolerances};
+use lugre::zoo::{ZooModel, ZooModelSpec, MODELS};
 use lugre::{LuGre, LuGreParams};
 use std::fmt::Write;
 
@@ -29,37 +30,103 @@ fn table1() -> Result<LuGre> {
     Ok(LuGre::from_params(LuGreParams::canudas_de_wit_1995())?)
 }
 
-/// The elasto-plastic friction's break-away displacement beside LuGre's: half of `Fc / sigma0`
-/// of Table I (purely elastic up to 0.5 N).
-const ZBA: f64 = 5e-6;
-
-/// The experiment's setup with Table I, 1 kg, and the elasto-plastic law (`zba`) or LuGre's.
-fn setup(sc: Scenario, zba: Option<f64>) -> Result<lugre::dynamics::Setup> {
-    let r = Request::new().with_scenario(sc).with_model(table1()?);
-    let r = match zba {
-        Some(zba) => r.with_elastoplastic(zba),
-        None => r,
-    };
-    Ok(r.build()?)
+/// A friction of the report: LuGre, or a model of the zoo's table with a finite-rate form
+/// ([`ZooModelSpec::finite_rate`]), each on the scenario's Table I (a zoo model's other
+/// parameters at their defaults on that scale: elasto-plastic's `zba = Fc / (2 sigma0)` = 5
+/// µm). A model added to the table with a finite-rate form is drawn here without code here.
+#[derive(Debug, Clone, Copy)]
+enum Friction {
+    LuGre,
+    Zoo(&'static ZooModelSpec),
 }
 
-/// The experiment's run at the solver's default tolerance, sampled `n + 1` times.
-fn run(sc: Scenario, n: usize) -> Result<(lugre::dynamics::Motion, lugre::dynamics::Setup)> {
-    run_law(sc, n, None)
+impl Friction {
+    /// LuGre first, then the zoo's finite-rate models in the table's order.
+    fn all() -> Vec<Friction> {
+        std::iter::once(Friction::LuGre)
+            .chain(MODELS.iter().filter(|m| m.finite_rate).map(Friction::Zoo))
+            .collect()
+    }
+
+    fn label(self) -> &'static str {
+        match self {
+            Friction::LuGre => "LuGre",
+            Friction::Zoo(spec) => spec.label,
+        }
+    }
+
+    /// The suffix of its curves' keys: none for LuGre, `_NAME` for a zoo model.
+    fn tag(self) -> String {
+        match self {
+            Friction::LuGre => String::new(),
+            Friction::Zoo(spec) => format!("_{}", spec.name),
+        }
+    }
+
+    /// What a table's row names after its quantity: nothing for LuGre, `, Label` for a zoo
+    /// model.
+    fn after(self) -> String {
+        match self {
+            Friction::LuGre => String::new(),
+            Friction::Zoo(spec) => format!(", {}", spec.label),
+        }
+    }
+
+    /// The line of the `i`-th friction of [`Friction::all`]: LuGre solid, the others dashed,
+    /// dotted, dash-dotted in turn.
+    fn style(i: usize) -> LineStyle {
+        [
+            LineStyle::Solid,
+            LineStyle::Dashed,
+            LineStyle::Dotted,
+            LineStyle::DashDot,
+        ][i % 4]
+    }
+
+    /// The experiment's setup with this friction, Table I and 1 kg.
+    fn setup(self, sc: Scenario) -> Result<lugre::dynamics::Setup> {
+        let r = Request::new().with_scenario(sc);
+        let r = match self {
+            Friction::LuGre => r.with_model(table1()?),
+            Friction::Zoo(spec) => r.with_zoo(&ZooModel::new(spec.name, &[])?)?,
+        };
+        Ok(r.build()?)
+    }
+
+    /// The experiment's run at the solver's default tolerance, sampled `n + 1` times.
+    fn run(self, sc: Scenario, n: usize) -> Result<Motion> {
+        let setup = self.setup(sc)?;
+        let times = lugre::simulate::uniform_times(0.0, setup.t_end, 1, n);
+        Ok(setup
+            .system
+            .solve(setup.t_end, &times, Tolerances::default())?)
+    }
 }
 
-/// [`run`] with the elasto-plastic law (`zba`) or LuGre's.
-fn run_law(
-    sc: Scenario,
-    n: usize,
-    zba: Option<f64>,
-) -> Result<(lugre::dynamics::Motion, lugre::dynamics::Setup)> {
-    let setup = setup(sc, zba)?;
-    let times = lugre::simulate::uniform_times(0.0, setup.t_end, 1, n);
-    let m = setup
-        .system
-        .solve(setup.t_end, &times, Tolerances::default())?;
-    Ok((m, setup))
+/// Each friction of [`Friction::all`] with its run of `sc` (`n + 1` samples).
+fn runs(sc: Scenario, n: usize) -> Result<Vec<(Friction, Motion)>> {
+    Friction::all()
+        .into_iter()
+        .map(|f| Ok((f, f.run(sc, n)?)))
+        .collect()
+}
+
+/// The labels of the frictions, `LuGre / Elasto-plastic / ...`.
+fn labels() -> String {
+    let all: Vec<&str> = Friction::all().iter().map(|f| f.label()).collect();
+    all.join(" / ")
+}
+
+/// The frictions beside LuGre, for captions: `the Elasto-plastic friction (...)`.
+fn others_caption() -> String {
+    let others: Vec<String> = Friction::all()
+        .iter()
+        .filter_map(|f| match f {
+            Friction::LuGre => None,
+            Friction::Zoo(spec) => Some(format!("{} ({})", spec.label, spec.reference)),
+        })
+        .collect();
+    others.join("; ")
 }
 
 fn paper_figure(
@@ -92,49 +159,41 @@ pub(crate) fn build() -> Result<Report> {
 
 /// Fig. 2: pre-sliding displacement against the applied force.
 fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
-    let (m, _) = run(Scenario::Presliding, 6500)?;
-    let (ep, _) = run_law(Scenario::Presliding, 6500, Some(ZBA))?;
-    let force_x = |m: &Motion| -> Vec<(f64, f64)> {
-        m.drive
-            .iter()
-            .zip(&m.x)
-            .map(|(f, x)| (*f, x * 1e6))
-            .collect()
-    };
-    let points = force_x(&m);
+    let runs = runs(Scenario::Presliding, 6500)?;
+    let mut fig = Figure::new("applied force [N]", "displacement x [µm]")
+        .title("Fig. 2: pre-sliding displacement");
+    for (i, (f, m)) in runs.iter().enumerate() {
+        let points = m.drive.iter().zip(&m.x).map(|(d, x)| (*d, x * 1e6));
+        fig = fig.curve(
+            Curve::new(points.collect(), Friction::style(i), PALETTE[i])
+                .label(f.label())
+                .key(format!("x{}", f.tag())),
+        );
+    }
     figures.push(paper_figure(
         2,
         "pre-sliding displacement",
-        "Pre-sliding displacement x (µm) against the applied force (N), the force ramped to \
-         ±1.425 N (95 % of Fs) with holds at 10-15, 35-40 and 60-65 s; dashed: the \
-         elasto-plastic friction of Dupont et al. (2002) on the same Table I with zba = 5 µm \
-         (purely elastic up to 0.5 N)."
-            .into(),
-        Figure::new("applied force [N]", "displacement x [µm]")
-            .title("Fig. 2: pre-sliding displacement")
-            .curve(
-                Curve::new(points, LineStyle::Solid, PALETTE[0])
-                    .label("LuGre")
-                    .key("x"),
-            )
-            .curve(
-                Curve::new(force_x(&ep), LineStyle::Dashed, PALETTE[1])
-                    .label("elasto-plastic")
-                    .key("x_elastoplastic"),
-            ),
+        format!(
+            "Pre-sliding displacement x (µm) against the applied force (N), the force ramped \
+             to ±1.425 N (95 % of Fs) with holds at 10-15, 35-40 and 60-65 s; LuGre solid, \
+             beside it on the same Table I: {}.",
+            others_caption()
+        ),
+        fig,
         ["force", "x_um"],
     ));
     let at = |m: &Motion, t: f64| {
         m.t.iter()
             .position(|&s| (s - t).abs() < 1e-9)
-            .map(|i| m.x[i])
+            .map(|i| sig(m.x[i] * 1e6, 10))
     };
     let mut rows = Vec::new();
     for t in [10.0, 15.0, 40.0, 65.0] {
-        if let (Some(x), Some(x_ep)) = (at(&m, t), at(&ep, t)) {
+        let xs: Option<Vec<String>> = runs.iter().map(|(_, m)| at(m, t)).collect();
+        if let Some(xs) = xs {
             rows.push((
-                format!("x({t} s): LuGre / elasto-plastic"),
-                format!("{} / {} µm", sig(x * 1e6, 10), sig(x_ep * 1e6, 10)),
+                format!("x({t} s): {}", labels()),
+                format!("{} µm", xs.join(" / ")),
             ));
         }
     }
@@ -147,24 +206,28 @@ fn fig03(figures: &mut Vec<PaperFigure>) -> Result<()> {
     let mut fig =
         Figure::new("velocity v [mm/s]", "friction F [N]").title("Fig. 3: frictional lag");
     for (i, w) in [1.0, 10.0, 25.0].into_iter().enumerate() {
-        let (m, _) = run(Scenario::Lag { w }, 3000)?;
-        // The last of the three periods: the steady loop.
-        let start = 2 * m.t.len() / 3;
-        let points = (start..m.t.len())
-            .map(|k| (m.v[k] * 1e3, m.friction[k]))
-            .collect();
-        fig = fig.curve(
-            Curve::new(points, LineStyle::Solid, PALETTE[i])
-                .label(format!("ω = {w} rad/s"))
-                .key(format!("w{w}")),
-        );
+        for (j, (f, m)) in runs(Scenario::Lag { w }, 3000)?.into_iter().enumerate() {
+            // The last of the three periods: the steady loop.
+            let start = 2 * m.t.len() / 3;
+            let points = (start..m.t.len())
+                .map(|k| (m.v[k] * 1e3, m.friction[k]))
+                .collect();
+            fig = fig.curve(
+                Curve::new(points, Friction::style(j), PALETTE[i])
+                    .label(format!("ω = {w} rad/s, {}", f.label()))
+                    .key(format!("w{w}{}", f.tag())),
+            );
+        }
     }
     figures.push(paper_figure(
         3,
         "frictional lag",
-        "Friction against velocity under v = 10⁻³ (cos ωt + 1.5) m/s, ω = 1, 10, 25 rad/s (the \
-         third period of each): the loops widen with the frequency."
-            .into(),
+        format!(
+            "Friction against velocity under v = 10⁻³ (cos ωt + 1.5) m/s, ω = 1, 10, 25 rad/s \
+             (the third period of each): the loops widen with the frequency. LuGre solid, \
+             beside it: {}.",
+            others_caption()
+        ),
         fig,
         ["v_mm_s", "friction"],
     ));
@@ -174,49 +237,38 @@ fn fig03(figures: &mut Vec<PaperFigure>) -> Result<()> {
 /// Fig. 4: break-away force against the force rate.
 fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let rates = [1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 25.0, 30.0];
-    let mut points = Vec::new();
-    let mut points_ep = Vec::new();
+    let mut fig =
+        Figure::new("force rate r [N/s]", "break-away force [N]").title("Fig. 4: break-away force");
     let mut rows = Vec::new();
-    for rate in rates {
-        let breakaway = |zba| -> Result<_> {
-            let setup = setup(Scenario::Breakaway { rate }, zba)?;
-            Ok(setup.system.breakaway(setup.t_end, Tolerances::default())?)
-        };
-        if let Some(b) = breakaway(None)? {
-            points.push((rate, b.force));
-            rows.push((
-                format!("r = {rate} N/s"),
-                format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
-            ));
+    for (i, f) in Friction::all().into_iter().enumerate() {
+        let mut points = Vec::new();
+        for rate in rates {
+            let setup = f.setup(Scenario::Breakaway { rate })?;
+            if let Some(b) = setup.system.breakaway(setup.t_end, Tolerances::default())? {
+                points.push((rate, b.force));
+                rows.push((
+                    format!("r = {rate} N/s{}", f.after()),
+                    format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
+                ));
+            }
         }
-        if let Some(b) = breakaway(Some(ZBA))? {
-            points_ep.push((rate, b.force));
-            rows.push((
-                format!("r = {rate} N/s, elasto-plastic"),
-                format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
-            ));
-        }
+        fig = fig.curve(
+            Curve::new(points, Friction::style(i), PALETTE[i])
+                .label(f.label())
+                .key(format!("breakaway{}", f.tag())),
+        );
     }
     figures.push(paper_figure(
         4,
         "break-away force",
-        "Break-away force (the first peak of the friction force under F = r t) against the force \
-         rate r, 1 to 30 N/s: the faster the ramp, the lower the break-away force. (Above about \
-         35 N/s the first maximum is a shallow bump just above Fc, no longer a break-away peak.) \
-         Dashed: the elasto-plastic friction (zba = 5 µm)."
-            .into(),
-        Figure::new("force rate r [N/s]", "break-away force [N]")
-            .title("Fig. 4: break-away force")
-            .curve(
-                Curve::new(points, LineStyle::Solid, PALETTE[0])
-                    .label("LuGre")
-                    .key("breakaway"),
-            )
-            .curve(
-                Curve::new(points_ep, LineStyle::Dashed, PALETTE[1])
-                    .label("elasto-plastic")
-                    .key("breakaway_elastoplastic"),
-            ),
+        format!(
+            "Break-away force (the first peak of the friction force under F = r t) against the \
+             force rate r, 1 to 30 N/s: the faster the ramp, the lower the break-away force. \
+             (Above about 35 N/s the first maximum is a shallow bump just above Fc, no longer a \
+             break-away peak.) LuGre solid, beside it: {}.",
+            others_caption()
+        ),
+        fig,
         ["rate", "force"],
     ));
     tables.push((4, "Break-away", rows));
@@ -225,86 +277,81 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
 
 /// Fig. 6: stick-slip.
 fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
-    let (m, _) = run(Scenario::StickSlip, 3000)?;
-    let (ep, _) = run_law(Scenario::StickSlip, 3000, Some(ZBA))?;
-    let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
-    let x_ep = ep.t.iter().zip(&ep.x).map(|(t, x)| (*t, *x)).collect();
-    let end = m.t.iter().map(|t| (*t, 0.1 * t)).collect();
+    let runs = runs(Scenario::StickSlip, 3000)?;
+    let mut fig = Figure::new("time t [s]", "position [m]").title("Fig. 6: stick-slip");
+    let mut rows = Vec::new();
+    for (i, (f, m)) in runs.iter().enumerate() {
+        let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
+        fig = fig.curve(
+            Curve::new(x, LineStyle::Solid, PALETTE[i])
+                .label(format!("mass x, {}", f.label()))
+                .key(format!("x{}", f.tag())),
+        );
+        rows.extend(stick_slip_rows(m, &f.after()));
+    }
+    let end = runs[0].1.t.iter().map(|t| (*t, 0.1 * t)).collect();
+    fig = fig.curve(
+        Curve::new(end, LineStyle::Dashed, BLACK)
+            .label("free end 0.1 t")
+            .key("end"),
+    );
     figures.push(paper_figure(
         6,
         "stick-slip",
-        "Stick-slip: a spring of 2 N/m pulled at 0.1 m/s (dashed: its free end) and the mass's \
-         position x, with LuGre friction and with the elasto-plastic friction (zba = 5 µm)."
-            .into(),
-        Figure::new("time t [s]", "position [m]")
-            .title("Fig. 6: stick-slip")
-            .curve(
-                Curve::new(x, LineStyle::Solid, PALETTE[0])
-                    .label("mass x, LuGre")
-                    .key("x"),
-            )
-            .curve(
-                Curve::new(x_ep, LineStyle::Solid, PALETTE[1])
-                    .label("mass x, elasto-plastic")
-                    .key("x_elastoplastic"),
-            )
-            .curve(
-                Curve::new(end, LineStyle::Dashed, BLACK)
-                    .label("free end 0.1 t")
-                    .key("end"),
-            ),
+        format!(
+            "Stick-slip: a spring of 2 N/m pulled at 0.1 m/s (dashed: its free end) and the \
+             mass's position x, with LuGre friction and beside it: {}.",
+            others_caption()
+        ),
+        fig,
         ["t", "x"],
     ));
-    let mut rows = stick_slip_rows(&m, "");
-    rows.extend(stick_slip_rows(&ep, ", elasto-plastic"));
     tables.push((6, "Stick-slip", rows));
     Ok(())
 }
 
 /// Fig. 8: PID hunting.
 fn fig08(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
-    let (m, _) = run(Scenario::Pid, 5000)?;
-    let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
+    let runs = runs(Scenario::Pid, 5000)?;
+    let mut fig = Figure::new("time t [s]", "position x [m]").title("Fig. 8: hunting");
+    let mut rows = Vec::new();
+    for (i, (f, m)) in runs.iter().enumerate() {
+        let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
+        fig = fig.curve(
+            Curve::new(x, Friction::style(i), PALETTE[i])
+                .label(format!("x, {}", f.label()))
+                .key(format!("x{}", f.tag())),
+        );
+        let late: Vec<String> = m
+            .events
+            .iter()
+            .filter(|e| e.kind == EventKind::VelocityZero && e.t > 50.0)
+            .map(|e| format!("{} m at {} s", sig(e.x, 8), sig(e.t, 6)))
+            .collect();
+        rows.push((
+            format!("velocity sign changes after 50 s (stops), {}", f.label()),
+            late.join("; "),
+        ));
+    }
     let xd = vec![(0.0, 1.0), (100.0, 1.0)];
+    fig = fig.curve(
+        Curve::new(xd, LineStyle::Dashed, BLACK)
+            .label("xd")
+            .key("xd"),
+    );
     figures.push(paper_figure(
         8,
         "PID hunting",
-        "Position under PID control (Kp = 3, Ki = 4, Kv = 6) towards xd = 1 m (dashed): the \
-         integral action and stiction make a limit cycle, the mass parking on either side of xd."
-            .into(),
-        Figure::new("time t [s]", "position x [m]")
-            .title("Fig. 8: hunting")
-            .curve(
-                Curve::new(x, LineStyle::Solid, PALETTE[0])
-                    .label("x")
-                    .key("x"),
-            )
-            .curve(
-                Curve::new(xd, LineStyle::Dashed, BLACK)
-                    .label("xd")
-                    .key("xd"),
-            ),
+        format!(
+            "Position under PID control (Kp = 3, Ki = 4, Kv = 6) towards xd = 1 m (dashed): \
+             the integral action and stiction make a limit cycle, the mass parking on either \
+             side of xd. LuGre solid, beside it: {}.",
+            others_caption()
+        ),
+        fig,
         ["t", "x"],
     ));
-    let stops: Vec<(f64, f64)> = m
-        .events
-        .iter()
-        .filter(|e| e.kind == EventKind::VelocityZero)
-        .map(|e| (e.t, e.x))
-        .collect();
-    let late: Vec<String> = stops
-        .iter()
-        .filter(|(t, _)| *t > 50.0)
-        .map(|(t, x)| format!("{} m at {} s", sig(*x, 8), sig(*t, 6)))
-        .collect();
-    tables.push((
-        8,
-        "PID hunting",
-        vec![(
-            "velocity sign changes after 50 s (stops)".into(),
-            late.join("; "),
-        )],
-    ));
+    tables.push((8, "PID hunting", rows));
     Ok(())
 }
 
@@ -353,12 +400,13 @@ pub(crate) fn page(r: &Report) -> String {
          TAC 40(3), 1995, recomputed by <code>lugre paper</code> (lugre {}) with the \
          paper's Table I (σ0 = 10⁵ N/m, σ1 = √10⁵ N s/m, σ2 = 0.4 N s/m, Fc = 1 N, Fs = 1.5 N, \
          vs = 10⁻³ m/s) and a 1 kg mass, at the solver's default tolerance (rtol 10⁻⁸). Each \
-         experiment is also <code>lugre dynamics --scenario NAME</code>. Figs. 2, 4 and 6 show \
-         beside LuGre the elasto-plastic friction of Dupont, Hayward, Armstrong and Altpeter \
-         (IEEE TAC 47(5), 2002) on the same Table I with zba = 5 µm (<code>lugre dynamics \
-         --model elastoplastic --zba 5e-6 --scenario NAME</code>). <a href=\"../index.html\">\
+         experiment is also <code>lugre dynamics --scenario NAME</code>. Every figure shows \
+         beside LuGre each friction model of the zoo with a finite-rate form on the same \
+         Table I, its other parameters at their defaults on that scale ({}; <code>lugre \
+         dynamics --model NAME --scenario NAME</code>). <a href=\"../index.html\">\
          The first report</a>: the figures of Ikhouane, Mañosa, Pujol.</p>\n",
-        env!("CARGO_PKG_VERSION")
+        env!("CARGO_PKG_VERSION"),
+        esc(&others_caption())
     );
     figures_with_numbers(&mut h, r);
     h.push_str("</body>\n</html>\n");
