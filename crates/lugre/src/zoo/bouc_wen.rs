@@ -305,29 +305,10 @@ impl SingleState for BoucWen {
     }
 }
 
-/// `ln(1 + x) / x`, 1 at 0.
-#[inline]
-fn ln_1p_ratio(x: f64) -> f64 {
-    if x == 0.0 {
-        1.0
-    } else {
-        x.ln_1p() / x
-    }
-}
-
-/// `(1 - e^(-x)) / x`, 1 at 0.
-#[inline]
-fn expm1_ratio(x: f64) -> f64 {
-    if x == 0.0 {
-        1.0
-    } else {
-        -(-x).exp_m1() / x
-    }
-}
-
-/// `K(t) = ∫_0^t c s²/(1 + c s) ds` (B6) as `c t³ g(c t)`, `g(x) = (ln(1+x) - x + x²/2)/x³`:
-/// the series `1/3 - x/4 + x²/5 - ...` below `x = 1/4` (where the closed form cancels).
-fn dahl_loss(c: f64, t: f64) -> f64 {
+/// `K(t) = ∫_0^t c s²/(1 + c s) ds` (B6) as `c t³ g(c t)`, `g(x) = (ln(1+x) - x + x²/2)/x³`,
+/// given `l = ln(1 + c t)`: the series `1/3 - x/4 + x²/5 - ...` below `x = 1/4` (where the
+/// closed form cancels).
+fn dahl_loss(c: f64, t: f64, l: f64) -> f64 {
     let x = c * t;
     let g = if x < 0.25 {
         let (mut sum, mut power) = (0.0, 1.0f64);
@@ -340,28 +321,38 @@ fn dahl_loss(c: f64, t: f64) -> f64 {
         }
         sum
     } else {
-        (x.ln_1p() - x + 0.5 * x * x) / (x * x * x)
+        (l - x + 0.5 * x * x) / (x * x * x)
     };
     c * t * t * t * g
 }
 
-/// The segment map for `n = 1` (B6-B7): `v_b` and `D rho / kw` from `v_a` after `tau`.
+/// The segment map for `n = 1` (B6-B7): `v_b` and `D rho / kw` from `v_a` after `tau`. One
+/// `ln_1p` and one `expm1` on the negative part, one `expm1` on the positive part: on the
+/// negative part `ln(1 + c t_b) = ln(1 + c t_a) - c tau` and `e^(-c tau) = 1 + expm1(-c tau)`
+/// (absolute errors of a few rounding units of `t_a`, the bound (B11) of `w`); on the positive
+/// part `1 - e^(-2 tau) = m (2 - m)`, `m = 1 - e^(-tau)`.
 #[inline]
 fn linear(c: f64, v_a: f64, tau: f64) -> (f64, f64) {
     let (mut v, mut tau, mut d) = (v_a, tau, 0.0);
     if v < 0.0 {
         let t = -v;
-        let reach = t * ln_1p_ratio(c * t);
+        let (x, l) = (c * t, (c * t).ln_1p());
+        let reach = if x == 0.0 { t } else { t * (l / x) };
+        let loss_a = dahl_loss(c, t, l);
         if tau < reach {
-            let t_b = (t * (-c * tau).exp() - tau * expm1_ratio(c * tau)).max(0.0);
-            return (-t_b, dahl_loss(c, t) - dahl_loss(c, t_b));
+            let (ct, m) = (c * tau, (-c * tau).exp_m1());
+            // (1 - e^(-c tau)) / c, tau at c = 0.
+            let ratio = if ct == 0.0 { tau } else { tau * (-m / ct) };
+            let t_b = (t + t * m - ratio).max(0.0);
+            return (-t_b, loss_a - dahl_loss(c, t_b, (l - ct).max(0.0)));
         }
-        d = dahl_loss(c, t);
+        d = loss_a;
         tau -= reach;
         v = 0.0;
     }
     let e_a = 1.0 - v;
-    let (m1, m2) = (-(-tau).exp_m1(), -(-2.0 * tau).exp_m1());
+    let m1 = -(-tau).exp_m1();
+    let m2 = m1 * (2.0 - m1);
     let v_b = (v + e_a * m1).min(1.0);
     (v_b, d + tau - 2.0 * e_a * m1 + 0.5 * e_a * e_a * m2)
 }
