@@ -63,7 +63,7 @@
 //! `tests/zoo_elastoplastic.rs` to the integrators' own accuracy, 7e-13 `z_max` and 6e-12
 //! relative in the dissipation at worst).
 
-mod chebyshev;
+pub(super) mod chebyshev;
 mod rate;
 
 use super::{SingleState, ZooLoop};

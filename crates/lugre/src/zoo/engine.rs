@@ -82,7 +82,9 @@ impl ZooLoop {
         let r = self.start_index();
         let (max, min) = (self.u[r], self.u.iter().fold(f64::MAX, |m, &x| m.min(x)));
         let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
-        let start = bank.periodic_start(&self.u, r, min);
+        // The solver's last walk, reused from `first` on (the same states to rounding).
+        let mut trail = Vec::new();
+        let (start, first) = bank.periodic_trail(&self.u, r, min, &mut trail);
         let mut run = start.clone();
         let mut scratch = start.clone();
         let mut stack = vec![Entry {
@@ -115,7 +117,13 @@ impl ZooLoop {
                     below.d += merged;
                 }
             }
-            let d = bank.advance(&mut run, u_p);
+            let d = match trail.get(j.wrapping_sub(1)) {
+                Some((state, d)) if j >= first => {
+                    M::assign(&mut run, state);
+                    *d
+                }
+                _ => bank.advance(&mut run, u_p),
+            };
             d_period += d;
             if let Some(top) = stack.last_mut() {
                 top.d += d;

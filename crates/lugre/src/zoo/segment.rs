@@ -44,6 +44,23 @@ pub trait Segmental {
     /// points, the period running `u[r], u[r+1], ...` and wrapping), whose minimum is `min`.
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Self::State;
 
+    /// [`Segmental::periodic_start`], and in `trail` the states and segment dissipations the
+    /// solver met on its last walk over the period (`trail[j - 1]` at rotated index `j`); the
+    /// returned index is the first `j` from which they are the periodic ones to rounding (the
+    /// walk's dependence on where it started contracted below the solver's tolerance), so the
+    /// loop engine reuses them instead of mapping those segments again. By default no walk:
+    /// the index is past the period (`u.len() + 1`).
+    fn periodic_trail(
+        &self,
+        u: &[f64],
+        r: usize,
+        min: f64,
+        trail: &mut Vec<(Self::State, f64)>,
+    ) -> (Self::State, usize) {
+        trail.clear();
+        (self.periodic_start(u, r, min), u.len() + 1)
+    }
+
     /// At rest at input `u` (every element unloaded, `z = 0`).
     fn rest(&self, u: f64) -> Self::State;
 
@@ -164,46 +181,90 @@ impl<T: SingleState> Segmental for T {
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Point {
         Point {
             u: u[r],
-            z: fixed_point(self, u, r, min),
+            z: fixed_point(self, u, r, min, None).0,
         }
+    }
+
+    fn periodic_trail(
+        &self,
+        u: &[f64],
+        r: usize,
+        min: f64,
+        trail: &mut Vec<(Point, f64)>,
+    ) -> (Point, usize) {
+        let (z, first) = fixed_point(self, u, r, min, Some(trail));
+        (Point { u: u[r], z }, first)
     }
 }
 
 /// Iterations of the periodic-state solver; each halves the bracket at least once in two.
 const MAX_ITERATIONS: usize = 200;
 
-/// `T(z) - z` and `T'(z)` (S1) for the period of `u` started at `u[r]`.
-fn period_map<T: SingleState>(model: &T, u: &[f64], r: usize, z: f64) -> (f64, f64) {
+/// `T(z) - z`, `T'(z)` (S1) for the period of `u` started at `u[r]`, and the first rotated
+/// index from which the walk from `z` stays within `tolerance` of the walk from any state within
+/// `width` of `z` (its derivative times `width` below `tolerance`; `n + 1` if never), with the
+/// walk's states and dissipations in `trail` when given.
+fn period_map<T: SingleState>(
+    model: &T,
+    (u, r, z): (&[f64], usize, f64),
+    (width, tolerance): (f64, f64),
+    mut trail: Option<&mut Vec<(Point, f64)>>,
+) -> (f64, f64, usize) {
     let n = u.len();
-    let (mut at, mut state, mut derivative) = (u[r], z, 1.0);
+    let (mut at, mut state, mut derivative, mut first) = (u[r], z, 1.0, n + 1);
+    if let Some(t) = trail.as_deref_mut() {
+        t.clear();
+    }
     for j in 1..=n {
         let to = u[(r + j) % n];
-        let up = to > at;
-        let before = model.slope(state, up);
-        let (after_z, _) = model.segment(at, state, to);
-        let after = model.slope(after_z, up);
-        // At a saturated state (h = 0) the map no longer depends on where it started.
-        derivative *= if before != 0.0 { after / before } else { 0.0 };
+        let (after_z, d) = model.segment(at, state, to);
+        // Once the derivative is 0 (a saturated state, h = 0, or underflow) it stays 0: the
+        // slopes are skipped.
+        if derivative != 0.0 {
+            let up = to > at;
+            let before = model.slope(state, up);
+            let after = model.slope(after_z, up);
+            // At a saturated state (h = 0) the map no longer depends on where it started.
+            derivative *= if before != 0.0 { after / before } else { 0.0 };
+        }
+        if first > n && derivative * width <= tolerance {
+            first = j;
+        }
+        if let Some(t) = trail.as_deref_mut() {
+            t.push((Point { u: to, z: after_z }, d));
+        }
         (at, state) = (to, after_z);
     }
-    (state - z, derivative - 1.0)
+    (state - z, derivative - 1.0, first)
 }
 
-/// The periodic state (S1) at `u[r]`: safeguarded Newton on the model's bounds.
-fn fixed_point<T: SingleState>(model: &T, u: &[f64], r: usize, min: f64) -> f64 {
+/// The periodic state (S1) at `u[r]`: safeguarded Newton on the model's bounds; with `trail`,
+/// the last walk's states and the first index where they are the periodic ones (see
+/// [`Segmental::periodic_trail`]).
+fn fixed_point<T: SingleState>(
+    model: &T,
+    u: &[f64],
+    r: usize,
+    min: f64,
+    mut trail: Option<&mut Vec<(Point, f64)>>,
+) -> (f64, usize) {
+    let n = u.len();
     let (mut lo, mut hi) = model.bounds();
     let rest = model.segment(0.5 * (u[r] + min), 0.0, u[r]).0.clamp(lo, hi);
     let tolerance = 4.0 * f64::EPSILON * lo.abs().max(hi.abs());
     let mut z = rest;
     for _ in 0..MAX_ITERATIONS {
-        let (g, dg) = period_map(model, u, r, z);
+        // The fixed point lies in [lo, hi]: the walk from it is within `hi - lo` of this one.
+        let (g, dg, first) =
+            period_map(model, (u, r, z), (hi - lo, tolerance), trail.as_deref_mut());
         if g.abs() <= tolerance {
-            return z;
+            // The walk started at the periodic state itself.
+            return (z, 1);
         }
         // A strong contraction (|T'| small, a long or large input): T(z) is within |T'| |g|
         // of the fixed point, so one pass over the period suffices.
         if (dg + 1.0).abs() * g.abs() <= tolerance {
-            return (z + g).clamp(lo, hi);
+            return ((z + g).clamp(lo, hi), first);
         }
         // g is non-increasing: a positive value lies left of the roots.
         if g > 0.0 {
@@ -212,7 +273,7 @@ fn fixed_point<T: SingleState>(model: &T, u: &[f64], r: usize, min: f64) -> f64 
             hi = z;
         }
         if hi - lo <= tolerance {
-            return z;
+            return (z, 1);
         }
         let newton = z - g / dg;
         z = if dg < 0.0 && newton > lo && newton < hi {
@@ -221,5 +282,5 @@ fn fixed_point<T: SingleState>(model: &T, u: &[f64], r: usize, min: f64) -> f64 
             0.5 * (lo + hi)
         };
     }
-    z
+    (z, n + 1)
 }
