@@ -11,6 +11,7 @@
 //! LuGre's default loop on one figure; the literature has no canonical element
 //! distributions for these models.
 
+use super::gms::GmsRate;
 use super::{
     BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooElement, ZooLoop,
 };
@@ -100,7 +101,7 @@ pub struct ZooModelSpec {
 const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
     name: "maxwell-slip",
     label: "Maxwell-slip",
-    equations: "F = sum_i k_i z_i, element i sticks (dz_i = du) until |k_i z_i| = f_i, then slips",
+    equations: "F = sum_i k_i z_i, element i sticks (dz_i = du) until |k_i z_i| = f_i, then slips; at finite rate GMS: slip level f_i g(v) / sum f_j, a slipping element relaxes to it at the rate C / g(v)",
     reference: "Al-Bender, Lampaert and Swevers, IEEE Trans. Automatic Control 50(11), 2005",
     parameters: &[
         ZooParameter {
@@ -119,6 +120,21 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             shape: Shape::Elements,
             default: &[0.125, 0.375, 0.625, 0.875],
         },
+        // GMS at finite rate (`lugre dynamics`, `MaxwellSlip::simulate`): the slip levels
+        // follow the Stribeck curve from sum f_i down to fc; the slow loop ignores them.
+        lugre_parameter(Parameter::Fc, &[Parameter::Fc.default_value()]),
+        lugre_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
+        lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
+        ZooParameter {
+            name: "attraction",
+            unit: "N/s",
+            description: "GMS attraction C: a slipping element's force approaches its slip level at the rate C / g(v)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[super::gms::DEFAULT_ATTRACTION],
+        },
+        lugre_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
+        lugre_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
     ],
     closes_minor_loops: true,
 };
@@ -347,9 +363,16 @@ impl ZooModel {
             i.map_or(&[], |i| &values[i])
         };
         Ok(match spec.name {
-            "maxwell-slip" => {
-                Self::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
-            }
+            "maxwell-slip" => Self::MaxwellSlip(
+                MaxwellSlip::new(value("stiffness"), value("slip_force"))?.with_rate(GmsRate {
+                    fc: value("fc")[0],
+                    vs: value("vs")[0],
+                    beta: value("beta")[0],
+                    attraction: value("attraction")[0],
+                    sigma1: value("sigma1")[0],
+                    sigma2: value("sigma2")[0],
+                })?,
+            ),
             "prandtl-ishlinskii" => Self::PrandtlIshlinskii(PrandtlIshlinskii::new(
                 value("linear_weight")[0],
                 value("thresholds"),
@@ -392,7 +415,10 @@ impl ZooModel {
     /// Each parameter by name with its values, in the table's order (what reports echo).
     pub fn named(&self) -> Vec<(&'static str, Vec<f64>)> {
         let values: Vec<Vec<f64>> = match self {
-            Self::MaxwellSlip(m) => vec![m.stiffness().to_vec(), m.slip_force().to_vec()],
+            Self::MaxwellSlip(m) => [m.stiffness().to_vec(), m.slip_force().to_vec()]
+                .into_iter()
+                .chain(m.rate().values().iter().map(|&x| vec![x]))
+                .collect(),
             Self::PrandtlIshlinskii(m) => vec![
                 vec![m.linear_weight()],
                 m.thresholds().to_vec(),
