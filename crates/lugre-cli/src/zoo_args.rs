@@ -107,6 +107,11 @@ impl ZooFlags {
         !self.given.is_empty()
     }
 
+    /// Whether the flag of the parameter `name` was given.
+    pub(crate) fn gave(&self, name: &str) -> bool {
+        self.given.iter().any(|(n, _)| *n == name)
+    }
+
     /// The first flag given, as written on the command line.
     pub(crate) fn first_given(&self) -> Option<String> {
         self.given.first().map(|(name, _)| flag(name))

@@ -473,7 +473,7 @@ fn elastoplastic_friction_from_the_zoo_flags() {
             "--scenario",
             "stick-slip",
         ],
-        "model bouc-wen: the dynamics take lugre, dahl or elastoplastic",
+        "model bouc-wen: the dynamics take lugre, dahl, elastoplastic or maxwell-slip",
     );
     rejects(
         &["dynamics", "--scenario", "stick-slip", "--zba", "1e-6"],

@@ -145,7 +145,7 @@ def test_a_model_of_the_zoo_as_the_friction():
                         vs=1e-3, beta=2, zba=5e-6)
     r = lugre.dynamics(ep, scenario="stick-slip", t_end=30, samples=11)
     assert r["x"][-1] > 1 and len(r["events"]) > 4
-    with pytest.raises(ValueError, match="model maxwell-slip: the dynamics take lugre, dahl or elastoplastic"):
-        lugre.dynamics(lugre.ZooModel("maxwell-slip"), scenario="stick-slip")
+    with pytest.raises(ValueError, match="model bouc-wen: the dynamics take lugre, dahl, elastoplastic or maxwell-slip"):
+        lugre.dynamics(lugre.ZooModel("bouc-wen"), scenario="stick-slip")
     with pytest.raises(TypeError, match="model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got int"):
         lugre.dynamics(3, scenario="lag")

@@ -659,8 +659,8 @@ pub enum DynamicsError {
     NotPoints { field: Field },
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoModel,
-    /// A model of the zoo without a finite-rate form (only the elasto-plastic one has one).
-    #[error("model {model}: the dynamics take lugre, dahl or elastoplastic (the other models of the zoo have no finite-rate form here)")]
+    /// A model of the zoo without a finite-rate form (the elasto-plastic and Maxwell-slip ones have one).
+    #[error("model {model}: the dynamics take lugre, dahl, elastoplastic or maxwell-slip (the other models of the zoo have no finite-rate form here)")]
     NoFiniteRate { model: &'static str },
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoDrive,

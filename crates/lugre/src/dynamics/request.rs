@@ -86,6 +86,8 @@ pub struct Request {
     model: Option<Given<LuGre>>,
     /// The elasto-plastic break-away displacement: the friction law (D2) on the model.
     elastoplastic: Option<f64>,
+    /// GMS friction (the Maxwell-slip model at finite rate) in place of the model's.
+    gms: Option<crate::zoo::MaxwellSlip>,
     mass: Option<Given<f64>>,
     damping: Option<Given<f64>>,
     force: Option<Given<Force>>,
@@ -133,7 +135,10 @@ impl Request {
     /// A model of the zoo as the friction: the elasto-plastic one
     /// ([`crate::zoo::ZooModel::ElastoPlastic`]) is the LuGre model of its `sigma0, sigma1,
     /// sigma2, fc, fs, vs, beta` with its `zba` ([`Request::with_model`],
-    /// [`Request::with_elastoplastic`]); the front ends' one way in.
+    /// [`Request::with_elastoplastic`]); Maxwell-slip runs as GMS (its finite-rate form,
+    /// [`crate::zoo::gms`]), with the LuGre model of the same stiffness `sum k_i`, Stribeck
+    /// curve and damping as the model's stand-in where one is needed (the default `atol`);
+    /// the front ends' one way in.
     ///
     /// # Errors
     /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo; the model's checks.
@@ -142,6 +147,11 @@ impl Request {
             crate::zoo::ZooModel::ElastoPlastic(ep) => {
                 let lugre = LuGre::from_params(ep.lugre_params())?;
                 Ok(self.with_model(lugre).with_elastoplastic(ep.zba()))
+            }
+            crate::zoo::ZooModel::MaxwellSlip(ms) => {
+                let mut r = self.with_model(LuGre::from_params(gms_lugre(ms))?);
+                r.gms = Some(ms.clone());
+                Ok(r)
             }
             other => Err(DynamicsError::NoFiniteRate {
                 model: other.spec().name,
@@ -406,6 +416,7 @@ impl Request {
         let user_drives = mine.drives_the_mass();
         out.model = mine.model.or(out.model);
         out.elastoplastic = mine.elastoplastic;
+        out.gms = mine.gms;
         out.mass = mine.mass.or(out.mass);
         out.damping = mine.damping.or(out.damping);
         if mine.force.is_some() {
@@ -507,7 +518,8 @@ impl Request {
             tol,
             rate,
             pull,
-            loops: r.loops.unwrap_or(false),
+            loops: r.loops.unwrap_or(false) && r.gms.is_none(),
+            gms: r.gms.clone(),
         })
     }
 
@@ -766,11 +778,16 @@ pub struct Plan {
     pub rate: Option<f64>,
     /// The pull speed of a spring (its upward crossings are the slip onsets).
     pub pull: Option<f64>,
-    /// Whether the friction-displacement loops are computed.
+    /// Whether the friction-displacement loops are computed (not for GMS friction).
     pub loops: bool,
+    /// GMS friction (the Maxwell-slip model at finite rate) in place of the system's model
+    /// ([`Request::with_zoo`]).
+    pub gms: Option<crate::zoo::MaxwellSlip>,
 }
 
-/// What a run gives: the motion, the break-away of a ramp, the friction loops.
+/// What a run gives: the motion, the break-away of a ramp, the friction loops. With GMS
+/// friction the motion's `z` is the elements' force over their stiffness, `sum F_i / K`, there
+/// are no friction loops and the energy balance is not computed (all its terms 0).
 #[derive(Debug, Clone)]
 pub struct Outcome {
     pub motion: Motion,
@@ -797,6 +814,16 @@ impl Plan {
     /// The solver's ([`DynamicsError`]), and those of the loops' rainflow count and loop
     /// computation.
     pub fn run(&self) -> Result<Outcome, Error> {
+        if let Some(gms) = &self.gms {
+            let run =
+                super::gms::GmsRun::new(&self.system, gms.gms(), self.tol, self.rate.is_some());
+            let (motion, breakaway) = run.solve(self.t_end, &self.times)?;
+            return Ok(Outcome {
+                motion,
+                breakaway,
+                loops: Vec::new(),
+            });
+        }
         let motion = self.motion()?;
         let breakaway = match self.rate {
             Some(_) => self.system.breakaway(self.t_end, self.tol)?,
@@ -820,7 +847,26 @@ impl Plan {
     /// # Errors
     /// The solver's.
     pub fn motion(&self) -> Result<Motion, DynamicsError> {
+        if let Some(gms) = &self.gms {
+            let run = super::gms::GmsRun::new(&self.system, gms.gms(), self.tol, false);
+            return Ok(run.solve(self.t_end, &self.times)?.0);
+        }
         self.system.solve(self.t_end, &self.times, self.tol)
+    }
+}
+
+/// The LuGre parameters standing in for the GMS model `ms` (stiffness `sum k_i`, static force
+/// `sum f_i`, its Stribeck curve and damping).
+fn gms_lugre(ms: &crate::zoo::MaxwellSlip) -> crate::model::LuGreParams {
+    let r = ms.rate();
+    crate::model::LuGreParams {
+        sigma0: ms.stiffness().iter().sum(),
+        sigma1: r.sigma1,
+        sigma2: r.sigma2,
+        fc: r.fc,
+        fs: ms.slip_force().iter().sum(),
+        vs: r.vs,
+        beta: r.beta,
     }
 }
 

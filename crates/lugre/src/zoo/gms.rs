@@ -39,6 +39,20 @@ use crate::model::{Parameter, Stribeck, VelocityFn};
 /// slipping element settles to its level at the rate `C / g(0) = 5` per second.
 pub const DEFAULT_ATTRACTION: f64 = 10.0;
 
+/// The table's default Maxwell-slip elements with their proportions kept, scaled to the total
+/// stiffness `sigma0` (N/m) and the static force `fs` (N): `(stiffness, slip_force)`. GMS on
+/// the scale of a LuGre parameter set (the 1995 experiments: Table I's `sigma0 = 1e5`,
+/// `Fs = 1.5`).
+pub fn elements_on_scale(sigma0: f64, fs: f64) -> (Vec<f64>, Vec<f64>) {
+    let scaled = |name: &str, total: f64| -> Vec<f64> {
+        let spec = &super::MODELS[0];
+        let default = spec.parameter(name).map_or(&[][..], |p| p.default);
+        let sum: f64 = default.iter().sum();
+        default.iter().map(|x| x * total / sum).collect()
+    };
+    (scaled("stiffness", sigma0), scaled("slip_force", fs))
+}
+
 /// The parameters GMS adds to the Maxwell-slip elements (the slow loop does not use them):
 /// the Coulomb force `fc` (N), Stribeck velocity `vs` (m/s) and exponent `beta`, the
 /// attraction `attraction` (`C`, N/s), the micro-damping `sigma1` and the viscous coefficient
@@ -152,6 +166,21 @@ impl Gms {
     /// The finite-rate parameters.
     pub fn rate(&self) -> GmsRate {
         self.rate
+    }
+
+    /// The element stiffnesses `k_i`.
+    pub fn stiffness(&self) -> &[f64] {
+        &self.k
+    }
+
+    /// The element weights `alpha_i = f_i / F_s`.
+    pub fn weights(&self) -> &[f64] {
+        &self.alpha
+    }
+
+    /// `sigma1 / K`: the damping of (G3) per unit of `sum_i dF_i/dt`.
+    pub fn damping(&self) -> f64 {
+        self.damping
     }
 
     /// The Stribeck curve `g(v) = |s(v)|` of (G1).

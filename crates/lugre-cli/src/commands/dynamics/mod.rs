@@ -213,7 +213,7 @@ fn parse(args: &DynamicsArgs) -> Result<Request, Bad> {
     if let Some(name) = &args.scenario {
         r = r.with_scenario(Scenario::named(name)?);
     }
-    if let Some(zoo) = elastoplastic(&args.model, args.scenario.is_some())? {
+    if let Some(zoo) = zoo_friction(&args.model, args.scenario.is_some())? {
         r = r.with_zoo(&zoo)?;
     } else if let Some(model) = named_model(&args.model)? {
         r = r.with_model(model);
@@ -308,30 +308,53 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
     Ok(Some(model))
 }
 
-/// The elasto-plastic friction (`--model elastoplastic`, its `sigma0, sigma1, sigma2, fc, fs,
-/// vs, beta, zba`) for [`Request::with_zoo`]; `None` for LuGre and Dahl. On a
-/// scenario, the parameters not given are the scenario's (Table I), `zba` the table's.
+/// A model of the zoo as the friction (`--model elastoplastic` or `maxwell-slip`, GMS) for
+/// [`Request::with_zoo`], which refuses the others; `None` for LuGre and Dahl. On a scenario,
+/// the parameters not given are the scenario's (Table I) where the model has them, the others
+/// the table's, and GMS's elements Table I's scale ([`lugre::zoo::gms::elements_on_scale`]).
 ///
 /// # Errors
-/// Another model of the zoo (no finite-rate form here), the zoo's checks of the values.
-fn elastoplastic(m: &ModelArgs, on_scenario: bool) -> Result<Option<ZooModel>> {
+/// The zoo's checks of the values.
+fn zoo_friction(m: &ModelArgs, on_scenario: bool) -> Result<Option<ZooModel>> {
     let Some(spec) = m.model.zoo() else {
         return Ok(None);
     };
-    if spec.name != (FrictionLaw::ElastoPlastic { zba: 0.0 }).name() {
-        // The core's refusal, the same in every front end.
-        bail!(DynamicsError::NoFiniteRate { model: spec.name });
-    }
+    let table1 = LuGreParams::canudas_de_wit_1995();
     let base: Vec<(Parameter, f64)> = if on_scenario {
-        LuGreParams::canudas_de_wit_1995().named().to_vec()
+        let named = table1.named().to_vec();
+        named
+            .into_iter()
+            .filter(|(p, _)| spec.parameter(p.name()).is_some())
+            .collect()
     } else {
         Vec::new()
     };
-    m.build_zoo_over(&base)
+    let Some(model) = m.build_zoo_over(&base)? else {
+        return Ok(None);
+    };
+    if !(on_scenario && matches!(model, ZooModel::MaxwellSlip(_))) {
+        return Ok(Some(model));
+    }
+    let (k, f) = lugre::zoo::gms::elements_on_scale(table1.sigma0, table1.fs);
+    let mut named = model.named();
+    for (name, values) in named.iter_mut() {
+        if !m.zoo.gave(name) {
+            match *name {
+                "stiffness" => *values = k.clone(),
+                "slip_force" => *values = f.clone(),
+                _ => {}
+            }
+        }
+    }
+    let given: Vec<(&str, &[f64])> = named.iter().map(|(n, v)| (*n, v.as_slice())).collect();
+    Ok(Some(ZooModel::new(spec.name, &given)?))
 }
 
 /// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.
 fn model_json(r: &Plan) -> serde_json::Value {
+    if let Some(ms) = &r.gms {
+        return crate::zoo_args::zoo_json(&ZooModel::MaxwellSlip(ms.clone()));
+    }
     let p = r.system.model().params();
     let mut j = serde_json::json!({ "kind": r.system.law().name() });
     for (q, v) in p.named() {
@@ -345,6 +368,10 @@ fn model_json(r: &Plan) -> serde_json::Value {
 
 /// The model of the run in one line: the one the flags name, else the scenario's (Table I).
 fn model_text(m: &ModelArgs, r: &Plan) -> Result<String> {
+    if let Some(ms) = &r.gms {
+        let line = crate::zoo_args::zoo_line(&ZooModel::MaxwellSlip(ms.clone()));
+        return Ok(format!("GMS ({line})"));
+    }
     if let FrictionLaw::ElastoPlastic { zba } = r.system.law() {
         let values: Vec<String> = r
             .system
@@ -452,6 +479,20 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
     Ok(())
 }
 
+/// The energy balance in one line.
+fn write_energy(w: &mut impl Write, e: &lugre::dynamics::EnergyBalance) -> std::io::Result<()> {
+    writeln!(
+        w,
+        "energy: the drive put in {} J; stored {} -> {} J; dissipated {} J (balance off by {} J)",
+        sig(e.input, 8),
+        sig(e.stored_start, 6),
+        sig(e.stored_end, 6),
+        sig(e.dissipated, 8),
+        sig(e.residual(), 2)
+    )?;
+    Ok(())
+}
+
 /// The run in a few lines: its cost, the break-away, the slip onsets, the energy balance.
 fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<()> {
     let m = &o.motion;
@@ -478,15 +519,11 @@ fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<(
         write_slip_onsets(w, v, &o.slip_onsets())?;
     }
     let e = m.energy;
-    writeln!(
-        w,
-        "energy: the drive put in {} J; stored {} -> {} J; dissipated {} J (balance off by {} J)",
-        sig(e.input, 8),
-        sig(e.stored_start, 6),
-        sig(e.stored_end, 6),
-        sig(e.dissipated, 8),
-        sig(e.residual(), 2)
-    )?;
+    if r.gms.is_some() {
+        writeln!(w, "energy: not computed with GMS friction")?;
+    } else {
+        write_energy(w, &e)?;
+    }
     let reversals = m
         .events
         .iter()
@@ -565,11 +602,16 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Plan, o: &Outcome) -> std::io::Re
         s.steps, s.rejected, s.rhs_evaluations, s.jacobians, s.restarts
     ))?;
     let e = m.energy;
-    j.field(",\"energy\":{\"input\":", e.input)?;
-    j.field(",\"stored_start\":", e.stored_start)?;
-    j.field(",\"stored_end\":", e.stored_end)?;
-    j.field(",\"dissipated\":", e.dissipated)?;
-    j.raw("}")?;
+    if r.gms.is_some() {
+        // Not computed with GMS friction: null, not zeros.
+        j.raw(",\"energy\":null")?;
+    } else {
+        j.field(",\"energy\":{\"input\":", e.input)?;
+        j.field(",\"stored_start\":", e.stored_start)?;
+        j.field(",\"stored_end\":", e.stored_end)?;
+        j.field(",\"dissipated\":", e.dissipated)?;
+        j.raw("}")?;
+    }
     if let Some(b) = &o.breakaway {
         j.field(",\"breakaway\":{\"t\":", b.t)?;
         j.field(",\"force\":", b.force)?;
