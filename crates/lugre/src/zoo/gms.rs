@@ -53,6 +53,24 @@ pub fn elements_on_scale(sigma0: f64, fs: f64) -> (Vec<f64>, Vec<f64>) {
     (scaled("stiffness", sigma0), scaled("slip_force", fs))
 }
 
+/// The Maxwell-slip (GMS) model on the scale of the LuGre parameters `p`: the elements of
+/// [`elements_on_scale`] (`sum k_i = sigma0`, `sum f_i = Fs`), LuGre's `fc, vs, beta, sigma1,
+/// sigma2`, the default attraction. With Table I: GMS beside LuGre in the 1995 experiments.
+///
+/// # Errors
+/// The model's checks ([`super::MaxwellSlip::new`], [`GmsRate::checked`]).
+pub fn on_lugre_scale(p: &crate::model::LuGreParams) -> Result<super::MaxwellSlip, ZooError> {
+    let (k, f) = elements_on_scale(p.sigma0, p.fs);
+    super::MaxwellSlip::new(&k, &f)?.with_rate(GmsRate {
+        fc: p.fc,
+        vs: p.vs,
+        beta: p.beta,
+        attraction: DEFAULT_ATTRACTION,
+        sigma1: p.sigma1,
+        sigma2: p.sigma2,
+    })
+}
+
 /// The parameters GMS adds to the Maxwell-slip elements (the slow loop does not use them):
 /// the Coulomb force `fc` (N), Stribeck velocity `vs` (m/s) and exponent `beta`, the
 /// attraction `attraction` (`C`, N/s), the micro-damping `sigma1` and the viscous coefficient

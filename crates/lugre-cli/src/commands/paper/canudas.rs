@@ -62,6 +62,19 @@ fn run_law(
     Ok((m, setup))
 }
 
+/// The experiment with GMS friction on Table I's scale
+/// ([`lugre::zoo::gms::on_lugre_scale`]), sampled `n + 1` times (with the break-away of a
+/// ramp).
+fn run_gms(sc: Scenario, n: usize) -> Result<lugre::dynamics::Outcome> {
+    let gms = lugre::zoo::gms::on_lugre_scale(&LuGreParams::canudas_de_wit_1995())?;
+    let plan = Request::new()
+        .with_scenario(sc)
+        .with_zoo(&lugre::zoo::ZooModel::MaxwellSlip(gms))?
+        .with_samples(n as u64 + 1)?
+        .build()?;
+    Ok(plan.run()?)
+}
+
 fn paper_figure(
     number: u32,
     title: &str,
@@ -94,6 +107,7 @@ pub(crate) fn build() -> Result<Report> {
 fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let (m, _) = run(Scenario::Presliding, 6500)?;
     let (ep, _) = run_law(Scenario::Presliding, 6500, Some(ZBA))?;
+    let gms = run_gms(Scenario::Presliding, 6500)?.motion;
     let force_x = |m: &Motion| -> Vec<(f64, f64)> {
         m.drive
             .iter()
@@ -108,7 +122,8 @@ fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
         "Pre-sliding displacement x (µm) against the applied force (N), the force ramped to \
          ±1.425 N (95 % of Fs) with holds at 10-15, 35-40 and 60-65 s; dashed: the \
          elasto-plastic friction of Dupont et al. (2002) on the same Table I with zba = 5 µm \
-         (purely elastic up to 0.5 N)."
+         (purely elastic up to 0.5 N); dotted: GMS friction (Al-Bender et al. 2005) with four \
+         elements on Table I's scale (Σ k_i = σ0, Σ f_i = Fs), whose minor loops close."
             .into(),
         Figure::new("applied force [N]", "displacement x [µm]")
             .title("Fig. 2: pre-sliding displacement")
@@ -121,6 +136,11 @@ fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
                 Curve::new(force_x(&ep), LineStyle::Dashed, PALETTE[1])
                     .label("elasto-plastic")
                     .key("x_elastoplastic"),
+            )
+            .curve(
+                Curve::new(force_x(&gms), LineStyle::Dotted, PALETTE[2])
+                    .label("GMS")
+                    .key("x_gms"),
             ),
         ["force", "x_um"],
     ));
@@ -131,10 +151,15 @@ fn fig02(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
     };
     let mut rows = Vec::new();
     for t in [10.0, 15.0, 40.0, 65.0] {
-        if let (Some(x), Some(x_ep)) = (at(&m, t), at(&ep, t)) {
+        if let (Some(x), Some(x_ep), Some(x_gms)) = (at(&m, t), at(&ep, t), at(&gms, t)) {
             rows.push((
-                format!("x({t} s): LuGre / elasto-plastic"),
-                format!("{} / {} µm", sig(x * 1e6, 10), sig(x_ep * 1e6, 10)),
+                format!("x({t} s): LuGre / elasto-plastic / GMS"),
+                format!(
+                    "{} / {} / {} µm",
+                    sig(x * 1e6, 10),
+                    sig(x_ep * 1e6, 10),
+                    sig(x_gms * 1e6, 10)
+                ),
             ));
         }
     }
@@ -176,6 +201,7 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
     let rates = [1.0, 2.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 25.0, 30.0];
     let mut points = Vec::new();
     let mut points_ep = Vec::new();
+    let mut points_gms = Vec::new();
     let mut rows = Vec::new();
     for rate in rates {
         let breakaway = |zba| -> Result<_> {
@@ -196,6 +222,13 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
                 format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
             ));
         }
+        if let Some(b) = run_gms(Scenario::Breakaway { rate }, 1)?.breakaway {
+            points_gms.push((rate, b.force));
+            rows.push((
+                format!("r = {rate} N/s, GMS"),
+                format!("F = {} N at t = {} s", sig(b.force, 10), sig(b.t, 10)),
+            ));
+        }
     }
     figures.push(paper_figure(
         4,
@@ -203,7 +236,8 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
         "Break-away force (the first peak of the friction force under F = r t) against the force \
          rate r, 1 to 30 N/s: the faster the ramp, the lower the break-away force. (Above about \
          35 N/s the first maximum is a shallow bump just above Fc, no longer a break-away peak.) \
-         Dashed: the elasto-plastic friction (zba = 5 µm)."
+         Dashed: the elasto-plastic friction (zba = 5 µm); dotted: GMS on Table I's scale \
+         (attraction C = 10 N/s)."
             .into(),
         Figure::new("force rate r [N/s]", "break-away force [N]")
             .title("Fig. 4: break-away force")
@@ -216,6 +250,11 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
                 Curve::new(points_ep, LineStyle::Dashed, PALETTE[1])
                     .label("elasto-plastic")
                     .key("breakaway_elastoplastic"),
+            )
+            .curve(
+                Curve::new(points_gms, LineStyle::Dotted, PALETTE[2])
+                    .label("GMS")
+                    .key("breakaway_gms"),
             ),
         ["rate", "force"],
     ));
@@ -227,6 +266,8 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
 fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()> {
     let (m, _) = run(Scenario::StickSlip, 3000)?;
     let (ep, _) = run_law(Scenario::StickSlip, 3000, Some(ZBA))?;
+    let gms = run_gms(Scenario::StickSlip, 3000)?.motion;
+    let x_gms = gms.t.iter().zip(&gms.x).map(|(t, x)| (*t, *x)).collect();
     let x = m.t.iter().zip(&m.x).map(|(t, x)| (*t, *x)).collect();
     let x_ep = ep.t.iter().zip(&ep.x).map(|(t, x)| (*t, *x)).collect();
     let end = m.t.iter().map(|t| (*t, 0.1 * t)).collect();
@@ -234,7 +275,8 @@ fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
         6,
         "stick-slip",
         "Stick-slip: a spring of 2 N/m pulled at 0.1 m/s (dashed: its free end) and the mass's \
-         position x, with LuGre friction and with the elasto-plastic friction (zba = 5 µm)."
+         position x, with LuGre friction, with the elasto-plastic friction (zba = 5 µm) and \
+         with GMS friction on Table I's scale."
             .into(),
         Figure::new("time t [s]", "position [m]")
             .title("Fig. 6: stick-slip")
@@ -249,14 +291,20 @@ fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
                     .key("x_elastoplastic"),
             )
             .curve(
+                Curve::new(x_gms, LineStyle::Solid, PALETTE[2])
+                    .label("mass x, GMS")
+                    .key("x_gms"),
+            )
+            .curve(
                 Curve::new(end, LineStyle::Dashed, BLACK)
                     .label("free end 0.1 t")
                     .key("end"),
             ),
         ["t", "x"],
     ));
-    let mut rows = stick_slip_rows(&m, "");
-    rows.extend(stick_slip_rows(&ep, ", elasto-plastic"));
+    let mut rows = stick_slip_rows(&m, "", true);
+    rows.extend(stick_slip_rows(&ep, ", elasto-plastic", true));
+    rows.extend(stick_slip_rows(&gms, ", GMS", false));
     tables.push((6, "Stick-slip", rows));
     Ok(())
 }
@@ -308,8 +356,9 @@ fn fig08(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
     Ok(())
 }
 
-/// The numbers of a stick-slip run: slip onsets, period, energies (`tag` after each name).
-fn stick_slip_rows(m: &Motion, tag: &str) -> Vec<(String, String)> {
+/// The numbers of a stick-slip run: slip onsets, period, and the energies where computed
+/// (`energy`; not with GMS friction), `tag` after each name.
+fn stick_slip_rows(m: &Motion, tag: &str, energy: bool) -> Vec<(String, String)> {
     let onsets: Vec<f64> = m
         .events
         .iter()
@@ -329,6 +378,9 @@ fn stick_slip_rows(m: &Motion, tag: &str) -> Vec<(String, String)> {
             format!("period{tag}"),
             format!("{} s", sig(onsets[1] - onsets[0], 10)),
         ));
+    }
+    if !energy {
+        return rows;
     }
     rows.push((
         format!("energy: drive in / dissipated{tag}"),
@@ -356,7 +408,9 @@ pub(crate) fn page(r: &Report) -> String {
          experiment is also <code>lugre dynamics --scenario NAME</code>. Figs. 2, 4 and 6 show \
          beside LuGre the elasto-plastic friction of Dupont, Hayward, Armstrong and Altpeter \
          (IEEE TAC 47(5), 2002) on the same Table I with zba = 5 µm (<code>lugre dynamics \
-         --model elastoplastic --zba 5e-6 --scenario NAME</code>). <a href=\"../index.html\">\
+         --model elastoplastic --zba 5e-6 --scenario NAME</code>) and GMS friction \
+         (Al-Bender, Lampaert and Swevers, IEEE TAC 50(11), 2005) with four elements on Table \
+         I's scale (<code>lugre dynamics --model maxwell-slip --scenario NAME</code>). <a href=\"../index.html\">\
          The first report</a>: the figures of Ikhouane, Mañosa, Pujol.</p>\n",
         env!("CARGO_PKG_VERSION")
     );
