@@ -215,6 +215,11 @@ fn stick_slip_matches_scipy() {
     close("friction", &out.motion.friction, STICK_SLIP_F, 1e-9);
     // The slip onset: the spring's end outruns the mass once (v rises through 0.1 m/s).
     assert_eq!(out.slip_onsets().len(), 1, "{:?}", out.motion.events);
+    // The energy balance (G7) closes to the integration's accuracy, and the friction
+    // dissipates.
+    let e = out.motion.energy;
+    assert!(e.residual().abs() < 1e-9 * e.input, "{e:?}");
+    assert!(e.dissipated > 0.0 && e.dissipated < e.input, "{e:?}");
 }
 
 /// Break-away (Fig. 4) under F = 10 t: pre-sliding, then the elements slip and the friction

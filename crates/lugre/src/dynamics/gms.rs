@@ -21,8 +21,17 @@
 //! (`v != 0`), and every slipping element sticks once `v` reverses (`s_P v <= 0`: an event
 //! [`EventKind::VelocityZero`]). While every element sticks the rate does not depend on the
 //! sign of `v`, so a mass ringing at rest costs no events.
+//!
+//! The energy balance: the drive's work, the energy stored (kinetic, spring, `sum F_i^2 /
+//! (2 k_i)` in the elements) and the dissipation, whose friction part is
+//!
+//! ```text
+//! (G7)  F v - d/dt sum_i F_i^2 / (2 k_i) = sum_P F_i (v - F_i' / k_i) + (sigma1 / K) v sum_i F_i' + sigma2 v^2
+//! ```
+//!
+//! (a sticking element stores all its work), each integrated by the steps' own quadrature.
 
-use super::integrator::{dense, error_estimate, guess, solve_stages, Factors, Newton};
+use super::integrator::{dense, error_estimate, guess, quadrature, solve_stages, Factors, Newton};
 use super::solver::bisect;
 use super::{Breakaway, Event, EventKind, Motion, System, Tolerances};
 use crate::error::DynamicsError;
@@ -262,6 +271,7 @@ impl<'a> GmsRun<'a> {
         stops.dedup();
         let mut y: Y = [0.0, self.system.initial_velocity(), 0.0, 0.0, 1.0];
         let mut t = 0.0;
+        self.out.energy.stored_start = self.stored(t, &y);
         if times.first() == Some(&0.0) {
             self.record(t, &y);
         }
@@ -277,6 +287,7 @@ impl<'a> GmsRun<'a> {
                 self.record(t, &y);
             }
         }
+        self.out.energy.stored_end = self.stored(t, &y);
         Ok((self.out, self.breakaway))
     }
 
@@ -343,6 +354,7 @@ impl<'a> GmsRun<'a> {
         let first = (1..=LOOKS).find(|&k| self.event(&at(k as f64 / LOOKS as f64)));
         let Some(k) = first else {
             self.watch(t, y, stages, h, t_end);
+            self.account(t, h, stages);
             return (t_end, stages[2], false);
         };
         let lo = (k - 1) as f64 / LOOKS as f64;
@@ -351,10 +363,12 @@ impl<'a> GmsRun<'a> {
         let te = t + theta * h;
         self.watch(t, y, stages, h, te);
         // The event's state by a step of its own (the polynomial is of lower order inside).
-        let y_event = match self.step(t, y, theta * h, [[0.0; D]; 3]) {
-            Ok((s, _)) => s[2],
-            Err(_) => located,
+        let event_stages = match self.step(t, y, theta * h, [[0.0; D]; 3]) {
+            Ok((s, _)) => s,
+            Err(_) => std::array::from_fn(|i| at(crate::kernel::radau::C[i] * theta)),
         };
+        self.account(t, theta * h, &event_stages);
+        let y_event = event_stages[2];
         let next = self.switch(te, &y_event, &located);
         (te, next, true)
     }
@@ -404,6 +418,52 @@ impl<'a> GmsRun<'a> {
             }
             prev = f;
         }
+    }
+
+    /// The power put in by the drive and the power dissipated by the friction and the damper
+    /// in state `y` at `t` (G7): the friction's is `F v - d/dt sum F_i^2 / (2 k_i)`, 0 for a
+    /// sticking element (`F_i' = k_i v`).
+    fn power(&self, t: f64, y: &Y) -> [f64; 2] {
+        let [x, v, q, _, _] = *y;
+        let friction = self.rate(t, y).1;
+        let input = if self.system.prescribed() {
+            self.system.applied(t, x, v, q, friction) * v
+        } else {
+            self.system.power(t, &[x, v, 0.0, q], 0.0)[0]
+        };
+        let (k, alpha) = (self.gms.stiffness(), self.gms.weights());
+        let g = self.gms.g(v);
+        let lambda = self.gms.rate().attraction / g;
+        let forces = self.modes.forces(self.gms, y);
+        let elastic: f64 = (0..forces.len())
+            .filter(|&i| self.modes.slip[i] != 0.0)
+            .map(|i| forces[i] * lambda * (alpha[i] * self.modes.dir * g - forces[i]) / k[i])
+            .sum();
+        let sticking: f64 = (0..forces.len())
+            .filter(|&i| self.modes.slip[i] == 0.0)
+            .map(|i| forces[i] * v)
+            .sum();
+        let damper = self.system.damping() * v * v;
+        [input, friction * v - elastic - sticking + damper]
+    }
+
+    /// The energy stored in state `y` at `t`: kinetic, in the spring, in the elements.
+    fn stored(&self, t: f64, y: &Y) -> f64 {
+        let [x, v, q, _, _] = *y;
+        let forces = self.modes.forces(self.gms, y);
+        let elements: f64 = forces
+            .iter()
+            .zip(self.gms.stiffness())
+            .map(|(f, k)| 0.5 * f * f / k)
+            .sum();
+        self.system.stored(t, &[x, v, 0.0, q]) + elements
+    }
+
+    /// Adds the input and the dissipation over the step from `t` of size `h` with `stages`.
+    fn account(&mut self, t: f64, h: f64, stages: &[[f64; D]; 3]) {
+        let [input, dissipated] = quadrature(h, t, stages, |t, y| self.power(t, y));
+        self.out.energy.input += input;
+        self.out.energy.dissipated += dissipated;
     }
 
     /// Appends the state at `t` to the output.

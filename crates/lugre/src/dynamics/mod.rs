@@ -259,6 +259,16 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         Ok(self)
     }
 
+    /// Whether the velocity is prescribed (the mass follows it).
+    pub(crate) fn prescribed(&self) -> bool {
+        self.velocity.is_some()
+    }
+
+    /// The linear damper `c` to the ground.
+    pub(crate) fn damping(&self) -> f64 {
+        self.damping
+    }
+
     /// The velocity levels whose upward crossings are events.
     pub(crate) fn watched(&self) -> &[f64] {
         &self.watch

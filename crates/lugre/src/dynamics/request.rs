@@ -786,8 +786,8 @@ pub struct Plan {
 }
 
 /// What a run gives: the motion, the break-away of a ramp, the friction loops. With GMS
-/// friction the motion's `z` is the elements' force over their stiffness, `sum F_i / K`, there
-/// are no friction loops and the energy balance is not computed (all its terms 0).
+/// friction the motion's `z` is the elements' force over their stiffness, `sum F_i / K`, and
+/// there are no friction loops.
 #[derive(Debug, Clone)]
 pub struct Outcome {
     pub motion: Motion,

@@ -518,12 +518,7 @@ fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<(
     if let Some(v) = r.pull {
         write_slip_onsets(w, v, &o.slip_onsets())?;
     }
-    let e = m.energy;
-    if r.gms.is_some() {
-        writeln!(w, "energy: not computed with GMS friction")?;
-    } else {
-        write_energy(w, &e)?;
-    }
+    write_energy(w, &m.energy)?;
     let reversals = m
         .events
         .iter()
@@ -602,16 +597,11 @@ fn write_json<W: Write>(mut j: JsonOut<W>, r: &Plan, o: &Outcome) -> std::io::Re
         s.steps, s.rejected, s.rhs_evaluations, s.jacobians, s.restarts
     ))?;
     let e = m.energy;
-    if r.gms.is_some() {
-        // Not computed with GMS friction: null, not zeros.
-        j.raw(",\"energy\":null")?;
-    } else {
-        j.field(",\"energy\":{\"input\":", e.input)?;
-        j.field(",\"stored_start\":", e.stored_start)?;
-        j.field(",\"stored_end\":", e.stored_end)?;
-        j.field(",\"dissipated\":", e.dissipated)?;
-        j.raw("}")?;
-    }
+    j.field(",\"energy\":{\"input\":", e.input)?;
+    j.field(",\"stored_start\":", e.stored_start)?;
+    j.field(",\"stored_end\":", e.stored_end)?;
+    j.field(",\"dissipated\":", e.dissipated)?;
+    j.raw("}")?;
     if let Some(b) = &o.breakaway {
         j.field(",\"breakaway\":{\"t\":", b.t)?;
         j.field(",\"force\":", b.force)?;

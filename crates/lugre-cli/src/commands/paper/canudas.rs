@@ -302,9 +302,9 @@ fn fig06(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
             ),
         ["t", "x"],
     ));
-    let mut rows = stick_slip_rows(&m, "", true);
-    rows.extend(stick_slip_rows(&ep, ", elasto-plastic", true));
-    rows.extend(stick_slip_rows(&gms, ", GMS", false));
+    let mut rows = stick_slip_rows(&m, "");
+    rows.extend(stick_slip_rows(&ep, ", elasto-plastic"));
+    rows.extend(stick_slip_rows(&gms, ", GMS"));
     tables.push((6, "Stick-slip", rows));
     Ok(())
 }
@@ -356,9 +356,8 @@ fn fig08(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
     Ok(())
 }
 
-/// The numbers of a stick-slip run: slip onsets, period, and the energies where computed
-/// (`energy`; not with GMS friction), `tag` after each name.
-fn stick_slip_rows(m: &Motion, tag: &str, energy: bool) -> Vec<(String, String)> {
+/// The numbers of a stick-slip run: slip onsets, period, energies (`tag` after each name).
+fn stick_slip_rows(m: &Motion, tag: &str) -> Vec<(String, String)> {
     let onsets: Vec<f64> = m
         .events
         .iter()
@@ -378,9 +377,6 @@ fn stick_slip_rows(m: &Motion, tag: &str, energy: bool) -> Vec<(String, String)>
             format!("period{tag}"),
             format!("{} s", sig(onsets[1] - onsets[0], 10)),
         ));
-    }
-    if !energy {
-        return rows;
     }
     rows.push((
         format!("energy: drive in / dissipated{tag}"),
