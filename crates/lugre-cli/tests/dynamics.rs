@@ -474,10 +474,84 @@ fn elastoplastic_friction_from_the_zoo_flags() {
             "--scenario",
             "stick-slip",
         ],
-        "model bouc-wen: the dynamics take lugre, dahl or elastoplastic",
+        &format!(
+            "model bouc-wen: the dynamics take {}",
+            lugre::zoo::dynamics_model_names()
+        ),
     );
     rejects(
         &["dynamics", "--scenario", "stick-slip", "--zba", "1e-6"],
         "--zba is a parameter of --model elastoplastic",
+    );
+}
+
+/// `--model maxwell-slip` (GMS friction): on a scenario the elements take Table I's scale and
+/// the scalars Table I's values; the positions are the core's scipy reference
+/// (`crates/lugre/tests/reference/dynamics/gms_dynamics.py`, Radau at rtol 1e-12: x at 5, 8
+/// and 10 s of stick-slip); the model is echoed by name with its elements; the energy balance
+/// closes; flags given replace the scale.
+#[test]
+fn gms_friction_from_the_zoo_flags() {
+    let j = accepts_json(&[
+        "dynamics",
+        "--model",
+        "maxwell-slip",
+        "--scenario",
+        "stick-slip",
+        "--times",
+        "0,5,8,10",
+        "--rtol",
+        "1e-10",
+        "--json",
+    ]);
+    let x: Vec<f64> = j["x"].as_array().unwrap().iter().map(f).collect();
+    let want = [
+        0.0,
+        1.2486857109672413e-05,
+        0.03147184263623526,
+        0.640066030131164,
+    ];
+    for (got, want) in x.iter().zip(want) {
+        assert!((got - want).abs() <= 1e-9, "{got} vs {want}");
+    }
+    let m = &j["model"];
+    assert_eq!(m["kind"], "maxwell-slip");
+    let k: Vec<f64> = m["stiffness"].as_array().unwrap().iter().map(f).collect();
+    assert_eq!(k, [2.5e4; 4]);
+    assert_eq!(f(&m["slip_force"][3]), 1.5 * 7.0 / 16.0);
+    assert_eq!(f(&m["vs"]), 1e-3);
+    assert_eq!(f(&m["attraction"]), 10.0);
+    let e = &j["energy"];
+    let residual =
+        f(&e["input"]) - (f(&e["stored_end"]) - f(&e["stored_start"])) - f(&e["dissipated"]);
+    assert!(residual.abs() < 1e-8 * f(&e["input"]), "{e}");
+    // Elements given replace the scale; a parameter the model does not have is named.
+    let j = accepts_json(&[
+        "dynamics",
+        "--model",
+        "maxwell-slip",
+        "--scenario",
+        "breakaway",
+        "--stiffness",
+        "1e5",
+        "--slip-force",
+        "1.5",
+        "--samples",
+        "2",
+        "--json",
+    ]);
+    assert_eq!(f(&j["model"]["stiffness"][0]), 1e5);
+    assert!(f(&j["breakaway"]["force"]) > 1.0, "{}", j["breakaway"]);
+    rejects(
+        &[
+            "dynamics",
+            "--model",
+            "maxwell-slip",
+            "--scenario",
+            "lag",
+            "--zba",
+            "1e-6",
+        ],
+        "--zba is not a parameter of the Maxwell-slip model",
     );
 }

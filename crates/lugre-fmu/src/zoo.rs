@@ -293,7 +293,7 @@ impl Unit for Zoo {
 }
 
 /// The SI base-unit exponents (kg, m, s) of the units the zoo FMUs use, in FMI's spelling.
-const UNITS: [(&str, [i32; 3]); 9] = [
+const UNITS: [(&str, [i32; 3]); 10] = [
     ("s", [0, 0, 1]),
     ("m", [0, 1, 0]),
     ("m/s", [0, 1, -1]),
@@ -301,6 +301,7 @@ const UNITS: [(&str, [i32; 3]); 9] = [
     ("J", [1, 2, -2]),
     ("N/m", [1, 0, -2]),
     ("N.s/m", [1, 0, -1]),
+    ("N/s", [1, 1, -3]),
     ("1/m", [0, -1, 0]),
     ("1", [0, 0, 0]),
 ];

@@ -139,13 +139,25 @@ def test_a_prescribed_velocity_reports_its_drive():
     assert abs(e["input"] - (e["stored_end"] - e["stored_start"]) - e["dissipated"]) < 1e-9 * e["input"]
 
 
+def test_gms_friction_from_a_zoo_model():
+    # The Maxwell-slip model runs as GMS through the core's Request::with_zoo (no code here):
+    # stick-slip on Table I's scale, the positions of the core's scipy reference
+    # (crates/lugre/tests/reference/dynamics/gms_dynamics.py, Radau at rtol 1e-12).
+    m = lugre.ZooModel("maxwell-slip", stiffness=[2.5e4] * 4,
+                       slip_force=[1.5 / 16, 4.5 / 16, 7.5 / 16, 10.5 / 16],
+                       fc=1, vs=1e-3, beta=2, sigma1=1e5 ** 0.5, sigma2=0.4)
+    r = lugre.dynamics(m, scenario="stick-slip", times=[0, 5, 8, 10], rtol=1e-10)
+    want = [0.0, 1.2486857109672413e-05, 0.03147184263623526, 0.640066030131164]
+    assert max(abs(a - b) for a, b in zip(r["x"], want)) <= 1e-9
+
+
 def test_a_model_of_the_zoo_as_the_friction():
     # The elasto-plastic law runs; the other models of the zoo are refused by the core.
     ep = lugre.ZooModel("elastoplastic", sigma0=1e5, sigma1=300, sigma2=0.4, fc=1, fs=1.5,
                         vs=1e-3, beta=2, zba=5e-6)
     r = lugre.dynamics(ep, scenario="stick-slip", t_end=30, samples=11)
     assert r["x"][-1] > 1 and len(r["events"]) > 4
-    with pytest.raises(ValueError, match="model maxwell-slip: the dynamics take lugre, dahl or elastoplastic"):
-        lugre.dynamics(lugre.ZooModel("maxwell-slip"), scenario="stick-slip")
+    with pytest.raises(ValueError, match="model bouc-wen: the dynamics take lugre, dahl, maxwell-slip or elastoplastic"):
+        lugre.dynamics(lugre.ZooModel("bouc-wen"), scenario="stick-slip")
     with pytest.raises(TypeError, match="model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got int"):
         lugre.dynamics(3, scenario="lag")

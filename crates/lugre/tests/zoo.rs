@@ -703,7 +703,7 @@ fn the_table_names_what_is_wrong() {
         .to_string();
     assert_eq!(
         e,
-        "the maxwell-slip model has no parameter 'sigma0' (its parameters: stiffness, slip_force)"
+        "the maxwell-slip model has no parameter 'sigma0' (its parameters: stiffness, slip_force, fc, vs, beta, attraction, sigma1, sigma2)"
     );
     let e = ZooModel::new("prandtl-ishlinskii", &[("linear_weight", &[1.0, 2.0])]).unwrap_err();
     assert_eq!(e.to_string(), "linear_weight takes one value, got 2");

@@ -790,8 +790,12 @@ fn an_unnamed_break_away_displacement_follows_the_scale() {
     let given = ZooModel::new("elastoplastic", &[("zba", &[0.25])]).unwrap();
     assert_eq!(zba(&given), 0.25);
     // Over a base: unnamed values replaced, named kept, zba following the new scale.
-    let over = given.over(&[("sigma0", 2.0), ("zba", 0.1)]).unwrap();
+    let over = given
+        .over(&[("sigma0", vec![2.0]), ("zba", vec![0.1])])
+        .unwrap();
     assert_eq!((zba(&over), over.named()[0].1[0]), (0.25, 2.0));
-    let over = table_i.over(&[("sigma0", 7.0), ("fc", 2.0)]).unwrap();
+    let over = table_i
+        .over(&[("sigma0", vec![7.0]), ("fc", vec![2.0])])
+        .unwrap();
     assert_eq!((zba(&over), over.named()[0].1[0]), (0.5 * 2.0 / 1e5, 1e5));
 }

@@ -304,7 +304,7 @@ static void dynamics(const LugreModel *m) {
     const double *zp[1] = {&zv};
     size_t zl[1] = {1};
     OK(lugre_zoo_new("elastoplastic", 1, zn, zp, zl, &ep));
-    OK(lugre_zoo_new("maxwell-slip", 0, NULL, NULL, NULL, &ms));
+    OK(lugre_zoo_new("bouc-wen", 0, NULL, NULL, NULL, &ms));
     OK(lugre_dynamics_new(&d));
     OK(lugre_dynamics_set_zoo(d, ep));
     OK(lugre_dynamics_set(d, "force_rate", &rate, 1));
@@ -315,7 +315,7 @@ static void dynamics(const LugreModel *m) {
     CHECK(fabs(s.energy_input - (s.stored_end - s.stored_start) - s.dissipated) < 1e-6);
     lugre_motion_free(run);
     CHECK(lugre_dynamics_set_zoo(d, ms) == LUGRE_STATUS_INVALID_ARGUMENT);
-    CHECK(strstr(lugre_last_error(), "model maxwell-slip: the dynamics take") != NULL);
+    CHECK(strstr(lugre_last_error(), "model bouc-wen: the dynamics take") != NULL);
     CHECK(lugre_dynamics_set_zoo(d, NULL) == LUGRE_STATUS_NULL_POINTER);
     lugre_dynamics_free(d);
     lugre_zoo_free(ep);

@@ -11,6 +11,7 @@ use crate::kernel::radau::{ALPH, BETA, C, DD, T, TI, U1};
 use num_complex::Complex64;
 use std::ops::{Mul, SubAssign};
 
+/// The dimension of the LuGre system's state `(x, v, z, q)`; the integrator takes any `D`.
 pub(super) const N: usize = 4;
 
 /// Newton iterations before a step is given up (radau5's `NIT`).
@@ -19,11 +20,11 @@ pub(super) const NIT: usize = 7;
 /// A solved step: the end state and the stage values (the collocation polynomial's nodes at
 /// `t + c_i h`), plus the work done.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Step {
-    pub y: [f64; N],
-    pub stages: [[f64; N]; 3],
+pub(super) struct Step<const D: usize> {
+    pub y: [f64; D],
+    pub stages: [[f64; D]; 3],
     /// The stage increments `Z_i = stages_i - y0` (the error estimate's input).
-    z: [[f64; N]; 3],
+    z: [[f64; D]; 3],
     pub evaluations: usize,
     pub iterations: usize,
     /// Newton's observed contraction rate (0 when one iteration sufficed).
@@ -33,15 +34,15 @@ pub(super) struct Step {
 /// The factored iteration matrices of steps of size `h` with the Jacobian `J`:
 /// `E1 = (U1 / h) I - J` (real) and `E2 = ((ALPH + i BETA) / h) I - J` (complex). One
 /// factorization serves every step of that size and Jacobian.
-pub(super) struct Factors {
+pub(super) struct Factors<const D: usize> {
     h: f64,
-    e1: Lu<f64>,
-    e2: Lu<Complex64>,
+    e1: Lu<f64, D>,
+    e2: Lu<Complex64, D>,
 }
 
-impl Factors {
+impl<const D: usize> Factors<D> {
     /// `None` if either matrix is singular.
-    pub fn new(jac: &[[f64; N]; N], h: f64) -> Option<Self> {
+    pub fn new(jac: &[[f64; D]; D], h: f64) -> Option<Self> {
         let fac1 = U1 / h;
         let fac2 = Complex64::new(ALPH / h, BETA / h);
         let e1 = std::array::from_fn(|r| {
@@ -86,15 +87,15 @@ pub(super) struct Newton {
 /// Newton from the stage increments `guess`, to `newton.tol` in the norm scaled by `scal`.
 /// `Err(q)`: Newton diverges or would not converge within [`NIT`] iterations; retry with the
 /// step times `q` (radau5's estimate of the size that would converge).
-pub(super) fn solve_stages(
-    f: &impl Fn(f64, &[f64; N]) -> [f64; N],
-    factors: &Factors,
+pub(super) fn solve_stages<const D: usize>(
+    f: &impl Fn(f64, &[f64; D]) -> [f64; D],
+    factors: &Factors<D>,
     t: f64,
-    y: &[f64; N],
-    scal: &[f64; N],
-    guess: [[f64; N]; 3],
+    y: &[f64; D],
+    scal: &[f64; D],
+    guess: [[f64; D]; 3],
     newton: &mut Newton,
-) -> Result<Step, f64> {
+) -> Result<Step<D>, f64> {
     let h = factors.h;
     let (fac1, alphn, betan) = (U1 / h, ALPH / h, BETA / h);
     let mut z = guess;
@@ -102,7 +103,7 @@ pub(super) fn solve_stages(
     newton.faccon = newton.faccon.max(f64::EPSILON).powf(0.8);
     let (mut theta, mut dyno_old, mut thq_old) = (0.0, 0.0, 0.0);
     for iteration in 1..=NIT {
-        let fz: [[f64; N]; 3] = std::array::from_fn(|i| {
+        let fz: [[f64; D]; 3] = std::array::from_fn(|i| {
             let yi = std::array::from_fn(|r| y[r] + z[i][r]);
             f(t + C[i] * h, &yi)
         });
@@ -117,12 +118,12 @@ pub(super) fn solve_stages(
         let d1 = factors.e1.solve(rhs1);
         let d23 = factors.e2.solve(rhs23);
         let mut dyno = 0.0;
-        for r in 0..N {
+        for r in 0..D {
             dyno += (d1[r] / scal[r]).powi(2)
                 + (d23[r].re / scal[r]).powi(2)
                 + (d23[r].im / scal[r]).powi(2);
         }
-        let dyno = (dyno / (3 * N) as f64).sqrt();
+        let dyno = (dyno / (3 * D) as f64).sqrt();
         if !dyno.is_finite() {
             return Err(0.5);
         }
@@ -157,7 +158,7 @@ pub(super) fn solve_stages(
             }
         }
         dyno_old = dyno.max(f64::EPSILON);
-        for r in 0..N {
+        for r in 0..D {
             w[0][r] += d1[r];
             w[1][r] += d23[r].re;
             w[2][r] += d23[r].im;
@@ -179,7 +180,7 @@ pub(super) fn solve_stages(
 }
 
 /// `out_i = sum_j m[i][j] v_j` over the three stages, component by component.
-fn transform(m: &[[f64; 3]; 3], v: &[[f64; N]; 3]) -> [[f64; N]; 3] {
+fn transform<const D: usize>(m: &[[f64; 3]; 3], v: &[[f64; D]; 3]) -> [[f64; D]; 3] {
     std::array::from_fn(|i| std::array::from_fn(|r| (0..3).map(|j| m[i][j] * v[j][r]).sum()))
 }
 
@@ -189,21 +190,21 @@ fn transform(m: &[[f64; 3]; 3], v: &[[f64; N]; 3]) -> [[f64; N]; 3] {
 /// after a rejection) an estimate above 1 is filtered once more through `f_start`, the rate at
 /// the step's start time, at `y + err`. Returns the root mean square of `err / scal` (at least
 /// 1e-10) and the evaluations of the rate.
-pub(super) fn error_estimate(
-    f_start: impl Fn(&[f64; N]) -> [f64; N],
-    factors: &Factors,
-    y: &[f64; N],
-    f0: &[f64; N],
-    step: &Step,
-    scal: &[f64; N],
+pub(super) fn error_estimate<const D: usize>(
+    f_start: impl Fn(&[f64; D]) -> [f64; D],
+    factors: &Factors<D>,
+    y: &[f64; D],
+    f0: &[f64; D],
+    step: &Step<D>,
+    scal: &[f64; D],
     refine: bool,
 ) -> (f64, usize) {
     let h = factors.h;
-    let f2: [f64; N] =
+    let f2: [f64; D] =
         std::array::from_fn(|r| (0..3).map(|i| DD[i] * step.z[i][r]).sum::<f64>() / h);
-    let norm = |e: &[f64; N]| {
-        let s: f64 = (0..N).map(|r| (e[r] / scal[r]).powi(2)).sum();
-        (s / N as f64).sqrt().max(1e-10)
+    let norm = |e: &[f64; D]| {
+        let s: f64 = (0..D).map(|r| (e[r] / scal[r]).powi(2)).sum();
+        (s / D as f64).sqrt().max(1e-10)
     };
     let e = factors.e1.solve(std::array::from_fn(|r| f0[r] + f2[r]));
     let err = norm(&e);
@@ -217,9 +218,9 @@ pub(super) fn error_estimate(
 
 /// The collocation polynomial of a step `(y0, stages)` at `theta` of the step (`0` its start,
 /// `1` its end): Lagrange through the nodes `0, c1, c2, 1`.
-pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; N] {
+pub(super) fn dense<const D: usize>(y0: &[f64; D], stages: &[[f64; D]; 3], theta: f64) -> [f64; D] {
     let values = [y0, &stages[0], &stages[1], &stages[2]];
-    let mut out = [0.0; N];
+    let mut out = [0.0; D];
     for (k, value) in values.iter().enumerate() {
         let mut l = 1.0;
         for (m, &node) in NODES.iter().enumerate() {
@@ -227,7 +228,7 @@ pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; 
                 l *= (theta - node) / (NODES[k] - node);
             }
         }
-        for r in 0..N {
+        for r in 0..D {
             out[r] += l * value[r];
         }
     }
@@ -238,7 +239,12 @@ pub(super) fn dense(y0: &[f64; N], stages: &[[f64; N]; 3], theta: f64) -> [f64; 
 /// step `(y0, stages)`) and is `ratio` times its size: the collocation polynomial extrapolated
 /// (radau5's starting values; `from = 1` for the next step, `0` for a step of its own to a
 /// point inside this one).
-pub(super) fn guess(y0: &[f64; N], stages: &[[f64; N]; 3], from: f64, ratio: f64) -> [[f64; N]; 3] {
+pub(super) fn guess<const D: usize>(
+    y0: &[f64; D],
+    stages: &[[f64; D]; 3],
+    from: f64,
+    ratio: f64,
+) -> [[f64; D]; 3] {
     let base = dense(y0, stages, from);
     std::array::from_fn(|i| {
         let p = dense(y0, stages, from + C[i] * ratio);
@@ -248,11 +254,11 @@ pub(super) fn guess(y0: &[f64; N], stages: &[[f64; N]; 3], from: f64, ratio: f64
 
 /// `integral f(t, y(t)) dt` over a step of size `h` from `t0`, by the Radau quadrature at its
 /// stages (the weights are the tableau's last row): as accurate as the step.
-pub(super) fn quadrature(
+pub(super) fn quadrature<const D: usize>(
     h: f64,
     t0: f64,
-    stages: &[[f64; N]; 3],
-    f: impl Fn(f64, &[f64; N]) -> [f64; 2],
+    stages: &[[f64; D]; 3],
+    f: impl Fn(f64, &[f64; D]) -> [f64; 2],
 ) -> [f64; 2] {
     use crate::kernel::radau::A;
     let mut out = [0.0; 2];
@@ -292,22 +298,22 @@ impl Scalar for Complex64 {
     }
 }
 
-/// LU factors with partial pivoting of an `N x N` matrix.
-pub(super) struct Lu<S> {
-    a: [[S; N]; N],
-    pivot: [usize; N],
+/// LU factors with partial pivoting of an `D x D` matrix.
+pub(super) struct Lu<S, const D: usize> {
+    a: [[S; D]; D],
+    pivot: [usize; D],
     /// The reciprocals of the pivots: the solves multiply (a complex division costs several
     /// multiplications and two divisions).
-    inverse_pivots: [S; N],
+    inverse_pivots: [S; D],
 }
 
-impl<S: Scalar> Lu<S> {
+impl<S: Scalar, const D: usize> Lu<S, D> {
     /// `None` if singular (or not finite).
-    fn new(mut a: [[S; N]; N]) -> Option<Self> {
-        let mut pivot = [0; N];
-        for k in 0..N {
+    fn new(mut a: [[S; D]; D]) -> Option<Self> {
+        let mut pivot = [0; D];
+        for k in 0..D {
             let mut p = k;
-            for i in k + 1..N {
+            for i in k + 1..D {
                 if a[i][k].size() > a[p][k].size() {
                     p = i;
                 }
@@ -323,7 +329,7 @@ impl<S: Scalar> Lu<S> {
             for row in a.iter_mut().skip(k + 1) {
                 let factor = row[k] * inverse;
                 row[k] = factor;
-                for c in k + 1..N {
+                for c in k + 1..D {
                     row[c] -= factor * pivot_row[c];
                 }
             }
@@ -336,20 +342,20 @@ impl<S: Scalar> Lu<S> {
         })
     }
 
-    fn solve(&self, mut b: [S; N]) -> [S; N] {
+    fn solve(&self, mut b: [S; D]) -> [S; D] {
         // The factorization swapped whole rows (multipliers included): all the swaps first,
         // then the unit lower triangle.
-        for k in 0..N {
+        for k in 0..D {
             b.swap(k, self.pivot[k]);
         }
-        for k in 0..N {
-            for i in k + 1..N {
+        for k in 0..D {
+            for i in k + 1..D {
                 let m = self.a[i][k] * b[k];
                 b[i] -= m;
             }
         }
-        for k in (0..N).rev() {
-            for j in k + 1..N {
+        for k in (0..D).rev() {
+            for j in k + 1..D {
                 let m = self.a[k][j] * b[j];
                 b[k] -= m;
             }
@@ -369,7 +375,7 @@ mod tests {
         y: &[f64; N],
         h: f64,
         scal: f64,
-    ) -> Step {
+    ) -> Step<N> {
         let factors = Factors::new(jac, h).unwrap();
         let mut newton = Newton {
             faccon: 1.0,

@@ -1,7 +1,8 @@
 //! Closed-loop friction dynamics: a mass driven by forces, a spring and a controller, with
 //! LuGre (or Dahl) friction, or the elasto-plastic friction of Dupont et al. (2002)
-//! ([`FrictionLaw`], (D1)-(D2)), solved to a stated accuracy with the instants where the
-//! velocity changes sign located as events.
+//! ([`FrictionLaw`], (D1)-(D2)), or GMS friction (the Maxwell-slip model at finite rate, an
+//! event-driven run of its own: `gms.rs`, (G6)), solved to a stated accuracy with the instants
+//! where the velocity changes sign located as events.
 //!
 //! ```text
 //! M x'' = F_d(t, x, x', q) - F                 x(0) = x'(0) = 0, z(0) = 0, q(0) = 0
@@ -38,6 +39,7 @@
 //! 1e-7 and 1e-8, in a sliding phase, with or without the sign splitting); its figures are in
 //! BENCHMARKS.md. Accuracy against an independent scipy reference: `tests/dynamics.rs`.
 
+mod gms;
 mod integrator;
 mod loops;
 mod profile;
@@ -255,6 +257,21 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         }
         self.watch.push(level);
         Ok(self)
+    }
+
+    /// Whether the velocity is prescribed (the mass follows it).
+    pub(crate) fn prescribed(&self) -> bool {
+        self.velocity.is_some()
+    }
+
+    /// The linear damper `c` to the ground.
+    pub(crate) fn damping(&self) -> f64 {
+        self.damping
+    }
+
+    /// The velocity levels whose upward crossings are events.
+    pub(crate) fn watched(&self) -> &[f64] {
+        &self.watch
     }
 
     /// The friction law ([`FrictionLaw::LuGre`] unless [`System::with_elastoplastic`]).

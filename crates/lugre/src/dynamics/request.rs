@@ -89,6 +89,8 @@ pub struct Request {
     /// A model of the zoo as the friction, its parameters not named taken from the scenario's
     /// model where it has them ([`Request::with_zoo`]).
     zoo: Option<crate::zoo::ZooModel>,
+    /// GMS friction (the Maxwell-slip model at finite rate) in place of the model's.
+    gms: Option<crate::zoo::MaxwellSlip>,
     mass: Option<Given<f64>>,
     damping: Option<Given<f64>>,
     force: Option<Given<Force>>,
@@ -136,13 +138,17 @@ impl Request {
     /// A model of the zoo as the friction: the elasto-plastic one
     /// ([`crate::zoo::ZooKind::ElastoPlastic`]) is the LuGre model of its `sigma0, sigma1,
     /// sigma2, fc, fs, vs, beta` with its `zba` ([`Request::with_model`],
-    /// [`Request::with_elastoplastic`]); the front ends' one way in. On a scenario, each of
-    /// those the model's maker did not name ([`crate::zoo::ZooModel::is_named`]) is the
-    /// scenario's (Table I), so that every front end runs the same friction for the same
-    /// named values.
+    /// [`Request::with_elastoplastic`]); Maxwell-slip runs as GMS (its finite-rate form,
+    /// [`crate::zoo::gms`]), with the LuGre model of the same stiffness `sum k_i`, Stribeck
+    /// curve and damping as the model's stand-in where one is needed (the default `atol`);
+    /// the front ends' one way in. On a scenario, each parameter the model's maker did not
+    /// name ([`crate::zoo::ZooModel::is_named`]) is the scenario's (Table I) where the model
+    /// has it, and GMS's elements not named are the table's scaled to Table I's stiffness and
+    /// static force ([`crate::zoo::gms::elements_on_scale`]), so that every front end runs the
+    /// same friction for the same named values.
     ///
     /// # Errors
-    /// [`DynamicsError::NoFiniteRate`] for the other models of the zoo.
+    /// [`DynamicsError::NoFiniteRate`] for the models of the zoo without a finite-rate form.
     pub fn with_zoo(mut self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
         if !model.spec().finite_rate {
             return Err(DynamicsError::NoFiniteRate {
@@ -159,14 +165,25 @@ impl Request {
         let Some(zoo) = self.zoo.take() else {
             return Ok(());
         };
-        let values: Vec<(&str, f64)> = base
-            .map(|m| m.params().named().map(|(p, v)| (p.name(), v)).to_vec())
-            .unwrap_or_default();
+        let mut values: Vec<(&str, Vec<f64>)> = Vec::new();
+        if let Some(m) = base {
+            let p = m.params();
+            values.extend(p.named().map(|(q, v)| (q.name(), vec![v])));
+            let (k, f) = crate::zoo::gms::elements_on_scale(p.sigma0, p.fs);
+            values.extend([("stiffness", k), ("slip_force", f)]);
+        }
         let zoo = zoo.over(&values)?;
-        if let crate::zoo::ZooKind::ElastoPlastic(ep) = zoo.kind() {
-            let lugre = LuGre::from_params(ep.lugre_params())?;
-            self.model = user(Field::Model, lugre);
-            self.elastoplastic = Some(ep.zba());
+        match zoo.kind() {
+            crate::zoo::ZooKind::ElastoPlastic(ep) => {
+                let lugre = LuGre::from_params(ep.lugre_params())?;
+                self.model = user(Field::Model, lugre);
+                self.elastoplastic = Some(ep.zba());
+            }
+            crate::zoo::ZooKind::MaxwellSlip(ms) => {
+                self.model = user(Field::Model, LuGre::from_params(gms_lugre(ms))?);
+                self.gms = Some(ms.clone());
+            }
+            _ => {}
         }
         Ok(())
     }
@@ -534,7 +551,8 @@ impl Request {
             tol,
             rate,
             pull,
-            loops: r.loops.unwrap_or(false),
+            loops: r.loops.unwrap_or(false) && r.gms.is_none(),
+            gms: r.gms.clone(),
         })
     }
 
@@ -793,11 +811,16 @@ pub struct Plan {
     pub rate: Option<f64>,
     /// The pull speed of a spring (its upward crossings are the slip onsets).
     pub pull: Option<f64>,
-    /// Whether the friction-displacement loops are computed.
+    /// Whether the friction-displacement loops are computed (not for GMS friction).
     pub loops: bool,
+    /// GMS friction (the Maxwell-slip model at finite rate) in place of the system's model
+    /// ([`Request::with_zoo`]).
+    pub gms: Option<crate::zoo::MaxwellSlip>,
 }
 
-/// What a run gives: the motion, the break-away of a ramp, the friction loops.
+/// What a run gives: the motion, the break-away of a ramp, the friction loops. With GMS
+/// friction the motion's `z` is the elements' force over their stiffness, `sum F_i / K`, and
+/// there are no friction loops.
 #[derive(Debug, Clone)]
 pub struct Outcome {
     pub motion: Motion,
@@ -824,6 +847,16 @@ impl Plan {
     /// The solver's ([`DynamicsError`]), and those of the loops' rainflow count and loop
     /// computation.
     pub fn run(&self) -> Result<Outcome, Error> {
+        if let Some(gms) = &self.gms {
+            let run =
+                super::gms::GmsRun::new(&self.system, gms.gms(), self.tol, self.rate.is_some());
+            let (motion, breakaway) = run.solve(self.t_end, &self.times)?;
+            return Ok(Outcome {
+                motion,
+                breakaway,
+                loops: Vec::new(),
+            });
+        }
         let motion = self.motion()?;
         let breakaway = match self.rate {
             Some(_) => self.system.breakaway(self.t_end, self.tol)?,
@@ -847,7 +880,26 @@ impl Plan {
     /// # Errors
     /// The solver's.
     pub fn motion(&self) -> Result<Motion, DynamicsError> {
+        if let Some(gms) = &self.gms {
+            let run = super::gms::GmsRun::new(&self.system, gms.gms(), self.tol, false);
+            return Ok(run.solve(self.t_end, &self.times)?.0);
+        }
         self.system.solve(self.t_end, &self.times, self.tol)
+    }
+}
+
+/// The LuGre parameters standing in for the GMS model `ms` (stiffness `sum k_i`, static force
+/// `sum f_i`, its Stribeck curve and damping).
+fn gms_lugre(ms: &crate::zoo::MaxwellSlip) -> crate::model::LuGreParams {
+    let r = ms.rate();
+    crate::model::LuGreParams {
+        sigma0: ms.stiffness().iter().sum(),
+        sigma1: r.sigma1,
+        sigma2: r.sigma2,
+        fc: r.fc,
+        fs: ms.slip_force().iter().sum(),
+        vs: r.vs,
+        beta: r.beta,
     }
 }
 

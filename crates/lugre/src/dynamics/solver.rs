@@ -49,6 +49,11 @@ impl Tolerances {
     pub fn rtol(&self) -> f64 {
         self.rtol
     }
+
+    /// The absolute tolerance on displacements given, if any.
+    pub fn atol(&self) -> Option<f64> {
+        self.atol
+    }
 }
 
 impl Default for Tolerances {
@@ -396,7 +401,7 @@ struct Piece {
     t: f64,
     h: f64,
     y0: [f64; N],
-    step: Step,
+    step: Step<N>,
     jac: [[f64; N]; N],
 }
 
@@ -418,7 +423,7 @@ struct Control {
     jac: Option<[[f64; N]; N]>,
     /// Whether `jac` was computed for the current step (not reused).
     fresh: bool,
-    factors: Option<Factors>,
+    factors: Option<Factors<N>>,
     newton: Newton,
     f0: [f64; N],
     first: bool,
@@ -450,7 +455,7 @@ impl Control {
 
 /// The point where `past` turns true in `[lo, hi]` (false at `lo`, true at `hi`), by
 /// bisection to the resolution of `f64`: the smallest `theta` found with `past(theta)`.
-fn bisect(past: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
+pub(super) fn bisect(past: impl Fn(f64) -> bool, mut lo: f64, mut hi: f64) -> f64 {
     for _ in 0..80 {
         let mid = 0.5 * (lo + hi);
         if mid <= lo || mid >= hi {

@@ -18,7 +18,12 @@
 //! `u` until it saturates at `±Delta_i` (the segment map Z1 of [`crate::zoo`], with `z = u - p`
 //! and threshold `Delta_i`). The initial-loading curve from rest is
 //! `F(u) = sum_i k_i min(u, Delta_i)`, increasing, slope `sum k_i` at 0.
+//!
+//! At finite rate the elements are GMS's ([`super::gms`]): the slip level follows the
+//! Stribeck curve and a slipping element relaxes to it at a finite rate; the model carries
+//! those parameters ([`MaxwellSlip::with_rate`]) and its slow limit is (M1)-(M3).
 
+use super::gms::{Gms, GmsRate};
 use super::{check_elements, check_lengths, MasingState, PlayBank, ZooLoop};
 use crate::error::ZooError;
 use crate::input::TurningPoints;
@@ -29,6 +34,8 @@ pub struct MaxwellSlip {
     stiffness: Vec<f64>,
     slip_force: Vec<f64>,
     bank: PlayBank,
+    /// The elements at finite rate (GMS).
+    gms: Gms,
 }
 
 impl MaxwellSlip {
@@ -60,7 +67,46 @@ impl MaxwellSlip {
             stiffness: stiffness.to_vec(),
             slip_force: slip_force.to_vec(),
             bank: PlayBank::new(delta, c, 0.0),
+            gms: Gms::new(stiffness, slip_force, GmsRate::default())?,
         })
+    }
+
+    /// The finite-rate (GMS) parameters `rate` (the slow loop does not use them).
+    ///
+    /// # Errors
+    /// [`ZooError::Domain`] naming the parameter: `fc, vs, beta, attraction > 0`,
+    /// `sigma1, sigma2 >= 0`.
+    pub fn with_rate(mut self, rate: GmsRate) -> Result<Self, ZooError> {
+        self.gms = Gms::new(&self.stiffness, &self.slip_force, rate)?;
+        Ok(self)
+    }
+
+    /// The finite-rate (GMS) parameters.
+    pub fn rate(&self) -> GmsRate {
+        self.gms.rate()
+    }
+
+    /// The model at finite rate (GMS).
+    pub fn gms(&self) -> &Gms {
+        &self.gms
+    }
+
+    /// The GMS friction force at each time `t[j]` of the motion `u(t)`, linear between the
+    /// samples, from rest at `t[0]`: exact ([`Gms::simulate`]).
+    ///
+    /// ```
+    /// use lugre::zoo::MaxwellSlip;
+    /// let model = MaxwellSlip::new(&[1.0, 1.0], &[0.5, 1.5])?;
+    /// // Slowly to u = 3 (both elements slip at their levels, near 0.5 + 1.5), back to 1.
+    /// let f = model.simulate(&[0.0, 3e6, 5e6], &[0.0, 3.0, 1.0])?;
+    /// assert!((f[1] - 2.0).abs() < 1e-5 && (f[2] + 1.0).abs() < 1e-5);
+    /// # Ok::<(), lugre::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// See [`Gms::simulate`].
+    pub fn simulate(&self, t: &[f64], u: &[f64]) -> Result<Vec<f64>, ZooError> {
+        self.gms.simulate(t, u)
     }
 
     pub fn stiffness(&self) -> &[f64] {

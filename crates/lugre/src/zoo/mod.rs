@@ -61,6 +61,7 @@ mod bouc_wen;
 mod elastoplastic;
 mod element;
 mod engine;
+pub mod gms;
 mod history;
 mod maxwell;
 mod prandtl;

@@ -11,6 +11,7 @@
 //! LuGre's default loop on one figure; the literature has no canonical element
 //! distributions for these models.
 
+use super::gms::GmsRate;
 use super::{
     BoucWen, ElastoPlastic, MaxwellSlip, PrandtlIshlinskii, Segmental, ZooElement, ZooLoop,
 };
@@ -104,7 +105,7 @@ pub struct ZooModelSpec {
 const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
     name: "maxwell-slip",
     label: "Maxwell-slip",
-    equations: "F = sum_i k_i z_i, element i sticks (dz_i = du) until |k_i z_i| = f_i, then slips",
+    equations: "F = sum_i k_i z_i, element i sticks (dz_i = du) until |k_i z_i| = f_i, then slips; at finite rate GMS: slip level f_i g(v) / sum f_j, a slipping element relaxes to it at the rate C / g(v)",
     reference: "Al-Bender, Lampaert and Swevers, IEEE Trans. Automatic Control 50(11), 2005",
     parameters: &[
         ZooParameter {
@@ -123,9 +124,24 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             shape: Shape::Elements,
             default: &[0.125, 0.375, 0.625, 0.875],
         },
+        // GMS at finite rate (`lugre dynamics`, `MaxwellSlip::simulate`): the slip levels
+        // follow the Stribeck curve from sum f_i down to fc; the slow loop ignores them.
+        lugre_parameter(Parameter::Fc, &[Parameter::Fc.default_value()]),
+        lugre_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
+        lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
+        ZooParameter {
+            name: "attraction",
+            unit: "N/s",
+            description: "GMS attraction C: a slipping element's force approaches its slip level at the rate C / g(v)",
+            domain: Domain::Positive,
+            shape: Shape::Scalar,
+            default: &[super::gms::DEFAULT_ATTRACTION],
+        },
+        lugre_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
+        lugre_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
     ],
     closes_minor_loops: true,
-    finite_rate: false,
+    finite_rate: true,
 };
 
 const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
@@ -314,6 +330,16 @@ pub struct ZooModel {
     given: u64,
 }
 
+impl From<ZooKind> for ZooModel {
+    /// The model of a concrete kind, every parameter named.
+    fn from(kind: ZooKind) -> Self {
+        Self {
+            kind,
+            given: u64::MAX,
+        }
+    }
+}
+
 // Each model's parameters fit the bits of `ZooModel::given`.
 const _: () = {
     let mut i = 0;
@@ -380,9 +406,16 @@ impl ZooModel {
             i.map_or(&[], |i| &values[i])
         };
         let kind = match spec.name {
-            "maxwell-slip" => {
-                ZooKind::MaxwellSlip(MaxwellSlip::new(value("stiffness"), value("slip_force"))?)
-            }
+            "maxwell-slip" => ZooKind::MaxwellSlip(
+                MaxwellSlip::new(value("stiffness"), value("slip_force"))?.with_rate(GmsRate {
+                    fc: value("fc")[0],
+                    vs: value("vs")[0],
+                    beta: value("beta")[0],
+                    attraction: value("attraction")[0],
+                    sigma1: value("sigma1")[0],
+                    sigma2: value("sigma2")[0],
+                })?,
+            ),
             "prandtl-ishlinskii" => ZooKind::PrandtlIshlinskii(PrandtlIshlinskii::new(
                 value("linear_weight")[0],
                 value("thresholds"),
@@ -424,14 +457,14 @@ impl ZooModel {
         Ok(Self { kind, given })
     }
 
-    /// This model with `base`'s value for each scalar parameter of the same name that was not
+    /// This model with `base`'s values for each parameter of the same name that was not
     /// named (a scenario's Table I under the elasto-plastic model), the named ones kept, the
     /// others at their defaults (a default that follows other values, as elasto-plastic's
     /// `zba`, follows the new ones). The result remembers the same names as named.
     ///
     /// # Errors
     /// The model's own checks of the values together (e.g. `zba < fc / sigma0`).
-    pub fn over(&self, base: &[(&str, f64)]) -> Result<Self, ZooError> {
+    pub fn over(&self, base: &[(&str, Vec<f64>)]) -> Result<Self, ZooError> {
         let named = self.named();
         let given: Vec<(&str, Vec<f64>)> = named
             .into_iter()
@@ -440,8 +473,7 @@ impl ZooModel {
                     return Some((name, values));
                 }
                 let b = base.iter().find(|(b, _)| b.eq_ignore_ascii_case(name));
-                b.filter(|_| values.len() == 1)
-                    .map(|(_, v)| (name, vec![*v]))
+                b.map(|(_, v)| (name, v.clone()))
             })
             .collect();
         let refs: Vec<(&str, &[f64])> = given.iter().map(|(n, v)| (*n, v.as_slice())).collect();
@@ -480,7 +512,10 @@ impl ZooModel {
     /// Each parameter by name with its values, in the table's order (what reports echo).
     pub fn named(&self) -> Vec<(&'static str, Vec<f64>)> {
         let values: Vec<Vec<f64>> = match &self.kind {
-            ZooKind::MaxwellSlip(m) => vec![m.stiffness().to_vec(), m.slip_force().to_vec()],
+            ZooKind::MaxwellSlip(m) => [m.stiffness().to_vec(), m.slip_force().to_vec()]
+                .into_iter()
+                .chain(m.rate().values().iter().map(|&x| vec![x]))
+                .collect(),
             ZooKind::PrandtlIshlinskii(m) => vec![
                 vec![m.linear_weight()],
                 m.thresholds().to_vec(),
@@ -576,8 +611,8 @@ impl ZooModel {
     pub fn simulate(&self, t: &[f64], u: &[f64]) -> Result<Vec<f64>, ZooError> {
         check_samples(t, u)?;
         match &self.kind {
-            // Rate-independent for now; the Generalized Maxwell-slip's finite rate goes here.
-            ZooKind::MaxwellSlip(_) => self.exact_path(u),
+            // The Generalized Maxwell-slip model: Maxwell-slip at finite rate.
+            ZooKind::MaxwellSlip(m) => m.simulate(t, u),
             ZooKind::PrandtlIshlinskii(_) | ZooKind::BoucWen(_) => self.exact_path(u),
             ZooKind::ElastoPlastic(m) => m.simulate_rate(t, u),
         }

@@ -9,6 +9,7 @@ use lugre::dynamics::{
 };
 use lugre::fit::Family;
 use lugre::model::Parameter;
+use lugre::zoo::{ZooKind, ZooModel};
 use lugre::{DynamicsError, LuGre};
 use std::io::Write;
 
@@ -311,6 +312,9 @@ fn named_model(m: &ModelArgs) -> Result<Option<LuGre>> {
 
 /// The model as JSON: `kind` (`lugre` or the zoo's `elastoplastic`) and each parameter by name.
 fn model_json(r: &Plan) -> serde_json::Value {
+    if let Some(ms) = &r.gms {
+        return crate::zoo_args::zoo_json(&ZooModel::from(ZooKind::MaxwellSlip(ms.clone())));
+    }
     let p = r.system.model().params();
     let mut j = serde_json::json!({ "kind": r.system.law().name() });
     for (q, v) in p.named() {
@@ -324,6 +328,10 @@ fn model_json(r: &Plan) -> serde_json::Value {
 
 /// The model of the run in one line: the one the flags name, else the scenario's (Table I).
 fn model_text(m: &ModelArgs, r: &Plan) -> Result<String> {
+    if let Some(ms) = &r.gms {
+        let line = crate::zoo_args::zoo_line(&ZooModel::from(ZooKind::MaxwellSlip(ms.clone())));
+        return Ok(format!("GMS ({line})"));
+    }
     if let FrictionLaw::ElastoPlastic { zba } = r.system.law() {
         let values: Vec<String> = r
             .system
@@ -431,6 +439,20 @@ fn report(args: &DynamicsArgs, r: &Plan, o: &Outcome) -> Result<()> {
     Ok(())
 }
 
+/// The energy balance in one line.
+fn write_energy(w: &mut impl Write, e: &lugre::dynamics::EnergyBalance) -> std::io::Result<()> {
+    writeln!(
+        w,
+        "energy: the drive put in {} J; stored {} -> {} J; dissipated {} J (balance off by {} J)",
+        sig(e.input, 8),
+        sig(e.stored_start, 6),
+        sig(e.stored_end, 6),
+        sig(e.dissipated, 8),
+        sig(e.residual(), 2)
+    )?;
+    Ok(())
+}
+
 /// The run in a few lines: its cost, the break-away, the slip onsets, the energy balance.
 fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<()> {
     let m = &o.motion;
@@ -456,16 +478,7 @@ fn write_summary(w: &mut impl Write, r: &Plan, o: &Outcome) -> std::io::Result<(
     if let Some(v) = r.pull {
         write_slip_onsets(w, v, &o.slip_onsets())?;
     }
-    let e = m.energy;
-    writeln!(
-        w,
-        "energy: the drive put in {} J; stored {} -> {} J; dissipated {} J (balance off by {} J)",
-        sig(e.input, 8),
-        sig(e.stored_start, 6),
-        sig(e.stored_end, 6),
-        sig(e.dissipated, 8),
-        sig(e.residual(), 2)
-    )?;
+    write_energy(w, &m.energy)?;
     let reversals = m
         .events
         .iter()

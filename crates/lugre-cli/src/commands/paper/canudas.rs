@@ -4,7 +4,7 @@
 //! numbers, in `canudas1995/` (its own `index.html`, linked from the first).
 
 use anyhow::Result;
-use lugre::dynamics::{EventKind, Motion, Request, Scenario, Tolerances};
+use lugre::dynamics::{EventKind, Motion, Outcome, Request, Scenario};
 use lugre::zoo::{ZooModel, ZooModelSpec, MODELS};
 use lugre::{LuGre, LuGreParams};
 use std::fmt::Write;
@@ -83,23 +83,18 @@ impl Friction {
         ][i % 4]
     }
 
-    /// The experiment's setup with this friction, Table I and 1 kg.
-    fn setup(self, sc: Scenario) -> Result<lugre::dynamics::Setup> {
-        let r = Request::new().with_scenario(sc);
+    /// The experiment with this friction, Table I and 1 kg, at the solver's default tolerance,
+    /// sampled `n + 1` times (with the break-away of a ramp), through the one request every
+    /// front end builds.
+    fn run(self, sc: Scenario, n: usize) -> Result<Outcome> {
+        let r = Request::new()
+            .with_scenario(sc)
+            .with_samples(n as u64 + 1)?;
         let r = match self {
             Friction::LuGre => r.with_model(table1()?),
             Friction::Zoo(spec) => r.with_zoo(&ZooModel::new(spec.name, &[])?)?,
         };
-        Ok(r.build()?)
-    }
-
-    /// The experiment's run at the solver's default tolerance, sampled `n + 1` times.
-    fn run(self, sc: Scenario, n: usize) -> Result<Motion> {
-        let setup = self.setup(sc)?;
-        let times = lugre::simulate::uniform_times(0.0, setup.t_end, 1, n);
-        Ok(setup
-            .system
-            .solve(setup.t_end, &times, Tolerances::default())?)
+        Ok(r.build()?.run()?)
     }
 }
 
@@ -107,7 +102,7 @@ impl Friction {
 fn runs(sc: Scenario, n: usize) -> Result<Vec<(Friction, Motion)>> {
     Friction::all()
         .into_iter()
-        .map(|f| Ok((f, f.run(sc, n)?)))
+        .map(|f| Ok((f, f.run(sc, n)?.motion)))
         .collect()
 }
 
@@ -243,8 +238,8 @@ fn fig04(figures: &mut Vec<PaperFigure>, tables: &mut Vec<Numbers>) -> Result<()
     for (i, f) in Friction::all().into_iter().enumerate() {
         let mut points = Vec::new();
         for rate in rates {
-            let setup = f.setup(Scenario::Breakaway { rate })?;
-            if let Some(b) = setup.system.breakaway(setup.t_end, Tolerances::default())? {
+            // The break-away is located by the solver, whatever the samples.
+            if let Some(b) = f.run(Scenario::Breakaway { rate }, 1)?.breakaway {
                 points.push((rate, b.force));
                 rows.push((
                     format!("r = {rate} N/s{}", f.after()),
