@@ -476,7 +476,7 @@ impl ZooModel {
 
 /// The name of every model lugre has, comma-separated: LuGre and Dahl, then the zoo's.
 pub fn model_names() -> String {
-    let classic = crate::fit::Family::ALL.map(|f| f.name());
+    let classic = crate::model::FAMILY_NAMES;
     let names: Vec<&str> = classic
         .into_iter()
         .chain(MODELS.iter().map(|m| m.name))
