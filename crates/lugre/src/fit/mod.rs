@@ -208,6 +208,56 @@ impl FitReport {
     }
 }
 
+/// What every fit reports beyond its parameters' names and values, as one view over a
+/// [`FitReport`] or a [`ZooFitReport`], for the front ends to show alike.
+#[derive(Debug, Clone, Copy)]
+pub struct FitSummary<'a> {
+    pub estimates: &'a [Estimate],
+    pub rms: f64,
+    pub samples: usize,
+    pub dof: usize,
+    pub t_quantile: f64,
+    pub condition_number: f64,
+    pub correlation: &'a [Vec<f64>],
+    pub iterations: usize,
+    pub evaluations: usize,
+    pub starts: usize,
+    pub converged: bool,
+    pub termination: &'a str,
+    pub turning_points: Option<usize>,
+    pub noise: Option<&'a NoiseLevels>,
+    pub warnings: &'a [FitWarning],
+    pub covariance: Covariance,
+    pub serial: &'a SerialCorrelation,
+    pub fitted: &'a [f64],
+}
+
+impl FitReport {
+    /// The view the front ends show.
+    pub fn summary(&self) -> FitSummary<'_> {
+        FitSummary {
+            estimates: &self.estimates,
+            rms: self.rms,
+            samples: self.samples,
+            dof: self.dof,
+            t_quantile: self.t_quantile,
+            condition_number: self.condition_number,
+            correlation: &self.correlation,
+            iterations: self.iterations,
+            evaluations: self.evaluations,
+            starts: self.starts,
+            converged: self.converged,
+            termination: &self.termination,
+            turning_points: self.turning_points,
+            noise: self.noise.as_ref(),
+            warnings: &self.warnings,
+            covariance: self.covariance,
+            serial: &self.serial,
+            fitted: &self.fitted,
+        }
+    }
+}
+
 /// Options of the full fit: the defaults, changed with `with_*` (checked when the fit starts).
 ///
 /// ```

@@ -398,6 +398,30 @@ impl ZooFitReport {
     pub fn rss(&self) -> f64 {
         self.rms * self.rms * self.samples as f64
     }
+
+    /// The view the front ends show, as for the LuGre fit (one start).
+    pub fn summary(&self) -> super::FitSummary<'_> {
+        super::FitSummary {
+            estimates: &self.estimates,
+            rms: self.rms,
+            samples: self.samples,
+            dof: self.dof,
+            t_quantile: self.t_quantile,
+            condition_number: self.condition_number,
+            correlation: &self.correlation,
+            iterations: self.iterations,
+            evaluations: self.evaluations,
+            starts: 1,
+            converged: self.converged,
+            termination: &self.termination,
+            turning_points: Some(self.turning_points),
+            noise: Some(&self.noise),
+            warnings: &self.warnings,
+            covariance: self.covariance,
+            serial: &self.serial,
+            fitted: &self.fitted,
+        }
+    }
 }
 
 /// The slow-loop fit (ZF1) of `spec`'s model to `(u_i, F_i)`: one or more periods of a slow

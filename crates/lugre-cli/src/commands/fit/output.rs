@@ -3,8 +3,8 @@
 
 use anyhow::Result;
 use lugre::fit::{
-    Covariance, Estimate, Family, FitKind, FitReport, FitWarning, NoiseLevels, PositionHandling,
-    SerialCorrelation,
+    Covariance, Estimate, Family, FitKind, FitReport, FitSummary, FitWarning, NoiseLevels,
+    PositionHandling,
 };
 use lugre::model::{normal, Parameter};
 use std::io::Write;
@@ -262,36 +262,20 @@ pub(super) fn print_table(
     print_statistics(w, &summary)
 }
 
-/// What the table and the JSON document of every fit show: a LuGre or Dahl fit's
-/// ([`Summary::of`]) or a model of the zoo's.
+/// What the table and the JSON document of every fit show: the core's view of a LuGre or Dahl
+/// fit ([`Summary::of`]) or of a model of the zoo's, with each estimate's label and key.
 pub(super) struct Summary<'a> {
-    pub(super) estimates: &'a [Estimate],
+    pub(super) core: FitSummary<'a>,
     /// Each estimate's label in the table and key in the JSON document.
     pub(super) labels: Vec<String>,
     pub(super) keys: Vec<String>,
-    pub(super) rms: f64,
-    pub(super) samples: usize,
-    pub(super) dof: usize,
-    pub(super) t_quantile: f64,
-    pub(super) condition_number: f64,
-    pub(super) correlation: &'a [Vec<f64>],
-    pub(super) iterations: usize,
-    pub(super) evaluations: usize,
-    pub(super) starts: usize,
-    pub(super) converged: bool,
-    pub(super) termination: &'a str,
-    pub(super) turning_points: Option<usize>,
-    pub(super) noise: Option<&'a NoiseLevels>,
-    pub(super) warnings: &'a [FitWarning],
-    pub(super) covariance: Covariance,
-    pub(super) serial: &'a SerialCorrelation,
 }
 
 impl<'a> Summary<'a> {
     /// A LuGre or Dahl fit's.
     pub(super) fn of(r: &'a FitReport, normal: bool) -> Self {
         Self {
-            estimates: &r.estimates,
+            core: r.summary(),
             labels: r
                 .estimates
                 .iter()
@@ -302,23 +286,15 @@ impl<'a> Summary<'a> {
                 .iter()
                 .map(|e| key(e.name, normal).to_string())
                 .collect(),
-            rms: r.rms,
-            samples: r.samples,
-            dof: r.dof,
-            t_quantile: r.t_quantile,
-            condition_number: r.condition_number,
-            correlation: &r.correlation,
-            iterations: r.iterations,
-            evaluations: r.evaluations,
-            starts: r.starts,
-            converged: r.converged,
-            termination: &r.termination,
-            turning_points: r.turning_points,
-            noise: r.noise.as_ref(),
-            warnings: &r.warnings,
-            covariance: r.covariance,
-            serial: &r.serial,
         }
+    }
+}
+
+impl<'a> std::ops::Deref for Summary<'a> {
+    type Target = FitSummary<'a>;
+
+    fn deref(&self) -> &FitSummary<'a> {
+        &self.core
     }
 }
 

@@ -172,26 +172,11 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
 }
 
 fn summary(r: &ZooFitReport) -> Summary<'_> {
+    let names: Vec<String> = r.estimates.iter().map(|e| e.name.to_string()).collect();
     Summary {
-        estimates: &r.estimates,
-        labels: r.estimates.iter().map(|e| e.name.to_string()).collect(),
-        keys: r.estimates.iter().map(|e| e.name.to_string()).collect(),
-        rms: r.rms,
-        samples: r.samples,
-        dof: r.dof,
-        t_quantile: r.t_quantile,
-        condition_number: r.condition_number,
-        correlation: &r.correlation,
-        iterations: r.iterations,
-        evaluations: r.evaluations,
-        starts: 1,
-        converged: r.converged,
-        termination: &r.termination,
-        turning_points: Some(r.turning_points),
-        noise: Some(&r.noise),
-        warnings: &r.warnings,
-        covariance: r.covariance,
-        serial: &r.serial,
+        core: r.summary(),
+        labels: names.clone(),
+        keys: names,
     }
 }
 
