@@ -71,6 +71,17 @@ const FLOATS_PER_SAMPLE: usize = 48;
 ///   "full"), "fixed", "values" (the identified model), "model", "kind" and "stages" (each
 ///   stage's dict as its kind returns it, without "values").
 ///
+/// The models of the zoo (as `lugre fit --model NAME`): model="maxwell-slip",
+/// "prandtl-ishlinskii", "bouc-wen" or "elastoplastic", or a lugre.ZooModel (its values the
+/// start values, an element model's thresholds its own), fits the model's slow loop (its exact
+/// periodic loop through the record's turning points) to (u, f): every parameter of the loop,
+/// an element model's weights as "stiffness[i]" or "weights[i]" with the thresholds held on a
+/// grid spanning the record's amplitude (elements=N of them, default 4); fix, free, start (a
+/// number, or a list for an element array), noise and gate as for LuGre; "values" is the fitted
+/// model (lugre.ZooModel(r["model"], **r["values"])). The elasto-plastic fc, sigma1, sigma2,
+/// vs, beta do not enter the slow loop: freeing one raises ValueError; the LuGre fits' other
+/// keywords (t, bounds, x0, starts, interpolate, normal, v, stribeck, presliding) are refused.
+///
 /// Arguments:
 ///
 /// * u, f: the input and the measured friction force, equal-length sequences or arrays of
