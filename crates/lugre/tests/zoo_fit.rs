@@ -268,3 +268,21 @@ fn intervals_cover_the_truth_at_their_nominal_rate() {
         assert!(covered >= 88, "{model} {name}: {covered} of {fitted}");
     }
 }
+
+/// A model's values as the starts (a front end's model object): its defaults on the edge of
+/// their domains (Bouc-Wen's kx = 0, n = 1) are moved inside, and the fit gives the same
+/// parameters.
+#[test]
+fn a_model_on_the_edge_of_its_domain_starts_the_fit() {
+    let (u, f) = record("bouc-wen");
+    let model = lugre::zoo::ZooModel::new("bouc-wen", &[]).unwrap();
+    let mut spec = ZooFitSpec::new("bouc-wen").unwrap();
+    for (name, values) in model.named() {
+        spec = spec.set(name, &values).unwrap();
+    }
+    let r = fit_zoo(&spec, &u, &f, SlowOptions::default()).unwrap();
+    for (name, value) in truth("bouc-wen") {
+        let e = r.estimate(name).unwrap();
+        assert!((e.value / value - 1.0).abs() < 1e-8, "{name}: {}", e.value);
+    }
+}

@@ -50,6 +50,10 @@
 //! `fc = fs`, which meets the model's constraint `zba < fc / sigma0` wherever the loop itself
 //! is defined (`zba < fs / sigma0`).
 //!
+//! A start given ([`ZooFitSpec::set`], a front end's model object) is used as it is, except on
+//! the edge of its domain (Bouc-Wen's default `kx = 0`, `n = 1`), where the maps have no
+//! variable: that parameter starts from the data.
+//!
 //! Standard errors, intervals, identifiability, at-bound reports and lack-of-fit warnings are
 //! the LuGre fit's (S1-S4, C1-C4): one set of rules for every model.
 
@@ -463,7 +467,18 @@ pub fn fit_zoo(
             STEP
         },
     };
+    // A start given on the edge of its domain (a model's kx = 0, n = 1) starts from the data
+    // instead: the log and logistic maps have no variable there.
+    let given: Vec<bool> = given
+        .iter()
+        .zip(&free)
+        .zip(&bounds)
+        .map(|((&g, &i), b)| g && b.contains(values[i]))
+        .collect();
     start(&mut out, &sl, u, f, &given, &mut values)?;
+    for (j, &i) in free.iter().enumerate() {
+        values[i] = bounds[j].pull_inside(values[i]);
+    }
     let start_values: Vec<f64> = free.iter().map(|&i| values[i]).collect();
     let space = Space {
         values: &values,
