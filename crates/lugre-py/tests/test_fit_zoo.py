@@ -69,3 +69,12 @@ def test_refusals_name_the_argument():
     with pytest.raises(ValueError, match="kx, kw, rho cannot be identified") as e:
         lugre.fit(u, f, model="bouc-wen")
     assert e.value.parameters == ("kx", "kw", "rho")
+
+
+def test_a_model_on_its_defaults_starts_the_fit():
+    # Bouc-Wen's defaults kx = 0 and n = 1 lie on the edge of their domains: those start
+    # from the data, the others from the model.
+    u, f = record("bouc-wen")
+    r = lugre.fit(u, f, model=lugre.ZooModel("bouc-wen"))
+    assert r["parameters"]["n"]["value"] == pytest.approx(2.0, rel=1e-8)
+    assert r["parameters"]["kx"]["value"] == pytest.approx(0.1, rel=1e-8)
