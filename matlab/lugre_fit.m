@@ -12,7 +12,7 @@ function r = lugre_fit(u, f, options)
 %   options, a struct whose fields are all optional:
 %     kind     'slow' (default) or 'full' (needs t)
 %     t        the sample times (full fit only)
-%     model    'lugre' (default) or 'dahl' (parameters rho and fc)
+%     model    'lugre' (default), 'dahl' (parameters rho and fc) or a model of the zoo
 %     params   the values the parameters that are not fitted keep: a parameter struct as
 %              lugre_loop's (LuGre), or struct('rho', ..., 'fc', ...) (Dahl); without it a
 %              held parameter must be given one (free parameters start from the data)
@@ -21,6 +21,14 @@ function r = lugre_fit(u, f, options)
 %     free     names fitted besides the default ones, e.g. 'beta' (full fit)
 %     x0       the initial bristle deflection [m] (full fit; default 0)
 %     starts   the number of start points (full fit; default 3)
+%     elements an element model of the zoo: the number of elements on the grid spanning the
+%              record's amplitude (default 4)
+%
+%   A model of the zoo (options.model = 'maxwell-slip', 'prandtl-ishlinskii', 'bouc-wen' or
+%   'elastoplastic', as `lugre fit --model NAME`) is fitted to its slow loop: every parameter
+%   of the loop by name (an element's weight as 'stiffness[0]'), options.params the start
+%   values (a struct of the model's parameters; an element model's thresholds its own), fix
+%   and free as above; r.values is the fitted model (r.values.model its name).
 %
 %   r, a struct:
 %     r.names          the fitted parameters' names (a cell column, in the model's order)

@@ -734,7 +734,7 @@ static LugreModel *fit_model(const mxArray *params, int dahl) {
     return m;
 }
 
-static const char *FIT_OPTIONS = "kind, t, model, params, fix, free, x0, starts";
+static const char *FIT_OPTIONS = "kind, t, model, params, fix, free, x0, starts, elements";
 
 static mxArray *logical_column(const int32_t *v, size_t n) {
     mxArray *a = mxCreateLogicalMatrix(n, 1);
@@ -801,6 +801,101 @@ static mxArray *fit_result(const LugreFitResult *r, const double *f, const doubl
     return struct_of(20, fields, v);
 }
 
+/* The fitted model of the zoo as a struct: every parameter by name (element arrays as rows),
+ * and its name in the field `model` (lugre_loop(u, r.values) runs it). */
+static mxArray *zoo_values(const LugreZoo *zoo, const char *model) {
+    LugreZooModelInfo info;
+    check(lugre_zoo_model_info(model, &info));
+    const char **names = (const char **)mxCalloc(info.parameters + 1, sizeof(char *));
+    mxArray **v = (mxArray **)mxCalloc(info.parameters + 1, sizeof(mxArray *));
+    for (size_t i = 0; i < info.parameters; i++) {
+        LugreZooParameter p;
+        check(lugre_zoo_parameter(model, i, &p));
+        size_t len = 0;
+        check(lugre_zoo_value(zoo, i, NULL, 0, &len));
+        v[i] = mxCreateDoubleMatrix(1, len, mxREAL);
+        check(lugre_zoo_value(zoo, i, mxGetPr(v[i]), len, NULL));
+        names[i] = p.name;
+    }
+    names[info.parameters] = "model";
+    v[info.parameters] = mxCreateString(info.name);
+    return struct_of((int)info.parameters + 1, names, v);
+}
+
+/* r = lugre_fit(u, f, struct('model', NAME, ...)) for a model of the zoo: the C ABI's
+ * lugre_zoo_fit, its result with the fields of the LuGre fit's. */
+static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const double *u,
+                               const double *f, size_t n, size_t elements, const char *fix,
+                               const char *free_names) {
+    LugreZoo *start = NULL;
+    LugreModel *dahl = NULL;
+    if (params != NULL && !mxIsEmpty(params)) {
+        const mxArray *p = options_struct(params, "options.params", "struct('kw', 1.5)");
+        check(zoo_of(model, p, &start, &dahl));
+    }
+    LugreZooFit *fit = NULL;
+    double *fitted = doubles(n);
+    LugreStatus st = lugre_zoo_fit(model, start, u, f, n, elements, fix, free_names, &fit, fitted);
+    lugre_zoo_free(start);
+    check(st);
+    LugreZooFitSummary s;
+    check(lugre_zoo_fit_summary(fit, &s));
+    size_t k = s.estimates;
+    mxArray *names = mxCreateCellMatrix(k, 1);
+    double *value = doubles(k), *se = doubles(k);
+    int32_t *at_bound = (int32_t *)mxCalloc(k > 0 ? k : 1, sizeof(int32_t));
+    mxArray *ci95 = mxCreateDoubleMatrix(k, 2, mxREAL);
+    double *ci = mxGetPr(ci95);
+    for (size_t j = 0; j < k; j++) {
+        LugreZooEstimate e;
+        check(lugre_zoo_fit_estimate(fit, j, &e));
+        mxSetCell(names, j, mxCreateString(e.name));
+        value[j] = e.value;
+        se[j] = e.std_error;
+        ci[j] = e.ci95_lo;
+        ci[j + k] = e.ci95_hi;
+        at_bound[j] = e.at_bound;
+    }
+    LugreZoo *fitted_model = NULL;
+    check(lugre_zoo_fit_model(fit, &fitted_model));
+    LugreZooModelInfo info;
+    check(lugre_zoo_model_info(model, &info));
+    mxArray *values = zoo_values(fitted_model, model);
+    lugre_zoo_free(fitted_model);
+    lugre_zoo_fit_free(fit);
+    double *residuals = doubles(n);
+    for (size_t i = 0; i < n; i++) residuals[i] = f[i] - fitted[i];
+    if (!s.converged)
+        mexWarnMsgIdAndTxt("lugre:notConverged",
+                           "the fit did not converge; the best point found is reported");
+    static const char *fields[] = {
+        "names", "value", "stderr", "ci95", "at_bound", "values", "rms", "samples", "dof",
+        "t_quantile", "condition_number", "iterations", "evaluations", "starts", "converged",
+        "turning_points", "model", "kind", "fitted", "residuals"};
+    mxArray *v[] = {
+        names,
+        column(value, k),
+        column(se, k),
+        ci95,
+        logical_column(at_bound, k),
+        values,
+        mxCreateDoubleScalar(s.rms),
+        mxCreateDoubleScalar((double)s.samples),
+        mxCreateDoubleScalar((double)s.dof),
+        mxCreateDoubleScalar(s.t_quantile),
+        mxCreateDoubleScalar(s.condition_number),
+        mxCreateDoubleScalar((double)s.iterations),
+        mxCreateDoubleScalar((double)s.evaluations),
+        mxCreateDoubleScalar(1),
+        mxCreateLogicalScalar(s.converged != 0),
+        mxCreateDoubleScalar((double)s.turning_points),
+        mxCreateString(info.name),
+        mxCreateString("slow"),
+        column(fitted, n),
+        column(residuals, n)};
+    return struct_of(20, fields, v);
+}
+
 /* r = lugre_fit(u, f, options): the C ABI's fit, its result as a struct (see lugre_fit.m). */
 static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nf = 0, nt = 0;
@@ -815,6 +910,8 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
     int full = 0;
     const double *t = NULL;
     const mxArray *params = NULL;
+    char zoo[64] = "lugre";
+    size_t elements = 0;
     for (int k = 0; s != NULL && k < mxGetNumberOfFields(s); k++) {
         const char *name = mxGetFieldNameByNumber(s, k);
         const mxArray *v = mxGetFieldByNumber(s, 0, k);
@@ -827,10 +924,14 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
         } else if (strcmp(name, "t") == 0) {
             t = vector(v, "options.t", &nt);
         } else if (strcmp(name, "model") == 0) {
-            option_text(v, "options.model", text, sizeof text);
-            if (strcmp(text, "lugre") != 0 && strcmp(text, "dahl") != 0)
-                mexErrMsgIdAndTxt(ERROR_ID, "options.model must be 'lugre' or 'dahl', got '%s'", text);
-            o.family = strcmp(text, "dahl") == 0 ? LUGRE_FAMILY_DAHL : LUGRE_FAMILY_LUGRE;
+            option_text(v, "options.model", zoo, sizeof zoo);
+            o.family = strcmp(zoo, "dahl") == 0 ? LUGRE_FAMILY_DAHL : LUGRE_FAMILY_LUGRE;
+        } else if (strcmp(name, "elements") == 0) {
+            double count = scalar(v, "options.elements");
+            /* The count's bounds are the core's; here only what a size_t holds. */
+            if (!(count >= 1 && count <= 1e15 && count == floor(count)))
+                mexErrMsgIdAndTxt(ERROR_ID, "options.elements must be a whole number from 1 to 64, got %g", count);
+            elements = (size_t)count;
         } else if (strcmp(name, "params") == 0) {
             params = v;
         } else if (strcmp(name, "fix") == 0) {
@@ -850,6 +951,14 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
             mexErrMsgIdAndTxt(ERROR_ID, "unknown option 'options.%s' (options: %s)", name, FIT_OPTIONS);
         }
     }
+    if (strcmp(zoo, "lugre") != 0 && strcmp(zoo, "dahl") != 0) {
+        /* A model of the zoo (the C ABI refuses an unknown name, naming every model). */
+        if (full || t != NULL || o.x0 != 0 || o.starts != 0)
+            mexErrMsgIdAndTxt(ERROR_ID, "options.model '%s' is fitted to its slow loop: options.kind, t, x0 and starts do not apply", zoo);
+        return zoo_fit_struct(zoo, params, u, f, n, elements, o.fix, o.free);
+    }
+    if (elements != 0)
+        fail("options.elements applies to an element model of the zoo (options.model = 'maxwell-slip' or 'prandtl-ishlinskii')");
     if (!full && (o.x0 != 0 || o.starts != 0))
         mexErrMsgIdAndTxt(ERROR_ID, "options.%s applies to the full fit (options.kind = 'full')",
                           o.x0 != 0 ? "x0" : "starts");

@@ -196,6 +196,22 @@ function failures = test_lugre()
   failures += expect(isempty(fr.turning_points) && strcmp(fr.kind, 'full') && fr.starts == 2, ...
                      'fit: the full fit''s report');
   failures += raises(@() lugre_fit(x, f, struct('kind', 'full')), 'a full fit (options.kind = ''full'') needs the sample times options.t');
+  % A model of the zoo: the slow-loop fit of a Bouc-Wen loop, as `lugre fit --model bouc-wen`.
+  bw = lugre_loop([2 -2], struct('model', 'bouc-wen', 'kx', 0.1, 'n', 2), 400);
+  [~, k] = unique(bw.curve.rho(1:end - 1));
+  u = bw.curve.u(k); f = bw.curve.y(k) + 1e-3 * (mod((0:numel(k) - 1)' * 7919, 13) - 6);
+  fr = lugre_fit(u, f, struct('model', 'bouc-wen'));
+  j = cli(['fit --input ' record({'u', 'F'}, [u f]) ' --model bouc-wen --json']);
+  failures += expect(isequal(fr.names, {'kx'; 'kw'; 'rho'; 'sigma'; 'n'}) && strcmp(fr.model, 'bouc-wen'), ...
+                     'fit: a zoo model''s parameters by name');
+  failures += expect(isequal(fr.value, numbers(j, 'value')) && isequal(fr.stderr, numbers(j, 'stderr')), ...
+                     'fit: a zoo model''s estimates and standard errors, as the CLI''s');
+  failures += expect(fr.values.n == fr.value(5) && strcmp(fr.values.model, 'bouc-wen'), ...
+                     'fit: the fitted zoo model''s values');
+  failures += raises(@() lugre_fit(u, f, struct('model', 'elastoplastic', 'free', 'fc')), ...
+                     'fc does not enter the slow loop of the elastoplastic model');
+  failures += raises(@() lugre_fit(u, f, struct('elements', 3)), ...
+                     'options.elements applies to an element model of the zoo');
   if failures == 0
     printf('test_lugre: all checks passed\n');
   else

@@ -77,6 +77,12 @@ fn model_parser() -> impl clap::builder::TypedValueParser<Value = ModelKind> {
         .map(|name: String| ModelKind::from_name(&name))
 }
 
+/// A model of the zoo with the values its flags give, by name.
+pub(crate) type ZooGiven = (
+    &'static lugre::zoo::ZooModelSpec,
+    Vec<(&'static str, Vec<f64>)>,
+);
+
 /// Model flags shared by every command. Defaults: the paper's Examples 2-3.
 /// `--columns` and `--scale`: which column of a data file holds what, and the factors that
 /// bring its values to SI units and lugre's sign convention.
@@ -392,11 +398,26 @@ impl ModelArgs {
         let Some(spec) = self.model.zoo() else {
             return Ok(None);
         };
-        let classic: Vec<(Parameter, f64)> = Parameter::ALL
+        crate::zoo_args::build(spec, self.preset.is_some(), &self.zoo, &self.classic()).map(Some)
+    }
+
+    /// The LuGre and Dahl flags given, by parameter.
+    fn classic(&self) -> Vec<(Parameter, f64)> {
+        Parameter::ALL
             .into_iter()
             .filter_map(|p| self.given(p).map(|v| (p, v)))
-            .collect();
-        crate::zoo_args::build(spec, self.preset.is_some(), &self.zoo, &classic).map(Some)
+            .collect()
+    }
+
+    /// The model of the zoo the flags name with the values its flags give, by name (the
+    /// parameters not given are absent: a fit starts those from the data), or `None` for
+    /// LuGre and Dahl.
+    pub(crate) fn zoo_given(&self) -> Result<Option<ZooGiven>> {
+        let Some(spec) = self.model.zoo() else {
+            return Ok(None);
+        };
+        crate::zoo_args::given_values(spec, self.preset.is_some(), &self.zoo, &self.classic())
+            .map(|given| Some((spec, given)))
     }
 
     pub(crate) fn build(&self) -> Result<ModelChoice> {

@@ -169,6 +169,19 @@ pub(crate) fn build(
     zoo: &ZooFlags,
     classic: &[(Parameter, f64)],
 ) -> Result<ZooModel> {
+    let given = given_values(spec, preset_given, zoo, classic)?;
+    let borrowed: Vec<(&str, &[f64])> = given.iter().map(|(n, v)| (*n, v.as_slice())).collect();
+    ZooModel::new(spec.name, &borrowed).map_err(|e| anyhow::anyhow!(e))
+}
+
+/// The values the flags give to the parameters of the model of the zoo `spec`, by name (those
+/// not given are absent), checked as [`build`] checks them but for the model's own checks.
+pub(crate) fn given_values(
+    spec: &ZooModelSpec,
+    preset_given: bool,
+    zoo: &ZooFlags,
+    classic: &[(Parameter, f64)],
+) -> Result<Vec<(&'static str, Vec<f64>)>> {
     if preset_given {
         bail!(
             "--preset is a LuGre parameter set; the {} model takes {}",
@@ -176,7 +189,7 @@ pub(crate) fn build(
             flags_of(spec)
         );
     }
-    let mut given: Vec<(&str, Vec<f64>)> = Vec::new();
+    let mut given: Vec<(&'static str, Vec<f64>)> = Vec::new();
     for (name, text) in &zoo.given {
         check_owned(spec, &flag(name))?;
         given.push((name, parse_list(&flag(name), text)?));
@@ -185,8 +198,7 @@ pub(crate) fn build(
         check_owned(spec, &format!("--{}", q.name()))?;
         given.push((q.name(), vec![v]));
     }
-    let borrowed: Vec<(&str, &[f64])> = given.iter().map(|(n, v)| (*n, v.as_slice())).collect();
-    ZooModel::new(spec.name, &borrowed).map_err(|e| anyhow::anyhow!(e))
+    Ok(given)
 }
 
 /// The flags of `spec`'s parameters, comma-separated.

@@ -833,3 +833,117 @@ fn noise_is_estimated_reported_and_gated() {
         "--gate: the gate must be a finite number >= 0",
     );
 }
+
+/// A record of the zoo fit's reference (`crates/lugre/tests/reference/zoo_fit_reference.py`).
+fn zoo_record(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../lugre/tests/reference/zoo_fit")
+        .join(format!("{name}.csv"))
+        .display()
+        .to_string()
+}
+
+#[test]
+fn a_model_of_the_zoo_is_fitted_and_echoed_by_name() {
+    let input = zoo_record("bouc-wen-noisy");
+    let doc = json(&["fit", "--model", "bouc-wen", "--input", &input, "--json"]);
+    assert_eq!(doc["model"], "bouc-wen");
+    assert_eq!(doc["fit"], "slow");
+    assert_eq!(doc["values"]["kind"], "bouc-wen");
+    // The generator's values (kx, kw, rho, sigma, n) = (0.1, 1.5, 2, 0.75, 2), force noise 0.01.
+    for (name, want) in [
+        ("kx", 0.1),
+        ("kw", 1.5),
+        ("rho", 2.0),
+        ("sigma", 0.75),
+        ("n", 2.0),
+    ] {
+        let e = &doc["parameters"][name];
+        let (v, se) = (e["value"].as_f64().unwrap(), e["stderr"].as_f64().unwrap());
+        assert!((v - want).abs() < 4.0 * se, "{name}: {v} -+ {se}");
+        assert_eq!(doc["values"][name].as_f64().unwrap(), v, "{name}");
+        assert_eq!(e["at_bound"], false);
+    }
+    assert_eq!(doc["turning_points"], 4);
+    assert!(doc["noise"]["force"].as_f64().unwrap() > 0.009);
+
+    let input = zoo_record("maxwell-slip");
+    let doc = json(&[
+        "fit",
+        "--model",
+        "maxwell-slip",
+        "--input",
+        &input,
+        "--json",
+        "--elements",
+        "4",
+    ]);
+    let k: Vec<f64> = (0..4)
+        .map(|i| {
+            doc["parameters"][format!("stiffness[{i}]")]["value"]
+                .as_f64()
+                .unwrap()
+        })
+        .collect();
+    for (k, want) in k.iter().zip([0.4, 0.3, 0.2, 0.1]) {
+        assert!((k / want - 1.0).abs() < 1e-8, "{k} vs {want}");
+    }
+    assert_eq!(
+        doc["fixed"]["slip_displacement"],
+        serde_json::json!([0.25, 0.75, 1.25, 1.75])
+    );
+}
+
+#[test]
+fn a_model_of_the_zoo_refuses_what_it_cannot_fit() {
+    let input = zoo_record("elastoplastic");
+    rejects(
+        &["fit", "--model", "elastoplastic", "--input", &input, "--free", "fc"],
+        "fc does not enter the slow loop of the elastoplastic model (it depends on sigma0, fs, zba)",
+    );
+    rejects(
+        &[
+            "fit",
+            "--model",
+            "elastoplastic",
+            "--input",
+            &input,
+            "--fit",
+            "full",
+        ],
+        "--fit full: the Elasto-plastic model is fitted to its slow loop",
+    );
+    rejects(
+        &[
+            "fit",
+            "--model",
+            "bouc-wen",
+            "--input",
+            &input,
+            "--elements",
+            "3",
+        ],
+        "the bouc-wen model has no elements",
+    );
+    rejects(
+        &["fit", "--input", &input, "--elements", "3"],
+        "--elements applies to an element model of the zoo",
+    );
+    rejects(
+        &[
+            "fit",
+            "--model",
+            "maxwell-slip",
+            "--input",
+            &input,
+            "--elements",
+            "65",
+        ],
+        "--elements: the number of elements must be from 1 to 64, got 65",
+    );
+    let small = zoo_record("bouc-wen-small");
+    rejects(
+        &["fit", "--model", "bouc-wen", "--input", &small],
+        "kx, kw, rho cannot be identified from this data",
+    );
+}

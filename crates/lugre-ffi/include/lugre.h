@@ -89,6 +89,9 @@ typedef struct LugreMotion LugreMotion;
 // A validated model of the zoo.
 typedef struct LugreZoo LugreZoo;
 
+// A zoo model's fit: its report and the estimates' names as C strings.
+typedef struct LugreZooFit LugreZooFit;
+
 // The loop table's columns (each of the table's length; NULL skips a column). `kind` is 0 for
 // the major loop, 1 for a minor loop; `parent` is -1 for none.
 typedef struct LugreLoopColumns {
@@ -242,7 +245,44 @@ typedef struct LugreZooParameter {
   // The default: `default_len` values (1 for a scalar), static.
   const double *default_values;
   size_t default_len;
+  // 1 when the slow (rate-independent) loop depends on it, 0 when only the finite rate
+  // does.
+  int32_t slow_loop;
 } LugreZooParameter;
+
+// A zoo model's fit's statistics (as `lugre fit --model NAME --json`).
+typedef struct LugreZooFitSummary {
+  // How many estimates [`lugre_zoo_fit_estimate`] reads.
+  size_t estimates;
+  double rms;
+  size_t samples;
+  size_t dof;
+  double t_quantile;
+  double condition_number;
+  size_t iterations;
+  size_t evaluations;
+  // 0: the fit ran out of evaluations at a usable point, reported.
+  int32_t converged;
+  size_t turning_points;
+  // The noise estimated in the record (standard deviations of the position and the force).
+  double noise_position;
+  double noise_force;
+} LugreZooFitSummary;
+
+// One fitted number of a zoo model's fit (`name` lives as long as the fit).
+typedef struct LugreZooEstimate {
+  // The parameter's name, an element's weight as `stiffness[i]` or `weights[i]`.
+  const char *name;
+  double value;
+  double std_error;
+  // The degrees of freedom of its interval's t.
+  double dof;
+  // Its 95 % confidence interval.
+  double ci95_lo;
+  double ci95_hi;
+  // 1 where the estimate sits on one of its bounds.
+  int32_t at_bound;
+} LugreZooEstimate;
 
 #ifdef __cplusplus
 extern "C" {
@@ -591,6 +631,39 @@ enum LugreStatus lugre_zoo_cycles_new(const struct LugreZoo *zoo,
                                       double gate,
                                       const double *x0,
                                       struct LugreCycles **out);
+
+// The slow-loop fit of the zoo's model `model` (as `lugre fit --model NAME`) to `n` samples
+// `(u, f)` of one or more periods of a slow periodic test. `start` (NULL: none) is a model of
+// the same name whose values are the start values and the held ones (an element model's
+// thresholds its own); `elements` (0: the default, 4) the number of elements of an element
+// model on the grid spanning the record's amplitude; `fix` and `free` comma-separated names
+// (NULL or "": none). The fit goes to `out` (freed by [`lugre_zoo_fit_free`]), the fitted force
+// at every sample to `fitted` (`n` values; NULL skips it).
+enum LugreStatus lugre_zoo_fit(const char *model,
+                               const struct LugreZoo *start,
+                               const double *u,
+                               const double *f,
+                               size_t n,
+                               size_t elements,
+                               const char *fix,
+                               const char *free_names,
+                               struct LugreZooFit **out,
+                               double *fitted);
+
+// The fit's statistics.
+enum LugreStatus lugre_zoo_fit_summary(const struct LugreZooFit *fit,
+                                       struct LugreZooFitSummary *out);
+
+// Estimate `index` (below [`LugreZooFitSummary::estimates`]).
+enum LugreStatus lugre_zoo_fit_estimate(const struct LugreZooFit *fit,
+                                        size_t index,
+                                        struct LugreZooEstimate *out);
+
+// The fitted model as a new [`LugreZoo`] (freed by `lugre_zoo_free`; its values by
+// `lugre_zoo_value`).
+enum LugreStatus lugre_zoo_fit_model(const struct LugreZooFit *fit, struct LugreZoo **out);
+
+void lugre_zoo_fit_free(struct LugreZooFit *fit);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -33,6 +33,7 @@ use std::sync::OnceLock;
 
 mod dynamics;
 mod zoo;
+mod zoo_fit;
 pub use dynamics::{
     lugre_dynamics_free, lugre_dynamics_new, lugre_dynamics_run, lugre_dynamics_set,
     lugre_dynamics_set_model, lugre_dynamics_set_points, lugre_dynamics_set_scenario,
@@ -43,6 +44,10 @@ pub use zoo::{
     lugre_zoo_cycles_new, lugre_zoo_free, lugre_zoo_loop_new, lugre_zoo_model_info,
     lugre_zoo_model_name, lugre_zoo_new, lugre_zoo_parameter, lugre_zoo_value, LugreZoo,
     LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
+};
+pub use zoo_fit::{
+    lugre_zoo_fit, lugre_zoo_fit_estimate, lugre_zoo_fit_free, lugre_zoo_fit_model,
+    lugre_zoo_fit_summary, LugreZooEstimate, LugreZooFit, LugreZooFitSummary,
 };
 
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};

@@ -77,6 +77,9 @@ pub struct LugreZooParameter {
     /// The default: `default_len` values (1 for a scalar), static.
     pub default_values: *const f64,
     pub default_len: usize,
+    /// 1 when the slow (rate-independent) loop depends on it, 0 when only the finite rate
+    /// does.
+    pub slow_loop: i32,
 }
 
 /// The table's strings as C strings, made once: per model its four texts and per parameter
@@ -185,6 +188,7 @@ pub extern "C" fn lugre_zoo_parameter(
             },
             default_values: p.default.as_ptr(),
             default_len: p.default.len(),
+            slow_loop: i32::from(p.slow_loop),
         };
         Ok(())
     })

@@ -164,6 +164,7 @@ fn the_table_as_c_reads_it() {
             assert_eq!(q.shape, shape);
             let d = unsafe { std::slice::from_raw_parts(q.default_values, q.default_len) };
             assert_eq!(d, p.default);
+            assert_eq!(q.slow_loop, i32::from(p.slow_loop));
         }
         let mut q = std::mem::MaybeUninit::<LugreZooParameter>::uninit();
         let past = spec.parameters.len();

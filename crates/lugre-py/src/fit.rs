@@ -10,7 +10,8 @@ use std::ffi::CString;
 use lugre::error::NormalForceError;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow_with, Covariance, Family, FitError, FitKind, FitReport,
-    FitSpec, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions, CUBIC_READING_TOL,
+    FitSpec, FitSummary, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions,
+    CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
 use lugre::simulate::SmoothSamples;
@@ -24,6 +25,7 @@ use crate::convert::{
 use crate::models::{PyDahl, PyLuGre};
 
 mod lab;
+mod zoo;
 
 /// A rough upper estimate of the fit's working memory per sample, in floats (the Jacobian of
 /// up to 7 columns and the optimizer's copies of it, the output, residuals and the simulation's
@@ -68,6 +70,17 @@ const FLOATS_PER_SAMPLE: usize = 48;
 ///   "parameters" (each with the "stage" that determined it: "stribeck", "presliding" or
 ///   "full"), "fixed", "values" (the identified model), "model", "kind" and "stages" (each
 ///   stage's dict as its kind returns it, without "values").
+///
+/// The models of the zoo (as `lugre fit --model NAME`): model="maxwell-slip",
+/// "prandtl-ishlinskii", "bouc-wen" or "elastoplastic", or a lugre.ZooModel (its values the
+/// start values, an element model's thresholds its own), fits the model's slow loop (its exact
+/// periodic loop through the record's turning points) to (u, f): every parameter of the loop,
+/// an element model's weights as "stiffness[i]" or "weights[i]" with the thresholds held on a
+/// grid spanning the record's amplitude (elements=N of them, default 4); fix, free, start (a
+/// number, or a list for an element array), noise and gate as for LuGre; "values" is the fitted
+/// model (lugre.ZooModel(r["model"], **r["values"])). The elasto-plastic fc, sigma1, sigma2,
+/// vs, beta do not enter the slow loop: freeing one raises ValueError; the LuGre fits' other
+/// keywords (t, bounds, x0, starts, interpolate, normal, v, stribeck, presliding) are refused.
 ///
 /// Arguments:
 ///
@@ -155,8 +168,8 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// (6.0, 2.0)
 #[pyfunction]
 #[pyo3(
-    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None, gate=None, stribeck=None, presliding=None),
-    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None, stribeck=None, presliding=None)"
+    signature = (u, f, *, t=None, model=None, kind=None, fix=None, free=None, start=None, bounds=None, x0=None, starts=None, interpolate=None, normal=None, v=None, noise=None, gate=None, stribeck=None, presliding=None, elements=None),
+    text_signature = "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None, stribeck=None, presliding=None, elements=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub fn fit<'py>(
@@ -179,8 +192,45 @@ pub fn fit<'py>(
     gate: Option<&Bound<'py, PyAny>>,
     stribeck: Option<&Bound<'py, PyAny>>,
     presliding: Option<&Bound<'py, PyAny>>,
+    elements: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
+    if let Some(spec) = zoo::spec_of(given(model).as_ref())? {
+        if let Some(k) = given(kind) {
+            if kind_arg(&k)? != FitKind::Slow {
+                return Err(PyValueError::new_err(format!(
+                    "kind={}: the {} model is fitted to its slow loop (kind='slow')",
+                    k.repr()?,
+                    spec.model().label
+                )));
+            }
+        }
+        let args = zoo::Args {
+            fix: given(fix),
+            free: given(free),
+            start: given(start),
+            elements: given(elements),
+            noise: given(noise),
+            gate: given(gate),
+            others: vec![
+                ("t", given(t)),
+                ("bounds", given(bounds)),
+                ("x0", given(x0)),
+                ("starts", given(starts)),
+                ("interpolate", given(interpolate)),
+                ("normal", given(normal)),
+                ("v", given(v)),
+                ("stribeck", given(stribeck)),
+                ("presliding", given(presliding)),
+            ],
+        };
+        return zoo::fit(py, spec, u, f, args);
+    }
+    if given(elements).is_some() {
+        return Err(PyValueError::new_err(
+            "elements applies to an element model of the zoo (model='maxwell-slip' or 'prandtl-ishlinskii', or a lugre.ZooModel of them)",
+        ));
+    }
     let kind = match given(kind) {
         Some(k) => kind_arg(&k)?,
         None => FitKind::Slow,
@@ -684,15 +734,12 @@ fn explain(py: Python<'_>, e: FitError) -> PyErr {
             } else {
                 ("them", format!("fix={{'{}': value, ...}}", names[0]))
             };
-            let err = PyValueError::new_err(format!(
-                "{e}; fix {it} at values you know ({example}) or fit data that excite {it}"
-            ));
-            let attached =
-                PyTuple::new(py, &names).and_then(|n| err.value(py).setattr("parameters", n));
-            match attached {
-                Ok(()) => err,
-                Err(other) => other,
-            }
+            unidentifiable(
+                py,
+                &e,
+                &names,
+                format!("fix {it} at values you know ({example}) or fit data that excite {it}"),
+            )
         }
         FitError::NotGiven { name, .. } => PyValueError::new_err(format!(
             "{e} (fix={{'{name}': value}}, a model object that has it, or free=['{name}'])"
@@ -705,6 +752,17 @@ fn explain(py: Python<'_>, e: FitError) -> PyErr {
             float_repr(py, *value)
         )),
         _ => value_error(e),
+    }
+}
+
+/// A `ValueError` for parameters the data cannot determine: the message with `advice`, and the
+/// exception's `parameters` attribute holding their names.
+fn unidentifiable(py: Python<'_>, e: &FitError, names: &[&str], advice: String) -> PyErr {
+    let err = PyValueError::new_err(format!("{e}; {advice}"));
+    let attached = PyTuple::new(py, names).and_then(|n| err.value(py).setattr("parameters", n));
+    match attached {
+        Ok(()) => err,
+        Err(other) => other,
     }
 }
 
@@ -725,16 +783,6 @@ fn report_dict<'py>(
             name
         }
     };
-    let parameters = PyDict::new(py);
-    for e in &r.estimates {
-        let d = PyDict::new(py);
-        d.set_item("value", e.value)?;
-        d.set_item("stderr", e.stderr)?;
-        d.set_item("dof", e.dof)?;
-        d.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
-        d.set_item("at_bound", e.at_bound)?;
-        parameters.set_item(key(e.name), d)?;
-    }
     let fixed = PyDict::new(py);
     for (name, v) in &r.fixed {
         fixed.set_item(key(name), *v)?;
@@ -753,13 +801,40 @@ fn report_dict<'py>(
             }
         }
     }
-    let p = r.estimates.len();
-    let correlation: Vec<f64> = r.correlation.iter().flatten().copied().collect();
-
     let d = PyDict::new(py);
-    d.set_item("parameters", parameters)?;
+    summary_items(py, &d, &r.summary(), key)?;
     d.set_item("fixed", fixed)?;
     d.set_item("values", values)?;
+    d.set_item("model", r.family.label().to_ascii_lowercase())?;
+    d.set_item("kind", r.kind.label())?;
+    d.set_item("normal_force", normal)?;
+    d.set_item("residuals", vec_out(py, r.residuals(f)))?;
+    Ok(d)
+}
+
+/// The items every fit's dict has, from the core's view: "parameters" (each estimate under
+/// `key(name)`), "rms", "samples", "dof", "t_quantile", "condition_number", "correlation",
+/// "iterations", "evaluations", "starts", "converged", "termination", "turning_points",
+/// "noise", "warnings", "covariance", "fitted".
+fn summary_items<'py>(
+    py: Python<'py>,
+    d: &Bound<'py, PyDict>,
+    r: &FitSummary<'_>,
+    key: impl Fn(&'static str) -> &'static str,
+) -> PyResult<()> {
+    let parameters = PyDict::new(py);
+    for e in r.estimates {
+        let p = PyDict::new(py);
+        p.set_item("value", e.value)?;
+        p.set_item("stderr", e.stderr)?;
+        p.set_item("dof", e.dof)?;
+        p.set_item("ci95", (e.ci95[0], e.ci95[1]))?;
+        p.set_item("at_bound", e.at_bound)?;
+        parameters.set_item(key(e.name), p)?;
+    }
+    let p = r.estimates.len();
+    let correlation: Vec<f64> = r.correlation.iter().flatten().copied().collect();
+    d.set_item("parameters", parameters)?;
     d.set_item("rms", r.rms)?;
     d.set_item("samples", r.samples)?;
     d.set_item("dof", r.dof)?;
@@ -770,12 +845,9 @@ fn report_dict<'py>(
     d.set_item("evaluations", r.evaluations)?;
     d.set_item("starts", r.starts)?;
     d.set_item("converged", r.converged)?;
-    d.set_item("termination", &r.termination)?;
+    d.set_item("termination", r.termination)?;
     d.set_item("turning_points", r.turning_points)?;
-    d.set_item("model", r.family.label().to_ascii_lowercase())?;
-    d.set_item("kind", r.kind.label())?;
-    d.set_item("normal_force", normal)?;
-    match &r.noise {
+    match r.noise {
         Some(n) => {
             let nd = PyDict::new(py);
             nd.set_item("position", n.position)?;
@@ -812,7 +884,6 @@ fn report_dict<'py>(
     cov.set_item("ljung_box", r.serial.ljung_box)?;
     cov.set_item("ljung_box_95", r.serial.critical)?;
     d.set_item("covariance", cov)?;
-    d.set_item("fitted", vec_out(py, r.fitted.clone()))?;
-    d.set_item("residuals", vec_out(py, r.residuals(f)))?;
-    Ok(d)
+    d.set_item("fitted", vec_out(py, r.fitted.to_vec()))?;
+    Ok(())
 }

@@ -328,7 +328,8 @@ impl PyZooLoop {
 
 /// `lugre.ZOO_MODELS`: the core's zoo table, `{name: {"label", "equations", "reference",
 /// "closes_minor_loops", "finite_rate", "parameters": {name: {"unit", "description", "domain", "shape"
-/// ("scalar" or "elements"), "default" (a float, or a list for an element array)}}}}`.
+/// ("scalar" or "elements"), "default" (a float, or a list for an element array), "slow_loop"
+/// (whether the rate-independent loop depends on it)}}}}`.
 pub(crate) fn zoo_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let table = PyDict::new(py);
     for m in &MODELS {
@@ -348,6 +349,7 @@ pub(crate) fn zoo_table(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
                     row.set_item("default", p.default.to_vec())?;
                 }
             }
+            row.set_item("slow_loop", p.slow_loop)?;
             parameters.set_item(p.name, row)?;
         }
         let entry = PyDict::new(py);

@@ -424,7 +424,7 @@ def test_no_warning_when_converged(example4):
 
 def test_signature_docstring_and_example():
     assert str(inspect.signature(lugre.fit)) == (
-        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None, stribeck=None, presliding=None)"
+        "(u, f, *, t=None, model='lugre', kind='slow', fix=(), free=(), start=None, bounds=None, x0=None, starts=None, interpolate='linear', normal=None, v=None, noise='auto', gate=None, stribeck=None, presliding=None, elements=None)"
     )
     doc = lugre.fit.__doc__
     for words in ("lugre fit", "kind=\"slow\"", "ci95", "correlation", "ValueError", "TypeError"):

@@ -363,6 +363,18 @@ pub enum FitError {
         "{name} cannot be fitted by the full fit (it has no derivative for it): give its value"
     )]
     NotInFullFit { name: &'static str },
+    #[error("{name} does not enter the slow loop of the {model} model (it depends on {slow}): it cannot be identified from quasi-static data; give its value instead")]
+    NotInZooSlowLoop {
+        name: &'static str,
+        model: &'static str,
+        slow: String,
+    },
+    #[error("the number of elements must be from 1 to {most}, got {count}")]
+    BadElements { count: usize, most: usize },
+    #[error("the {model} model has no elements: its parameters are scalars ({known}), so there is no element count or threshold to give")]
+    NoElements { model: &'static str, known: String },
+    #[error(transparent)]
+    Zoo(#[from] ZooError),
     #[error("{name} is both fixed and freed")]
     FixedAndFree { name: &'static str },
     #[error("nothing to fit: every parameter of the {fit} fit is fixed")]

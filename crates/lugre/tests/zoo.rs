@@ -929,3 +929,50 @@ fn count_cycles_is_the_count_with_the_energies_along_the_path() {
         "the energies along the history overflow f64 for this model and input (values too large)"
     );
 }
+
+/// The table's `slow_loop`: a parameter marked as used only at finite rate leaves the loop
+/// unchanged to the last bit when it moves; every other one moves it.
+#[test]
+fn the_slow_loop_depends_on_exactly_the_parameters_the_table_says() {
+    use lugre::zoo::{ZooModel, MODELS};
+    let input = TurningPoints::new(&[3.0, 1.0, 2.0, -3.0, -1.0, -2.0]).unwrap();
+    for spec in MODELS {
+        let base = ZooModel::new(spec.name, &[]).unwrap();
+        let forces = |m: &ZooModel| {
+            let hl = m.loops(&input).unwrap();
+            let points = m.sample(&hl, 400).unwrap();
+            points.iter().map(|p| p.y).collect::<Vec<f64>>()
+        };
+        let want = forces(&base);
+        let base_values = base.named();
+        for p in spec.parameters {
+            // A nearby value inside the domain (an element array: its first element, which
+            // acts inside the input's range).
+            let mut moved = p.default.to_vec();
+            moved[0] = if moved[0] == 0.0 {
+                0.01
+            } else {
+                1.1 * moved[0]
+            };
+            // Every other parameter named at its value (a default that follows others, as
+            // elasto-plastic's zba, held).
+            let mut given: Vec<(&str, &[f64])> = base_values
+                .iter()
+                .map(|(n, v)| (*n, v.as_slice()))
+                .collect();
+            given.retain(|(n, _)| *n != p.name);
+            given.push((p.name, &moved));
+            let Ok(m) = ZooModel::new(spec.name, &given) else {
+                continue;
+            };
+            assert_eq!(
+                forces(&m) == want,
+                !p.slow_loop,
+                "{} {}: slow_loop = {}",
+                spec.name,
+                p.name,
+                p.slow_loop
+            );
+        }
+    }
+}

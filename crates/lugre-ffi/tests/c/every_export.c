@@ -169,6 +169,57 @@ static void zoo(void) {
     lugre_zoo_free(NULL);
 }
 
+/* A Maxwell-slip loop made here (two elements, slip displacements 0.25 and 0.75 on the grid of
+   an amplitude 1 record, stiffnesses 0.4 and 0.3), fitted back. */
+static void zoo_fit(void) {
+    enum { N = 400 };
+    double u[N], f[N], fitted[N];
+    const double k[] = {0.4, 0.3}, d[] = {0.25, 0.75};
+    double z[] = {0, 0}, at = 0;
+    for (int pass = 0; pass < 3; pass++) {
+        for (int i = 0; i < N; i++) {
+            /* A triangle from 1 down to -1 and back, 200 samples a way. */
+            double x = i < N / 2 ? 1 - 2.0 * i / (N / 2) : -1 + 2.0 * (i - N / 2) / (N / 2);
+            double force = 0;
+            for (int j = 0; j < 2; j++) {
+                z[j] += x - at;
+                if (z[j] > d[j]) z[j] = d[j];
+                if (z[j] < -d[j]) z[j] = -d[j];
+                force += k[j] * z[j];
+            }
+            at = x;
+            u[i] = x;
+            f[i] = force;
+        }
+    }
+    LugreZooFit *fit = NULL;
+    OK(lugre_zoo_fit("maxwell-slip", NULL, u, f, N, 2, NULL, NULL, &fit, fitted));
+    LugreZooFitSummary s;
+    OK(lugre_zoo_fit_summary(fit, &s));
+    CHECK(s.estimates == 2 && s.samples == N && s.converged == 1 && s.rms < 1e-12);
+    for (size_t i = 0; i < s.estimates; i++) {
+        LugreZooEstimate e;
+        OK(lugre_zoo_fit_estimate(fit, i, &e));
+        CHECK(strncmp(e.name, "stiffness[", 10) == 0 && fabs(e.value / k[i] - 1) < 1e-9);
+        CHECK(e.ci95_lo <= e.value && e.value <= e.ci95_hi && e.at_bound == 0);
+    }
+    LugreZooEstimate past;
+    CHECK(lugre_zoo_fit_estimate(fit, s.estimates, &past) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(fabs(fitted[10] - f[10]) < 1e-12);
+    LugreZoo *m = NULL;
+    OK(lugre_zoo_fit_model(fit, &m));
+    double echo[2];
+    OK(lugre_zoo_value(m, 1, echo, 2, NULL)); /* slip_force = k Delta */
+    CHECK(fabs(echo[0] - 0.1) < 1e-9 && fabs(echo[1] - 0.225) < 1e-9);
+    lugre_zoo_free(m);
+    lugre_zoo_fit_free(fit);
+    fit = NULL;
+    CHECK(lugre_zoo_fit("elastoplastic", NULL, u, f, N, 0, NULL, "fc", &fit, NULL) ==
+          LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(fit == NULL && strstr(lugre_last_error(), "fc does not enter the slow loop") != NULL);
+    lugre_zoo_fit_free(NULL);
+}
+
 static void cycles(const LugreModel *m) {
     const double h[] = {-2, 1, -3, 5, -1, 3, -4, 4, -2};
     LugreCycles *cy = NULL;
@@ -338,6 +389,7 @@ int main(void) {
     lugre_model_free(NULL);
     fits();
     zoo();
+    zoo_fit();
     if (failures == 0) printf("ok\n");
     return failures == 0 ? 0 : 1;
 }

@@ -493,9 +493,42 @@ def fit(
     gate: None = None,
     stribeck: _Record,
     presliding: _Record,
+    elements: None = None,
 ) -> StagedResult:
     """The staged identification: the Stribeck fit of the constant-velocity runs `stribeck`,
     the presliding fit of `presliding`, then, with (t, u, f), a full fit started from them."""
+    ...
+
+@overload
+def fit(
+    u: _Reals,
+    f: _Reals,
+    *,
+    t: None = None,
+    model: Union[
+        Literal["maxwell-slip", "prandtl-ishlinskii", "bouc-wen", "elastoplastic"], ZooModel
+    ],
+    kind: Literal["slow"] = "slow",
+    fix: Union[str, Iterable[str], Mapping[str, Union[_Real, _Reals]]] = (),
+    free: Union[str, Iterable[str]] = (),
+    start: Optional[Mapping[str, Union[_Real, _Reals]]] = None,
+    bounds: None = None,
+    x0: None = None,
+    starts: None = None,
+    interpolate: Literal["linear"] = "linear",
+    normal: None = None,
+    v: None = None,
+    noise: Literal["auto", "off"] = "auto",
+    gate: Optional[_Real] = None,
+    stribeck: None = None,
+    presliding: None = None,
+    elements: Optional[SupportsIndex] = None,
+) -> ZooFitResult:
+    """The slow-loop fit of a model of the zoo to one or more periods of a slow periodic test
+    (u, f): every parameter of its slow loop by name with standard errors and 95 % intervals
+    (the engine of `lugre fit --model NAME`). An element model's thresholds are held on a grid
+    spanning the record's amplitude (`elements` of them, default 4) or taken from a
+    lugre.ZooModel given as the model, whose values are the start values."""
     ...
 
 @overload
@@ -519,10 +552,44 @@ def fit(
     gate: Optional[_Real] = None,
     stribeck: None = None,
     presliding: None = None,
+    elements: None = None,
 ) -> FitResult:
     """The LuGre or Dahl parameters from measured (u, f) or (t, u, f) samples, with standard
     errors, 95 % confidence intervals and correlations (the engine of `lugre fit`)."""
     ...
+
+@type_check_only
+class ZooFitResult(TypedDict):
+    """The result of lugre.fit(u, f, model=NAME or a lugre.ZooModel) for a model of the zoo (a
+    dict at runtime): the keys of FitResult; "parameters" by name, an element model's weights
+    as "stiffness[i]" or "weights[i]"; "values" the fitted model's parameters
+    (lugre.ZooModel(r["model"], **r["values"])); "fixed" the held parameters and an element
+    model's thresholds ("thresholds", or Maxwell-slip's "slip_displacement")."""
+
+    parameters: dict[str, FitEstimate]
+    fixed: dict[str, Union[float, _Floats]]
+    values: dict[str, Union[float, _Floats]]
+    rms: float
+    samples: int
+    dof: int
+    t_quantile: float
+    condition_number: float
+    correlation: _Floats
+    iterations: int
+    evaluations: int
+    starts: int
+    converged: bool
+    termination: str
+    turning_points: int
+    model: str
+    kind: Literal["slow"]
+    normal_force: bool
+    noise: FitNoise
+    warnings: list[str]
+    covariance: FitCovariance
+    fitted: _Floats
+    residuals: _Floats
+
 
 class Columns(dict[str, _Floats]):
     """A data file's columns by role ("t", "u", "v", "F", "N" or a column's own name), with the

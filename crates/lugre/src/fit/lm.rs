@@ -3,7 +3,7 @@
 //! `theta` ([`Transform`]), with the model output and its exact derivatives from an
 //! [`Evaluator`] computed in one pass per trial point and kept for the Jacobian.
 
-use super::spec::{Resolved, Transform};
+use super::spec::{Bounds, Transform};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt, TerminationReason};
 use nalgebra::{DMatrix, DVector, Dyn, Owned};
 
@@ -97,10 +97,30 @@ impl Outcome {
 /// trust-region step is simply rejected and shrunk.
 const INVALID: f64 = 1e100;
 
+/// The parameter space the iteration moves in: every parameter's value (held ones keep it,
+/// free ones start there), the indices of the free ones and their bounds (one per free one).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Space<'a> {
+    pub values: &'a [f64],
+    pub free: &'a [usize],
+    pub bounds: &'a [Bounds],
+}
+
+impl Space<'_> {
+    /// The maps of the free parameters, `theta = 1` at `start`.
+    fn transforms(&self, start: &[f64]) -> Vec<Transform> {
+        self.bounds
+            .iter()
+            .zip(start)
+            .map(|(&b, &p)| Transform::new(b, p))
+            .collect()
+    }
+}
+
 struct Problem<'a, E> {
     eval: E,
     data: &'a [f64],
-    resolved: &'a Resolved,
+    resolved: Space<'a>,
     transforms: Vec<Transform>,
     values: Vec<f64>,
     theta: DVector<f64>,
@@ -118,7 +138,7 @@ struct Problem<'a, E> {
 
 impl<E: Evaluator> Problem<'_, E> {
     fn values_at(&self, theta: &DVector<f64>) -> Vec<f64> {
-        let mut values = self.resolved.values.clone();
+        let mut values = self.resolved.values.to_vec();
         for (j, &i) in self.resolved.free.iter().enumerate() {
             values[i] = self.transforms[j].to_p(theta[j]);
         }
@@ -201,7 +221,7 @@ impl<E: Evaluator> LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_, E> {
 pub(crate) fn minimize<E: Evaluator>(
     eval: E,
     data: &[f64],
-    resolved: &Resolved,
+    resolved: Space<'_>,
     start: &[f64],
     config: Config,
     progress: &mut dyn FnMut(usize, f64),
@@ -215,7 +235,7 @@ pub(crate) fn minimize<E: Evaluator>(
         data,
         resolved,
         transforms,
-        values: resolved.values.clone(),
+        values: resolved.values.to_vec(),
         theta: theta.clone(),
         y: vec![0.0; m],
         residuals: DVector::zeros(m),

@@ -103,6 +103,7 @@ mod spec;
 mod staged;
 mod stats;
 mod stribeck;
+mod zoo;
 
 pub use crate::error::{FitError, Unidentified, Why};
 pub use covariance::{Covariance, FitWarning, SerialCorrelation, MISFIT_RATIO, STRUCTURED_RHO};
@@ -113,6 +114,7 @@ pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
 pub use staged::{fit_staged, StagedReport};
 pub use stribeck::{fit_stribeck, steady_force, table_points, SteadyPoint};
+pub use zoo::{fit_zoo, ZooFitReport, ZooFitSpec, DEFAULT_ELEMENTS, MAX_ELEMENTS};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
@@ -203,6 +205,56 @@ impl FitReport {
         let order = self.family.parameters();
         v.sort_by_key(|(n, _)| order.iter().position(|o| o == n));
         v
+    }
+}
+
+/// What every fit reports beyond its parameters' names and values, as one view over a
+/// [`FitReport`] or a [`ZooFitReport`], for the front ends to show alike.
+#[derive(Debug, Clone, Copy)]
+pub struct FitSummary<'a> {
+    pub estimates: &'a [Estimate],
+    pub rms: f64,
+    pub samples: usize,
+    pub dof: usize,
+    pub t_quantile: f64,
+    pub condition_number: f64,
+    pub correlation: &'a [Vec<f64>],
+    pub iterations: usize,
+    pub evaluations: usize,
+    pub starts: usize,
+    pub converged: bool,
+    pub termination: &'a str,
+    pub turning_points: Option<usize>,
+    pub noise: Option<&'a NoiseLevels>,
+    pub warnings: &'a [FitWarning],
+    pub covariance: Covariance,
+    pub serial: &'a SerialCorrelation,
+    pub fitted: &'a [f64],
+}
+
+impl FitReport {
+    /// The view the front ends show.
+    pub fn summary(&self) -> FitSummary<'_> {
+        FitSummary {
+            estimates: &self.estimates,
+            rms: self.rms,
+            samples: self.samples,
+            dof: self.dof,
+            t_quantile: self.t_quantile,
+            condition_number: self.condition_number,
+            correlation: &self.correlation,
+            iterations: self.iterations,
+            evaluations: self.evaluations,
+            starts: self.starts,
+            converged: self.converged,
+            termination: &self.termination,
+            turning_points: self.turning_points,
+            noise: self.noise.as_ref(),
+            warnings: &self.warnings,
+            covariance: self.covariance,
+            serial: &self.serial,
+            fitted: &self.fitted,
+        }
     }
 }
 
@@ -427,30 +479,9 @@ pub fn fit_slow_with(
     options: SlowOptions,
 ) -> Result<FitReport, FitError> {
     check_columns(&[("u", u), ("F", f)])?;
-    if let Some(g) = options.gate {
-        if !(g.is_finite() && g >= 0.0) {
-            return Err(FitError::BadGate { value: g });
-        }
-    }
     let mut resolved = spec.resolve(FitKind::Slow)?;
     check_count(u.len(), resolved.free.len())?;
-    let mut levels = noise::levels(u, f, PositionHandling::AsGiven);
-    let gate = match (options.gate, options.noise) {
-        (Some(g), _) => g,
-        (None, Noise::Auto) => {
-            let (lo, hi) = u
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                    (a.min(x), b.max(x))
-                });
-            (SlowOptions::GATE_NOISE_SIGMAS * levels.position)
-                .min(SlowOptions::GATE_RANGE * (hi - lo))
-        }
-        (None, Noise::Off) => 0.0,
-    };
-    if options.gate.is_some() || options.noise == Noise::Auto {
-        levels.handling = PositionHandling::Gate { gate };
-    }
+    let (gate, levels) = slow_gate(u, f, options)?;
     let sl = slow::SlowLoop::new(resolved.family, resolved.free.clone(), u, None, gate)?;
     let mut coarse_iterations = 0;
     let mut coarse_evaluations = 0;
@@ -472,7 +503,7 @@ pub fn fit_slow_with(
         let (_, coarse) = minimize(
             sub,
             &sf,
-            &resolved,
+            resolved.space(),
             &resolved.free_values(),
             SLOW_CONFIG,
             &mut |_, _| {},
@@ -490,7 +521,7 @@ pub fn fit_slow_with(
     let (sl, mut outcome) = minimize(
         sl,
         f,
-        &resolved,
+        resolved.space(),
         &resolved.free_values(),
         SLOW_CONFIG,
         &mut |_, _| {},
@@ -505,6 +536,34 @@ pub fn fit_slow_with(
     report.noise = Some(levels);
     report.check_fit(f);
     Ok(report)
+}
+
+/// The noise levels of a slow record and the gate on its reversals ([`SlowOptions`]); the
+/// gate given, if any, checked.
+fn slow_gate(u: &[f64], f: &[f64], options: SlowOptions) -> Result<(f64, NoiseLevels), FitError> {
+    if let Some(g) = options.gate {
+        if !(g.is_finite() && g >= 0.0) {
+            return Err(FitError::BadGate { value: g });
+        }
+    }
+    let mut levels = noise::levels(u, f, PositionHandling::AsGiven);
+    let gate = match (options.gate, options.noise) {
+        (Some(g), _) => g,
+        (None, Noise::Auto) => {
+            let (lo, hi) = u
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                    (a.min(x), b.max(x))
+                });
+            (SlowOptions::GATE_NOISE_SIGMAS * levels.position)
+                .min(SlowOptions::GATE_RANGE * (hi - lo))
+        }
+        (None, Noise::Off) => 0.0,
+    };
+    if options.gate.is_some() || options.noise == Noise::Auto {
+        levels.handling = PositionHandling::Gate { gate };
+    }
+    Ok((gate, levels))
 }
 
 /// Start values from the data for the free parameters without a given start.
@@ -677,7 +736,7 @@ pub fn fit_full(
                 rms,
             })
         };
-        let (back, outcome) = minimize(ex, f, &run, &free_start, FULL_CONFIG, &mut report);
+        let (back, outcome) = minimize(ex, f, run.space(), &free_start, FULL_CONFIG, &mut report);
         ex = back;
         evaluations += outcome.evaluations;
         if outcome.rss.is_finite() && best.as_ref().is_none_or(|b| outcome.rss < b.rss) {
@@ -768,49 +827,14 @@ fn report(
     let residuals: Vec<f64> = f.iter().zip(&fitted).map(|(f, y)| f - y).collect();
     let rss: f64 = residuals.iter().map(|r| r * r).sum();
     let start_values = resolved.free_values();
-    let at_bound: Vec<bool> = (0..names.len())
-        .map(|j| resolved.bounds[j].reached(values[j], start_values[j]))
-        .collect();
-    let unc = stats::uncertainty(
-        &outcome.jac,
-        &names,
-        &values,
-        &at_bound,
-        &residuals,
-        data_norm,
-        input_effects,
-    )?;
+    let free = FreeEnd {
+        names: &names,
+        values: &values,
+        starts: &start_values,
+        bounds: &resolved.bounds,
+    };
+    let (estimates, unc) = assess(&outcome, free, &residuals, data_norm, input_effects)?;
     let converged = outcome.converged();
-    if !converged
-        && !matches!(
-            outcome.termination,
-            levenberg_marquardt::TerminationReason::LostPatience
-        )
-    {
-        return Err(not_converged(resolved, &outcome, m));
-    }
-    let estimates: Vec<Estimate> = (0..names.len())
-        .map(|j| {
-            let half = unc.estimate_t[j] * unc.stderr[j];
-            let b = resolved.bounds[j];
-            let mut ci95 = [b.clamp(values[j] - half), b.clamp(values[j] + half)];
-            if at_bound[j] {
-                // The interval of an estimate at its bound reaches the bound.
-                match bound_of(values[j], b) {
-                    x if x == b.lo => ci95[0] = b.lo,
-                    _ => ci95[1] = b.hi,
-                }
-            }
-            Estimate {
-                name: names[j],
-                value: values[j],
-                stderr: unc.stderr[j],
-                dof: unc.estimate_dof[j],
-                ci95,
-                at_bound: at_bound[j],
-            }
-        })
-        .collect();
     let relevant: Vec<usize> = (0..resolved.family.parameters().len())
         .filter(|&i| kind.uses(resolved.family, i))
         .collect();
@@ -843,6 +867,80 @@ fn report(
         covariance: unc.method,
         serial: SerialCorrelation::of(&residuals),
     })
+}
+
+/// The free parameters of a fit at its end: names, values, starts and bounds.
+struct FreeEnd<'a> {
+    names: &'a [&'static str],
+    values: &'a [f64],
+    starts: &'a [f64],
+    bounds: &'a [Bounds],
+}
+
+/// The estimates of the free parameters with their standard errors, intervals (S1-S4) and
+/// at-bound flags, and the statistics they come from (`residuals = F - y`, `data_norm = |F|`).
+/// A run that stopped for any reason but its evaluation budget is [`FitError::NotConverged`]; a
+/// parameter the data do not determine is [`FitError::Unidentifiable`].
+fn assess(
+    outcome: &Outcome,
+    free: FreeEnd<'_>,
+    residuals: &[f64],
+    data_norm: f64,
+    input_effects: &[Vec<f64>],
+) -> Result<(Vec<Estimate>, stats::Uncertainty), FitError> {
+    let FreeEnd {
+        names,
+        values,
+        starts: start_values,
+        bounds,
+    } = free;
+    let at_bound: Vec<bool> = (0..names.len())
+        .map(|j| bounds[j].reached(values[j], start_values[j]))
+        .collect();
+    let unc = stats::uncertainty(
+        &outcome.jac,
+        names,
+        values,
+        &at_bound,
+        residuals,
+        data_norm,
+        input_effects,
+    )?;
+    if !outcome.converged()
+        && !matches!(
+            outcome.termination,
+            levenberg_marquardt::TerminationReason::LostPatience
+        )
+    {
+        return Err(FitError::NotConverged {
+            reason: outcome.reason(),
+            best: names.iter().copied().zip(values.iter().copied()).collect(),
+            rms: (outcome.rss / residuals.len() as f64).sqrt(),
+        });
+    }
+    let estimates: Vec<Estimate> = (0..names.len())
+        .map(|j| {
+            let half = unc.estimate_t[j] * unc.stderr[j];
+            let b = bounds[j];
+            let mut ci95 = [b.clamp(values[j] - half), b.clamp(values[j] + half)];
+            if at_bound[j] {
+                // The interval of an estimate at its bound reaches the bound.
+                match bound_of(values[j], b) {
+                    x if x == b.lo => ci95[0] = b.lo,
+                    _ => ci95[1] = b.hi,
+                }
+            }
+            Estimate {
+                name: names[j],
+                value: values[j],
+                stderr: unc.stderr[j],
+                dof: unc.estimate_dof[j],
+                ci95,
+                at_bound: at_bound[j],
+            }
+        })
+        .collect();
+    Ok((estimates, unc))
 }
 
 impl FitReport {
@@ -952,7 +1050,14 @@ mod tests {
             patience: 1,
             ..FULL_CONFIG
         };
-        let (_, outcome) = minimize(eval, &f, &resolved, &[1.0, 1.0], config, &mut |_, _| {});
+        let (_, outcome) = minimize(
+            eval,
+            &f,
+            resolved.space(),
+            &[1.0, 1.0],
+            config,
+            &mut |_, _| {},
+        );
         assert!(!outcome.converged());
         let fitted = outcome.y.clone();
         let r = report(FitKind::Full, &resolved, outcome, fitted, &f, 1, &[]).unwrap();
@@ -970,7 +1075,7 @@ mod tests {
         let (_, outcome) = minimize(
             eval,
             &f,
-            &resolved,
+            resolved.space(),
             &[1.0, 1.0],
             FULL_CONFIG,
             &mut |_, _| {},
@@ -987,7 +1092,7 @@ mod tests {
         let (_, outcome) = minimize(
             eval,
             &f,
-            &resolved,
+            resolved.space(),
             &[1.0, 1.0],
             FULL_CONFIG,
             &mut |_, _| {},

@@ -297,6 +297,18 @@ impl SlowLoop {
         })
     }
 
+    /// The samples placed on their loop for a model evaluated elsewhere (a model of the zoo,
+    /// [`super::zoo`]): the placement and the data starts do not depend on the family, which
+    /// only [`Evaluator::evaluate`] reads.
+    pub fn placement(u: &[f64], gate: f64) -> Result<Self, FitError> {
+        Self::new(Family::LuGre, Vec::new(), u, None, gate)
+    }
+
+    /// The samples at the turning points, ascending.
+    pub fn reversal_samples(&self) -> &[usize] {
+        &self.reversals
+    }
+
     pub fn turning_points(&self) -> &TurningPoints {
         &self.tp
     }
@@ -316,7 +328,6 @@ impl SlowLoop {
     }
 
     /// `rho` of every sample (`rho_k + l_i`).
-    #[cfg(test)]
     pub fn sample_rho(&self) -> Vec<f64> {
         let mut out = vec![0.0; self.offset.len()];
         for r in &self.runs {

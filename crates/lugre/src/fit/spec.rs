@@ -36,10 +36,7 @@ impl Family {
 
     /// The name of `--model`, Python's `model=` and the C ABI's model name.
     pub const fn name(self) -> &'static str {
-        match self {
-            Family::LuGre => "lugre",
-            Family::Dahl => "dahl",
-        }
+        crate::model::FAMILY_NAMES[self as usize]
     }
 
     /// The parameter names, in a fixed order.
@@ -349,13 +346,13 @@ impl Resolved {
             .collect()
     }
 
-    /// The maps of the free parameters, `theta = 1` at `start`.
-    pub fn transforms(&self, start: &[f64]) -> Vec<Transform> {
-        self.bounds
-            .iter()
-            .zip(start)
-            .map(|(&b, &p)| Transform::new(b, p))
-            .collect()
+    /// The space the optimizer moves in ([`super::lm::minimize`]).
+    pub fn space(&self) -> super::lm::Space<'_> {
+        super::lm::Space {
+            values: &self.values,
+            free: &self.free,
+            bounds: &self.bounds,
+        }
     }
 
     /// Data starts for the free parameters without a given one, pulled inside their bounds.

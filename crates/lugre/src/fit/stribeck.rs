@@ -204,7 +204,14 @@ pub fn fit_stribeck(spec: &FitSpec, points: &[SteadyPoint]) -> Result<FitReport,
             run.values[VS] = resolved.bounds[c].pull_inside(base[VS] * k);
         }
         let start = run.free_values();
-        let (back, outcome) = minimize(curve, &data, &run, &start, FULL_CONFIG, &mut |_, _| {});
+        let (back, outcome) = minimize(
+            curve,
+            &data,
+            run.space(),
+            &start,
+            FULL_CONFIG,
+            &mut |_, _| {},
+        );
         curve = back;
         evaluations += outcome.evaluations;
         if outcome.rss.is_finite()

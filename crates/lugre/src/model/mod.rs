@@ -18,6 +18,10 @@ pub mod named;
 pub mod normal;
 mod parameter;
 
+/// The names of LuGre and Dahl everywhere (`--model`, Python's `model=`, the C ABI's model
+/// name), in the order `--model` lists them: `crate::fit::Family::name` of each family.
+pub const FAMILY_NAMES: [&str; 2] = ["lugre", "dahl"];
+
 pub use dahl::Dahl;
 pub use functions::{Stribeck, VelocityFn, Viscous};
 pub use lugre::{LuGre, LuGreParams, Preset};

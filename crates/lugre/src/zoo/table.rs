@@ -44,6 +44,9 @@ pub struct ZooParameter {
     pub shape: Shape,
     /// The default: one value for a scalar, the default elements for an array.
     pub default: &'static [f64],
+    /// The slow (rate-independent) loop depends on it; `false`: only the finite-rate form
+    /// ([`ZooModelSpec::finite_rate`]) uses it, and a slow-loop fit refuses to free it.
+    pub slow_loop: bool,
 }
 
 /// The values a parameter of the zoo may take (each value of an element array alike).
@@ -115,6 +118,7 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Elements,
             default: &[0.25, 0.25, 0.25, 0.25],
+            slow_loop: true,
         },
         ZooParameter {
             name: "slip_force",
@@ -123,12 +127,13 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Elements,
             default: &[0.125, 0.375, 0.625, 0.875],
+            slow_loop: true,
         },
         // GMS at finite rate (`lugre dynamics`, `MaxwellSlip::simulate`): the slip levels
         // follow the Stribeck curve from sum f_i down to fc; the slow loop ignores them.
-        lugre_parameter(Parameter::Fc, &[Parameter::Fc.default_value()]),
-        lugre_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
-        lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
+        rate_parameter(Parameter::Fc, &[Parameter::Fc.default_value()]),
+        rate_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
+        rate_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
         ZooParameter {
             name: "attraction",
             unit: "N/s",
@@ -136,9 +141,10 @@ const MAXWELL_SLIP: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[super::gms::DEFAULT_ATTRACTION],
+            slow_loop: false,
         },
-        lugre_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
-        lugre_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
+        rate_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
+        rate_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
     ],
     closes_minor_loops: true,
     finite_rate: true,
@@ -157,6 +163,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[0.25],
+            slow_loop: true,
         },
         ZooParameter {
             name: "thresholds",
@@ -165,6 +172,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             domain: Domain::NonNegative,
             shape: Shape::Elements,
             default: &[0.5, 1.5, 2.5, 3.5],
+            slow_loop: true,
         },
         ZooParameter {
             name: "weights",
@@ -173,6 +181,7 @@ const PRANDTL_ISHLINSKII: ZooModelSpec = ZooModelSpec {
             domain: Domain::Finite,
             shape: Shape::Elements,
             default: &[0.25, 0.25, 0.125, 0.125],
+            slow_loop: true,
         },
     ],
     closes_minor_loops: true,
@@ -192,6 +201,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
             domain: Domain::NonNegative,
             shape: Shape::Scalar,
             default: &[0.0],
+            slow_loop: true,
         },
         ZooParameter {
             name: "kw",
@@ -200,6 +210,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[2.0],
+            slow_loop: true,
         },
         ZooParameter {
             name: "rho",
@@ -208,6 +219,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[0.5],
+            slow_loop: true,
         },
         ZooParameter {
             name: "sigma",
@@ -216,6 +228,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
             domain: Domain::Closed(0.5, f64::INFINITY),
             shape: Shape::Scalar,
             default: &[2.0 / 3.0],
+            slow_loop: true,
         },
         ZooParameter {
             name: "n",
@@ -224,6 +237,7 @@ const BOUC_WEN: ZooModelSpec = ZooModelSpec {
             domain: Domain::Closed(1.0, super::bouc_wen::MAX_EXPONENT),
             shape: Shape::Scalar,
             default: &[1.0],
+            slow_loop: true,
         },
     ],
     closes_minor_loops: false,
@@ -243,6 +257,7 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[1.0],
+            slow_loop: true,
         },
         ZooParameter {
             name: "fc",
@@ -251,6 +266,8 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[1.0],
+            // The slow loop's z_max is fs / sigma0: fc only bounds zba.
+            slow_loop: false,
         },
         ZooParameter {
             name: "fs",
@@ -259,6 +276,7 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
             domain: Domain::Positive,
             shape: Shape::Scalar,
             default: &[2.0],
+            slow_loop: true,
         },
         ZooParameter {
             name: "zba",
@@ -267,13 +285,14 @@ const ELASTOPLASTIC: ZooModelSpec = ZooModelSpec {
             domain: Domain::NonNegative,
             shape: Shape::Scalar,
             default: &[0.5],
+            slow_loop: true,
         },
         // The finite rate's (`lugre dynamics`), with LuGre's names, units and defaults; the
         // slow loop ignores them.
-        lugre_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
-        lugre_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
-        lugre_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
-        lugre_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
+        rate_parameter(Parameter::Sigma1, &[Parameter::Sigma1.default_value()]),
+        rate_parameter(Parameter::Sigma2, &[Parameter::Sigma2.default_value()]),
+        rate_parameter(Parameter::Vs, &[Parameter::Vs.default_value()]),
+        rate_parameter(Parameter::Beta, &[Parameter::Beta.default_value()]),
     ],
     closes_minor_loops: false,
     finite_rate: true,
@@ -292,6 +311,15 @@ const fn lugre_parameter(p: Parameter, default: &'static [f64]) -> ZooParameter 
         },
         shape: Shape::Scalar,
         default,
+        slow_loop: true,
+    }
+}
+
+/// [`lugre_parameter`], used only at finite rate.
+const fn rate_parameter(p: Parameter, default: &'static [f64]) -> ZooParameter {
+    ZooParameter {
+        slow_loop: false,
+        ..lugre_parameter(p, default)
     }
 }
 
@@ -654,7 +682,7 @@ impl ZooModel {
 
 /// The name of every model lugre has, comma-separated: LuGre and Dahl, then the zoo's.
 pub fn model_names() -> String {
-    let classic = crate::fit::Family::ALL.map(|f| f.name());
+    let classic = crate::model::FAMILY_NAMES;
     let names: Vec<&str> = classic
         .into_iter()
         .chain(MODELS.iter().map(|m| m.name))

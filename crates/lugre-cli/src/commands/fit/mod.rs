@@ -38,6 +38,7 @@ use lugre_io::{Reader, Role, Rows, Spec};
 mod lab;
 mod output;
 mod spec;
+mod zoo;
 
 use output::{figure, print_table, write_csv, write_json};
 use spec::{build_spec, explain};
@@ -151,10 +152,28 @@ pub(crate) struct FitArgs {
         help_heading = "Fit"
     )]
     pub(crate) gate: Option<f64>,
+    #[arg(
+        long,
+        value_name = "N",
+        allow_hyphen_values = true,
+        value_parser = Whole(1),
+        help_heading = "Fit",
+        help = elements_help()
+    )]
+    pub(crate) elements: Option<usize>,
     #[command(flatten)]
     pub(crate) output: OutputArgs,
     #[command(flatten)]
     pub(crate) plot: PlotArgs,
+}
+
+/// `--elements`'s help, with the core's default and limit.
+fn elements_help() -> String {
+    format!(
+        "An element model of the zoo (maxwell-slip, prandtl-ishlinskii): the number of elements, their thresholds held on a grid spanning the record's amplitude (default {}, at most {}; the model's flags give them instead: --thresholds, or --slip-force with --stiffness)",
+        lugre::fit::DEFAULT_ELEMENTS,
+        lugre::fit::MAX_ELEMENTS
+    )
 }
 
 /// `--noise`: one of the core's names.
@@ -223,6 +242,14 @@ impl FitChoice {
 }
 
 pub(crate) fn run(args: &FitArgs) -> Result<()> {
+    if let Some(model) = args.model.model.zoo() {
+        return zoo::run(args, model);
+    }
+    if args.elements.is_some() {
+        bail!(
+            "--elements applies to an element model of the zoo (--model maxwell-slip or prandtl-ishlinskii)"
+        );
+    }
     if args.fit != FitChoice::Staged {
         for (flag, given) in [
             ("--stribeck", args.stribeck.is_some()),
@@ -373,7 +400,7 @@ fn report_fit(args: &FitArgs, path: &Path, record: &Record, report: &FitReport) 
     let normal = record.normal.is_some();
     let residuals = report.residuals(&record.f);
     if let Some(csv) = &args.output.csv {
-        write_atomic(csv, |w| write_csv(w, record, report, &residuals))?;
+        write_atomic(csv, |w| write_csv(w, record, &report.fitted, &residuals))?;
     }
     if let Some(plot) = &args.plot.path {
         let units = record.units.clone().with_flag(args.plot.units.as_deref())?;
@@ -386,21 +413,7 @@ fn report_fit(args: &FitArgs, path: &Path, record: &Record, report: &FitReport) 
     } else {
         let mut out = std::io::BufWriter::new(stdout.lock());
         print_table(&mut out, report, path, normal)?;
-        if let Some(csv) = &args.output.csv {
-            writeln!(
-                out,
-                "\nWrote the data, fit and residuals ({}u,F,fit,residual) to {}",
-                if record.t.is_some() { "t," } else { "" },
-                csv.display()
-            )?;
-        }
-        if let Some(plot) = &args.plot.path {
-            writeln!(
-                out,
-                "Drew the data, the fit and the residuals to {}",
-                plot.display()
-            )?;
-        }
+        output::print_written(&mut out, args, record.t.is_some())?;
         out.flush()?;
     }
     Ok(())

@@ -2,7 +2,10 @@
 //! table and the JSON document.
 
 use anyhow::Result;
-use lugre::fit::{Covariance, Family, FitKind, FitReport, FitWarning, PositionHandling};
+use lugre::fit::{
+    Covariance, Estimate, Family, FitKind, FitReport, FitSummary, FitWarning, NoiseLevels,
+    PositionHandling,
+};
 use lugre::model::{normal, Parameter};
 use std::io::Write;
 use std::path::Path;
@@ -19,7 +22,7 @@ const RESIDUAL_BINS: usize = 600;
 pub(super) fn write_csv(
     w: &mut dyn Write,
     record: &Record,
-    report: &FitReport,
+    fitted: &[f64],
     res: &[f64],
 ) -> Result<()> {
     let mut rows = NumberRows::new();
@@ -34,7 +37,7 @@ pub(super) fn write_csv(
         None => writeln!(w, "u,{f_name},fit,residual")?,
     }
     for i in 0..record.u.len() {
-        let (u, f, fit, r) = (record.u[i], record.f[i], report.fitted[i], res[i]);
+        let (u, f, fit, r) = (record.u[i], record.f[i], fitted[i], res[i]);
         let lead: &[f64] = match &record.t {
             Some(t) => &[t[i], u],
             None => &[u],
@@ -65,7 +68,23 @@ pub(super) fn write_csv(
 /// the sample) and against the input u, where structure the fit missed shows (a bias at the
 /// reversals, a trend with the velocity).
 pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64], units: &Units) -> Panels {
-    let what = format!("{} fit", report.kind.label());
+    let title = format!(
+        "{} {} fit: residual RMS {}",
+        report.family.label(),
+        report.kind.label(),
+        sig(report.rms, 4)
+    );
+    figure_of(record, title, &report.fitted, res, units)
+}
+
+/// [`figure`] of any fit: `title` over the fit `fitted` at the samples.
+pub(super) fn figure_of(
+    record: &Record,
+    title: String,
+    fitted: &[f64],
+    res: &[f64],
+    units: &Units,
+) -> Panels {
     let data: Vec<(f64, f64)> = record
         .u
         .iter()
@@ -77,7 +96,7 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64], units: &U
         .u
         .iter()
         .copied()
-        .zip(report.fitted.iter().copied())
+        .zip(fitted.iter().copied())
         .collect();
     let (y_label, residual_label) = if record.normal.is_some() {
         (
@@ -91,11 +110,7 @@ pub(super) fn figure(record: &Record, report: &FitReport, res: &[f64], units: &U
         )
     };
     let fit_fig = Figure::new(units.u("input u"), y_label)
-        .title(format!(
-            "{} {what}: residual RMS {}",
-            report.family.label(),
-            sig(report.rms, 4)
-        ))
+        .title(title)
         .curve(
             Curve::new(data, LineStyle::Solid, BLUE)
                 .width(1)
@@ -241,24 +256,73 @@ pub(super) fn print_table(
         )?;
     }
     writeln!(w)?;
+    let summary = Summary::of(r, normal);
+    print_estimates(w, &summary)?;
+    write_fixed(w, r.fixed.iter().map(|(n, v)| (label(r, n, normal), *v)))?;
+    print_statistics(w, &summary)
+}
+
+/// What the table and the JSON document of every fit show: the core's view of a LuGre or Dahl
+/// fit ([`Summary::of`]) or of a model of the zoo's, with each estimate's label and key.
+pub(super) struct Summary<'a> {
+    pub(super) core: FitSummary<'a>,
+    /// Each estimate's label in the table and key in the JSON document.
+    pub(super) labels: Vec<String>,
+    pub(super) keys: Vec<String>,
+}
+
+impl<'a> Summary<'a> {
+    /// A LuGre or Dahl fit's.
+    pub(super) fn of(r: &'a FitReport, normal: bool) -> Self {
+        Self {
+            core: r.summary(),
+            labels: r
+                .estimates
+                .iter()
+                .map(|e| label(r, e.name, normal))
+                .collect(),
+            keys: r
+                .estimates
+                .iter()
+                .map(|e| key(e.name, normal).to_string())
+                .collect(),
+        }
+    }
+}
+
+impl<'a> std::ops::Deref for Summary<'a> {
+    type Target = FitSummary<'a>;
+
+    fn deref(&self) -> &FitSummary<'a> {
+        &self.core
+    }
+}
+
+/// The table's rows of the estimates.
+pub(super) fn print_estimates(w: &mut impl Write, s: &Summary) -> Result<()> {
     writeln!(
         w,
         "{:<12} {:>16} {:>14}   {:<36}",
         "parameter", "value", "std. error", "95 % confidence interval"
     )?;
-    for e in &r.estimates {
+    for (e, label) in s.estimates.iter().zip(&s.labels) {
         writeln!(
             w,
             "{:<12} {:>16} {:>14}   [{}, {}]{}",
-            label(r, e.name, normal),
+            label,
             sig(e.value, 10),
             sig(e.stderr, 4),
             sig(e.ci95[0], 8),
             sig(e.ci95[1], 8),
-            own_dof(r, e)
+            own_dof(s.dof, e)
         )?;
     }
-    write_fixed(w, r.fixed.iter().map(|(n, v)| (label(r, n, normal), *v)))?;
+    Ok(())
+}
+
+/// The table's lines after the estimates: residual, iterations, noise, correlation,
+/// covariance and warnings.
+pub(super) fn print_statistics(w: &mut impl Write, r: &Summary) -> Result<()> {
     writeln!(w)?;
     writeln!(
         w,
@@ -282,11 +346,31 @@ pub(super) fn print_table(
         )?;
     }
     if r.estimates.len() > 1 {
-        print_correlation(w, r, normal)?;
+        print_correlation(w, r)?;
     }
     writeln!(w, "standard errors: {}", r.covariance.describe())?;
-    for warning in &r.warnings {
+    for warning in r.warnings {
         writeln!(w, "warning: {}", warning_text(warning))?;
+    }
+    Ok(())
+}
+
+/// The lines naming the files written (`--csv`, `--plot`; `times`: the CSV has a column t).
+pub(super) fn print_written(w: &mut impl Write, args: &super::FitArgs, times: bool) -> Result<()> {
+    if let Some(csv) = &args.output.csv {
+        writeln!(
+            w,
+            "\nWrote the data, fit and residuals ({}u,F,fit,residual) to {}",
+            if times { "t," } else { "" },
+            csv.display()
+        )?;
+    }
+    if let Some(plot) = &args.plot.path {
+        writeln!(
+            w,
+            "Drew the data, the fit and the residuals to {}",
+            plot.display()
+        )?;
     }
     Ok(())
 }
@@ -318,30 +402,25 @@ pub(super) fn warning_text(warning: &FitWarning) -> String {
     }
 }
 
-fn print_correlation(w: &mut impl Write, r: &FitReport, normal: bool) -> Result<()> {
+fn print_correlation(w: &mut impl Write, r: &Summary) -> Result<()> {
     writeln!(
         w,
         "correlation of the estimates (condition number of the scaled J^T J: {}):",
         sig(r.condition_number, 3)
     )?;
-    for (i, row) in r.correlation.iter().enumerate() {
+    for (row, label) in r.correlation.iter().zip(&r.labels) {
         let cells: Vec<String> = row.iter().map(|c| format!("{c:>7.3}")).collect();
-        writeln!(
-            w,
-            "  {:<12} {}",
-            label(r, r.estimates[i].name, normal),
-            cells.join(" ")
-        )?;
+        writeln!(w, "  {:<12} {}", label, cells.join(" "))?;
     }
     Ok(())
 }
 
 /// The note after an estimate's row: at its bound, or an interval whose t has fewer degrees of
 /// freedom than the fit's (S4).
-fn own_dof(r: &FitReport, e: &lugre::fit::Estimate) -> String {
+fn own_dof(dof: usize, e: &Estimate) -> String {
     if e.at_bound {
         "  (at its bound)".to_string()
-    } else if e.dof < r.dof as f64 - 0.5 {
+    } else if e.dof < dof as f64 - 0.5 {
         format!("  (t on {:.1} degrees of freedom)", e.dof)
     } else {
         String::new()
@@ -356,37 +435,8 @@ pub(super) fn write_json<W: Write>(
     path: &Path,
     normal: bool,
 ) -> std::io::Result<()> {
-    j.raw("{\"parameters\":{")?;
-    for (k, e) in r.estimates.iter().enumerate() {
-        if k > 0 {
-            j.raw(",")?;
-        }
-        j.raw(&quote(key(e.name, normal)))?;
-        j.raw(":{\"value\":")?;
-        num_or_null(&mut j, e.value)?;
-        j.raw(",\"stderr\":")?;
-        num_or_null(&mut j, e.stderr)?;
-        j.raw(",\"dof\":")?;
-        num_or_null(&mut j, e.dof)?;
-        j.raw(",\"ci95\":[")?;
-        num_or_null(&mut j, e.ci95[0])?;
-        j.raw(",")?;
-        num_or_null(&mut j, e.ci95[1])?;
-        j.raw(&format!("],\"at_bound\":{}}}", e.at_bound))?;
-    }
-    j.raw("},\"rms\":")?;
-    num_or_null(&mut j, r.rms)?;
-    j.raw(",\"iterations\":")?;
-    j.int(r.iterations)?;
-    j.raw(",\"evaluations\":")?;
-    j.int(r.evaluations)?;
-    j.raw(",\"starts\":")?;
-    j.int(r.starts)?;
-    j.raw(&format!(
-        ",\"converged\":{},\"termination\":{}",
-        r.converged,
-        quote(&r.termination)
-    ))?;
+    let summary = Summary::of(r, normal);
+    write_json_head(&mut j, &summary)?;
     j.raw(&format!(
         ",\"model\":{},\"fit\":{}",
         quote(&r.family.label().to_ascii_lowercase()),
@@ -401,7 +451,54 @@ pub(super) fn write_json<W: Write>(
         j.raw(":")?;
         num_or_null(&mut j, *v)?;
     }
-    j.raw("},\"samples\":")?;
+    j.raw("}")?;
+    write_json_tail(j, &summary, path, normal)
+}
+
+/// The document's start: `{"parameters": {...}, "rms", "iterations", "evaluations", "starts",
+/// "converged", "termination"`.
+pub(super) fn write_json_head<W: Write>(j: &mut JsonOut<W>, r: &Summary) -> std::io::Result<()> {
+    j.raw("{\"parameters\":{")?;
+    for (k, (e, key)) in r.estimates.iter().zip(&r.keys).enumerate() {
+        if k > 0 {
+            j.raw(",")?;
+        }
+        j.raw(&quote(key))?;
+        j.raw(":{\"value\":")?;
+        num_or_null(j, e.value)?;
+        j.raw(",\"stderr\":")?;
+        num_or_null(j, e.stderr)?;
+        j.raw(",\"dof\":")?;
+        num_or_null(j, e.dof)?;
+        j.raw(",\"ci95\":[")?;
+        num_or_null(j, e.ci95[0])?;
+        j.raw(",")?;
+        num_or_null(j, e.ci95[1])?;
+        j.raw(&format!("],\"at_bound\":{}}}", e.at_bound))?;
+    }
+    j.raw("},\"rms\":")?;
+    num_or_null(j, r.rms)?;
+    j.raw(",\"iterations\":")?;
+    j.int(r.iterations)?;
+    j.raw(",\"evaluations\":")?;
+    j.int(r.evaluations)?;
+    j.raw(",\"starts\":")?;
+    j.int(r.starts)?;
+    j.raw(&format!(
+        ",\"converged\":{},\"termination\":{}",
+        r.converged,
+        quote(r.termination)
+    ))
+}
+
+/// The document's end: `"samples", "dof", ..., "covariance", "normal_force", "input"}`.
+pub(super) fn write_json_tail<W: Write>(
+    mut j: JsonOut<W>,
+    r: &Summary,
+    path: &Path,
+    normal: bool,
+) -> std::io::Result<()> {
+    j.raw(",\"samples\":")?;
     j.int(r.samples)?;
     j.raw(",\"dof\":")?;
     j.int(r.dof)?;
@@ -410,33 +507,13 @@ pub(super) fn write_json<W: Write>(
     j.raw(",\"condition_number\":")?;
     num_or_null(&mut j, r.condition_number)?;
     j.raw(",\"correlation\":")?;
-    write_matrix(&mut j, &r.correlation)?;
+    write_matrix(&mut j, r.correlation)?;
     if let Some(n) = r.turning_points {
         j.raw(",\"turning_points\":")?;
         j.int(n)?;
     }
-    if let Some(n) = &r.noise {
-        j.raw(",\"noise\":{\"position\":")?;
-        num_or_null(&mut j, n.position)?;
-        j.raw(",\"force\":")?;
-        num_or_null(&mut j, n.force)?;
-        j.raw(&format!(
-            ",\"handling\":{},\"description\":{}",
-            quote(n.handling.key()),
-            quote(&n.handling.describe())
-        ))?;
-        match n.handling {
-            PositionHandling::Smoothed { lambda } => {
-                j.raw(",\"lambda\":")?;
-                num_or_null(&mut j, lambda)?;
-            }
-            PositionHandling::Gate { gate } => {
-                j.raw(",\"gate\":")?;
-                num_or_null(&mut j, gate)?;
-            }
-            _ => {}
-        }
-        j.raw("}")?;
+    if let Some(n) = r.noise {
+        write_noise(&mut j, n)?;
     }
     j.raw(",\"warnings\":[")?;
     for (k, warning) in r.warnings.iter().enumerate() {
@@ -469,6 +546,31 @@ pub(super) fn write_json<W: Write>(
     j.finish()
 }
 
+/// `,"noise": {"position", "force", "handling", "description"[, "lambda" | "gate"]}`.
+fn write_noise<W: Write>(j: &mut JsonOut<W>, n: &NoiseLevels) -> std::io::Result<()> {
+    j.raw(",\"noise\":{\"position\":")?;
+    num_or_null(j, n.position)?;
+    j.raw(",\"force\":")?;
+    num_or_null(j, n.force)?;
+    j.raw(&format!(
+        ",\"handling\":{},\"description\":{}",
+        quote(n.handling.key()),
+        quote(&n.handling.describe())
+    ))?;
+    match n.handling {
+        PositionHandling::Smoothed { lambda } => {
+            j.raw(",\"lambda\":")?;
+            num_or_null(j, lambda)?;
+        }
+        PositionHandling::Gate { gate } => {
+            j.raw(",\"gate\":")?;
+            num_or_null(j, gate)?;
+        }
+        _ => {}
+    }
+    j.raw("}")
+}
+
 /// The JSON document of [`write_json`] as a value, for the lab's fits to add their keys to.
 pub(super) fn json_value(r: &FitReport, path: &Path, normal: bool) -> Result<serde_json::Value> {
     let mut text = Vec::new();
@@ -477,12 +579,12 @@ pub(super) fn json_value(r: &FitReport, path: &Path, normal: bool) -> Result<ser
 }
 
 /// `s` as a JSON string.
-fn quote(s: &str) -> String {
+pub(super) fn quote(s: &str) -> String {
     serde_json::Value::from(s).to_string()
 }
 
 /// `x`, or `null` when it is not finite (JSON has no NaN or infinity).
-fn num_or_null<W: Write>(j: &mut JsonOut<W>, x: f64) -> std::io::Result<()> {
+pub(super) fn num_or_null<W: Write>(j: &mut JsonOut<W>, x: f64) -> std::io::Result<()> {
     if x.is_finite() {
         j.num(x)
     } else {

@@ -27,17 +27,7 @@ pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
         }
     }
     for item in names("--fix", args.fix.as_deref())? {
-        // NAME, or NAME=VALUE (the value given with it: --fix sigma2=0.05).
-        let (name, value) = match item.split_once('=') {
-            Some((name, value)) => match value.trim().parse::<f64>() {
-                Ok(v) if v.is_finite() => (name.trim(), Some(v)),
-                _ => bail!(
-                    "--fix: {}: the value is not a finite number",
-                    quoted(&excerpt(item))
-                ),
-            },
-            None => (item, None),
-        };
+        let (name, value) = fixed_item(item)?;
         if let Some(v) = value {
             spec = spec
                 .set(name, v)
@@ -74,6 +64,20 @@ pub(super) fn build_spec(args: &FitArgs) -> Result<FitSpec> {
     Ok(spec)
 }
 
+/// An item of `--fix`: NAME, or NAME=VALUE (the value given with it: --fix sigma2=0.05).
+pub(super) fn fixed_item(item: &str) -> Result<(&str, Option<f64>)> {
+    Ok(match item.split_once('=') {
+        Some((name, value)) => match value.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => (name.trim(), Some(v)),
+            _ => bail!(
+                "--fix: {}: the value is not a finite number",
+                quoted(&excerpt(item))
+            ),
+        },
+        None => (item, None),
+    })
+}
+
 /// `e` with an unknown parameter's name cut short: it is the user's text, of any length.
 fn short_name(e: FitError) -> FitError {
     match e {
@@ -87,7 +91,7 @@ fn short_name(e: FitError) -> FitError {
 }
 
 /// The names of a comma-separated list (none for an absent flag).
-fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
+pub(super) fn names<'a>(flag: &str, text: Option<&'a str>) -> Result<Vec<&'a str>> {
     let Some(text) = text else {
         return Ok(Vec::new());
     };

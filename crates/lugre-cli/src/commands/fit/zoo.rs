@@ -1,0 +1,204 @@
+//! `lugre fit --model NAME` for a model of the zoo (`lugre::fit::fit_zoo`): the slow-loop fit of
+//! its table's parameters to a slow periodic record `u,F`, through the same table, JSON and CSV
+//! as the LuGre fit. The model's flags given are held values (with `--fix`) or start values;
+//! an element model's thresholds come from its flags (`--thresholds`; `--slip-force` with
+//! `--stiffness`) or the grid on the record's amplitude, `--elements N` of them.
+
+use anyhow::{anyhow, bail, Result};
+use lugre::fit::{fit_zoo, FitError, SlowOptions, ZooFitReport, ZooFitSpec};
+use lugre::zoo::{Shape, ZooModelSpec};
+use std::io::Write;
+use std::path::Path;
+
+use super::output::{
+    figure_of, print_estimates, print_statistics, quote, write_csv, write_json_head,
+    write_json_tail, Summary,
+};
+use super::{read_record, FitArgs, FitChoice, Record};
+use crate::args::check_files;
+use crate::fmt::sig;
+use crate::io::atomic::write_atomic;
+use crate::io::json::JsonOut;
+
+pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
+    refuse_flags(args, model)?;
+    check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
+    let Some(path) = &args.input else {
+        bail!("no data: give --input FILE.csv (columns u,F)");
+    };
+    let spec = build_spec(args)?;
+    if let Some(plot) = &args.plot.path {
+        crate::plot::check_path(plot)?;
+    }
+    let record = read_record(args, path)?;
+    if record.normal.is_some() || record.velocity.is_some() {
+        bail!(
+            "{}: the {} fit reads a slow record u,F (no normal force, no velocity)",
+            path.display(),
+            model.label
+        );
+    }
+    if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
+        bail!(
+            "{}: row {} has no force: the slow fit needs one at every row",
+            path.display(),
+            i + 1
+        );
+    }
+    let mut options = SlowOptions::default().with_noise(args.noise.unwrap_or_default());
+    if let Some(gate) = args.gate {
+        options = options.with_gate(gate);
+    }
+    let report = fit_zoo(&spec, &record.u, &record.f, options).map_err(|e| match e {
+        FitError::BadGate { .. } => anyhow!("--gate: {e}"),
+        FitError::TooFewSamples { .. } | FitError::NoReversal { .. } | FitError::ZeroForce => {
+            anyhow!("{}: {e}", path.display())
+        }
+        FitError::BadElements { .. } => anyhow!("--elements: {e}"),
+        FitError::Unidentifiable { .. } => anyhow!(
+            "{e}; hold a scalar at a value you know (--fix NAME=VALUE), fit fewer elements (--elements), or fit data that excite it"
+        ),
+        other => anyhow!("{other}"),
+    })?;
+    show(args, path, &record, &report)
+}
+
+/// Flags of the LuGre fits that a model of the zoo does not take.
+fn refuse_flags(args: &FitArgs, model: &ZooModelSpec) -> Result<()> {
+    if args.fit != FitChoice::Slow {
+        bail!(
+            "--fit {}: the {} model is fitted to its slow loop (--fit slow)",
+            args.fit.kind().label(),
+            model.label
+        );
+    }
+    let given = [
+        ("--bounds", args.bounds.is_some()),
+        ("--x0", args.x0.is_some()),
+        ("--starts", args.starts.is_some()),
+        ("--stribeck", args.stribeck.is_some()),
+        ("--presliding", args.presliding.is_some()),
+        (
+            "--interpolate cubic",
+            args.interpolate == crate::args::Interpolate::Cubic,
+        ),
+    ];
+    if let Some((flag, _)) = given.into_iter().find(|(_, g)| *g) {
+        bail!(
+            "{flag} does not apply to the {} fit (its bounds are the parameters' domains)",
+            model.label
+        );
+    }
+    Ok(())
+}
+
+/// The request from the flags: the model's values given, `--fix`, `--free`, `--elements`.
+fn build_spec(args: &FitArgs) -> Result<ZooFitSpec> {
+    let Some((model, given)) = args.model.zoo_given()? else {
+        bail!("--model names no model of the zoo");
+    };
+    let mut spec = ZooFitSpec::new(model.name)?;
+    for (name, values) in &given {
+        spec = spec.set(name, values)?;
+    }
+    for item in super::spec::names("--fix", args.fix.as_deref())? {
+        let (name, value) = super::spec::fixed_item(item)?;
+        if let Some(v) = value {
+            spec = spec.set(name, &[v]).map_err(|e| anyhow!("--fix: {e}"))?;
+        }
+        spec = spec.fix(name).map_err(|e| anyhow!("--fix: {e}"))?;
+    }
+    for name in super::spec::names("--free", args.free.as_deref())? {
+        spec = spec.free(name).map_err(|e| anyhow!("--free: {e}"))?;
+    }
+    if let Some(n) = args.elements {
+        spec = spec.with_elements(n);
+    }
+    Ok(spec)
+}
+
+/// The CSV and the figure asked for, a warning for a fit that did not converge, then the JSON
+/// document or the table.
+fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Result<()> {
+    let residuals: Vec<f64> = record.f.iter().zip(&r.fitted).map(|(f, y)| f - y).collect();
+    if let Some(csv) = &args.output.csv {
+        write_atomic(csv, |w| write_csv(w, record, &r.fitted, &residuals))?;
+    }
+    let label = r.model.spec().label;
+    if let Some(plot) = &args.plot.path {
+        let units = record.units.clone().with_flag(args.plot.units.as_deref())?;
+        let title = format!("{label} slow fit: residual RMS {}", sig(r.rms, 4));
+        figure_of(record, title, &r.fitted, &residuals, &units).save(plot)?;
+    }
+    if !r.converged {
+        let _ = writeln!(
+            std::io::stderr(),
+            "lugre: warning: the slow fit did not converge ({}); the best point found is reported",
+            r.termination
+        );
+    }
+    let summary = summary(r);
+    let stdout = std::io::stdout();
+    if args.output.json {
+        let mut j = JsonOut::new(stdout.lock());
+        write_json_head(&mut j, &summary)?;
+        j.raw(&format!(
+            ",\"model\":{},\"fit\":\"slow\",\"values\":{},\"fixed\":{}",
+            quote(r.model.spec().name),
+            crate::zoo_args::zoo_json(&r.model),
+            fixed_json(r)
+        ))?;
+        write_json_tail(j, &summary, path, false)?;
+        return Ok(());
+    }
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    writeln!(
+        out,
+        "{label} slow-loop fit (the model's exact periodic loop) to {} samples from {} ({} turning points)\n",
+        r.samples,
+        path.display(),
+        r.turning_points
+    )?;
+    print_estimates(&mut out, &summary)?;
+    for (name, values) in &r.fixed {
+        let v: Vec<String> = values.iter().map(|x| sig(*x, 10)).collect();
+        writeln!(out, "fixed: {name} = {}", v.join(","))?;
+    }
+    writeln!(out, "fitted model: {}", crate::zoo_args::zoo_line(&r.model))?;
+    print_statistics(&mut out, &summary)?;
+    super::output::print_written(&mut out, args, false)?;
+    out.flush()?;
+    Ok(())
+}
+
+fn summary(r: &ZooFitReport) -> Summary<'_> {
+    let names: Vec<String> = r.estimates.iter().map(|e| e.name.to_string()).collect();
+    Summary {
+        core: r.summary(),
+        labels: names.clone(),
+        keys: names,
+    }
+}
+
+/// The held parameters: a number for a scalar, a list for an element model's thresholds.
+fn fixed_json(r: &ZooFitReport) -> serde_json::Value {
+    let mut j = serde_json::Map::new();
+    for (name, values) in &r.fixed {
+        let finite: Vec<f64> = values.iter().copied().filter(|x| x.is_finite()).collect();
+        j.insert(
+            (*name).to_string(),
+            match finite.as_slice() {
+                [x] if r
+                    .model
+                    .spec()
+                    .parameter(name)
+                    .is_some_and(|p| p.shape == Shape::Scalar) =>
+                {
+                    (*x).into()
+                }
+                _ => finite.into(),
+            },
+        );
+    }
+    j.into()
+}
