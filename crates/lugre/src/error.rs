@@ -675,8 +675,12 @@ pub enum DynamicsError {
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoModel,
     /// A model of the zoo without a finite-rate form ([`crate::zoo::ZooModelSpec::finite_rate`]).
-    #[error("model {model}: the dynamics take {} (the other models of the zoo have no finite-rate form here)", crate::zoo::dynamics_model_names())]
-    NoFiniteRate { model: &'static str },
+    #[error("model {model}: the dynamics take {takes} (the other models of the zoo have no finite-rate form here)")]
+    NoFiniteRate {
+        model: &'static str,
+        /// The models the dynamics take (`crate::zoo::dynamics_model_names`).
+        takes: String,
+    },
     #[error("{}", self.render(|f| f.name().to_string()))]
     NoDrive,
     #[error("{}", self.render(|f| f.name().to_string()))]

@@ -153,6 +153,7 @@ impl Request {
         if !model.spec().finite_rate {
             return Err(DynamicsError::NoFiniteRate {
                 model: model.spec().name,
+                takes: crate::zoo::dynamics_model_names(),
             });
         }
         self.zoo = Some(model.clone());

@@ -693,7 +693,7 @@ pub fn model_names() -> String {
 /// The models `lugre dynamics` takes, as its messages list them: `lugre, dahl or
 /// elastoplastic` (LuGre and Dahl, then each model of the zoo with a finite-rate form).
 pub fn dynamics_model_names() -> String {
-    let classic = crate::fit::Family::ALL.map(|f| f.name());
+    let classic = crate::model::FAMILY_NAMES;
     let names: Vec<&str> = classic
         .into_iter()
         .chain(MODELS.iter().filter(|m| m.finite_rate).map(|m| m.name))
