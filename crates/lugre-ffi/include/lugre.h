@@ -484,7 +484,8 @@ enum LugreStatus lugre_dynamics_set_model(struct LugreDynamics *request,
 
 // A model of the zoo as the friction (copied: the model may be freed after): the
 // elasto-plastic one (`lugre_zoo_new("elastoplastic", ...)`, its `sigma0, sigma1, sigma2,
-// fc, fs, vs, beta, zba`); the other models are refused with the core's message.
+// fc, fs, vs, beta, zba`; on a scenario, those `lugre_zoo_new` was not given are the
+// scenario's, Table I); the other models are refused with the core's message.
 enum LugreStatus lugre_dynamics_set_zoo(struct LugreDynamics *request,
                                         const struct LugreZoo *model);
 
@@ -588,6 +589,19 @@ enum LugreStatus lugre_zoo_cycles_new(const struct LugreZoo *zoo,
                                       double gate,
                                       const double *x0,
                                       struct LugreCycles **out);
+
+// The force at each of the `n` samples of the input `u` at the strictly increasing times `t`
+// (linear in between), from rest at `u[0]`, to `force_out` (`n` values; NULL skips), as
+// `lugre simulate --model NAME --input` gives it (the core's `ZooModel::simulate`: exact for
+// a rate-independent model, at finite rate where the model has rate dependence). `z0` is
+// NULL: an initial state given (as `lugre_simulate`'s `z0`) is refused with the core's
+// message, as `lugre simulate --model NAME --x0` refuses it. Nothing is written on a refusal.
+enum LugreStatus lugre_zoo_simulate(const struct LugreZoo *zoo,
+                                    const double *t,
+                                    const double *u,
+                                    size_t n,
+                                    const double *z0,
+                                    double *force_out);
 
 #ifdef __cplusplus
 }  // extern "C"

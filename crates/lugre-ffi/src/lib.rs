@@ -41,8 +41,8 @@ pub use dynamics::{
 };
 pub use zoo::{
     lugre_zoo_cycles_new, lugre_zoo_free, lugre_zoo_loop_new, lugre_zoo_model_info,
-    lugre_zoo_model_name, lugre_zoo_new, lugre_zoo_parameter, lugre_zoo_value, LugreZoo,
-    LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
+    lugre_zoo_model_name, lugre_zoo_new, lugre_zoo_parameter, lugre_zoo_simulate, lugre_zoo_value,
+    LugreZoo, LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
 };
 
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};
