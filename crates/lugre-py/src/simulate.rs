@@ -117,6 +117,11 @@ pub fn simulate_zoo<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     refuse_lugre_keywords(model, others)?;
     let [turning_points, t, u, speed] = input;
+    if [turning_points, t, u].iter().all(|x| given(*x).is_none()) {
+        return Err(PyValueError::new_err(
+            "no input: give t and u (samples, linear in between) or turning_points (at speed)",
+        ));
+    }
     let args = SimulateArgs {
         turning_points,
         t,

@@ -97,7 +97,7 @@ def test_sine_is_refused_by_name():
         ({"t": "abc", "u": [0, 1, 2]}, TypeError, r"\bt\b"),
         ({"turning_points": TURNING, "speed": -1}, ValueError, "speed"),
         ({"turning_points": TURNING, "t": [0, 1], "u": [0, 1]}, ValueError, "turning_points"),
-        ({}, ValueError, "no input"),
+        ({}, ValueError, r"^no input: give t and u \(samples, linear in between\) or turning_points \(at speed\)$"),
     ],
 )
 def test_bad_input_names_the_argument(keywords, error, pattern):
