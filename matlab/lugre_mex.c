@@ -431,6 +431,21 @@ static mxArray *cycles_struct(int nrhs, const mxArray *prhs[]) {
     return struct_of(11, names, v);
 }
 
+/* The force of a model of the zoo at t[0..n], x[0..n] from rest (z0: NULL; given, the C ABI
+ * refuses it in the core's words): r.t, r.x, r.F, as `lugre simulate --model NAME`. */
+static mxArray *zoo_simulate_struct(LugreZoo *zoo, const double *t, const double *x, size_t n,
+                                    const double *z0) {
+    double *f = doubles(n);
+    LugreStatus st = lugre_zoo_simulate(zoo, t, x, n, z0, f);
+    lugre_zoo_free(zoo);
+    check(st);
+    static const char *names[] = {"t", "x", "F"};
+    mxArray *v[] = {column(t, n), column(x, n), column(f, n)};
+    return struct_of(3, names, v);
+}
+
+/* lugre_simulate(t, x, params, z0): LuGre's (or Dahl's) exact response from z0 (default 0),
+ * or a model of the zoo's force from rest (params.model names it, as lugre_loop takes it). */
 static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     size_t n = 0, nx = 0;
     const double *t = vector(prhs[0], "t", &n);
@@ -438,7 +453,20 @@ static mxArray *simulate_struct(int nrhs, const mxArray *prhs[]) {
     /* The core's words (InputError), the displacement named as here. */
     if (n != nx) mexErrMsgIdAndTxt(ERROR_ID, "t and x have different lengths (%d and %d)", (int)n, (int)nx);
     double z0 = nrhs > 3 && !mxIsEmpty(prhs[3]) ? scalar(prhs[3], "z0") : 0.0;
-    LugreModel *m = model_of(nrhs > 2 ? prhs[2] : NULL);
+    const double *given = nrhs > 3 && !mxIsEmpty(prhs[3]) ? &z0 : NULL;
+    const mxArray *params = nrhs > 2 ? prhs[2] : NULL;
+    char name[64];
+    const char *model = model_name(params, name, sizeof name);
+    LugreModel *m = NULL;
+    if (model == NULL || strcmp(model, "lugre") == 0) {
+        mxArray *copy = NULL;
+        m = model_of(lugre_fields(params, model, &copy));
+        if (copy != NULL) mxDestroyArray(copy);
+    } else {
+        LugreZoo *zoo = NULL;
+        check(zoo_of(model, params, &zoo, &m));
+        if (zoo != NULL) return zoo_simulate_struct(zoo, t, x, n, given);
+    }
     double *z = doubles(n), *f = doubles(n);
     LugreStatus st = lugre_simulate(m, t, x, n, z0, z, f);
     lugre_model_free(m);

@@ -263,6 +263,17 @@ function failures = zoo_models(cli)
     end
     failures += expect(isequal(lugre_loop(int8(u * 2), struct('model', model)), lugre_loop(u * 2, struct('model', model))), ...
                        [model ': an int8 input']);
+    % The force from rest at each sample of a record (lugre_simulate with params.model), as
+    % `lugre simulate --model NAME --input --json`; LuGre's initial state z0 is refused.
+    ts = [0 0.5 1 2 2.2 3.7 4];
+    xs = [0 1 2.5 -1 -1.5 0.25 2];
+    s = lugre_simulate(ts, xs, given);
+    j = cli(['simulate --model ' model flags ' --input ' record({'t', 'u'}, [ts' xs']) ' --json']);
+    failures += expect(isequal(s.F, array(j, 'y')) && isequal(s.t, ts') && isequal(s.x, xs'), ...
+                       [model ': simulate, the CLI''s force']);
+    failures += expect(isequal(fieldnames(s), {'t'; 'x'; 'F'}), [model ': simulate, the fields t, x, F']);
+    failures += raises(@() lugre_simulate(ts, xs, given, 0), ...
+                       'z0 is an option of LuGre''s and Dahl''s simulation; the ');
     % Bad input: the core's message, 1-based.
     bad = struct('model', model);
     bad.(table(1).name) = [NaN table(1).default(2:end)];

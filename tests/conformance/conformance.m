@@ -292,8 +292,12 @@ function got = mex_answer(c)
       r = lugre_cycles(cast_as('history', numbers(f.history)), field_or(f, 'gate', 0), params, field_or(f, 'x0', []));
       got = cycles_answer(r, isfield(f, 'model'));
     case 'simulate'
-      r = lugre_simulate(numbers(f.t), numbers(f.x), params_of(field_or(f, 'model', struct()), classes), field_or(f, 'x0', 0));
-      got = struct('t', r.t, 'u', r.x, 'z', r.z, 'y', r.F);
+      r = lugre_simulate(numbers(f.t), numbers(f.x), params_of(field_or(f, 'model', struct()), classes), field_or(f, 'x0', []));
+      if isfield(r, 'z')
+        got = struct('t', r.t, 'u', r.x, 'z', r.z, 'y', r.F);
+      else  % a model of the zoo: no state
+        got = struct('t', r.t, 'u', r.x, 'y', r.F);
+      end
     case 'element'
       x = numbers(f.x);
       if isfield(f, 'dt')

@@ -143,7 +143,7 @@ fn bad_requests_of_the_zoo_get_one_line() {
     );
     rejects(
         &["simulate", "--model", "maxwell-slip", "--sine", "1,1"],
-        "--sine is an option of LuGre's and Dahl's simulation; --model maxwell-slip is simulated from rest at the input's own samples",
+        "--sine is an option of LuGre's and Dahl's simulation; the Maxwell-slip model is simulated from rest at the input's own samples",
     );
     rejects(
         &["loop", "--model", "bouc", "--turning-points", TURNING],

@@ -82,7 +82,7 @@ fn bad_requests_get_one_line() {
     };
     run(
         &["--x0", "0.1"],
-        "--x0 is an option of LuGre's and Dahl's simulation; --model bouc-wen",
+        "--x0 is an option of LuGre's and Dahl's simulation; the Bouc-Wen model is simulated",
     );
     run(&["--gamma", "10"], "--gamma is an option of LuGre's");
     run(&["--rho", "-1"], "rho must be a finite number > 0");

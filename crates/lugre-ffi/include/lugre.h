@@ -632,6 +632,19 @@ enum LugreStatus lugre_zoo_cycles_new(const struct LugreZoo *zoo,
                                       const double *x0,
                                       struct LugreCycles **out);
 
+// The force at each of the `n` samples of the input `u` at the strictly increasing times `t`
+// (linear in between), from rest at `u[0]`, to `force_out` (`n` values; NULL skips), as
+// `lugre simulate --model NAME --input` gives it (the core's `ZooModel::simulate`: exact for
+// a rate-independent model, at finite rate where the model has rate dependence). `z0` is
+// NULL: an initial state given (as `lugre_simulate`'s `z0`) is refused with the core's
+// message, as `lugre simulate --model NAME --x0` refuses it. Nothing is written on a refusal.
+enum LugreStatus lugre_zoo_simulate(const struct LugreZoo *zoo,
+                                    const double *t,
+                                    const double *u,
+                                    size_t n,
+                                    const double *z0,
+                                    double *force_out);
+
 // The slow-loop fit of the zoo's model `model` (as `lugre fit --model NAME`) to `n` samples
 // `(u, f)` of one or more periods of a slow periodic test. `start` (NULL: none) is a model of
 // the same name whose values are the start values and the held ones (an element model's

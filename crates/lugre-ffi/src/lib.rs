@@ -42,8 +42,8 @@ pub use dynamics::{
 };
 pub use zoo::{
     lugre_zoo_cycles_new, lugre_zoo_free, lugre_zoo_loop_new, lugre_zoo_model_info,
-    lugre_zoo_model_name, lugre_zoo_new, lugre_zoo_parameter, lugre_zoo_value, LugreZoo,
-    LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
+    lugre_zoo_model_name, lugre_zoo_new, lugre_zoo_parameter, lugre_zoo_simulate, lugre_zoo_value,
+    LugreZoo, LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
 };
 pub use zoo_fit::{
     lugre_zoo_fit, lugre_zoo_fit_estimate, lugre_zoo_fit_free, lugre_zoo_fit_model,

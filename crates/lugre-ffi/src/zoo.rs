@@ -18,6 +18,8 @@
 //! double h[] = {0, 4, 1, 3, -4, -1, -3, 4, 0};
 //! LugreCycles *cy;
 //! lugre_zoo_cycles_new(m, h, 9, 0.0, NULL, &cy); /* then lugre_cycles_len, lugre_cycles_columns */
+//! double t[] = {0, 1, 2, 3}, x[] = {0, 1, -1, 0.5}, force[4];
+//! lugre_zoo_simulate(m, t, x, 4, NULL, force);   /* the force at each sample, from rest */
 //! ```
 
 use std::ffi::{c_char, CString};
@@ -351,5 +353,31 @@ pub extern "C" fn lugre_zoo_cycles_new(
             .with_energy(true);
         m.count_cycles(u, gate, &mut columns)?;
         set_out(out, LugreCycles { columns })
+    })
+}
+
+/// The force at each of the `n` samples of the input `u` at the strictly increasing times `t`
+/// (linear in between), from rest at `u[0]`, to `force_out` (`n` values; NULL skips), as
+/// `lugre simulate --model NAME --input` gives it (the core's `ZooModel::simulate`: exact for
+/// a rate-independent model, at finite rate where the model has rate dependence). `z0` is
+/// NULL: an initial state given (as `lugre_simulate`'s `z0`) is refused with the core's
+/// message, as `lugre simulate --model NAME --x0` refuses it. Nothing is written on a refusal.
+#[no_mangle]
+pub extern "C" fn lugre_zoo_simulate(
+    zoo: *const LugreZoo,
+    t: *const f64,
+    u: *const f64,
+    n: usize,
+    z0: *const f64,
+    force_out: *mut f64,
+) -> LugreStatus {
+    guard(|| {
+        let m = &handle(zoo, "zoo")?.model;
+        if !z0.is_null() {
+            return Err(m.simulate_option("z0").into());
+        }
+        let force = m.simulate(input(t, n, "t")?, input(u, n, "u")?)?;
+        output(force_out, &force);
+        Ok(())
     })
 }

@@ -424,3 +424,69 @@ fn cycles_of_a_history_are_the_cores() {
         lugre_zoo_free(z);
     }
 }
+
+#[test]
+fn simulate_is_the_cores_and_starts_from_rest() {
+    // Reversals at unequal rates: the elasto-plastic model's rate terms differ per interval.
+    let t = [0.0, 0.5, 1.0, 2.0, 2.2, 3.7];
+    let u = [0.0, 1.0, 2.5, -1.0, -1.5, 0.25];
+    for spec in MODELS {
+        let z = zoo(spec.name, &[]).unwrap();
+        let want = ZooModel::new(spec.name, &[])
+            .unwrap()
+            .simulate(&t, &u)
+            .unwrap();
+        let mut force = vec![f64::NAN; t.len()];
+        let s = lugre_zoo_simulate(
+            z,
+            t.as_ptr(),
+            u.as_ptr(),
+            t.len(),
+            ptr::null(),
+            force.as_mut_ptr(),
+        );
+        assert_eq!(s, LugreStatus::Ok, "{}", last_error());
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&force), bits(&want), "{}", spec.name);
+        // Refusals write nothing: an initial state, times not increasing, a NULL handle.
+        let mut untouched = [7.0; 6];
+        let s = lugre_zoo_simulate(z, t.as_ptr(), u.as_ptr(), 6, &0.0, untouched.as_mut_ptr());
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert_eq!(
+            last_error(),
+            format!(
+                "z0 is an option of LuGre's and Dahl's simulation; the {} model is simulated from rest at the input's own samples",
+                spec.label
+            )
+        );
+        let back = [0.0, 1.0, 1.0];
+        let s = lugre_zoo_simulate(
+            z,
+            back.as_ptr(),
+            u.as_ptr(),
+            3,
+            ptr::null(),
+            untouched.as_mut_ptr(),
+        );
+        assert_eq!(s, LugreStatus::InvalidArgument);
+        assert!(
+            last_error().contains("t[2] = 1 after t[1] = 1"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(untouched, [7.0; 6]);
+        let s = lugre_zoo_simulate(
+            ptr::null(),
+            t.as_ptr(),
+            u.as_ptr(),
+            6,
+            ptr::null(),
+            untouched.as_mut_ptr(),
+        );
+        assert_eq!(
+            (s, last_error().as_str()),
+            (LugreStatus::NullPointer, "zoo is NULL")
+        );
+        lugre_zoo_free(z);
+    }
+}

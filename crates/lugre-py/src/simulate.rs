@@ -1,12 +1,17 @@
 //! `LuGre.simulate` / `Dahl.simulate`: the finite-rate response of eq. 5 (core
-//! `lugre::simulate`), as a dict of float64 arrays `t, u, z, dz, y`.
+//! `lugre::simulate`), as a dict of float64 arrays `t, u, z, dz, y`; `ZooModel.simulate` and
+//! `lugre.simulate(model, ...)` (in Python, over the models' methods): a model of the zoo through
+//! [`lugre::zoo::ZooModel::simulate`], as a dict `model, t, u, y` (`lugre simulate --model
+//! NAME --json`). No model of the zoo is named here.
 
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::{count, floats, real, try_vec, type_name, value_error, vec_out};
+use crate::zoo::echo;
 use lugre::simulate::{Drive, Output, Request};
+use lugre::zoo::ZooModel;
 
 /// The arguments of `simulate`, as Python objects (`None` when not given).
 pub struct SimulateArgs<'a, 'py> {
@@ -97,6 +102,91 @@ pub fn simulate<'py>(
     d.set_item("dz", vec_out(py, dz))?;
     d.set_item("y", vec_out(py, y))?;
     Ok(d)
+}
+
+/// A model of the zoo from rest under the piecewise-linear input `t, u`, or `turning_points`
+/// at `speed`: the core's [`ZooModel::simulate`], as a dict `model` (its name as `kind` and
+/// each parameter by name, as `lugre simulate --json` echoes it), `t`, `u`, `y` (the force).
+/// Of the `others` keywords, LuGre's own are refused in the core's words (`interpolate` may be
+/// "linear").
+pub fn simulate_zoo<'py>(
+    py: Python<'py>,
+    model: &ZooModel,
+    input: [Option<&Bound<'py, PyAny>>; 4],
+    others: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    refuse_lugre_keywords(model, others)?;
+    let [turning_points, t, u, speed] = input;
+    if [turning_points, t, u].iter().all(|x| given(*x).is_none()) {
+        return Err(PyValueError::new_err(
+            "no input: give t and u (samples, linear in between) or turning_points (at speed)",
+        ));
+    }
+    let args = SimulateArgs {
+        turning_points,
+        t,
+        u,
+        speed,
+        sine: None,
+        gamma: None,
+        periods: None,
+        x0: None,
+        times: None,
+        samples_per_period: None,
+        tol: None,
+        interpolate: None,
+    };
+    let (t, u) = match drive(&args)? {
+        Drive::Samples(pl) | Drive::TurningPoints(pl) => {
+            (pl.times().to_vec(), pl.values().to_vec())
+        }
+        // Not reached: no sine nor cubic reading without their keywords.
+        _ => return Err(value_error(model.simulate_option("sine"))),
+    };
+    let y = py.detach(|| model.simulate(&t, &u)).map_err(value_error)?;
+    let d = PyDict::new(py);
+    d.set_item("model", echo(py, model)?)?;
+    d.set_item("t", vec_out(py, t))?;
+    d.set_item("u", vec_out(py, u))?;
+    d.set_item("y", vec_out(py, y))?;
+    Ok(d)
+}
+
+/// LuGre's and Dahl's own keywords of `simulate` (a model of the zoo starts from rest and
+/// answers at the input's own samples).
+const LUGRE_KEYWORDS: [&str; 7] = [
+    "x0",
+    "gamma",
+    "periods",
+    "tol",
+    "times",
+    "samples_per_period",
+    "sine",
+];
+
+/// The first of LuGre's and Dahl's own keywords given (not None), refused for a model of the
+/// zoo as `lugre simulate --model` refuses their flags; any other keyword is a TypeError.
+fn refuse_lugre_keywords(model: &ZooModel, others: Option<&Bound<'_, PyDict>>) -> PyResult<()> {
+    let Some(others) = others else {
+        return Ok(());
+    };
+    for (key, value) in others.iter() {
+        let name = key.str()?.to_string();
+        if name == "interpolate" {
+            if cubic_arg(given(Some(&value)))? {
+                return Err(value_error(model.simulate_option("interpolate='cubic'")));
+            }
+        } else if LUGRE_KEYWORDS.contains(&name.as_str()) {
+            if given(Some(&value)).is_some() {
+                return Err(value_error(model.simulate_option(&name)));
+            }
+        } else {
+            return Err(PyTypeError::new_err(format!(
+                "simulate() got an unexpected keyword argument '{name}'"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The core's request from the keywords: each one given replaces the core's default

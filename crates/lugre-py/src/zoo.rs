@@ -9,6 +9,7 @@ use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
 use crate::convert::{float_repr, floats, list_repr, type_name, value_error, vec_out};
 use crate::loops::{loop_list, map_points, records_table, samples_n, PyCurve};
+use crate::simulate::simulate_zoo;
 use lugre::zoo::{Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 use lugre::ZooError;
 
@@ -105,6 +106,28 @@ fn spec_named(name: &Bound<'_, PyAny>) -> PyResult<&'static ZooModelSpec> {
     }
 }
 
+/// Each parameter of `model` by name into `d`: a float64 array for an element array, a float
+/// for a scalar.
+fn set_parameters(d: &Bound<'_, PyDict>, model: &ZooModel) -> PyResult<()> {
+    let py = d.py();
+    for (p, (name, values)) in model.spec().parameters.iter().zip(model.named()) {
+        match p.shape {
+            Shape::Scalar => d.set_item(name, values.first().copied().unwrap_or_default())?,
+            Shape::Elements => d.set_item(name, vec_out(py, values))?,
+        }
+    }
+    Ok(())
+}
+
+/// The model as every command's JSON echoes it (`lugre simulate --model NAME --json`'s
+/// `model`): its name as `kind`, then each parameter by name.
+pub(crate) fn echo<'py>(py: Python<'py>, model: &ZooModel) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("kind", model.spec().name)?;
+    set_parameters(&d, model)?;
+    Ok(d)
+}
+
 #[pymethods]
 impl PyZooModel {
     #[new]
@@ -138,12 +161,7 @@ impl PyZooModel {
     #[getter]
     fn parameters<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (p, (name, values)) in self.inner.spec().parameters.iter().zip(self.inner.named()) {
-            match p.shape {
-                Shape::Scalar => d.set_item(name, values.first().copied().unwrap_or_default())?,
-                Shape::Elements => d.set_item(name, vec_out(py, values))?,
-            }
-        }
+        set_parameters(&d, &self.inner)?;
         Ok(d)
     }
 
@@ -153,6 +171,31 @@ impl PyZooModel {
     #[pyo3(signature = (turning_points))]
     fn r#loop(slf: &Bound<'_, Self>, turning_points: &Bound<'_, PyAny>) -> PyResult<PyZooLoop> {
         PyZooLoop::new(slf, turning_points)
+    }
+
+    /// The force at each sample of a piecewise-linear input from rest (as `lugre simulate
+    /// --model NAME`): exact for a rate-independent model, at finite rate where the model has
+    /// rate dependence (elasto-plastic). Exactly one input:
+    ///
+    /// * t, u: samples (t strictly increasing, in s), u linear in between;
+    /// * turning_points: through these values at the constant `speed` (default 1), one period.
+    ///
+    /// Returns a dict: model (the model's name as "kind" and its parameters by name, as
+    /// `lugre simulate --json` echoes it), t, u, y (float64 arrays; y the force at each
+    /// sample). LuGre's own keywords (x0, gamma, periods, tol, times, samples_per_period,
+    /// sine, interpolate='cubic') raise ValueError, as the CLI refuses their flags; invalid
+    /// input raises ValueError naming the argument, a wrong type TypeError.
+    #[pyo3(signature = (turning_points=None, t=None, u=None, speed=None, **others))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        turning_points: Option<&Bound<'py, PyAny>>,
+        t: Option<&Bound<'py, PyAny>>,
+        u: Option<&Bound<'py, PyAny>>,
+        speed: Option<&Bound<'py, PyAny>>,
+        others: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        simulate_zoo(py, &self.inner, [turning_points, t, u, speed], others)
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {

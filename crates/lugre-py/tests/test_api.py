@@ -141,7 +141,8 @@ def test_type_stubs_are_shipped():
             assert f"\n{name}: " in stub, name
         elif name != "__version__":
             assert f"class {name}" in stub, name
-    assert stub.count("def simulate(") == 2
+    # LuGre.simulate, Dahl.simulate, ZooModel.simulate and the two overloads of lugre.simulate.
+    assert stub.count("def simulate(") == 5
 
 
 def test_version():

@@ -228,6 +228,12 @@ pub enum InputError {
 pub enum LoopError {
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
+    /// An option of LuGre's and Dahl's simulation (an initial state, gamma, periods, output
+    /// times, a sine, ...) given with a model of the zoo, which is simulated from rest at the
+    /// input's own samples ([`crate::zoo::ZooModel::simulate`]); `option` as the front end
+    /// spells it (`--x0`, `x0`).
+    #[error("{option} is an option of LuGre's and Dahl's simulation; the {model} model is simulated from rest at the input's own samples")]
+    SimulateOption { option: String, model: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
     /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).
@@ -937,6 +943,12 @@ pub enum ZooError {
     },
     #[error("{what} overflows f64 for this model and input")]
     Overflow { what: &'static str },
+    /// An option of LuGre's and Dahl's simulation (an initial state, gamma, periods, output
+    /// times, a sine, ...) given with a model of the zoo, which is simulated from rest at the
+    /// input's own samples ([`crate::zoo::ZooModel::simulate`]); `option` as the front end
+    /// spells it (`--x0`, `x0`).
+    #[error("{option} is an option of LuGre's and Dahl's simulation; the {model} model is simulated from rest at the input's own samples")]
+    SimulateOption { option: String, model: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
     /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).

@@ -144,6 +144,13 @@ static void zoo(void) {
         const double x0 = 0;
         CHECK(lugre_zoo_cycles_new(z, h, 9, 0, &x0, &cy) == LUGRE_STATUS_INVALID_ARGUMENT);
         CHECK(strstr(lugre_last_error(), "starts from rest") != NULL);
+        /* The force at each sample from rest; an initial state is refused. */
+        const double st[] = {0, 1, 2, 3}, su[] = {0, 1, -1, 0.5};
+        double sf[4] = {0};
+        OK(lugre_zoo_simulate(z, st, su, 4, NULL, sf));
+        CHECK(sf[1] == sf[1] && sf[3] == sf[3] && sf[1] != sf[2]);
+        CHECK(lugre_zoo_simulate(z, st, su, 4, &x0, sf) == LUGRE_STATUS_INVALID_ARGUMENT); /* z0 given */
+        CHECK(strstr(lugre_last_error(), "simulated from rest") != NULL);
         size_t nc = 0;
         OK(lugre_cycles_len(cy, &nc));
         double cw[9] = {0}, cc[9] = {0}, cd[9] = {0};

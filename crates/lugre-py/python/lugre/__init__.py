@@ -25,7 +25,9 @@ message the ``lugre`` command prints; arguments of the wrong type raise TypeErro
 The zoo's models (Maxwell-slip, Prandtl-Ishlinskii, ...; ``lugre.ZOO_MODELS`` is the core's table
 of them with their parameters, units, domains and defaults) through one class:
 ``lugre.ZooModel("maxwell-slip", stiffness=[1, 2], slip_force=[1, 0.5]).loop([3, 1, 2, -3])``
-returns a ``ZooLoop`` with the surface of ``HysteresisLoop`` (loops and their energies, samples).
+returns a ``ZooLoop`` with the surface of ``HysteresisLoop`` (loops and their energies, samples);
+``lugre.simulate(model=m, t=t, u=u)`` (or ``m.simulate(...)``) the force at each sample from rest,
+as ``lugre simulate --model NAME --json`` gives it (keys model, t, u, y).
 
 Histories too large for one machine: ``lugre.dask`` (``pip install lugre[dask]``) counts a
 ``dask.array`` or a list of ``.npy`` files chunk by chunk, equal to ``lugre.cycles`` row for row;
@@ -106,6 +108,7 @@ __all__ = [
     "dynamics",
     "fit",
     "read",
+    "simulate",
     "sweep",
     "SweepResult",
 ]
@@ -178,3 +181,21 @@ class DynamicsResult(dict):
         import pandas as pd
 
         return pd.DataFrame(self.columns())
+
+
+def simulate(model=None, *args, **keywords):
+    """The response of ``model`` to one input, as ``lugre simulate [--model NAME]`` computes it.
+
+    * a ``LuGre`` or ``Dahl`` (None: ``LuGre()``, the paper's defaults): ``model.simulate(...)``
+      with the same arguments (``help(lugre.LuGre.simulate)``); a dict of float64 arrays t, u,
+      z, dz, y;
+    * a ``ZooModel``: ``model.simulate(...)`` from rest, with ``t, u`` or ``turning_points`` at
+      ``speed``; a dict model (its name as "kind" and each parameter by name), t, u, y (the
+      force): the keys and values of ``lugre simulate --model NAME --json``. LuGre's own
+      keywords (x0, gamma, ...) raise ValueError.
+    """
+    if model is None:
+        model = LuGre()
+    if not isinstance(model, (LuGre, Dahl, ZooModel)):
+        raise TypeError(f"model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got {type(model).__name__}")
+    return model.simulate(*args, **keywords)

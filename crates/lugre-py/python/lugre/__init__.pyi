@@ -189,7 +189,23 @@ class ZooModel:
     @property
     def parameters(self) -> dict[str, Union[float, _Floats]]: ...
     def loop(self, turning_points: _Reals) -> ZooLoop: ...
+    def simulate(
+        self,
+        turning_points: Optional[_Reals] = None,
+        t: Optional[_Reals] = None,
+        u: Optional[_Reals] = None,
+        speed: Optional[_Real] = None,
+    ) -> ZooSimulation: ...
     def __eq__(self, other: object) -> bool: ...
+
+class ZooSimulation(TypedDict):
+    """What ``ZooModel.simulate`` and ``simulate(model=ZooModel(...))`` return: the keys of
+    ``lugre simulate --model NAME --json``."""
+
+    model: dict[str, Union[str, float, _Floats]]
+    t: _Floats
+    u: _Floats
+    y: _Floats
 
 class ZooLoop:
     """The loop of a model of the zoo for one periodic input, with every minor loop (the
@@ -691,6 +707,16 @@ def sweep(
     stiffness and damping, describing function (gain, phase in radians). amplitudes and
     frequencies: numbers > 0, or "a,b,c" / "start:stop:count" (log spacing). Defaults: the core
     request's (offset 0, tol 1e-12, no loops)."""
+    ...
+
+
+@overload
+def simulate(model: ZooModel, *args: Any, **keywords: Any) -> ZooSimulation:
+    """A model of the zoo from rest (``ZooModel.simulate``, its arguments): model, t, u, y."""
+    ...
+@overload
+def simulate(model: Optional[Union[LuGre, Dahl]] = None, *args: Any, **keywords: Any) -> dict[str, _Floats]:
+    """LuGre's or Dahl's response (``LuGre.simulate``; None: LuGre's defaults): t, u, z, dz, y."""
     ...
 
 

@@ -653,6 +653,15 @@ impl ZooModel {
         }
     }
 
+    /// The refusal of `option` (as the front end spells it: `--x0`, `x0`), an option of
+    /// LuGre's and Dahl's simulation that [`Self::simulate`] does not take.
+    pub fn simulate_option(&self, option: &str) -> ZooError {
+        ZooError::SimulateOption {
+            option: option.to_string(),
+            model: self.spec().label,
+        }
+    }
+
     /// The force at each sample of `u` along the model's rate-independent path from rest at
     /// `u[0]` (each step one monotone segment, the exact segment map): the slow limit of
     /// [`Self::simulate`] for every model.

@@ -75,10 +75,7 @@ fn refuse_lugre_flags(args: &SimulateArgs, model: &ZooModel) -> Result<()> {
         ),
     ];
     if let Some((flag, _)) = given.iter().find(|(_, on)| *on) {
-        bail!(
-            "{flag} is an option of LuGre's and Dahl's simulation; --model {} is simulated from rest at the input's own samples",
-            model.spec().name
-        );
+        return Err(model.simulate_option(flag).into());
     }
     Ok(())
 }
