@@ -87,10 +87,11 @@ def test_the_help_lists_the_table(lugre_exe):
     text = subprocess.run([lugre_exe, "loop", "--help"], capture_output=True, text=True, check=True).stdout
     for name, m in lugre.ZOO_MODELS.items():
         assert name in text
-        assert set(m) == {"label", "equations", "reference", "closes_minor_loops", "parameters"}
+        assert set(m) == {"label", "equations", "reference", "closes_minor_loops", "finite_rate", "parameters"}
         for p, row in m["parameters"].items():
             assert flag(p) in text, p
             assert row["shape"] in ("scalar", "elements")
+            assert isinstance(row["slow_loop"], bool)
             assert isinstance(row["default"], float if row["shape"] == "scalar" else list)
 
 
