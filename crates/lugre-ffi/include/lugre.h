@@ -227,7 +227,7 @@ typedef struct LugreZooModelInfo {
   size_t parameters;
   // 1 when every minor loop closes (Masing behaviour).
   int32_t closes_minor_loops;
-  // 1 when the model has a finite-rate form ([`lugre_dynamics_set_zoo`] takes it).
+  // 1 when the model has a finite-rate form ([`crate::lugre_dynamics_set_zoo`] takes it).
   int32_t finite_rate;
 } LugreZooModelInfo;
 

@@ -59,7 +59,7 @@ pub struct LugreZooModelInfo {
     pub parameters: usize,
     /// 1 when every minor loop closes (Masing behaviour).
     pub closes_minor_loops: i32,
-    /// 1 when the model has a finite-rate form ([`lugre_dynamics_set_zoo`] takes it).
+    /// 1 when the model has a finite-rate form ([`crate::lugre_dynamics_set_zoo`] takes it).
     pub finite_rate: i32,
 }
 
