@@ -111,7 +111,13 @@ def test_the_fmu_validates_and_describes_the_tables_model(name):
         assert [float(x) for x in str(v.start).split()] == list(default)
 
 
-@pytest.mark.parametrize("name", MODELS)
+# The models stepped by their exact segment map; those with a finite-rate form are stepped at
+# the input's rate (test_finite_rate_models_are_simulate_step_by_step).
+SLOW = [m for m in MODELS if not lugre.ZOO_MODELS[m]["finite_rate"]]
+RATE = [m for m in MODELS if lugre.ZOO_MODELS[m]["finite_rate"]]
+
+
+@pytest.mark.parametrize("name", SLOW)
 def test_co_simulation_on_the_defaults_is_the_cores_loop(name, unzipped):
     """From rest at the mid-range up to the global maximum, then periods of TURNING, each
     segment in 1 to 5 steps: the forces at the turning points of the last period are the loop's
@@ -144,6 +150,53 @@ def test_co_simulation_on_the_defaults_is_the_cores_loop(name, unzipped):
         assert periods == 1
 
 
+@pytest.mark.parametrize("name", RATE)
+def test_finite_rate_models_are_simulate_step_by_step(name, unzipped):
+    """A sampled input (irregular times, reversals of every size) given as u and der(u) at each
+    communication point: after each step the force is the core's finite-rate simulation
+    (lugre.ZooModel(NAME).simulate) at the last sample of the input up to that point, to 1e-12
+    of the largest force; the work grows by integral F du and the dissipation stays >= 0 over
+    the run."""
+    rng = np.random.default_rng(28)
+    n = 40
+    t = np.concatenate([[0.0], np.cumsum(rng.uniform(0.05, 1.5, n))])
+    u = np.concatenate([[0.0], np.cumsum(rng.uniform(-2.0, 2.0, n))])
+    model = lugre.ZooModel(name)
+    host = Host(unzipped[name])
+    host.start(u[0])
+    forces, works = [host.get("F")[0]], [host.get("work")[0]]
+    for j in range(1, n + 1):
+        h = float(t[j] - t[j - 1])
+        host.set("u", u[j - 1])
+        host.set("der(u)", (u[j] - u[j - 1]) / h)
+        host.fmu.doStep(currentCommunicationPoint=float(t[j - 1]), communicationStepSize=h)
+        forces.append(host.get("F")[0])
+        works.append(host.get("work")[0])
+    d = host.get("dissipation")[0]
+    host.close()
+    want = [0.0] + [float(model.simulate(t=t[: j + 1], u=u[: j + 1])["y"][-1]) for j in range(1, n + 1)]
+    scale = max(abs(x) for x in want)
+    err = max(abs(a - b) for a, b in zip(forces, want)) / scale
+    assert err <= 1e-12, (name, err)
+    assert forces[1:] != want[:-1]  # the rate matters: not the slow path shifted
+    assert math.isfinite(works[-1]) and d >= -1e-12 * abs(works[-1])
+
+
+def test_a_finite_rate_model_depends_on_the_rate(unzipped):
+    """The same displacement in a long and a short step: different forces (the slow map would
+    give one)."""
+    forces = []
+    for h in (100.0, 0.01):
+        host = Host(unzipped[RATE[0]])
+        host.start(0.0)
+        host.set("u", 0.0)
+        host.set("der(u)", 3.0 / h)
+        host.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=h)
+        forces.append(host.get("F")[0])
+        host.close()
+    assert abs(forces[0] - forces[1]) > 1e-3 * abs(forces[0]), forces
+
+
 @pytest.mark.parametrize("name", MODELS)
 def test_bad_parameters_are_the_cores_message(name, unzipped):
     """Every parameter with a sign domain set outside it: fmi3Error at the end of initialization
@@ -165,7 +218,7 @@ def test_bad_parameters_are_the_cores_message(name, unzipped):
 
 
 def an_element_model():
-    return next(m for m in MODELS if any(p["shape"] == "elements" for p in lugre.ZOO_MODELS[m]["parameters"].values()))
+    return next(m for m in SLOW if any(p["shape"] == "elements" for p in lugre.ZOO_MODELS[m]["parameters"].values()))
 
 
 def test_non_finite_inputs_and_wrong_sizes_are_refused(unzipped):

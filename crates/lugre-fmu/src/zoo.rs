@@ -16,6 +16,12 @@
 //! communication point and no `der(u)` holds `u` over each step (the force after a step is the
 //! force at the `u` set before it).
 //!
+//! A model with a finite-rate form ([`ZooModelSpec::finite_rate`]) is stepped at finite rate
+//! instead ([`lugre::zoo::ZooStepper`]): `fmi3DoStep(t, h)` moves the input from where the
+//! element stands to `u(t + h)` at the constant velocity of that change over `h`, the exact
+//! interval map of `ZooModel::simulate`; `F` after the step is the force moving at that
+//! velocity (the value at the last sample of `simulate` over the input up to `t + h`).
+//!
 //! **Element arrays** are FMI 3.0 arrays whose one dimension is the structural parameter
 //! `elements` (a `UInt64`, start: the default arrays' length). A host keeps the default count,
 //! or sets `elements` in configuration mode (`fmi3EnterConfigurationMode` from the instantiated
@@ -23,7 +29,7 @@
 //! is an error at the end of initialization, naming it.
 
 use lugre::error::num;
-use lugre::zoo::{Shape, ZooElement, ZooModel, ZooModelSpec, MAX_STATES};
+use lugre::zoo::{Shape, ZooElement, ZooModel, ZooModelSpec, ZooStepper, MAX_STATES};
 
 use crate::Unit;
 
@@ -83,7 +89,45 @@ pub(crate) struct Zoo {
     du: f64,
     /// When `u` was last set.
     t_u: f64,
-    element: Option<ZooElement>,
+    element: Option<Driven>,
+}
+
+/// The model driven by the steps: by its exact segment map, or at finite rate.
+enum Driven {
+    Slow(ZooElement),
+    Rate(ZooStepper),
+}
+
+impl Driven {
+    /// `model` at rest at `u`: at finite rate where the table's entry has a finite-rate form.
+    fn at_rest(model: &ZooModel, u: f64) -> Result<Self, String> {
+        let driven = match model.spec().finite_rate {
+            true => model.stepper(u).map(Driven::Rate),
+            false => model.element(u).map(Driven::Slow),
+        };
+        driven.map_err(|e| e.to_string())
+    }
+
+    fn force(&self) -> f64 {
+        match self {
+            Driven::Slow(e) => e.force(),
+            Driven::Rate(s) => s.force(),
+        }
+    }
+
+    fn work(&self) -> f64 {
+        match self {
+            Driven::Slow(e) => e.work(),
+            Driven::Rate(s) => s.work(),
+        }
+    }
+
+    fn dissipation(&self) -> f64 {
+        match self {
+            Driven::Slow(e) => e.dissipation(),
+            Driven::Rate(s) => s.dissipation(),
+        }
+    }
 }
 
 impl Zoo {
@@ -131,13 +175,10 @@ impl Zoo {
     }
 
     /// The element (after initialization), or the one the parameters give at rest at `u`.
-    fn with_element<T>(&self, f: impl FnOnce(&ZooElement) -> T) -> Result<T, String> {
+    fn with_element<T>(&self, f: impl FnOnce(&Driven) -> T) -> Result<T, String> {
         match &self.element {
             Some(e) => Ok(f(e)),
-            None => {
-                let e = self.model()?.element(self.u).map_err(|e| e.to_string())?;
-                Ok(f(&e))
-            }
+            None => Ok(f(&Driven::at_rest(&self.model()?, self.u)?)),
         }
     }
 
@@ -192,9 +233,9 @@ impl Unit for Zoo {
             crate::vr::TIME => self.time,
             vr::U => self.u,
             vr::DER_U => self.du,
-            vr::F => self.with_element(ZooElement::force)?,
-            vr::WORK => self.with_element(ZooElement::work)?,
-            vr::DISSIPATION => self.with_element(ZooElement::dissipation)?,
+            vr::F => self.with_element(Driven::force)?,
+            vr::WORK => self.with_element(Driven::work)?,
+            vr::DISSIPATION => self.with_element(Driven::dissipation)?,
             _ => return Err(format!("no Float64 variable has value reference {r}")),
         };
         Ok(())
@@ -260,7 +301,7 @@ impl Unit for Zoo {
     fn initialize(&mut self, start: f64, _tolerance: Option<f64>) -> Result<(), String> {
         let model = self.model()?;
         (self.time, self.t_u) = (start, start);
-        self.element = Some(model.element(self.u).map_err(|e| e.to_string())?);
+        self.element = Some(Driven::at_rest(&model, self.u)?);
         Ok(())
     }
 
@@ -285,8 +326,12 @@ impl Unit for Zoo {
         let Some(e) = self.element.as_mut() else {
             return Err("fmi3DoStep before the end of initialization".into());
         };
-        e.advance(now).map_err(|err| err.to_string())?;
-        e.advance(end).map_err(|err| err.to_string())?;
+        let stepped = match e {
+            Driven::Slow(e) => e.advance(now).and_then(|()| e.advance(end)),
+            // At finite rate, from where it stands to the step's end over the step.
+            Driven::Rate(s) => s.step(end, h),
+        };
+        stepped.map_err(|err| err.to_string())?;
         self.time = t + h;
         Ok(())
     }
@@ -387,8 +432,12 @@ pub fn model_description(spec: &ZooModelSpec) -> Result<String, String> {
     let mut used: Vec<String> = ["s", "m", "m/s", "N", "J"].map(String::from).to_vec();
     used.extend(spec.parameters.iter().map(|p| fmi_unit(p.unit)));
     let name = spec.name;
+    let stepping = match spec.finite_rate {
+        true => "at finite rate: each communication step moves u to its value at the step's end at constant velocity, by the exact map of an interval of constant velocity",
+        false => "rate-independent: each communication step moves u along monotone segments by the exact segment map",
+    };
     let description = format!(
-        "{}: rate-independent hysteresis element, displacement u in, force F, work and dissipation out; each communication step moves u along monotone segments by the exact segment map. {} ({})",
+        "{}: hysteresis element, displacement u in, force F, work and dissipation out; {stepping}. {} ({})",
         spec.label, spec.equations, spec.reference
     );
     Ok(format!(

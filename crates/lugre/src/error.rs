@@ -234,6 +234,10 @@ pub enum LoopError {
     /// spells it (`--x0`, `x0`).
     #[error("{option} is an option of LuGre's and Dahl's simulation; the {model} model is simulated from rest at the input's own samples")]
     SimulateOption { option: String, model: &'static str },
+    /// A model without a finite-rate form asked to step at finite rate
+    /// ([`crate::zoo::ZooModel::stepper`]).
+    #[error("the {model} model has no finite-rate form: it is rate-independent, stepped by its exact segment map")]
+    RateIndependent { model: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
     /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).
@@ -949,6 +953,10 @@ pub enum ZooError {
     /// spells it (`--x0`, `x0`).
     #[error("{option} is an option of LuGre's and Dahl's simulation; the {model} model is simulated from rest at the input's own samples")]
     SimulateOption { option: String, model: &'static str },
+    /// A model without a finite-rate form asked to step at finite rate
+    /// ([`crate::zoo::ZooModel::stepper`]).
+    #[error("the {model} model has no finite-rate form: it is rate-independent, stepped by its exact segment map")]
+    RateIndependent { model: &'static str },
     #[error(transparent)]
     Input(#[from] InputError),
     /// The finite-rate model's LuGre parts (`sigma0, sigma1, sigma2, fc, fs, vs, beta`).

@@ -85,7 +85,7 @@ impl ZooElement {
         M: Segmental + Clone + Send + Sync + 'static,
         M::State: Send + Sync,
     {
-        let u = finite_input(u)?;
+        let u = finite("u", u)?;
         let state = m.rest(u);
         let walk = Walker {
             model: m.clone(),
@@ -106,7 +106,7 @@ impl ZooElement {
     /// [`ZooError::Domain`] for a non-finite `u`, [`ZooError::Overflow`] when the force or
     /// an energy would not be finite; the element is then as before the call.
     pub fn advance(&mut self, u: f64) -> Result<(), ZooError> {
-        let u = finite_input(u)?;
+        let u = finite("u", u)?;
         let (work, dissipation) = self.walk.advance(u);
         let (w, d) = (
             self.work.add_f64(work),
@@ -153,14 +153,14 @@ impl ZooElement {
     }
 }
 
-/// `u` if finite, else the error naming the input.
-fn finite_input(u: f64) -> Result<f64, ZooError> {
-    if u.is_finite() {
-        Ok(u)
+/// `x` if finite, else the error naming it (`name`).
+pub(super) fn finite(name: &'static str, x: f64) -> Result<f64, ZooError> {
+    if x.is_finite() {
+        Ok(x)
     } else {
         Err(ZooError::Domain {
-            name: "u",
-            value: u,
+            name,
+            value: x,
             condition: "a finite number".into(),
         })
     }

@@ -29,7 +29,8 @@
 //! ```
 //!
 //! (`1 - exp(-x)` by `kernel::relax::decay`, no cancellation); an element that starts
-//! to slip at its level stays on it exactly.
+//! to slip at its level stays on it exactly. The time integral of each piece is closed too, so
+//! the work `integral F v dt` over an interval is exact (G8 of `docs/mathematics.md`).
 
 use super::check_scalar;
 use crate::error::ZooError;
@@ -197,17 +198,19 @@ impl Gms {
     }
 
     /// Moves `state` over `h >= 0` seconds at the constant velocity `v` by (G1), (G2), (G4),
-    /// each stick-slip transition at its exact instant; returns `sum_i dF_i/dt` at the end.
-    pub fn advance(&self, state: &mut GmsState, v: f64, h: f64) -> f64 {
+    /// each stick-slip transition at its exact instant; returns `sum_i dF_i/dt` at the end and
+    /// the time integral of `sum_i F_i` over the interval, each piece in closed form (G8 of
+    /// `docs/mathematics.md`).
+    pub fn advance(&self, state: &mut GmsState, v: f64, h: f64) -> (f64, f64) {
         if v == 0.0 {
             // At rest every element sticks (a slipping one stops with the motion), F constant.
             state.slip.iter_mut().for_each(|m| *m = 0.0);
-            return 0.0;
+            return (0.0, state.force.iter().sum::<f64>() * h);
         }
         let s = v.signum();
         let g = self.g(v);
         let lambda = self.rate.attraction / g;
-        let mut rate = 0.0;
+        let (mut rate, mut integral) = (0.0, 0.0);
         let elements = state.force.iter_mut().zip(state.slip.iter_mut());
         for ((f, m), (k, a)) in elements.zip(self.k.iter().zip(&self.alpha)) {
             let level = a * g;
@@ -217,6 +220,8 @@ impl Gms {
                 let gap = level - s * *f;
                 let tau = gap / (k * v.abs());
                 if tau >= h {
+                    // Sticking: F_i linear in t.
+                    integral += h * (*f + 0.5 * k * v * h);
                     *f += k * v * h;
                     rate += k * v;
                     continue;
@@ -224,16 +229,25 @@ impl Gms {
                 *m = s;
                 if gap > 0.0 {
                     // Reaches its level inside the interval and slips on it from there.
+                    integral += 0.5 * tau * (*f + s * level) + s * level * (h - tau);
                     *f = s * level;
                     continue;
                 }
             }
             let target = s * level;
             let (_, one_minus_e) = crate::kernel::relax::decay(lambda * h);
+            // Slipping: the integral of (G4).
+            integral += target * h + (*f - target) * one_minus_e / lambda;
             *f += (target - *f) * one_minus_e;
             rate += lambda * (target - *f);
         }
-        rate
+        (rate, integral)
+    }
+
+    /// The stored energy of `state`: `sum_i F_i^2 / (2 k_i)` (G7).
+    pub fn stored_energy(&self, state: &GmsState) -> f64 {
+        let terms = state.force.iter().zip(&self.k);
+        terms.map(|(f, k)| 0.5 * f * f / k).sum()
     }
 
     /// The friction force (G3) of `state` moving at `v` with `sum_i dF_i/dt = rate`.
@@ -259,7 +273,7 @@ impl Gms {
         for j in 1..t.len() {
             let h = t[j] - t[j - 1];
             let v = (u[j] - u[j - 1]) / h;
-            let rate = self.advance(&mut state, v, h);
+            let (rate, _) = self.advance(&mut state, v, h);
             let force = self.force(&state, v, rate);
             if !force.is_finite() {
                 return Err(ZooError::Overflow { what: "the force" });

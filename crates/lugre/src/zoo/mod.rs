@@ -66,6 +66,7 @@ mod history;
 mod maxwell;
 mod prandtl;
 mod segment;
+mod stepper;
 mod table;
 
 pub use bouc_wen::BoucWen;
@@ -77,6 +78,7 @@ pub use history::{check_held, MAX_HISTORY_SAMPLES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
 pub use segment::{Point, Segmental, SingleState};
+pub use stepper::ZooStepper;
 pub use table::{
     dynamics_model_names, model_names, Domain, Shape, ZooKind, ZooModel, ZooModelSpec,
     ZooParameter, MODELS,

@@ -645,11 +645,10 @@ impl ZooModel {
     /// ```
     pub fn simulate(&self, t: &[f64], u: &[f64]) -> Result<Vec<f64>, ZooError> {
         check_samples(t, u)?;
-        match &self.kind {
-            // The Generalized Maxwell-slip model: Maxwell-slip at finite rate.
-            ZooKind::MaxwellSlip(m) => m.simulate(t, u),
-            ZooKind::PrandtlIshlinskii(_) | ZooKind::BoucWen(_) => self.exact_path(u),
-            ZooKind::ElastoPlastic(m) => m.simulate_rate(t, u),
+        // The Generalized Maxwell-slip model is Maxwell-slip at finite rate.
+        match self.spec().finite_rate {
+            true => self.simulate_rate(t, u),
+            false => self.exact_path(u),
         }
     }
 

@@ -25,7 +25,6 @@
 //! before): the value just after a kink, as `lugre simulate` reports LuGre's.
 
 use super::{alpha, ElastoPlastic, Leg, Shape};
-use crate::error::ZooError;
 use crate::LuGre;
 
 /// The positive nodes of the 16-point Gauss-Legendre rule on `[-1, 1]` and their weights
@@ -42,45 +41,9 @@ const GAUSS16: [(f64, f64); 8] = [
 ];
 
 impl ElastoPlastic {
-    /// The force at each sample of `u` (linear in `t` between samples) from rest (`z = 0`) at
-    /// `u[0]`, by (E1) at finite rate. `t` and `u` are checked by the caller: equally long,
-    /// finite, `t` strictly increasing.
-    ///
-    /// # Errors
-    /// The LuGre model's checks of `sigma0, sigma1, sigma2, fc, fs, vs, beta` (passed by
-    /// [`ElastoPlastic::new`] and [`ElastoPlastic::with_rate`] already).
-    pub(crate) fn simulate_rate(&self, t: &[f64], u: &[f64]) -> Result<Vec<f64>, ZooError> {
-        let model = LuGre::from_params(self.lugre_params())?;
-        let n = u.len();
-        let velocity = |i: usize| {
-            // The interval after sample i; at the last sample the one before.
-            let j = i.min(n.saturating_sub(2));
-            if n < 2 {
-                0.0
-            } else {
-                (u[j + 1] - u[j]) / (t[j + 1] - t[j])
-            }
-        };
-        let mut z = 0.0;
-        let mut out = Vec::with_capacity(n);
-        for i in 0..n {
-            let v = velocity(i);
-            if i > 0 {
-                let w = velocity(i - 1);
-                z = self.interval(z, model.g(w) / self.sigma0, u[i] - u[i - 1]);
-            }
-            let force = self.rate_force(&model, z, v);
-            if !force.is_finite() {
-                return Err(ZooError::Overflow { what: "the force" });
-            }
-            out.push(force);
-        }
-        Ok(out)
-    }
-
     /// (E1)'s force at deflection `z` moving at `v`: `sigma0 z + sigma1 z' + f(v)`, with
     /// `z' = v (1 - alpha(w) w / z_ss)`, `z_ss = g(v) / sigma0` (as `lugre dynamics` has it).
-    fn rate_force(&self, model: &LuGre, z: f64, v: f64) -> f64 {
+    pub(crate) fn rate_force(&self, model: &LuGre, z: f64, v: f64) -> f64 {
         let dz = if v == 0.0 {
             0.0
         } else {
@@ -91,22 +54,47 @@ impl ElastoPlastic {
         self.sigma0 * z + model.sigma1() * dz + model.f(v)
     }
 
+    /// One step of the finite-rate stepper: from deflection `z`, the input moves by `du` at
+    /// the constant velocity `v` (`du / dt`); the deflection after it and the work of the input
+    /// over it, `∫ F du = sigma0 ∫ z du + sigma1 v Δz + f(v) du` (E9).
+    pub(crate) fn rate_step(&self, model: &LuGre, z: f64, v: f64, du: f64) -> (f64, f64) {
+        let (z_b, area) = self.interval(z, model.g(v) / self.sigma0, du);
+        let work = self.sigma0 * area + model.sigma1() * v * (z_b - z) + model.f(v) * du;
+        (z_b, work)
+    }
+
+    /// The energy stored in the bristles at deflection `z`: `sigma0 z^2 / 2` (E9).
+    pub(crate) fn stored_energy(&self, z: f64) -> f64 {
+        0.5 * self.sigma0 * z * z
+    }
+
     /// The deflection after the input moves by `du` with the steady deflection `z_ss` of the
-    /// interval's velocity, from `z`.
-    fn interval(&self, z: f64, z_ss: f64, du: f64) -> f64 {
+    /// interval's velocity, from `z`, and `∫ z du` over the move (E9).
+    pub(crate) fn interval(&self, z: f64, z_ss: f64, du: f64) -> (f64, f64) {
         if du == 0.0 {
-            return z;
+            return (z, 0.0);
         }
         let s = du.signum();
         let (w, length) = (s * z, du.abs());
         let shape = Shape::new(1.0 - self.zba / z_ss);
-        let w_b = match Leg::of(w, length, self.zba, z_ss, shape.delta) {
-            Leg::Elastic(w_b) => w_b,
+        let (w_b, area) = match Leg::of(w, length, self.zba, z_ss, shape.delta) {
+            Leg::Elastic(w_b) => (w_b, 0.5 * (w + w_b) * length),
             // alpha = 1: w - z_ss decays as exp(-l / z_ss).
-            Leg::Above => z_ss + (w - z_ss) * (-length / z_ss).exp(),
-            Leg::Blend { e_a, l } => z_ss - z_ss * shape.flow(e_a, l).exp(),
+            Leg::Above => {
+                let decayed = -(-length / z_ss).exp_m1();
+                let w_b = z_ss + (w - z_ss) * (-length / z_ss).exp();
+                (w_b, z_ss * length + (w - z_ss) * z_ss * decayed)
+            }
+            Leg::Blend { e_a, l } => {
+                // The elastic part before the blend, then (E9) over the blend.
+                let elastic = (self.zba - w).max(0.0);
+                let before = 0.5 * (w + self.zba) * elastic;
+                let e_b = shape.flow(e_a, l).exp();
+                let deficit = (e_a - e_b) + shape.weighted(e_b, e_a, |e| e);
+                (z_ss - z_ss * e_b, before + z_ss * z_ss * (l - deficit))
+            }
         };
-        s * w_b
+        (s * w_b, area)
     }
 }
 
@@ -147,18 +135,25 @@ impl Shape {
     /// `∫_p^q r(e) de` (signed), `p, q` in `[0, delta]`, by 16-point Gauss-Legendre on pieces
     /// graded toward `e = 0` (see the module docs).
     fn integral(&self, p: f64, q: f64) -> f64 {
+        self.weighted(p, q, |_| 1.0)
+    }
+
+    /// `∫_p^q weight(e) r(e) de` by the rule of [`Shape::integral`] (a polynomial `weight`
+    /// keeps its error bound: the integrand's singularities are `r`'s).
+    fn weighted(&self, p: f64, q: f64, weight: impl Fn(f64) -> f64) -> f64 {
         let (a, b, sign) = if p <= q { (p, q, 1.0) } else { (q, p, -1.0) };
         // (2 delta / pi)^2: the distance of r's nearest singularity from e = 0.
         let near = 1.0 / (self.a * self.a);
         let mut sum = 0.0;
         let mut lo = a;
+        let f = |e: f64| weight(e) * self.r(e);
         while lo < b {
             let width = (0.25 * (lo + near)).min(0.125 * self.delta);
             let hi = (lo + width).min(b);
             let (m, h) = (0.5 * (lo + hi), 0.5 * (hi - lo));
             let piece: f64 = GAUSS16
                 .iter()
-                .map(|&(x, w)| w * (self.r(m - h * x) + self.r(m + h * x)))
+                .map(|&(x, w)| w * (f(m - h * x) + f(m + h * x)))
                 .sum();
             sum += h * piece;
             lo = hi;
