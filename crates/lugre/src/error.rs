@@ -379,6 +379,15 @@ pub enum FitError {
         model: &'static str,
         slow: String,
     },
+    /// A full fit of a model of the zoo without a finite-rate form.
+    #[error("--fit full: the {model} model has no finite-rate form (the models of the zoo with one: {takes}); fit its slow loop (--fit slow)")]
+    NoFiniteRate {
+        model: &'static str,
+        /// The models of the zoo with a finite-rate form, comma-separated.
+        takes: String,
+    },
+    #[error("x0 = {x0}: the full fit of the {model} model runs from rest at the first sample (its state is not a number to give); leave x0 out")]
+    ZooFromRest { model: &'static str, x0: f64 },
     #[error("the number of elements must be from 1 to {most}, got {count}")]
     BadElements { count: usize, most: usize },
     #[error("the {model} model has no elements: its parameters are scalars ({known}), so there is no element count or threshold to give")]

@@ -114,7 +114,7 @@ pub use presliding::{fit_presliding, BREAKAWAY_FRACTION};
 pub use spec::{Bounds, Family, FitKind, FitSpec};
 pub use staged::{fit_staged, StagedReport};
 pub use stribeck::{fit_stribeck, steady_force, table_points, SteadyPoint};
-pub use zoo::{fit_zoo, ZooFitReport, ZooFitSpec, DEFAULT_ELEMENTS, MAX_ELEMENTS};
+pub use zoo::{fit_zoo, fit_zoo_full, ZooFitReport, ZooFitSpec, DEFAULT_ELEMENTS, MAX_ELEMENTS};
 
 use crate::input::{check_finite, check_increasing};
 use crate::model::LuGreParams;
@@ -380,6 +380,17 @@ const SLOW_CONFIG: Config = Config {
     gtol: 1e-12,
     patience: 50,
 };
+
+/// The full fits' starts: (stiffness factor, `vs` factor) on the data's start, cycled.
+const START_FACTORS: [(f64, f64); 7] = [
+    (1.0, 1.0),
+    (4.0, 0.25),
+    (0.25, 4.0),
+    (4.0, 4.0),
+    (0.25, 0.25),
+    (4.0, 1.0),
+    (0.25, 1.0),
+];
 
 const FULL_CONFIG: Config = Config {
     xtol: 1e-8,
@@ -697,19 +708,9 @@ pub fn fit_full(
     let f = &f_m[..];
     resolved.fill_starts(&start);
     let base = resolved.values.clone();
-    // (sigma0 factor, vs factor) per start.
-    const FACTORS: [(f64, f64); 7] = [
-        (1.0, 1.0),
-        (4.0, 0.25),
-        (0.25, 4.0),
-        (4.0, 4.0),
-        (0.25, 0.25),
-        (4.0, 1.0),
-        (0.25, 1.0),
-    ];
     let mut best: Option<Outcome> = None;
     let mut evaluations = 0;
-    for (n, &(k0, kv)) in FACTORS.iter().cycle().take(starts).enumerate() {
+    for (n, &(k0, kv)) in START_FACTORS.iter().cycle().take(starts).enumerate() {
         let mut values = base.clone();
         let scale = |i: usize, k: f64, values: &mut Vec<f64>| {
             if let Some(c) = resolved.free.iter().position(|&j| j == i) {
@@ -719,7 +720,7 @@ pub fn fit_full(
             }
         };
         // Cycling past the table (more than 7 starts) spreads further.
-        let spread = 1.0 + (n / FACTORS.len()) as f64;
+        let spread = 1.0 + (n / START_FACTORS.len()) as f64;
         scale(0, k0.powf(spread), &mut values);
         if resolved.family == Family::LuGre {
             scale(5, kv.powf(spread), &mut values);

@@ -58,9 +58,9 @@
 //! the LuGre fit's (S1-S4, C1-C4): one set of rules for every model.
 
 use super::covariance::{lack_of_fit, SerialCorrelation};
-use super::lm::{minimize, Evaluator, Space};
+use super::lm::{minimize, Evaluator, Outcome, Space};
 use super::slow::SlowLoop;
-use super::spec::Bounds;
+use super::spec::{Bounds, FitKind};
 use super::{
     assess, bound_warnings, check_columns, check_count, slow_gate, Covariance, Estimate, FitError,
     FitWarning, FreeEnd, NoiseLevels, SlowOptions, SLOW_CONFIG,
@@ -69,6 +69,9 @@ use crate::error::ZooError;
 use crate::input::TurningPoints;
 use crate::zoo::{Domain, Shape, ZooModel, ZooModelSpec};
 use nalgebra::DMatrix;
+
+mod full;
+pub use full::fit_zoo_full;
 
 /// Elements an element model's fit has unless told otherwise.
 pub const DEFAULT_ELEMENTS: usize = 4;
@@ -244,6 +247,8 @@ struct Layout {
     slots: Vec<Slot>,
     /// The values of the parameters the slots do not hold.
     rest: Vec<(&'static str, Vec<f64>)>,
+    /// The slow-loop fit's layout: `fc` follows `fs` (module docs).
+    slow: bool,
 }
 
 /// `param[i]` as a name that lives as long as the program (at most [`MAX_ELEMENTS`] per
@@ -281,7 +286,7 @@ impl Layout {
             given.push((s.parameter, vec![x]));
         }
         // fc does not enter the slow loop: held at fs there (module docs).
-        if outside_slow_loop(self.model).contains(&"fc") {
+        if self.slow && outside_slow_loop(self.model).contains(&"fc") {
             let fs = given
                 .iter()
                 .find(|(n, _)| *n == "fs")
@@ -303,11 +308,24 @@ impl Layout {
     }
 }
 
-/// The model evaluated at the samples' places on the loop, with (ZF2).
+/// What the model's output is matched with.
+#[derive(Debug, Clone)]
+enum Response {
+    /// The periodic loop at the samples' places (ZF1).
+    Loop { tp: TurningPoints, rhos: Vec<f64> },
+    /// The path from rest along the samples: at their rate (ZF4), or (`rate` false) the
+    /// rate-independent path, the start's linear solve for an element model's weights.
+    Path {
+        t: Vec<f64>,
+        u: Vec<f64>,
+        rate: bool,
+    },
+}
+
+/// The model evaluated on the record ([`Response`]), with (ZF2).
 struct Output<'a> {
     layout: &'a Layout,
-    tp: TurningPoints,
-    rhos: Vec<f64>,
+    response: Response,
     free: Vec<usize>,
     bounds: Vec<Bounds>,
     /// [`STEP`] or [`LINEAR_STEP`].
@@ -317,8 +335,14 @@ struct Output<'a> {
 impl Output<'_> {
     fn y(&self, v: &[f64]) -> Option<Vec<f64>> {
         let model = self.layout.build(v).ok()?;
-        let hl = model.loops(&self.tp).ok()?;
-        let y: Vec<f64> = model.points(&hl, &self.rhos).iter().map(|p| p.y).collect();
+        let y: Vec<f64> = match &self.response {
+            Response::Loop { tp, rhos } => {
+                let hl = model.loops(tp).ok()?;
+                model.points(&hl, rhos).iter().map(|p| p.y).collect()
+            }
+            Response::Path { t, u, rate: true } => model.simulate(t, u).ok()?,
+            Response::Path { u, .. } => model.exact_path(u).ok()?,
+        };
         y.iter().all(|x| x.is_finite()).then_some(y)
     }
 }
@@ -363,6 +387,8 @@ impl Evaluator for Output<'_> {
 /// The result of a zoo model's fit: the LuGre fit's report with the model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ZooFitReport {
+    /// [`FitKind::Slow`] ([`fit_zoo`]) or [`FitKind::Full`] ([`fit_zoo_full`]).
+    pub kind: FitKind,
     /// The fitted model (every parameter by name: [`ZooModel::named`]).
     pub model: ZooModel,
     /// The fitted numbers: scalars by name, element weights as `name[i]`.
@@ -380,11 +406,13 @@ pub struct ZooFitReport {
     pub correlation: Vec<Vec<f64>>,
     pub iterations: usize,
     pub evaluations: usize,
+    /// The starts the fit ran from (the slow fit: 1).
+    pub starts: usize,
     pub converged: bool,
     pub termination: String,
     /// Turning points of the record.
     pub turning_points: usize,
-    /// The model's periodic response at every sample.
+    /// The model's response at every sample: periodic (slow), from rest at its rate (full).
     pub fitted: Vec<f64>,
     pub noise: NoiseLevels,
     pub warnings: Vec<FitWarning>,
@@ -402,7 +430,7 @@ impl ZooFitReport {
         self.rms * self.rms * self.samples as f64
     }
 
-    /// The view the front ends show, as for the LuGre fit (one start).
+    /// The view the front ends show, as for the LuGre fit.
     pub fn summary(&self) -> super::FitSummary<'_> {
         super::FitSummary {
             estimates: &self.estimates,
@@ -414,10 +442,10 @@ impl ZooFitReport {
             correlation: &self.correlation,
             iterations: self.iterations,
             evaluations: self.evaluations,
-            starts: 1,
+            starts: self.starts,
             converged: self.converged,
             termination: &self.termination,
-            turning_points: Some(self.turning_points),
+            turning_points: (self.kind == FitKind::Slow).then_some(self.turning_points),
             noise: Some(&self.noise),
             warnings: &self.warnings,
             covariance: self.covariance,
@@ -444,20 +472,16 @@ pub fn fit_zoo(
     let (gate, levels) = slow_gate(u, f, options)?;
     let sl = SlowLoop::placement(u, gate)?;
     let tp = sl.turning_points().clone();
-    let (layout, free, mut values) = lay_out(spec, tp.values())?;
+    let (layout, free, mut values) = lay_out(spec, tp.values(), FitKind::Slow)?;
     check_count(u.len(), free.len())?;
-    let given: Vec<bool> = free
-        .iter()
-        .map(|&i| spec.given(layout.slots[i].parameter).is_some())
-        .collect();
-    let bounds: Vec<Bounds> = free
-        .iter()
-        .map(|&i| layout.bounds(&layout.slots[i]))
-        .collect();
+    let (given, bounds) = given_and_bounds(spec, &layout, &free, &values);
+    let turning_points = tp.len();
     let mut out = Output {
         layout: &layout,
-        tp,
-        rhos: sl.sample_rho(),
+        response: Response::Loop {
+            tp,
+            rhos: sl.sample_rho(),
+        },
         free: free.clone(),
         bounds: bounds.clone(),
         step: if layout.elements.is_some() {
@@ -466,14 +490,6 @@ pub fn fit_zoo(
             STEP
         },
     };
-    // A start given on the edge of its domain (a model's kx = 0, n = 1) starts from the data
-    // instead: the log and logistic maps have no variable there.
-    let given: Vec<bool> = given
-        .iter()
-        .zip(&free)
-        .zip(&bounds)
-        .map(|((&g, &i), b)| g && b.contains(values[i]))
-        .collect();
     start(&mut out, &sl, u, f, &given, &mut values)?;
     for (j, &i) in free.iter().enumerate() {
         values[i] = bounds[j].pull_inside(values[i]);
@@ -484,37 +500,95 @@ pub fn fit_zoo(
         free: &free,
         bounds: &bounds,
     };
-    let (out, outcome) = minimize(out, f, space, &start_values, SLOW_CONFIG, &mut |_, _| {});
+    let (_, outcome) = minimize(out, f, space, &start_values, SLOW_CONFIG, &mut |_, _| {});
     if !outcome.rss.is_finite() {
         return Err(FitError::NoStart { starts: 1 });
     }
+    let end = End {
+        kind: FitKind::Slow,
+        layout: &layout,
+        free: &free,
+        bounds: &bounds,
+        starts: (1, &start_values),
+        turning_points,
+        levels,
+    };
+    conclude(end, outcome, f)
+}
+
+/// Which values were given as starts (and lie inside their domains), and each free slot's
+/// bounds.
+fn given_and_bounds(
+    spec: &ZooFitSpec,
+    layout: &Layout,
+    free: &[usize],
+    values: &[f64],
+) -> (Vec<bool>, Vec<Bounds>) {
+    let bounds: Vec<Bounds> = free
+        .iter()
+        .map(|&i| layout.bounds(&layout.slots[i]))
+        .collect();
+    // A start given on the edge of its domain (a model's kx = 0, n = 1) starts from the data
+    // instead: the log and logistic maps have no variable there.
+    let given = free
+        .iter()
+        .zip(&bounds)
+        .map(|(&i, b)| spec.given(layout.slots[i].parameter).is_some() && b.contains(values[i]))
+        .collect();
+    (given, bounds)
+}
+
+/// A fit's end: what it fitted, and how it began.
+struct End<'a> {
+    kind: FitKind,
+    layout: &'a Layout,
+    free: &'a [usize],
+    bounds: &'a [Bounds],
+    /// The number of starts, and the free values of the first.
+    starts: (usize, &'a [f64]),
+    turning_points: usize,
+    levels: NoiseLevels,
+}
+
+/// The report of the fit that ended at `outcome`: statistics, identifiability, warnings.
+fn conclude(end: End<'_>, outcome: Outcome, f: &[f64]) -> Result<ZooFitReport, FitError> {
+    let End {
+        kind,
+        layout,
+        free,
+        bounds,
+        starts: (starts, start_values),
+        turning_points,
+        levels,
+    } = end;
     let model = layout.build(&outcome.values)?;
     let fitted = outcome.y.clone();
     let names: Vec<&'static str> = free.iter().map(|&i| layout.slots[i].name).collect();
     let est: Vec<f64> = free.iter().map(|&i| outcome.values[i]).collect();
     let residuals: Vec<f64> = f.iter().zip(&fitted).map(|(f, y)| f - y).collect();
     let data_norm = f.iter().map(|v| v * v).sum::<f64>().sqrt();
-    let end = FreeEnd {
+    let free_end = FreeEnd {
         names: &names,
         values: &est,
-        starts: &start_values,
-        bounds: &bounds,
+        starts: start_values,
+        bounds,
     };
-    let (estimates, unc) = assess(&outcome, end, &residuals, data_norm, &[])?;
+    let (estimates, unc) = assess(&outcome, free_end, &residuals, data_norm, &[])?;
     let converged = outcome.converged();
     let m = f.len();
     let rms = (residuals.iter().map(|r| r * r).sum::<f64>() / m as f64).sqrt();
     let f_rms = data_norm / (m as f64).sqrt();
-    let mut warnings = bound_warnings(&estimates, &bounds);
+    let mut warnings = bound_warnings(&estimates, bounds);
     warnings.extend(lack_of_fit(
         &residuals,
         rms,
         f_rms,
         Some(levels.force),
-        true,
+        kind == FitKind::Slow,
     ));
-    let fixed = held(&layout, &free, &outcome.values);
+    let fixed = held(layout, free, &outcome.values);
     Ok(ZooFitReport {
+        kind,
         model,
         estimates,
         fixed,
@@ -526,9 +600,10 @@ pub fn fit_zoo(
         correlation: unc.correlation,
         iterations: outcome.iterations,
         evaluations: outcome.evaluations,
+        starts,
         converged,
         termination: outcome.reason(),
-        turning_points: out.tp.len(),
+        turning_points,
         fitted,
         noise: levels,
         warnings,
@@ -554,9 +629,19 @@ fn held(layout: &Layout, free: &[usize], values: &[f64]) -> Vec<(&'static str, V
 }
 
 /// The slots, the free ones, and every slot's value (given, or the table's default).
-fn lay_out(spec: &ZooFitSpec, turning: &[f64]) -> Result<(Layout, Vec<usize>, Vec<f64>), FitError> {
+fn lay_out(
+    spec: &ZooFitSpec,
+    turning: &[f64],
+    kind: FitKind,
+) -> Result<(Layout, Vec<usize>, Vec<f64>), FitError> {
     let model = spec.model;
-    let outside = outside_slow_loop(model);
+    // The full fit has every parameter of the table in its response.
+    let slow = kind == FitKind::Slow;
+    let outside = if slow {
+        outside_slow_loop(model)
+    } else {
+        Vec::new()
+    };
     for &name in &spec.freed {
         if spec.fixed.contains(&name) {
             return Err(FitError::FixedAndFree { name });
@@ -621,13 +706,14 @@ fn lay_out(spec: &ZooFitSpec, turning: &[f64]) -> Result<(Layout, Vec<usize>, Ve
         .filter(|&i| !spec.fixed.contains(&slots[i].parameter))
         .collect();
     if free.is_empty() {
-        return Err(FitError::NothingToFit { fit: "slow" });
+        return Err(FitError::NothingToFit { fit: kind.label() });
     }
     let layout = Layout {
         model,
         elements,
         slots,
         rest,
+        slow,
     };
     // A held value outside its domain is named now, not found unevaluable in the fit.
     layout.build(&values)?;
@@ -712,28 +798,7 @@ fn start(
 ) -> Result<(), FitError> {
     let free = out.free.clone();
     if out.layout.elements.is_some() {
-        // y = J w exactly (linear and homogeneous in the weights): solve J w = F - held part.
-        let mut y = vec![0.0; f.len()];
-        let mut jac = DMatrix::zeros(f.len(), free.len());
-        if !out.evaluate(values, &mut y, &mut jac) {
-            return Err(FitError::NoStart { starts: 1 });
-        }
-        let w0: Vec<f64> = free.iter().map(|&i| values[i]).collect();
-        let held = nalgebra::DVector::from_iterator(
-            f.len(),
-            (0..f.len())
-                .map(|r| f[r] - y[r] + (0..free.len()).map(|c| jac[(r, c)] * w0[c]).sum::<f64>()),
-        );
-        let solved = jac.svd(true, true).solve(&held, 1e-12);
-        let largest = solved.as_ref().map_or(0.0, |w| w.amax());
-        for (c, &i) in free.iter().enumerate() {
-            if given[c] {
-                continue;
-            }
-            let w = solved.as_ref().map_or(1.0, |w| w[c]);
-            values[i] = out.bounds[c].pull_inside(w.max(1e-3 * largest));
-        }
-        return Ok(());
+        return linear_start(out, f, given, values);
     }
     let (relaxing, g0) = sl.data_start(f)?;
     let s0 = initial_slope(u, f, sl.reversal_samples()).unwrap_or(relaxing);
@@ -744,6 +809,40 @@ fn start(
         if let Some(x) = data_start(out.layout.slots[i].parameter, s0, g0) {
             values[i] = out.bounds[c].pull_inside(x);
         }
+    }
+    Ok(())
+}
+
+/// An element model's weights without a given start: the linear least-squares solution of
+/// `J w = F` less the held part (the output is linear and homogeneous in the weights), each
+/// pulled inside `(0, inf)`.
+fn linear_start(
+    out: &mut Output<'_>,
+    f: &[f64],
+    given: &[bool],
+    values: &mut [f64],
+) -> Result<(), FitError> {
+    let free = out.free.clone();
+    // y = J w exactly (linear and homogeneous in the weights): solve J w = F - held part.
+    let mut y = vec![0.0; f.len()];
+    let mut jac = DMatrix::zeros(f.len(), free.len());
+    if !out.evaluate(values, &mut y, &mut jac) {
+        return Err(FitError::NoStart { starts: 1 });
+    }
+    let w0: Vec<f64> = free.iter().map(|&i| values[i]).collect();
+    let held = nalgebra::DVector::from_iterator(
+        f.len(),
+        (0..f.len())
+            .map(|r| f[r] - y[r] + (0..free.len()).map(|c| jac[(r, c)] * w0[c]).sum::<f64>()),
+    );
+    let solved = jac.svd(true, true).solve(&held, 1e-12);
+    let largest = solved.as_ref().map_or(0.0, |w| w.amax());
+    for (c, &i) in free.iter().enumerate() {
+        if given[c] {
+            continue;
+        }
+        let w = solved.as_ref().map_or(1.0, |w| w[c]);
+        values[i] = out.bounds[c].pull_inside(w.max(1e-3 * largest));
     }
     Ok(())
 }

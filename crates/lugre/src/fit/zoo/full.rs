@@ -1,0 +1,231 @@
+//! The full fit of a model of the zoo with a finite-rate form ([`ZooModelSpec::finite_rate`]:
+//! GMS, the elasto-plastic model) to a rate-dependent `(t, u, F)` record
+//! (`docs/mathematics.md#full-fit-of-the-zoos-finite-rate-models`).
+//!
+//! The response is the model's path from rest at `u_0` along the input linear between the
+//! samples, at its rate ([`crate::zoo::ZooModel::simulate`]: exact per interval), and
+//!
+//! ```text
+//! (ZF4)  q^ = argmin_q  sum_i (y_i(t, u; q) - F_i)^2,     lo_j < q_j < hi_j
+//! ```
+//!
+//! over every parameter of the table (the slow loop's and the finite rate's), with the slow
+//! fit's bounds, maps, iteration, central differences (ZF2, relative step `6e-6`) and
+//! statistics. An element model's thresholds are held as there (ZF3, on the record's range).
+//!
+//! Starts. The slow loop's parameters start as in the slow fit, from the record's initial
+//! slope after its reversals `s0` and its plateau `g0` (the LuGre full fit's slow-end force,
+//! [`super::super::full::data_start`]); an element model's weights are the linear
+//! least-squares solution for the rate-independent path (exact for a record slow enough).
+//! The finite rate's `fc`, `vs`, `sigma1`, `sigma2` are the LuGre full fit's data starts
+//! (`fc <= g0`), `beta` its given value or the table's; the elasto-plastic `zba = 0.3 fc / s0`
+//! (inside its constraint `zba < fc / sigma0`), and GMS's attraction `C = s0 |v|_med` (a
+//! slipping element then settles over a travel `g / s0`, as LuGre's bristle does). Further
+//! starts multiply `sigma0` (or `C`) and `vs` by 4 or 1/4 as the LuGre full fit does; the best
+//! end point wins.
+//!
+//! The displacement is used as given (its noise level is measured and reported, not smoothed:
+//! the models' switching between sticking and slipping follows the samples); the model starts
+//! from rest, so a start state other than rest (`x0`) is refused.
+
+use super::super::full::{data_start as lugre_start, has_reversal, segments, Exact};
+use super::super::lm::{minimize, Space};
+use super::super::noise::{levels, PositionHandling};
+use super::super::{
+    check_columns, check_count, FitError, FitKind, FullOptions, FULL_CONFIG, START_FACTORS,
+};
+use super::{
+    conclude, data_start, given_and_bounds, initial_slope, lay_out, linear_start, End, Output,
+    Response, ZooFitReport, ZooFitSpec, STEP,
+};
+use crate::fit::spec::Family;
+use crate::input::check_increasing;
+use crate::model::Parameter;
+use crate::zoo::MODELS;
+
+/// The full fit (ZF4) of `spec`'s model to `(t_i, u_i, F_i)` from rest (module docs).
+///
+/// # Errors
+/// [`FitError::NoFiniteRate`] for a model without a finite-rate form,
+/// [`FitError::ZooFromRest`] for a start state given, the LuGre full fit's for the record and
+/// the starts, and the slow zoo fit's ([`super::fit_zoo`]) for the request.
+pub fn fit_zoo_full(
+    spec: &ZooFitSpec,
+    t: &[f64],
+    u: &[f64],
+    f: &[f64],
+    options: FullOptions<'_>,
+) -> Result<ZooFitReport, FitError> {
+    let model = spec.model();
+    if !model.finite_rate {
+        let names: Vec<&str> = MODELS
+            .iter()
+            .filter(|m| m.finite_rate)
+            .map(|m| m.name)
+            .collect();
+        return Err(FitError::NoFiniteRate {
+            model: model.name,
+            takes: names.join(", "),
+        });
+    }
+    let FullOptions {
+        x0,
+        starts,
+        noise: _,
+        mut progress,
+    } = options;
+    if x0 != 0.0 {
+        return Err(FitError::ZooFromRest {
+            model: model.name,
+            x0,
+        });
+    }
+    if starts == 0 || starts > FullOptions::MAX_STARTS {
+        return Err(FitError::BadStarts {
+            starts,
+            most: FullOptions::MAX_STARTS,
+        });
+    }
+    check_columns(&[("u", u), ("t", t), ("F", f)])?;
+    check_increasing(t)?;
+    if !has_reversal(u) {
+        return Err(FitError::NoReversal { fit: "full" });
+    }
+    if f.iter().all(|&v| v == 0.0) {
+        return Err(FitError::ZeroForce);
+    }
+    let noise = levels(u, f, PositionHandling::AsGiven);
+    let (layout, free, mut values) = lay_out(spec, u, FitKind::Full)?;
+    check_count(u.len(), free.len())?;
+    let (given, bounds) = given_and_bounds(spec, &layout, &free, &values);
+    let mut out = Output {
+        layout: &layout,
+        response: Response::Path {
+            t: t.to_vec(),
+            u: u.to_vec(),
+            rate: true,
+        },
+        free: free.clone(),
+        bounds: bounds.clone(),
+        step: STEP,
+    };
+    rate_start(&mut out, t, u, f, &given, &mut values)?;
+    let mut best: Option<(Vec<f64>, super::super::lm::Outcome)> = None;
+    let mut evaluations = 0;
+    for (n, &(k0, kv)) in START_FACTORS.iter().cycle().take(starts).enumerate() {
+        let spread = 1.0 + (n / START_FACTORS.len()) as f64;
+        let mut v = values.clone();
+        for (c, &i) in free.iter().enumerate() {
+            let k = match layout.slots[i].parameter {
+                "sigma0" | "attraction" => k0,
+                "vs" => kv,
+                _ => 1.0,
+            };
+            if !given[c] {
+                v[i] = bounds[c].pull_inside(v[i] * k.powf(spread));
+            }
+        }
+        let start: Vec<f64> = free.iter().map(|&i| v[i]).collect();
+        let space = Space {
+            values: &v,
+            free: &free,
+            bounds: &bounds,
+        };
+        let mut report = |evaluations: usize, rms: f64| {
+            if let Some(p) = progress.as_mut() {
+                p(&super::super::FitProgress {
+                    start: n + 1,
+                    starts,
+                    evaluations,
+                    rms,
+                })
+            }
+        };
+        let (back, outcome) = minimize(out, f, space, &start, FULL_CONFIG, &mut report);
+        out = back;
+        evaluations += outcome.evaluations;
+        if outcome.rss.is_finite() && best.as_ref().is_none_or(|(_, b)| outcome.rss < b.rss) {
+            best = Some((start, outcome));
+        }
+    }
+    let Some((start, mut outcome)) = best else {
+        return Err(FitError::NoStart { starts });
+    };
+    outcome.evaluations = evaluations;
+    let end = End {
+        kind: FitKind::Full,
+        layout: &layout,
+        free: &free,
+        bounds: &bounds,
+        starts: (starts, &start),
+        turning_points: segments(u).len() + 1,
+        levels: noise,
+    };
+    conclude(end, outcome, f)
+}
+
+/// Start values of the free slots not given (module docs), pulled inside their bounds.
+fn rate_start(
+    out: &mut Output<'_>,
+    t: &[f64],
+    u: &[f64],
+    f: &[f64],
+    given: &[bool],
+    values: &mut [f64],
+) -> Result<(), FitError> {
+    let layout = out.layout;
+    if let Some((e, _)) = &layout.elements {
+        // The weights alone, on the rate-independent path (linear in them).
+        let weights: Vec<usize> = (0..out.free.len())
+            .filter(|&c| layout.slots[out.free[c]].parameter == e.weight)
+            .collect();
+        let mut linear = Output {
+            layout,
+            response: Response::Path {
+                t: t.to_vec(),
+                u: u.to_vec(),
+                rate: false,
+            },
+            free: weights.iter().map(|&c| out.free[c]).collect(),
+            bounds: weights.iter().map(|&c| out.bounds[c]).collect(),
+            step: super::LINEAR_STEP,
+        };
+        let given_w: Vec<bool> = weights.iter().map(|&c| given[c]).collect();
+        linear_start(&mut linear, f, &given_w, values)?;
+    }
+    let ex = Exact::new(Family::LuGre, Vec::new(), t, u, 0.0);
+    let current: Vec<f64> = Parameter::LUGRE.iter().map(|p| p.default_value()).collect();
+    let lugre = lugre_start(Family::LuGre, &ex, u, f, &current);
+    let of = |name: &str| {
+        let i = Parameter::LUGRE.iter().position(|p| p.name() == name);
+        i.map(|i| lugre[i])
+    };
+    let g0 = of("fs").unwrap_or(1.0);
+    let reversals: Vec<usize> = segments(u).iter().map(|s| s.0).collect();
+    let s0 = initial_slope(u, f, &reversals)
+        .or(of("sigma0"))
+        .unwrap_or(1.0);
+    let fc = of("fc").map_or(g0, |fc| fc.min(g0));
+    let mut speeds: Vec<f64> = (0..u.len() - 1).map(|i| ex.speed(i)).collect();
+    let speed = super::super::slow::median(&mut speeds).unwrap_or(1.0);
+    for (c, &i) in out.free.iter().enumerate() {
+        let name = layout.slots[i].parameter;
+        if given[c] || name == layout.elements.as_ref().map_or("", |(e, _)| e.weight) {
+            continue;
+        }
+        let x = match name {
+            "fc" => Some(fc),
+            "zba" => Some(0.3 * fc / s0),
+            "attraction" => Some(s0 * speed),
+            "sigma1" | "sigma2" | "vs" => of(name),
+            _ => data_start(name, s0, g0),
+        };
+        if let Some(x) = x {
+            values[i] = out.bounds[c].pull_inside(x);
+        }
+    }
+    for (c, &i) in out.free.iter().enumerate() {
+        values[i] = out.bounds[c].pull_inside(values[i]);
+    }
+    Ok(())
+}
