@@ -6,7 +6,8 @@
 #      and with none), the dependencies' own MSRVs (scripts/check-msrv.py), rustdoc with
 #      warnings denied, the benchmarks and the fuzz targets built;
 #   1. the Rust tests of every crate except the Python extension module (it takes its
-#      symbols from the interpreter that imports it, so it has no Rust test harness);
+#      symbols from the interpreter that imports it, so it has no Rust test harness), and the
+#      zoo's full-fit coverage in a release build;
 #   2. the MATLAB/Octave MEX functions (scripts/build-mex.sh, matlab/tests/test_lugre.m against
 #      the CLI's JSON); Octave is installed from Debian when run as root, else skipped loudly;
 #      (the C ABI's example program is built and run by the Rust tests of crates/lugre-ffi;)
@@ -46,6 +47,9 @@ cargo build --manifest-path fuzz/Cargo.toml --bins --quiet
 
 step "Rust tests"
 cargo test --workspace --exclude lugre-py --no-fail-fast
+# The coverage of the zoo's full-fit intervals refits each record some hundred simulations:
+# too slow unoptimised, so it runs here in the release build the benchmarks made.
+cargo test --release -p lugre --test zoo_full_fit intervals_cover_the_truth -- --exact
 
 step "MATLAB/Octave: the MEX functions (the C example runs in the Rust tests)"
 # Octave from Debian when run as root (CI); elsewhere the suite is skipped, loudly.
