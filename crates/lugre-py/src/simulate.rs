@@ -112,11 +112,11 @@ pub fn simulate<'py>(
 pub fn simulate_zoo<'py>(
     py: Python<'py>,
     model: &ZooModel,
-    input: [Option<&Bound<'py, PyAny>>; 4],
+    input: [Option<&Bound<'py, PyAny>>; 5],
     others: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     refuse_lugre_keywords(model, others)?;
-    let [turning_points, t, u, speed] = input;
+    let [turning_points, t, u, speed, samples_per_period] = input;
     if [turning_points, t, u].iter().all(|x| given(*x).is_none()) {
         return Err(PyValueError::new_err(
             "no input: give t and u (samples, linear in between) or turning_points (at speed)",
@@ -132,16 +132,17 @@ pub fn simulate_zoo<'py>(
         periods: None,
         x0: None,
         times: None,
-        samples_per_period: None,
+        samples_per_period,
         tol: None,
         interpolate: None,
     };
-    let (t, u) = match drive(&args)? {
-        Drive::Samples(pl) | Drive::TurningPoints(pl) => {
-            (pl.times().to_vec(), pl.values().to_vec())
-        }
-        // Not reached: no sine nor cubic reading without their keywords.
-        _ => return Err(value_error(model.simulate_option("sine"))),
+    let per_period = match output(&args)? {
+        Output::PerPeriod(n) => Some(n),
+        _ => None,
+    };
+    // Not None: no sine nor cubic reading without their keywords.
+    let Some((t, u)) = drive(&args)?.zoo_samples(per_period).map_err(value_error)? else {
+        return Err(value_error(model.simulate_option("sine")));
     };
     let y = py.detach(|| model.simulate(&t, &u)).map_err(value_error)?;
     let d = PyDict::new(py);
@@ -154,15 +155,7 @@ pub fn simulate_zoo<'py>(
 
 /// LuGre's and Dahl's own keywords of `simulate` (a model of the zoo starts from rest and
 /// answers at the input's own samples).
-const LUGRE_KEYWORDS: [&str; 7] = [
-    "x0",
-    "gamma",
-    "periods",
-    "tol",
-    "times",
-    "samples_per_period",
-    "sine",
-];
+const LUGRE_KEYWORDS: [&str; 6] = ["x0", "gamma", "periods", "tol", "times", "sine"];
 
 /// The first of LuGre's and Dahl's own keywords given (not None), refused for a model of the
 /// zoo as `lugre simulate --model` refuses their flags; any other keyword is a TypeError.

@@ -185,7 +185,8 @@ impl PyZooModel {
     /// sample). LuGre's own keywords (x0, gamma, periods, tol, times, samples_per_period,
     /// sine, interpolate='cubic') raise ValueError, as the CLI refuses their flags; invalid
     /// input raises ValueError naming the argument, a wrong type TypeError.
-    #[pyo3(signature = (turning_points=None, t=None, u=None, speed=None, **others))]
+    #[pyo3(signature = (turning_points=None, t=None, u=None, speed=None, samples_per_period=None, **others))]
+    #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
@@ -193,9 +194,15 @@ impl PyZooModel {
         t: Option<&Bound<'py, PyAny>>,
         u: Option<&Bound<'py, PyAny>>,
         speed: Option<&Bound<'py, PyAny>>,
+        samples_per_period: Option<&Bound<'py, PyAny>>,
         others: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        simulate_zoo(py, &self.inner, [turning_points, t, u, speed], others)
+        simulate_zoo(
+            py,
+            &self.inner,
+            [turning_points, t, u, speed, samples_per_period],
+            others,
+        )
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {

@@ -202,7 +202,10 @@ fn coverage(records: usize) -> Vec<(&'static str, &'static str, usize, usize)> {
 /// full fit simulates the record some hundred times: about 25 s unoptimised, so the test
 /// command's debug build leaves it to `cargo test --release -p lugre --test zoo_full_fit`.
 #[test]
-#[cfg_attr(debug_assertions, ignore = "25 s per fit unoptimised: run with --release")]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "25 s per fit unoptimised: run with --release"
+)]
 fn intervals_cover_the_truth() {
     for (model, name, covered, fitted) in coverage(5) {
         assert_eq!(fitted, 5, "{model}");

@@ -2,6 +2,7 @@
 //! solve, its slow limit, and the rate-independent models' exact path.
 
 use lugre::zoo::ZooModel;
+use lugre::TurningPoints;
 
 // Made by `python3 crates/lugre/tests/reference/elastoplastic_simulate.py` (scipy 1.17.1;
 // Radau at rtol 1e-12 split at the blend's kinks, DOP853 agreeing as printed): `(t, u, F)`.
@@ -469,4 +470,35 @@ fn the_rate_matters_exactly_for_the_models_with_a_finite_rate_form() {
         let quick = model.simulate(&fast, &u).unwrap();
         assert_eq!(slow != quick, spec.finite_rate, "{}", spec.name);
     }
+}
+
+/// Turning points are simulated at LuGre's default output density (`Drive::zoo_samples`): the
+/// same piecewise-linear motion seen more often, so every model's force at the turning points
+/// is the one of the turning points alone (each interval map composes with itself); a count
+/// beyond the limit is refused before allocating.
+#[test]
+fn turning_points_are_sampled_densely_and_the_motion_is_the_same() {
+    use lugre::simulate::{Drive, PiecewiseLinear, Request};
+    use lugre::zoo::MODELS;
+    let tp = TurningPoints::new(&[3.0, -1.0, 2.0, -3.0]).unwrap();
+    let pl = PiecewiseLinear::from_turning_points(&tp, 0.5).unwrap();
+    let drive = Drive::TurningPoints(pl.clone());
+    let (t, u) = drive.zoo_samples(None).unwrap().unwrap();
+    assert_eq!(t.len(), Request::DEFAULT_SAMPLES_PER_PERIOD + 1 + 3);
+    for spec in MODELS {
+        let model = ZooModel::new(spec.name, &[]).unwrap();
+        let dense = model.simulate(&t, &u).unwrap();
+        let knots = model.simulate(pl.times(), pl.values()).unwrap();
+        for (tk, fk) in pl.times().iter().zip(&knots) {
+            let i = t.iter().position(|x| x == tk).unwrap();
+            assert!(
+                (dense[i] - fk).abs() <= 1e-12 * 4.0,
+                "{} at t = {tk}",
+                spec.name
+            );
+        }
+    }
+    let record = Drive::Samples(pl);
+    assert_eq!(record.zoo_samples(None).unwrap().unwrap().0.len(), 5);
+    assert!(record.zoo_samples(Some(usize::MAX)).is_err());
 }

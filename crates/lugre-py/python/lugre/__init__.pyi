@@ -195,6 +195,7 @@ class ZooModel:
         t: Optional[_Reals] = None,
         u: Optional[_Reals] = None,
         speed: Optional[_Real] = None,
+        samples_per_period: Optional[SupportsIndex] = None,
     ) -> ZooSimulation: ...
     def __eq__(self, other: object) -> bool: ...
 

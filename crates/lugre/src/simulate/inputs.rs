@@ -131,6 +131,31 @@ impl PiecewiseLinear {
         out
     }
 
+    /// One period sampled at `per_period` evenly spaced times (at least 1) and at every knot,
+    /// in order, with `u` on the input's lines there: the same motion, seen more often (the
+    /// default output of the zoo's models for turning points, as LuGre's).
+    pub fn resampled(&self, per_period: usize) -> (Vec<f64>, Vec<f64>) {
+        let uniform = super::uniform_times(self.t[0], self.period(), 1, per_period);
+        let t = super::merge_times(&uniform, &self.t);
+        let mut k = 0;
+        let u = t
+            .iter()
+            .map(|&x| {
+                while k + 2 < self.len() && self.t[k + 1] <= x {
+                    k += 1;
+                }
+                let (t0, t1, u0, u1) = (self.t[k], self.t[k + 1], self.u[k], self.u[k + 1]);
+                // The knots themselves exactly; in between on the line.
+                if x == t1 {
+                    u1
+                } else {
+                    u0 + (u1 - u0) * ((x - t0) / (t1 - t0))
+                }
+            })
+            .collect();
+        (t, u)
+    }
+
     /// Checks that the input can run `periods` periods.
     pub(crate) fn check_periods(&self, periods: u32) -> Result<(), SimulateError> {
         if periods < 1 {

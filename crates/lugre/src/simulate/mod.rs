@@ -69,7 +69,7 @@ pub use element::FrictionElement;
 pub use exact::{Observed, Simulator};
 pub use example1::{paper_example_1, Example1};
 pub use inputs::{PiecewiseLinear, Sine};
-pub use request::{Drive, Output, Request};
+pub use request::{Drive, Output, Request, Samples};
 pub use smooth::SmoothSamples;
 
 pub use crate::error::SimulateError;

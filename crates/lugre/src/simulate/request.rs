@@ -6,6 +6,9 @@ use super::smooth::SmoothSamples;
 use super::{merge_times, uniform_times, Gamma, SimulateError, Simulator, Tolerance, Trajectory};
 use crate::model::{LuGre, VelocityFn};
 
+/// Sample times and input values `(t, u)`.
+pub type Samples = (Vec<f64>, Vec<f64>);
+
 /// The input of a simulation.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Drive {
@@ -21,6 +24,38 @@ pub enum Drive {
 }
 
 impl Drive {
+    /// The samples `(t, u)` a model of the zoo is simulated at (`ZooModel::simulate`): turning
+    /// points at [`Request::DEFAULT_SAMPLES_PER_PERIOD`] evenly spaced times of the period and
+    /// at every turning point, as LuGre's default output, or `per_period` where given; a
+    /// record at its own samples, or at `per_period` evenly spaced times and its samples. The
+    /// motion is the input's lines either way. `None` for a sine or a smooth reading (the zoo
+    /// takes piecewise-linear inputs).
+    ///
+    /// # Errors
+    /// [`SimulateError::TooManyRows`] beyond [`Request::MAX_ROWS`] samples, before allocating.
+    pub fn zoo_samples(&self, per_period: Option<usize>) -> Result<Option<Samples>, SimulateError> {
+        let pl = match self {
+            Drive::TurningPoints(pl) | Drive::Samples(pl) => pl,
+            Drive::Sine(_) | Drive::Smooth(_) => return Ok(None),
+        };
+        let per_period = match self {
+            Drive::TurningPoints(_) => {
+                Some(per_period.unwrap_or(Request::DEFAULT_SAMPLES_PER_PERIOD))
+            }
+            _ => per_period,
+        };
+        let Some(n) = per_period else {
+            return Ok(Some((pl.times().to_vec(), pl.values().to_vec())));
+        };
+        match n.checked_add(pl.len()) {
+            Some(rows) if rows <= Request::MAX_ROWS => Ok(Some(pl.resampled(n))),
+            rows => Err(SimulateError::TooManyRows {
+                rows: rows.map_or(u64::MAX, |r| r as u64),
+                limit: Request::MAX_ROWS,
+            }),
+        }
+    }
+
     /// The start and the period of the input.
     pub fn span(&self) -> (f64, f64) {
         match self {

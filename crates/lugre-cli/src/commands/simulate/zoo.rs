@@ -4,7 +4,6 @@
 //! finite rate for the elasto-plastic one). Nothing here names a model: the table does.
 
 use anyhow::{anyhow, bail, Result};
-use lugre::simulate::Drive;
 use lugre::zoo::ZooModel;
 use lugre::Trajectory;
 use std::io::Write;
@@ -33,17 +32,15 @@ pub(super) fn run(args: &SimulateArgs, model: &ZooModel) -> Result<()> {
             model.spec().name
         );
     }
-    let pl = match &drive {
-        Drive::Samples(pl) | Drive::TurningPoints(pl) => pl,
-        _ => bail!(
+    let Some((t, u)) = drive.zoo_samples(args.samples_per_period)? else {
+        bail!(
             "--model {}: the models of the zoo take a piecewise-linear input (--input FILE read linearly, --turning-points or --bimodal)",
             model.spec().name
-        ),
+        );
     };
     if let Some(path) = &args.plot.path {
         crate::plot::check_path(path)?;
     }
-    let (t, u) = (pl.times().to_vec(), pl.values().to_vec());
     let y = model
         .simulate(&t, &u)
         .map_err(|e| match &args.input.input {
@@ -67,7 +64,6 @@ fn refuse_lugre_flags(args: &SimulateArgs, model: &ZooModel) -> Result<()> {
         ("--periods", args.periods.is_some()),
         ("--tol", args.tol.is_some()),
         ("--times", args.times.is_some()),
-        ("--samples-per-period", args.samples_per_period.is_some()),
         ("--sine", args.sine.is_some()),
         (
             "--interpolate cubic",
