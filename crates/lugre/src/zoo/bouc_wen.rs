@@ -392,7 +392,18 @@ struct General {
     near: Table<2>,
     /// `(phi, Q)` of `Y = e^(-n (T - T(v0)))` on `[0, 1]`.
     far: Table<2>,
+    /// The negative part's inverse (B13): `(g, k)` of `s = c T_-^n` on `[0, c T_-(t0)^n]`.
+    neg_near: Table<2>,
+    /// `(t, E_-)` of `T_-` on `[T_-(t0), T_-(1)]`; `None` when `t0 = 1` or `c > NEG_TABLE_C`
+    /// (Newton (B11) there).
+    neg_far: Option<Table<2>>,
 }
+
+/// The largest `c = 2 sigma - 1` for which the negative part's inverse above the series
+/// (`t` in `[t0, 1]`) is tabulated: its slope `dt/dT_- = 1 + c t^n` grows to `1 + c`, so the
+/// pieces grade toward `T_-(1)` in about `log2 c` halvings; beyond this bound (`sigma > 5000`,
+/// far outside published fits) the root stays Newton's.
+const NEG_TABLE_C: f64 = 1e4;
 
 /// `P_m(e) = 1 - (1 - e)^m`, accurate for small `e`.
 #[inline]
@@ -529,11 +540,46 @@ impl General {
             t0_pos: 0.0,
             near: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
             far: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
+            neg_near: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
+            neg_far: None,
         };
         out.t0_pos = out.forward(v0).0;
         out.near = out.near_table();
         out.far = out.far_table();
+        if c > 0.0 {
+            out.neg_near = out.neg_near_table();
+        }
+        if t0 < 1.0 && c <= NEG_TABLE_C {
+            out.neg_far = Some(out.neg_far_table());
+        }
         Some(out)
+    }
+
+    /// `(g, k)` of (B13) on `[0, c T_-(t0)^n]`, from the roots of (B8) by Newton (B11).
+    fn neg_near_table(&self) -> Table<2> {
+        let (n, c) = (self.n, self.c);
+        Table::fit(
+            &|s: f64| {
+                let time = (s / c).powf(1.0 / n);
+                if time == 0.0 {
+                    return [1.0, self.series.b[0]];
+                }
+                let t = self.neg_root(self.t0, time);
+                [t / time, self.neg(t).1 / (time * time * s)]
+            },
+            &[0.0, c * self.neg_at_t0.0.powf(n)],
+        )
+    }
+
+    /// `(t, E_-)` of (B13) on `[T_-(t0), T_-(1)]`, from the roots of (B8) by Newton (B11).
+    fn neg_far_table(&self) -> Table<2> {
+        Table::fit(
+            &|time: f64| {
+                let t = self.neg_root(1.0, time);
+                [t, self.neg(t).1]
+            },
+            &[self.neg_at_t0.0, self.neg(1.0).0],
+        )
     }
 
     /// `(g, k)` of (B12) on `[0, T(v0)^n]`, from the roots of (B8) by Newton (B11).
@@ -649,8 +695,35 @@ impl General {
             let (v, d) = self.positive(0.0, tau - time);
             return (v, loss + d);
         }
-        let target = time - tau;
-        let mut t = (t_a - tau * (1.0 + self.c * t_a.powf(self.n))).max(0.0);
+        let (t, loss_b) = self.neg_inverse(t_a, time - tau);
+        (-t.min(t_a), loss - loss_b)
+    }
+
+    /// `(t, E_-(t))` at `T_-(t) = time`, `0 <= time < T_-(t_a)` (B13): one `powf` and one table
+    /// pair below `T_-(t0)`, one table pair above (Newton there when `c > NEG_TABLE_C`).
+    #[inline]
+    fn neg_inverse(&self, t_a: f64, time: f64) -> (f64, f64) {
+        if time <= self.neg_at_t0.0 {
+            if self.c == 0.0 {
+                return (time, 0.0);
+            }
+            let s = self.c * time.powf(self.n);
+            let [g, k] = self.neg_near.eval(s);
+            (time * g, time * time * s * k)
+        } else if let Some(table) = &self.neg_far {
+            let [t, loss] = table.eval(time);
+            (t, loss)
+        } else {
+            let t = self.neg_root(t_a, time);
+            (t, self.neg(t).1)
+        }
+    }
+
+    /// The root `t` of `T_-(t) = target` in `[0, t_a]`, `target <= T_-(t_a)`, by Newton (B11).
+    fn neg_root(&self, t_a: f64, target: f64) -> f64 {
+        // Two lower bounds: T_-(t) <= t, and T_-' >= 1 / (1 + c t_a^n) on [t, t_a].
+        let bound = t_a - (self.neg_time(t_a) - target) * (1.0 + self.c * t_a.powf(self.n));
+        let mut t = bound.max(target).clamp(0.0, t_a);
         for _ in 0..60 {
             // Newton on the concave T_-: from the left, the iterates rise to the root.
             let slope = 1.0 + self.c * t.powf(self.n);
@@ -660,7 +733,7 @@ impl General {
                 break;
             }
         }
-        (-t, loss - self.neg(t).1)
+        t
     }
 
     /// The positive part (B12): `v_b` and `D rho / kw` from `v_a >= 0` after `tau`.
@@ -713,6 +786,19 @@ impl General {
 mod tests {
     use super::*;
 
+    /// Exponents over the domain, from just above the closed form to the largest.
+    const EXPONENTS: [f64; 9] = [
+        1.0 + 1e-9,
+        1.1,
+        1.5,
+        2.0,
+        2.5,
+        3.7,
+        10.0,
+        25.0,
+        MAX_EXPONENT,
+    ];
+
     #[test]
     fn the_tables_give_the_closed_form_at_n_1() {
         for sigma in [0.5, 0.75, 1.0, 3.0, 40.0] {
@@ -741,17 +827,7 @@ mod tests {
         // (B12) against the Newton roots (B11) it is built from, off its nodes; the worst
         // deviations (printed with --nocapture) stand in the bound of the module docs.
         let (mut worst_v, mut worst_d) = (0.0f64, 0.0f64);
-        for n in [
-            1.0 + 1e-9,
-            1.1,
-            1.5,
-            2.0,
-            2.5,
-            3.7,
-            10.0,
-            25.0,
-            MAX_EXPONENT,
-        ] {
+        for n in EXPONENTS {
             let g = General::new(n, 0.5).unwrap();
             for i in 0..=400 {
                 let v_a = if i % 2 == 0 {
@@ -768,6 +844,34 @@ mod tests {
         }
         println!("worst |dv| {worst_v:e}, |dD| / (1 + tau) {worst_d:e}");
         assert!(worst_v <= 1e-14 && worst_d <= 1e-14, "{worst_v} {worst_d}");
+    }
+
+    #[test]
+    fn the_negative_inverse_follows_newton() {
+        // (B13) against the Newton roots (B11) it is built from, off its nodes, over `n` and
+        // `c` up to NEG_TABLE_C; the worst deviations (printed with --nocapture) stand in the
+        // bound of the module docs.
+        let (mut worst_t, mut worst_d) = (0.0f64, 0.0f64);
+        for n in EXPONENTS {
+            for c in [1e-3, 0.125, 0.5, 1.0, 7.0, 100.0, NEG_TABLE_C] {
+                let g = General::new(n, c).unwrap();
+                for i in 0..=200 {
+                    let t_a = if i % 3 == 0 {
+                        1.0
+                    } else {
+                        (i as f64 / 201.0).sqrt()
+                    };
+                    let top = g.neg_time(t_a);
+                    let time = top * ((i * 37) % 201) as f64 / 201.0;
+                    let t1 = g.neg_root(t_a, time);
+                    let (t2, d2) = g.neg_inverse(t_a, time);
+                    worst_t = worst_t.max((t1 - t2.min(t_a)).abs());
+                    worst_d = worst_d.max((g.neg(t1).1 - d2).abs());
+                }
+            }
+        }
+        println!("worst |dt| {worst_t:e}, |dE_-| {worst_d:e}");
+        assert!(worst_t <= 1e-14 && worst_d <= 1e-14, "{worst_t} {worst_d}");
     }
 
     #[test]
