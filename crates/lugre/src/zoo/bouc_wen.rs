@@ -82,9 +82,11 @@
 //! ```
 //!
 //! and elsewhere piecewise Chebyshev antiderivatives of the integrands, built in
-//! [`BoucWen::new`] ([`table`]): their dropped coefficients are below 1e-15, so `T`, `E`, `R`,
-//! `Q` carry an absolute error of at most ~1e-15 (the integrands are O(1) on ranges of length
-//! <= 1). Two quantities need a root: `v_b` from (B8) on the negative part, Newton in `t` on
+//! [`BoucWen::new`] ([`table`]): their dropped coefficients are below `1e-15 n`, so `T`, `E`,
+//! `R`, `Q` carry an absolute error of at most ~`1e-15 n` (the integrands are O(1) on ranges of
+//! length <= 1). At run time their values are the elasto-plastic model's degree-16 pieces fitted
+//! to them (half the evaluation time), within `5e-15` of their largest value more. Two
+//! quantities need a root: `v_b` from (B8) on the negative part, Newton in `t` on
 //! `T_-` (concave: started left of the root from the bound `t_b >= t_a - tau (1 + c t_a^n)`,
 //! its iterates rise monotonically), and on the positive part Newton in `x` on
 //! `x/n + R(e^(-x))` (concave, slope `e / P_n(e)` in `[1/n, 1]`, started at `x_a`):
@@ -105,10 +107,34 @@
 //! `g`, `k`, `phi` analytic, piecewise Chebyshev of degree 16 to `5e-15` of their largest
 //! coefficient (the elasto-plastic model's tables), built from the Newton roots above: a positive
 //! segment is `T_b = T(v_a) + tau`, one `powf` or `exp` and one table pair, within `1.6e-15` of
-//! the roots in `v` and `2.5e-15 (1 + tau)` in `D rho / kw` (checked on 3600 segments,
+//! the roots in `v` and `6.2e-15 (1 + tau)` in `D rho / kw` (checked on 3600 segments,
 //! `n` in `[1 + 1e-9, 100]`); the bound (B11) holds with `5e-15` added to `|Δw|`.
 //! The dissipation on the positive part is `E(T_b) - E(T_a)` (no quadrature at run
-//! time). Its absolute error is a few rounding units of `kw |Δu|` (relative to the segment's
+//! time).
+//!
+//! The negative part's root is tabulated the same way: `t_b` and `E_-(t_b)` are functions of
+//! `T_b = T_-(t_a) - tau` alone, with `s = c T_-^n` below `t0` (`c t0^n = 1/8`) and `T_-` itself
+//! above:
+//!
+//! ```text
+//! (B13) t = T_- g(s),  E_- = T_-² s k(s)        (T_- <= T_-(t0))
+//!       t, E_- piecewise in T_-                  (T_-(t0) < T_- <= T_-(1), c <= 1e4)
+//! ```
+//!
+//! (`g`, `k` analytic in `s` by the implicit function theorem on (B10); above `t0` the slope
+//! `dt/dT_- = 1 + c t^n` is at most `1 + c`, the pieces grading toward `T_-(1)`), built from
+//! Newton's roots: a negative segment is one forward table pair, one `powf` or none, and one
+//! table pair. Against Newton (`the_negative_inverse_follows_newton`, 201 segments for each of
+//! nine `n` and seven `c` in `[1e-3, 1e4]`): `|Δt| <= 2.1e-15 (1 + T_- (1 + c t^n))` (an
+//! error `δ` in `T_-`, which both carry, moves `t` by `δ (1 + c t^n)`: the map's own
+//! conditioning) and `|ΔE_-| <= 7.3e-15`. For `c > 1e4` (`sigma > 5000`) the root above `t0`
+//! stays Newton's. With the tables (`c <= 7`, `sigma <= 4`, covers the published fits):
+//!
+//! ```text
+//! (B14) |Δw| <= 5e-14 + 1e-15 n,   |ΔD| <= (kw / rho) (4 eps tau + 4e-15 n + 1e-14 (1 + tau))
+//! ```
+//!
+//! and for larger `c` the first term grows with the conditioning, to at most `5e-15 (1 + c)`. Its absolute error is a few rounding units of `kw |Δu|` (relative to the segment's
 //! work scale, not to `D`, which vanishes at the rate `tau^3` on a short segment from `w = 0`).
 
 mod table;
@@ -135,7 +161,7 @@ pub struct BoucWen {
     shape: Shape,
 }
 
-/// How the segment map is evaluated: closed form (B6-B7) or the tables (B8-B11).
+/// How the segment map is evaluated: closed form (B6-B7) or the tables (B8-B13).
 #[derive(Debug, Clone, PartialEq)]
 enum Shape {
     Linear { c: f64 },
@@ -284,7 +310,7 @@ impl SingleState for BoucWen {
         0.5 * (self.kx * u * u + self.kw * w * w / self.rho)
     }
 
-    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B11)
+    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B13)
     /// otherwise. `w_a` outside `[-1, 1]` is taken at the nearest bound.
     #[inline]
     fn segment(&self, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
@@ -690,7 +716,7 @@ impl General {
         self.pos(v, e).0
     }
 
-    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B11).
+    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B13).
     fn segment(&self, v_a: f64, tau: f64) -> (f64, f64) {
         if v_a >= 0.0 {
             return self.positive(v_a, tau);
