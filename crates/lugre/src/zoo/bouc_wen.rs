@@ -82,9 +82,11 @@
 //! ```
 //!
 //! and elsewhere piecewise Chebyshev antiderivatives of the integrands, built in
-//! [`BoucWen::new`] ([`table`]): their dropped coefficients are below 1e-15, so `T`, `E`, `R`,
-//! `Q` carry an absolute error of at most ~1e-15 (the integrands are O(1) on ranges of length
-//! <= 1). Two quantities need a root: `v_b` from (B8) on the negative part, Newton in `t` on
+//! [`BoucWen::new`] ([`table`]): their dropped coefficients are below `1e-15 n`, so `T`, `E`,
+//! `R`, `Q` carry an absolute error of at most ~`1e-15 n` (the integrands are O(1) on ranges of
+//! length <= 1). At run time their values are the elasto-plastic model's degree-16 pieces fitted
+//! to them (half the evaluation time), within `5e-15` of their largest value more. Two
+//! quantities need a root: `v_b` from (B8) on the negative part, Newton in `t` on
 //! `T_-` (concave: started left of the root from the bound `t_b >= t_a - tau (1 + c t_a^n)`,
 //! its iterates rise monotonically), and on the positive part Newton in `x` on
 //! `x/n + R(e^(-x))` (concave, slope `e / P_n(e)` in `[1/n, 1]`, started at `x_a`):
@@ -105,10 +107,34 @@
 //! `g`, `k`, `phi` analytic, piecewise Chebyshev of degree 16 to `5e-15` of their largest
 //! coefficient (the elasto-plastic model's tables), built from the Newton roots above: a positive
 //! segment is `T_b = T(v_a) + tau`, one `powf` or `exp` and one table pair, within `1.6e-15` of
-//! the roots in `v` and `2.5e-15 (1 + tau)` in `D rho / kw` (checked on 3600 segments,
+//! the roots in `v` and `6.2e-15 (1 + tau)` in `D rho / kw` (checked on 3600 segments,
 //! `n` in `[1 + 1e-9, 100]`); the bound (B11) holds with `5e-15` added to `|Δw|`.
 //! The dissipation on the positive part is `E(T_b) - E(T_a)` (no quadrature at run
-//! time). Its absolute error is a few rounding units of `kw |Δu|` (relative to the segment's
+//! time).
+//!
+//! The negative part's root is tabulated the same way: `t_b` and `E_-(t_b)` are functions of
+//! `T_b = T_-(t_a) - tau` alone, with `s = c T_-^n` below `t0` (`c t0^n = 1/8`) and `T_-` itself
+//! above:
+//!
+//! ```text
+//! (B13) t = T_- g(s),  E_- = T_-² s k(s)        (T_- <= T_-(t0))
+//!       t, E_- piecewise in T_-                  (T_-(t0) < T_- <= T_-(1), c <= 1e4)
+//! ```
+//!
+//! (`g`, `k` analytic in `s` by the implicit function theorem on (B10); above `t0` the slope
+//! `dt/dT_- = 1 + c t^n` is at most `1 + c`, the pieces grading toward `T_-(1)`), built from
+//! Newton's roots: a negative segment is one forward table pair, one `powf` or none, and one
+//! table pair. Against Newton (`the_negative_inverse_follows_newton`, 201 segments for each of
+//! nine `n` and seven `c` in `[1e-3, 1e4]`): `|Δt| <= 2.1e-15 (1 + T_- (1 + c t^n))` (an
+//! error `δ` in `T_-`, which both carry, moves `t` by `δ (1 + c t^n)`: the map's own
+//! conditioning) and `|ΔE_-| <= 7.3e-15`. For `c > 1e4` (`sigma > 5000`) the root above `t0`
+//! stays Newton's. With the tables (`c <= 7`, `sigma <= 4`, covers the published fits):
+//!
+//! ```text
+//! (B14) |Δw| <= 5e-14 + 1e-15 n,   |ΔD| <= (kw / rho) (4 eps tau + 4e-15 n + 1e-14 (1 + tau))
+//! ```
+//!
+//! and for larger `c` the first term grows with the conditioning, to at most `5e-15 (1 + c)`. Its absolute error is a few rounding units of `kw |Δu|` (relative to the segment's
 //! work scale, not to `D`, which vanishes at the rate `tau^3` on a short segment from `w = 0`).
 
 mod table;
@@ -135,7 +161,7 @@ pub struct BoucWen {
     shape: Shape,
 }
 
-/// How the segment map is evaluated: closed form (B6-B7) or the tables (B8-B11).
+/// How the segment map is evaluated: closed form (B6-B7) or the tables (B8-B13).
 #[derive(Debug, Clone, PartialEq)]
 enum Shape {
     Linear { c: f64 },
@@ -284,7 +310,7 @@ impl SingleState for BoucWen {
         0.5 * (self.kx * u * u + self.kw * w * w / self.rho)
     }
 
-    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B11)
+    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B13)
     /// otherwise. `w_a` outside `[-1, 1]` is taken at the nearest bound.
     #[inline]
     fn segment(&self, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
@@ -378,21 +404,30 @@ struct General {
     c: f64,
     /// The negative part's series (B10) holds on `t <= t0`, the table on `[t0, 1]`.
     t0: f64,
-    neg: Option<Antiderivatives>,
+    neg: Option<Table<2>>,
     /// `(T_-, E_-)` at `t0`.
     neg_at_t0: (f64, f64),
     series: Series,
     /// The positive part's series holds on `v <= v0`, the table in `e` on `[0, 1 - v0]`.
     v0: f64,
-    pos: Antiderivatives,
-    /// `R(e) = shift.0 + F_1(e)`, `Q(e) = shift.1 + F_2(e)`.
-    shift: (f64, f64),
+    pos: Table<2>,
     /// The inverse (B12): `T(v0)`, and `(g, k)` of `s = T^n` on `[0, T(v0)^n]`.
     t0_pos: f64,
     near: Table<2>,
     /// `(phi, Q)` of `Y = e^(-n (T - T(v0)))` on `[0, 1]`.
     far: Table<2>,
+    /// The negative part's inverse (B13): `(g, k)` of `s = c T_-^n` on `[0, c T_-(t0)^n]`.
+    neg_near: Table<2>,
+    /// `(t, E_-)` of `T_-` on `[T_-(t0), T_-(1)]`; `None` when `t0 = 1` or `c > NEG_TABLE_C`
+    /// (Newton (B11) there).
+    neg_far: Option<Table<2>>,
 }
+
+/// The largest `c = 2 sigma - 1` for which the negative part's inverse above the series
+/// (`t` in `[t0, 1]`) is tabulated: its slope `dt/dT_- = 1 + c t^n` grows to `1 + c`, so the
+/// pieces grade toward `T_-(1)` in about `log2 c` halvings; beyond this bound (`sigma > 5000`,
+/// far outside published fits) the root stays Newton's.
+const NEG_TABLE_C: f64 = 1e4;
 
 /// `P_m(e) = 1 - (1 - e)^m`, accurate for small `e`.
 #[inline]
@@ -418,6 +453,19 @@ fn bernoulli_gap(n: f64, e: f64) -> f64 {
         k += 1.0;
     }
     sum
+}
+
+/// `offset + F(x)` of the antiderivatives on `[a, b]` as the elasto-plastic model's piecewise
+/// Chebyshev series of degree 16 (their values analytic there): evaluated in half the time of
+/// the degree-32 panels, within `5e-15` of their largest value.
+fn values(integral: &Antiderivatives, offset: (f64, f64), a: f64, b: f64) -> Table<2> {
+    Table::fit(
+        &|x: f64| {
+            let (f1, f2) = integral.eval_both(x);
+            [offset.0 + f1, offset.1 + f2]
+        },
+        &[a, b],
+    )
 }
 
 /// Terms of the series (B10): `y <= 1/8`, so the dropped terms are below `8^-21 < 1e-18`.
@@ -499,7 +547,9 @@ impl General {
                 let y = c * s.powf(n);
                 [1.0 / (1.0 + y), s * y / (1.0 + y)]
             };
-            Some(Antiderivatives::new(&f, t0, 1.0, tolerance)?)
+            let integral = Antiderivatives::new(&f, t0, 1.0, tolerance)?;
+            let at_t0 = Series::new(n).negative(t0, c * t0.powf(n));
+            Some(values(&integral, at_t0, t0, 1.0))
         } else {
             None
         };
@@ -512,10 +562,11 @@ impl General {
                 complement(n + 1.0, e) / p,
             ]
         };
-        let pos = Antiderivatives::new(&f, 0.0, e1, tolerance)?;
+        let integral = Antiderivatives::new(&f, 0.0, e1, tolerance)?;
         let series = Series::new(n);
         let (r1, q1) = series.positive(n, v0, v0.powf(n));
-        let (f1, f2) = pos.eval_both(e1);
+        let (f1, f2) = integral.eval_both(e1);
+        let pos = values(&integral, (r1 - f1, q1 - f2), 0.0, e1);
         let mut out = Self {
             n,
             c,
@@ -525,15 +576,49 @@ impl General {
             series,
             v0,
             pos,
-            shift: (r1 - f1, q1 - f2),
             t0_pos: 0.0,
             near: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
             far: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
+            neg_near: Table::fit(&|_| [0.0; 2], &[0.0, 1.0]),
+            neg_far: None,
         };
         out.t0_pos = out.forward(v0).0;
         out.near = out.near_table();
         out.far = out.far_table();
+        if c > 0.0 {
+            out.neg_near = out.neg_near_table();
+        }
+        if t0 < 1.0 && c <= NEG_TABLE_C {
+            out.neg_far = Some(out.neg_far_table());
+        }
         Some(out)
+    }
+
+    /// `(g, k)` of (B13) on `[0, c T_-(t0)^n]`, from the roots of (B8) by Newton (B11).
+    fn neg_near_table(&self) -> Table<2> {
+        let (n, c) = (self.n, self.c);
+        Table::fit(
+            &|s: f64| {
+                let time = (s / c).powf(1.0 / n);
+                if time == 0.0 {
+                    return [1.0, self.series.b[0]];
+                }
+                let t = self.neg_root(self.t0, time);
+                [t / time, self.neg(t).1 / (time * time * s)]
+            },
+            &[0.0, c * self.neg_at_t0.0.powf(n)],
+        )
+    }
+
+    /// `(t, E_-)` of (B13) on `[T_-(t0), T_-(1)]`, from the roots of (B8) by Newton (B11).
+    fn neg_far_table(&self) -> Table<2> {
+        Table::fit(
+            &|time: f64| {
+                let t = self.neg_root(1.0, time);
+                [t, self.neg(t).1]
+            },
+            &[self.neg_at_t0.0, self.neg(1.0).0],
+        )
     }
 
     /// `(g, k)` of (B12) on `[0, T(v0)^n]`, from the roots of (B8) by Newton (B11).
@@ -601,8 +686,8 @@ impl General {
     fn neg(&self, t: f64) -> (f64, f64) {
         match &self.neg {
             Some(table) if t > self.t0 => {
-                let (a, b) = table.eval_both(t);
-                (self.neg_at_t0.0 + a, self.neg_at_t0.1 + b)
+                let [time, loss] = table.eval(t);
+                (time, loss)
             }
             _ => self.series.negative(t, self.c * t.powf(self.n)),
         }
@@ -611,10 +696,7 @@ impl General {
     /// `T_-(t)` alone.
     #[inline]
     fn neg_time(&self, t: f64) -> f64 {
-        match &self.neg {
-            Some(table) if t > self.t0 => self.neg_at_t0.0 + table.eval(0, t),
-            _ => self.series.negative(t, self.c * t.powf(self.n)).0,
-        }
+        self.neg(t).0
     }
 
     /// `(R, Q)` at `v = 1 - e`.
@@ -623,22 +705,18 @@ impl General {
         if v <= self.v0 {
             self.series.positive(self.n, v, v.powf(self.n))
         } else {
-            let (a, b) = self.pos.eval_both(e);
-            (self.shift.0 + a, self.shift.1 + b)
+            let [r, q] = self.pos.eval(e);
+            (r, q)
         }
     }
 
     /// `R` at `v = 1 - e`.
     #[inline]
     fn pos_r(&self, v: f64, e: f64) -> f64 {
-        if v <= self.v0 {
-            self.series.positive(self.n, v, v.powf(self.n)).0
-        } else {
-            self.shift.0 + self.pos.eval(0, e)
-        }
+        self.pos(v, e).0
     }
 
-    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B11).
+    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B13).
     fn segment(&self, v_a: f64, tau: f64) -> (f64, f64) {
         if v_a >= 0.0 {
             return self.positive(v_a, tau);
@@ -649,8 +727,35 @@ impl General {
             let (v, d) = self.positive(0.0, tau - time);
             return (v, loss + d);
         }
-        let target = time - tau;
-        let mut t = (t_a - tau * (1.0 + self.c * t_a.powf(self.n))).max(0.0);
+        let (t, loss_b) = self.neg_inverse(t_a, time - tau);
+        (-t.min(t_a), loss - loss_b)
+    }
+
+    /// `(t, E_-(t))` at `T_-(t) = time`, `0 <= time < T_-(t_a)` (B13): one `powf` and one table
+    /// pair below `T_-(t0)`, one table pair above (Newton there when `c > NEG_TABLE_C`).
+    #[inline]
+    fn neg_inverse(&self, t_a: f64, time: f64) -> (f64, f64) {
+        if time <= self.neg_at_t0.0 {
+            if self.c == 0.0 {
+                return (time, 0.0);
+            }
+            let s = self.c * time.powf(self.n);
+            let [g, k] = self.neg_near.eval(s);
+            (time * g, time * time * s * k)
+        } else if let Some(table) = &self.neg_far {
+            let [t, loss] = table.eval(time);
+            (t, loss)
+        } else {
+            let t = self.neg_root(t_a, time);
+            (t, self.neg(t).1)
+        }
+    }
+
+    /// The root `t` of `T_-(t) = target` in `[0, t_a]`, `target <= T_-(t_a)`, by Newton (B11).
+    fn neg_root(&self, t_a: f64, target: f64) -> f64 {
+        // Two lower bounds: T_-(t) <= t, and T_-' >= 1 / (1 + c t_a^n) on [t, t_a].
+        let bound = t_a - (self.neg_time(t_a) - target) * (1.0 + self.c * t_a.powf(self.n));
+        let mut t = bound.max(target).clamp(0.0, t_a);
         for _ in 0..60 {
             // Newton on the concave T_-: from the left, the iterates rise to the root.
             let slope = 1.0 + self.c * t.powf(self.n);
@@ -660,7 +765,7 @@ impl General {
                 break;
             }
         }
-        (-t, loss - self.neg(t).1)
+        t
     }
 
     /// The positive part (B12): `v_b` and `D rho / kw` from `v_a >= 0` after `tau`.
@@ -713,6 +818,19 @@ impl General {
 mod tests {
     use super::*;
 
+    /// Exponents over the domain, from just above the closed form to the largest.
+    const EXPONENTS: [f64; 9] = [
+        1.0 + 1e-9,
+        1.1,
+        1.5,
+        2.0,
+        2.5,
+        3.7,
+        10.0,
+        25.0,
+        MAX_EXPONENT,
+    ];
+
     #[test]
     fn the_tables_give_the_closed_form_at_n_1() {
         for sigma in [0.5, 0.75, 1.0, 3.0, 40.0] {
@@ -741,17 +859,7 @@ mod tests {
         // (B12) against the Newton roots (B11) it is built from, off its nodes; the worst
         // deviations (printed with --nocapture) stand in the bound of the module docs.
         let (mut worst_v, mut worst_d) = (0.0f64, 0.0f64);
-        for n in [
-            1.0 + 1e-9,
-            1.1,
-            1.5,
-            2.0,
-            2.5,
-            3.7,
-            10.0,
-            25.0,
-            MAX_EXPONENT,
-        ] {
+        for n in EXPONENTS {
             let g = General::new(n, 0.5).unwrap();
             for i in 0..=400 {
                 let v_a = if i % 2 == 0 {
@@ -768,6 +876,36 @@ mod tests {
         }
         println!("worst |dv| {worst_v:e}, |dD| / (1 + tau) {worst_d:e}");
         assert!(worst_v <= 1e-14 && worst_d <= 1e-14, "{worst_v} {worst_d}");
+    }
+
+    #[test]
+    fn the_negative_inverse_follows_newton() {
+        // (B13) against the Newton roots (B11) it is built from, off its nodes, over `n` and
+        // `c` up to NEG_TABLE_C; the worst deviations (printed with --nocapture) stand in the
+        // bound of the module docs. Both carry the forward table's rounding times the slope.
+        let (mut worst_t, mut worst_d) = (0.0f64, 0.0f64);
+        for n in EXPONENTS {
+            for c in [1e-3, 0.125, 0.5, 1.0, 7.0, 100.0, NEG_TABLE_C] {
+                let g = General::new(n, c).unwrap();
+                for i in 0..=200 {
+                    let t_a = if i % 3 == 0 {
+                        1.0
+                    } else {
+                        (i as f64 / 201.0).sqrt()
+                    };
+                    let top = g.neg_time(t_a);
+                    let time = top * ((i * 37) % 201) as f64 / 201.0;
+                    let t1 = g.neg_root(t_a, time);
+                    let (t2, d2) = g.neg_inverse(t_a, time);
+                    // A rounding unit of T_- moves t by eps T_- (1 + c t^n): the conditioning.
+                    let scale = 1.0 + time * (1.0 + c * t1.powf(n));
+                    worst_t = worst_t.max((t1 - t2.min(t_a)).abs() / scale);
+                    worst_d = worst_d.max((g.neg(t1).1 - d2).abs());
+                }
+            }
+        }
+        println!("worst |dt| / (1 + T_- (1 + c t^n)) {worst_t:e}, |dE_-| {worst_d:e}");
+        assert!(worst_t <= 1e-14 && worst_d <= 1e-14, "{worst_t} {worst_d}");
     }
 
     #[test]

@@ -57,18 +57,11 @@ impl Antiderivatives {
         Some(out)
     }
 
-    /// `F_which(x)` for `x` in `[a, b]` (clamped to it).
-    #[inline]
-    pub(super) fn eval(&self, which: usize, x: f64) -> f64 {
-        let (i, s) = self.locate(x);
-        clenshaw(&self.coef[i][which], s)
-    }
-
-    /// `(F_1(x), F_2(x))`.
+    /// `(F_1(x), F_2(x))` for `x` in `[a, b]` (clamped to it): four independent recurrences of half the length.
     #[inline]
     pub(super) fn eval_both(&self, x: f64) -> (f64, f64) {
         let (i, s) = self.locate(x);
-        (clenshaw(&self.coef[i][0], s), clenshaw(&self.coef[i][1], s))
+        (split(&self.coef[i][0], s), split(&self.coef[i][1], s))
     }
 
     /// The panel holding `x` and its variable `s` in [-1, 1].
@@ -133,6 +126,28 @@ fn integrate(c: &[f64; NODES], half: f64, start: f64) -> [f64; TERMS] {
     out
 }
 
+/// `sum C_k T_k(t)` split into its even and odd parts (as the elasto-plastic model's tables,
+/// `zoo/elastoplastic/chebyshev.rs`): `T_2k(t) = T_k(s)`, `T_(2k+1)(t) = t V_k(s)`,
+/// `s = 2t² - 1`, `V` the Chebyshev polynomials of the third kind (`V_0 = 1`, `V_1 = 2s - 1`,
+/// the same recurrence). Two independent recurrences of half the length: half the latency of
+/// [`clenshaw`], the same rounding class.
+#[inline(always)]
+fn split(c: &[f64; TERMS], t: f64) -> f64 {
+    let s = 2.0 * t * t - 1.0;
+    let s2 = 2.0 * s;
+    let (mut e1, mut e2, mut o1, mut o2) = (0.0, 0.0, 0.0, 0.0);
+    // TERMS = 33: even c_0..c_32 (T_0..T_16 of s), odd c_1..c_31 (V_0..V_15 of s).
+    for j in (1..=(TERMS - 1) / 2).rev() {
+        (e1, e2) = (c[2 * j] + s2 * e1 - e2, e1);
+        if 2 * j + 1 < TERMS {
+            (o1, o2) = (c[2 * j + 1] + s2 * o1 - o2, o1);
+        }
+    }
+    let even = c[0] + s * e1 - e2;
+    let odd = c[1] + s2 * o1 - o2 - o1;
+    even + t * odd
+}
+
 /// `sum C_k T_k(s)` by Clenshaw's recurrence.
 #[inline]
 fn clenshaw(c: &[f64; TERMS], s: f64) -> f64 {
@@ -164,7 +179,7 @@ mod tests {
         assert!(t.panels() > 10 && t.panels() < 200, "{}", t.panels());
         for x in [1e-7, 1e-3, 0.5, 1.0] {
             let want = (x * 1e6f64).ln_1p();
-            assert!((t.eval(0, x) - want).abs() < 1e-13 * want.max(1.0));
+            assert!((t.eval_both(x).0 - want).abs() < 1e-13 * want.max(1.0));
         }
     }
 }
