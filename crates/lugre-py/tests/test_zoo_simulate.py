@@ -69,7 +69,7 @@ def test_elastoplastic_inside_the_breakaway_band_is_elastic():
 @pytest.mark.parametrize(
     "keyword, value",
     [("x0", 0.1), ("gamma", 10), ("periods", 2), ("tol", 1e-8), ("times", [0, 1]),
-     ("samples_per_period", 10), ("interpolate", "cubic")],
+     ("interpolate", "cubic")],
 )
 def test_lugre_keywords_are_refused_in_the_command_lines_words(keyword, value, lugre_cli_error):
     cli_value = value if not isinstance(value, list) else ",".join(map(str, value))
