@@ -225,6 +225,12 @@ static void zoo_fit(void) {
           LUGRE_STATUS_INVALID_ARGUMENT);
     CHECK(fit == NULL && strstr(lugre_last_error(), "fc does not enter the slow loop") != NULL);
     lugre_zoo_fit_free(NULL);
+    /* The full fit: a model without a finite-rate form is refused with the core's message. */
+    double t[N];
+    for (int i = 0; i < N; i++) t[i] = i;
+    CHECK(lugre_zoo_fit_full("bouc-wen", NULL, t, u, f, N, 0, 0, NULL, NULL, &fit, NULL) ==
+          LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(fit == NULL && strstr(lugre_last_error(), "has no finite-rate form") != NULL);
 }
 
 static void cycles(const LugreModel *m) {
