@@ -267,6 +267,10 @@ typedef struct LugreZooFitSummary {
   // The noise estimated in the record (standard deviations of the position and the force).
   double noise_position;
   double noise_force;
+  // The starts the fit ran from (the slow fit: 1).
+  size_t starts;
+  // 1 for the full fit ([`lugre_zoo_fit_full`]), 0 for the slow one.
+  int32_t full;
 } LugreZooFitSummary;
 
 // One fitted number of a zoo model's fit (`name` lives as long as the fit).

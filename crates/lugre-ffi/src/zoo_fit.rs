@@ -64,6 +64,10 @@ pub struct LugreZooFitSummary {
     /// The noise estimated in the record (standard deviations of the position and the force).
     pub noise_position: f64,
     pub noise_force: f64,
+    /// The starts the fit ran from (the slow fit: 1).
+    pub starts: usize,
+    /// 1 for the full fit ([`lugre_zoo_fit_full`]), 0 for the slow one.
+    pub full: i32,
 }
 
 /// The slow-loop fit of the zoo's model `model` (as `lugre fit --model NAME`) to `n` samples
@@ -210,6 +214,8 @@ pub extern "C" fn lugre_zoo_fit_summary(
             turning_points: r.turning_points,
             noise_position: r.noise.position,
             noise_force: r.noise.force,
+            starts: r.starts,
+            full: i32::from(r.kind == lugre::fit::FitKind::Full),
         };
         Ok(())
     })

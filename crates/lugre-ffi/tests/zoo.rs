@@ -535,6 +535,7 @@ fn the_full_fit_is_the_cores() {
     assert_eq!(lugre_zoo_fit_summary(fit, &mut summary), LugreStatus::Ok);
     assert_eq!(summary.estimates, core.estimates.len());
     assert_eq!(summary.rms.to_bits(), core.rms.to_bits());
+    assert_eq!((summary.starts, summary.full), (1, 1));
     let truth = [2.0, 1.0, 1.5, 0.3, 0.5, 0.2, 0.5, 2.0];
     for (i, (c, want)) in core.estimates.iter().zip(truth).enumerate() {
         let mut e = std::mem::MaybeUninit::<LugreZooEstimate>::uninit();

@@ -204,6 +204,7 @@ static void zoo_fit(void) {
     LugreZooFitSummary s;
     OK(lugre_zoo_fit_summary(fit, &s));
     CHECK(s.estimates == 2 && s.samples == N && s.converged == 1 && s.rms < 1e-12);
+    CHECK(s.starts == 1 && s.full == 0);
     for (size_t i = 0; i < s.estimates; i++) {
         LugreZooEstimate e;
         OK(lugre_zoo_fit_estimate(fit, i, &e));
