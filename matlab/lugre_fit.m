@@ -28,7 +28,11 @@ function r = lugre_fit(u, f, options)
 %   'elastoplastic', as `lugre fit --model NAME`) is fitted to its slow loop: every parameter
 %   of the loop by name (an element's weight as 'stiffness[0]'), options.params the start
 %   values (a struct of the model's parameters; an element model's thresholds its own), fix
-%   and free as above; r.values is the fitted model (r.values.model its name).
+%   and free as above; r.values is the fitted model (r.values.model its name). A model with a
+%   finite-rate form ('maxwell-slip' as GMS, 'elastoplastic') is also fitted in full
+%   (options.kind = 'full' with options.t, and options.starts; as `lugre fit --model NAME
+%   --fit full`): every parameter of its table on its exact path from rest at the record's
+%   rate; another model is refused with the core's message.
 %
 %   r, a struct:
 %     r.names          the fitted parameters' names (a cell column, in the model's order)

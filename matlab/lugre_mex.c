@@ -851,10 +851,11 @@ static mxArray *zoo_values(const LugreZoo *zoo, const char *model) {
 }
 
 /* r = lugre_fit(u, f, struct('model', NAME, ...)) for a model of the zoo: the C ABI's
- * lugre_zoo_fit, its result with the fields of the LuGre fit's. */
-static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const double *u,
-                               const double *f, size_t n, size_t elements, const char *fix,
-                               const char *free_names) {
+ * lugre_zoo_fit, or with times t (options.kind = 'full') lugre_zoo_fit_full from `starts`
+ * starts (0: the default), its result with the fields of the LuGre fit's. */
+static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const double *t,
+                               const double *u, const double *f, size_t n, size_t elements,
+                               size_t starts, const char *fix, const char *free_names) {
     LugreZoo *start = NULL;
     LugreModel *dahl = NULL;
     if (params != NULL && !mxIsEmpty(params)) {
@@ -863,7 +864,10 @@ static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const d
     }
     LugreZooFit *fit = NULL;
     double *fitted = doubles(n);
-    LugreStatus st = lugre_zoo_fit(model, start, u, f, n, elements, fix, free_names, &fit, fitted);
+    LugreStatus st = t != NULL ? lugre_zoo_fit_full(model, start, t, u, f, n, elements, starts, fix,
+                                                    free_names, &fit, fitted)
+                               : lugre_zoo_fit(model, start, u, f, n, elements, fix, free_names,
+                                               &fit, fitted);
     lugre_zoo_free(start);
     check(st);
     LugreZooFitSummary s;
@@ -914,11 +918,12 @@ static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const d
         mxCreateDoubleScalar(s.condition_number),
         mxCreateDoubleScalar((double)s.iterations),
         mxCreateDoubleScalar((double)s.evaluations),
-        mxCreateDoubleScalar(1),
+        mxCreateDoubleScalar((double)s.starts),
         mxCreateLogicalScalar(s.converged != 0),
-        mxCreateDoubleScalar((double)s.turning_points),
+        /* As the LuGre full fit's: the turning points are the slow loop's. */
+        s.full ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar((double)s.turning_points),
         mxCreateString(info.name),
-        mxCreateString("slow"),
+        mxCreateString(s.full ? "full" : "slow"),
         column(fitted, n),
         column(residuals, n)};
     return struct_of(20, fields, v);
@@ -979,21 +984,24 @@ static mxArray *fit_struct(int nrhs, const mxArray *prhs[]) {
             mexErrMsgIdAndTxt(ERROR_ID, "unknown option 'options.%s' (options: %s)", name, FIT_OPTIONS);
         }
     }
+    if (full && t == NULL) fail("a full fit (options.kind = 'full') needs the sample times options.t");
+    if (full && nt != n) mexErrMsgIdAndTxt(ERROR_ID, "options.t and u must have the same length, got %d and %d", (int)nt, (int)n);
     if (strcmp(zoo, "lugre") != 0 && strcmp(zoo, "dahl") != 0) {
         /* A model of the zoo (the C ABI refuses an unknown name, naming every model). */
-        if (full || t != NULL || o.x0 != 0 || o.starts != 0)
-            mexErrMsgIdAndTxt(ERROR_ID, "options.model '%s' is fitted to its slow loop: options.kind, t, x0 and starts do not apply", zoo);
-        return zoo_fit_struct(zoo, params, u, f, n, elements, o.fix, o.free);
+        if (!full && (t != NULL || o.starts != 0))
+            mexErrMsgIdAndTxt(ERROR_ID, "options.%s applies to the full fit (options.kind = 'full')",
+                              t != NULL ? "t" : "starts");
+        if (o.x0 != 0)
+            mexErrMsgIdAndTxt(ERROR_ID, "options.x0 = %g: the model '%s' starts from rest; leave options.x0 out", o.x0, zoo);
+        return zoo_fit_struct(zoo, params, t, u, f, n, elements, o.starts, o.fix, o.free);
     }
     if (elements != 0)
         fail("options.elements applies to an element model of the zoo (options.model = 'maxwell-slip' or 'prandtl-ishlinskii')");
     if (!full && (o.x0 != 0 || o.starts != 0))
         mexErrMsgIdAndTxt(ERROR_ID, "options.%s applies to the full fit (options.kind = 'full')",
                           o.x0 != 0 ? "x0" : "starts");
-    if (full && t == NULL) fail("a full fit (options.kind = 'full') needs the sample times options.t");
     if (!full && t != NULL)
         fail("options.t is for the full fit (options.kind = 'full'): the slow fit depends on the turning points alone");
-    if (full && nt != n) mexErrMsgIdAndTxt(ERROR_ID, "options.t and u must have the same length, got %d and %d", (int)nt, (int)n);
     LugreModel *m = fit_model(params, o.family == LUGRE_FAMILY_DAHL);
     o.model = m;
     LugreFitResult r;

@@ -212,6 +212,21 @@ function failures = test_lugre()
                      'fc does not enter the slow loop of the elastoplastic model');
   failures += raises(@() lugre_fit(u, f, struct('elements', 3)), ...
                      'options.elements applies to an element model of the zoo');
+  % A model of the zoo with a finite-rate form: the full fit of a record t,u,F of the
+  % generator (crates/lugre/tests/reference/zoo_full_fit_reference.py), as `lugre fit --fit full`.
+  rec = 'crates/lugre/tests/reference/zoo_fit/elastoplastic-full-noisy.csv';
+  d = dlmread(rec, ',', 1, 0);
+  full = struct('model', 'elastoplastic', 'kind', 'full', 't', d(:, 1), 'starts', 1);
+  fr = lugre_fit(d(:, 2), d(:, 3), full);
+  j = cli(['fit --input ' rec ' --model elastoplastic --fit full --starts 1 --json']);
+  failures += expect(isequal(fr.value, numbers(j, 'value')) && isequal(fr.stderr, numbers(j, 'stderr')), ...
+                     'fit: the zoo''s full fit''s estimates and standard errors, as the CLI''s');
+  failures += expect(strcmp(fr.kind, 'full') && fr.starts == 1 && isempty(fr.turning_points), ...
+                     'fit: the zoo''s full fit''s report');
+  full.model = 'bouc-wen';
+  failures += raises(@() lugre_fit(d(:, 2), d(:, 3), full), 'the bouc-wen model has no finite-rate form');
+  failures += raises(@() lugre_fit(d(:, 2), d(:, 3), struct('model', 'elastoplastic', 'starts', 2)), ...
+                     'options.starts applies to the full fit');
   if failures == 0
     printf('test_lugre: all checks passed\n');
   else

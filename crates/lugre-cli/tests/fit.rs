@@ -901,18 +901,43 @@ fn a_model_of_the_zoo_refuses_what_it_cannot_fit() {
         &["fit", "--model", "elastoplastic", "--input", &input, "--free", "fc"],
         "fc does not enter the slow loop of the elastoplastic model (it depends on sigma0, fs, zba)",
     );
+    // The core's message, before the record is read.
     rejects(
-        &[
-            "fit",
-            "--model",
-            "elastoplastic",
-            "--input",
-            &input,
-            "--fit",
-            "full",
-        ],
-        "--fit full: the Elasto-plastic model is fitted to its slow loop",
+        &["fit", "--model", "bouc-wen", "--input", &input, "--fit", "full"],
+        "--fit full: the bouc-wen model has no finite-rate form (the models of the zoo with one: maxwell-slip, elastoplastic); fit its slow loop (--fit slow)",
     );
+    let timed = zoo_record("elastoplastic-full");
+    for (file, extra, message) in [
+        (
+            &input,
+            &["--fit", "stribeck"][..],
+            "--fit stribeck: the Elasto-plastic model is fitted to its slow loop (--fit slow) or, with a finite-rate form, to a rate-dependent record (--fit full)",
+        ),
+        (
+            &input,
+            &["--fit", "full"][..],
+            "a full fit needs the samples' times: columns t,u,F (this file has u,F)",
+        ),
+        (
+            &timed,
+            &["--fit", "full", "--x0", "0.1"][..],
+            "--x0: x0 = 0.1: the full fit of the elastoplastic model runs from rest",
+        ),
+        (
+            &timed,
+            &["--fit", "full", "--gate", "0.1"][..],
+            "--gate applies to the slow fit",
+        ),
+        (
+            &timed,
+            &["--starts", "2"][..],
+            "--starts applies to the full fit (add --fit full)",
+        ),
+    ] {
+        let mut a = vec!["fit", "--model", "elastoplastic", "--input", file];
+        a.extend_from_slice(extra);
+        rejects(&a, message);
+    }
     rejects(
         &[
             "fit",
@@ -946,4 +971,60 @@ fn a_model_of_the_zoo_refuses_what_it_cannot_fit() {
         &["fit", "--model", "bouc-wen", "--input", &small],
         "kx, kw, rho cannot be identified from this data",
     );
+}
+
+/// `--fit full` on a record `t,u,F` of the generator (`zoo_full_fit_reference.py`: the
+/// elasto-plastic model of Dupont et al. integrated by scipy's Radau at rtol 1e-12, force
+/// noise 0.01): every 95 % interval holds the generator's value, and the document has the
+/// slow zoo fit's keys (but
+/// `turning_points`, as the LuGre full fit) with `"fit": "full"`.
+#[test]
+fn a_finite_rate_model_of_the_zoo_is_fitted_in_full() {
+    let input = zoo_record("elastoplastic-full-noisy");
+    let doc = json(&[
+        "fit",
+        "--model",
+        "elastoplastic",
+        "--fit",
+        "full",
+        "--input",
+        &input,
+        "--json",
+    ]);
+    assert_eq!(doc["model"], "elastoplastic");
+    assert_eq!(doc["fit"], "full");
+    assert_eq!(doc["starts"], 3);
+    for (name, want) in [
+        ("sigma0", 2.0),
+        ("fc", 1.0),
+        ("fs", 1.5),
+        ("zba", 0.3),
+        ("sigma1", 0.5),
+        ("sigma2", 0.2),
+        ("vs", 0.5),
+        ("beta", 2.0),
+    ] {
+        let e = &doc["parameters"][name];
+        let ci: Vec<f64> = (0..2).map(|k| e["ci95"][k].as_f64().unwrap()).collect();
+        assert!(ci[0] <= want && want <= ci[1], "{name}: {ci:?}");
+        assert_eq!(doc["values"][name], e["value"], "{name}");
+        assert_eq!(e["at_bound"], false);
+    }
+    let slow = json(&[
+        "fit",
+        "--model",
+        "elastoplastic",
+        "--input",
+        &zoo_record("elastoplastic"),
+        "--json",
+    ]);
+    let keys = |d: &serde_json::Value| {
+        let mut k: Vec<String> = d.as_object().unwrap().keys().cloned().collect();
+        k.sort();
+        k
+    };
+    // The LuGre full fit's keys: `turning_points` is the slow loop's alone.
+    let mut slow_keys = keys(&slow);
+    slow_keys.retain(|k| k != "turning_points");
+    assert_eq!(keys(&doc), slow_keys);
 }

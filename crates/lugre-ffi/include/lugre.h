@@ -267,6 +267,10 @@ typedef struct LugreZooFitSummary {
   // The noise estimated in the record (standard deviations of the position and the force).
   double noise_position;
   double noise_force;
+  // The starts the fit ran from (the slow fit: 1).
+  size_t starts;
+  // 1 for the full fit ([`lugre_zoo_fit_full`]), 0 for the slow one.
+  int32_t full;
 } LugreZooFitSummary;
 
 // One fitted number of a zoo model's fit (`name` lives as long as the fit).
@@ -662,6 +666,24 @@ enum LugreStatus lugre_zoo_fit(const char *model,
                                const char *free_names,
                                struct LugreZooFit **out,
                                double *fitted);
+
+// The full fit of the zoo's model `model` with a finite-rate form (as `lugre fit --model NAME
+// --fit full`: GMS as "maxwell-slip", "elastoplastic") to `n` samples `(t, u, f)` of a
+// rate-dependent record, on the model's exact path from rest at the record's rate, from
+// `starts` start points (0: the default, 3); the other arguments as [`lugre_zoo_fit`]'s. A
+// model without a finite-rate form is `LUGRE_STATUS_INVALID_ARGUMENT` with the core's message.
+enum LugreStatus lugre_zoo_fit_full(const char *model,
+                                    const struct LugreZoo *start,
+                                    const double *t,
+                                    const double *u,
+                                    const double *f,
+                                    size_t n,
+                                    size_t elements,
+                                    size_t starts,
+                                    const char *fix,
+                                    const char *free_names,
+                                    struct LugreZooFit **out,
+                                    double *fitted);
 
 // The fit's statistics.
 enum LugreStatus lugre_zoo_fit_summary(const struct LugreZooFit *fit,

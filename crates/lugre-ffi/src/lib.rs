@@ -46,8 +46,8 @@ pub use zoo::{
     LugreZoo, LugreZooModelInfo, LugreZooParameter, LUGRE_ZOO_ELEMENTS, LUGRE_ZOO_SCALAR,
 };
 pub use zoo_fit::{
-    lugre_zoo_fit, lugre_zoo_fit_estimate, lugre_zoo_fit_free, lugre_zoo_fit_model,
-    lugre_zoo_fit_summary, LugreZooEstimate, LugreZooFit, LugreZooFitSummary,
+    lugre_zoo_fit, lugre_zoo_fit_estimate, lugre_zoo_fit_free, lugre_zoo_fit_full,
+    lugre_zoo_fit_model, lugre_zoo_fit_summary, LugreZooEstimate, LugreZooFit, LugreZooFitSummary,
 };
 
 use lugre::fit::{fit_full, fit_slow, Family, FitReport, FitSpec, FullOptions};

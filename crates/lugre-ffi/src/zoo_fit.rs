@@ -1,5 +1,6 @@
 //! The slow-loop fit of a model of the zoo through the C ABI (core `lugre::fit::fit_zoo`, the
-//! engine of `lugre fit --model NAME`): the result is a handle whose estimates are read one by
+//! engine of `lugre fit --model NAME`), and the full fit of one with a finite-rate form
+//! (`lugre::fit::fit_zoo_full`, `lugre fit --model NAME --fit full`: [`lugre_zoo_fit_full`]): the result is a handle whose estimates are read one by
 //! one by index (an element model has as many as it has elements), with the fitted model as a
 //! [`LugreZoo`].
 //!
@@ -16,7 +17,7 @@
 
 use std::ffi::{c_char, CString};
 
-use lugre::fit::{fit_zoo, SlowOptions, ZooFitReport, ZooFitSpec};
+use lugre::fit::{fit_zoo, fit_zoo_full, FullOptions, SlowOptions, ZooFitReport, ZooFitSpec};
 
 use super::{fail, free, guard, handle, handle_mut, input, names, output, set_out, text};
 use super::{LugreStatus, LugreZoo};
@@ -63,6 +64,10 @@ pub struct LugreZooFitSummary {
     /// The noise estimated in the record (standard deviations of the position and the force).
     pub noise_position: f64,
     pub noise_force: f64,
+    /// The starts the fit ran from (the slow fit: 1).
+    pub starts: usize,
+    /// 1 for the full fit ([`lugre_zoo_fit_full`]), 0 for the slow one.
+    pub full: i32,
 }
 
 /// The slow-loop fit of the zoo's model `model` (as `lugre fit --model NAME`) to `n` samples
@@ -87,48 +92,105 @@ pub extern "C" fn lugre_zoo_fit(
     fitted: *mut f64,
 ) -> LugreStatus {
     guard(|| {
-        let name =
-            text(model, "model")?.ok_or_else(|| fail(LugreStatus::NullPointer, "model is NULL"))?;
+        let spec = request(model, start, elements, fix, free_names)?;
         let (u, f) = (input(u, n, "u")?, input(f, n, "f")?);
-        let mut spec = ZooFitSpec::new(&name)?;
-        // SAFETY: NULL or a handle made by this library.
-        if let Some(s) = unsafe { start.as_ref() } {
-            if s.model.spec().name != spec.model().name {
-                return Err(fail(
-                    LugreStatus::InvalidArgument,
-                    format!(
-                        "start is a {} model, model says {}",
-                        s.model.spec().name,
-                        spec.model().name
-                    ),
-                ));
-            }
-            for (p, v) in s.model.named() {
-                spec = spec.set(p, &v)?;
-            }
-        }
-        for p in names(fix, "fix")? {
-            spec = spec
-                .fix(&p)
-                .map_err(|e| fail(LugreStatus::InvalidArgument, format!("fix: {e}")))?;
-        }
-        for p in names(free_names, "free")? {
-            spec = spec
-                .free(&p)
-                .map_err(|e| fail(LugreStatus::InvalidArgument, format!("free: {e}")))?;
-        }
-        if elements != 0 {
-            spec = spec.with_elements(elements);
-        }
         let report = fit_zoo(&spec, u, f, SlowOptions::default())?;
-        let names = report
-            .estimates
-            .iter()
-            .map(|e| CString::new(e.name).unwrap_or_default())
-            .collect();
-        output(fitted, &report.fitted);
-        set_out(out, LugreZooFit { report, names })
+        finish(report, out, fitted)
     })
+}
+
+/// The full fit of the zoo's model `model` with a finite-rate form (as `lugre fit --model NAME
+/// --fit full`: GMS as "maxwell-slip", "elastoplastic") to `n` samples `(t, u, f)` of a
+/// rate-dependent record, on the model's exact path from rest at the record's rate, from
+/// `starts` start points (0: the default, 3); the other arguments as [`lugre_zoo_fit`]'s. A
+/// model without a finite-rate form is `LUGRE_STATUS_INVALID_ARGUMENT` with the core's message.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn lugre_zoo_fit_full(
+    model: *const c_char,
+    start: *const LugreZoo,
+    t: *const f64,
+    u: *const f64,
+    f: *const f64,
+    n: usize,
+    elements: usize,
+    starts: usize,
+    fix: *const c_char,
+    free_names: *const c_char,
+    out: *mut *mut LugreZooFit,
+    fitted: *mut f64,
+) -> LugreStatus {
+    guard(|| {
+        let spec = request(model, start, elements, fix, free_names)?;
+        spec.check_finite_rate()?;
+        let (t, u, f) = (input(t, n, "t")?, input(u, n, "u")?, input(f, n, "f")?);
+        let starts = if starts == 0 {
+            FullOptions::DEFAULT_STARTS
+        } else {
+            starts
+        };
+        let options = FullOptions::default().with_starts(starts);
+        let report = fit_zoo_full(&spec, t, u, f, options)?;
+        finish(report, out, fitted)
+    })
+}
+
+/// The request of [`lugre_zoo_fit`] and [`lugre_zoo_fit_full`] from their arguments.
+fn request(
+    model: *const c_char,
+    start: *const LugreZoo,
+    elements: usize,
+    fix: *const c_char,
+    free_names: *const c_char,
+) -> Result<ZooFitSpec, super::Failure> {
+    let name =
+        text(model, "model")?.ok_or_else(|| fail(LugreStatus::NullPointer, "model is NULL"))?;
+    let mut spec = ZooFitSpec::new(&name)?;
+    // SAFETY: NULL or a handle made by this library.
+    if let Some(s) = unsafe { start.as_ref() } {
+        if s.model.spec().name != spec.model().name {
+            return Err(fail(
+                LugreStatus::InvalidArgument,
+                format!(
+                    "start is a {} model, model says {}",
+                    s.model.spec().name,
+                    spec.model().name
+                ),
+            ));
+        }
+        for (p, v) in s.model.named() {
+            spec = spec.set(p, &v)?;
+        }
+    }
+    for p in names(fix, "fix")? {
+        spec = spec
+            .fix(&p)
+            .map_err(|e| fail(LugreStatus::InvalidArgument, format!("fix: {e}")))?;
+    }
+    for p in names(free_names, "free")? {
+        spec = spec
+            .free(&p)
+            .map_err(|e| fail(LugreStatus::InvalidArgument, format!("free: {e}")))?;
+    }
+    if elements != 0 {
+        spec = spec.with_elements(elements);
+    }
+    Ok(spec)
+}
+
+/// The fitted force to `fitted` and the fit to `out`.
+fn finish(
+    report: ZooFitReport,
+    out: *mut *mut LugreZooFit,
+    fitted: *mut f64,
+) -> Result<(), super::Failure> {
+    let names = report
+        .estimates
+        .iter()
+        .map(|e| CString::new(e.name).unwrap_or_default())
+        .collect();
+    output(fitted, &report.fitted);
+    set_out(out, LugreZooFit { report, names })
 }
 
 /// The fit's statistics.
@@ -152,6 +214,8 @@ pub extern "C" fn lugre_zoo_fit_summary(
             turning_points: r.turning_points,
             noise_position: r.noise.position,
             noise_force: r.noise.force,
+            starts: r.starts,
+            full: i32::from(r.kind == lugre::fit::FitKind::Full),
         };
         Ok(())
     })

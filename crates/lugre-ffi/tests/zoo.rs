@@ -490,3 +490,81 @@ fn simulate_is_the_cores_and_starts_from_rest() {
         lugre_zoo_free(z);
     }
 }
+
+/// `lugre_zoo_fit_full` on a record `t,u,F` of the generator (`zoo_full_fit_reference.py` in
+/// the core's tests: the elasto-plastic model integrated by scipy's Radau at rtol 1e-12): the
+/// core's `fit_zoo_full` to the last bit, the generator's values to 1e-8 (the core's test's
+/// tolerance), and a model without a finite-rate form refused with the core's message.
+#[test]
+fn the_full_fit_is_the_cores() {
+    let text = include_str!("../../lugre/tests/reference/zoo_fit/elastoplastic-full.csv");
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let column = |k: usize| -> Vec<f64> { rows.iter().map(|r| r[k]).collect() };
+    let (t, u, f) = (column(0), column(1), column(2));
+    let n = t.len();
+    let call = |model: &str, fit: &mut *mut LugreZooFit, fitted: *mut f64| {
+        let name = CString::new(model).unwrap();
+        let (elements, starts) = (0, 1);
+        lugre_zoo_fit_full(
+            name.as_ptr(),
+            ptr::null(),
+            t.as_ptr(),
+            u.as_ptr(),
+            f.as_ptr(),
+            n,
+            elements,
+            starts,
+            ptr::null(),
+            ptr::null(),
+            fit,
+            fitted,
+        )
+    };
+    let mut fit = ptr::null_mut();
+    let mut fitted = vec![0.0; n];
+    let s = call("elastoplastic", &mut fit, fitted.as_mut_ptr());
+    assert_eq!(s, LugreStatus::Ok, "{}", last_error());
+    let spec = lugre::fit::ZooFitSpec::new("elastoplastic").unwrap();
+    let options = lugre::fit::FullOptions::default().with_starts(1);
+    let core = lugre::fit::fit_zoo_full(&spec, &t, &u, &f, options).unwrap();
+    let mut summary = LugreZooFitSummary::default();
+    assert_eq!(lugre_zoo_fit_summary(fit, &mut summary), LugreStatus::Ok);
+    assert_eq!(summary.estimates, core.estimates.len());
+    assert_eq!(summary.rms.to_bits(), core.rms.to_bits());
+    assert_eq!((summary.starts, summary.full), (1, 1));
+    let truth = [2.0, 1.0, 1.5, 0.3, 0.5, 0.2, 0.5, 2.0];
+    for (i, (c, want)) in core.estimates.iter().zip(truth).enumerate() {
+        let mut e = std::mem::MaybeUninit::<LugreZooEstimate>::uninit();
+        assert_eq!(
+            lugre_zoo_fit_estimate(fit, i, e.as_mut_ptr()),
+            LugreStatus::Ok
+        );
+        let e = unsafe { e.assume_init() };
+        assert_eq!(c_str(e.name), c.name);
+        assert_eq!(e.value.to_bits(), c.value.to_bits(), "{}", c.name);
+        assert_eq!(e.std_error.to_bits(), c.stderr.to_bits(), "{}", c.name);
+        assert!(
+            (e.value / want - 1.0).abs() < 1e-8,
+            "{}: {}",
+            c.name,
+            e.value
+        );
+    }
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&fitted), bits(&core.fitted));
+    lugre_zoo_fit_free(fit);
+
+    let mut fit = ptr::null_mut();
+    let s = call("bouc-wen", &mut fit, ptr::null_mut());
+    assert_eq!(s, LugreStatus::InvalidArgument);
+    assert!(fit.is_null());
+    let spec = lugre::fit::ZooFitSpec::new("bouc-wen").unwrap();
+    assert_eq!(
+        last_error(),
+        spec.check_finite_rate().unwrap_err().to_string()
+    );
+}

@@ -81,6 +81,11 @@ const FLOATS_PER_SAMPLE: usize = 48;
 /// model (lugre.ZooModel(r["model"], **r["values"])). The elasto-plastic fc, sigma1, sigma2,
 /// vs, beta do not enter the slow loop: freeing one raises ValueError; the LuGre fits' other
 /// keywords (t, bounds, x0, starts, interpolate, normal, v, stribeck, presliding) are refused.
+/// kind="full" with t (as `lugre fit --model NAME --fit full`), for a model with a finite-rate
+/// form ("maxwell-slip" as GMS, "elastoplastic"): every parameter of its table from a
+/// rate-dependent record (t, u, f), on the model's exact path from rest at the record's rate,
+/// from `starts` start points (x0, if given, must be 0); "turning_points" is None, as in the
+/// LuGre full fit. A model without that form raises ValueError.
 ///
 /// Arguments:
 ///
@@ -196,27 +201,38 @@ pub fn fit<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
     if let Some(spec) = zoo::spec_of(given(model).as_ref())? {
-        if let Some(k) = given(kind) {
-            if kind_arg(&k)? != FitKind::Slow {
-                return Err(PyValueError::new_err(format!(
-                    "kind={}: the {} model is fitted to its slow loop (kind='slow')",
-                    k.repr()?,
-                    spec.model().label
-                )));
+        let kind = zoo::kind_of(&spec, given(kind).as_ref())?;
+        let full = kind == FitKind::Full;
+        // The full fit's keywords, refused by name in the slow fit, and the slow fit's gate in
+        // the full fit (as `lugre fit --model NAME` refuses the flags).
+        let only = |full_only: bool, o: Option<&Bound<'py, PyAny>>| {
+            if full == full_only {
+                (given(o), None)
+            } else {
+                (None, given(o))
             }
-        }
+        };
+        let (t, t_other) = only(true, t);
+        let (x0, x0_other) = only(true, x0);
+        let (starts, starts_other) = only(true, starts);
+        let (gate, gate_other) = only(false, gate);
         let args = zoo::Args {
+            kind,
+            t,
+            x0,
+            starts,
             fix: given(fix),
             free: given(free),
             start: given(start),
             elements: given(elements),
             noise: given(noise),
-            gate: given(gate),
+            gate,
             others: vec![
-                ("t", given(t)),
+                ("t", t_other),
+                ("x0", x0_other),
+                ("starts", starts_other),
+                ("gate", gate_other),
                 ("bounds", given(bounds)),
-                ("x0", given(x0)),
-                ("starts", given(starts)),
                 ("interpolate", given(interpolate)),
                 ("normal", given(normal)),
                 ("v", given(v)),
@@ -479,7 +495,7 @@ const KINDS: [FitKind; 5] = [
 ];
 
 /// `kind`: "slow", "full", "stribeck", "presliding" or "staged" (case-insensitive).
-fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
+pub(super) fn kind_arg(obj: &Bound<'_, PyAny>) -> PyResult<FitKind> {
     let names: Vec<String> = KINDS.iter().map(|k| format!("'{}'", k.label())).collect();
     let expected = format!(
         "{} or {}",

@@ -204,6 +204,7 @@ static void zoo_fit(void) {
     LugreZooFitSummary s;
     OK(lugre_zoo_fit_summary(fit, &s));
     CHECK(s.estimates == 2 && s.samples == N && s.converged == 1 && s.rms < 1e-12);
+    CHECK(s.starts == 1 && s.full == 0);
     for (size_t i = 0; i < s.estimates; i++) {
         LugreZooEstimate e;
         OK(lugre_zoo_fit_estimate(fit, i, &e));
@@ -225,6 +226,12 @@ static void zoo_fit(void) {
           LUGRE_STATUS_INVALID_ARGUMENT);
     CHECK(fit == NULL && strstr(lugre_last_error(), "fc does not enter the slow loop") != NULL);
     lugre_zoo_fit_free(NULL);
+    /* The full fit: a model without a finite-rate form is refused with the core's message. */
+    double t[N];
+    for (int i = 0; i < N; i++) t[i] = i;
+    CHECK(lugre_zoo_fit_full("bouc-wen", NULL, t, u, f, N, 0, 0, NULL, NULL, &fit, NULL) ==
+          LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(fit == NULL && strstr(lugre_last_error(), "has no finite-rate form") != NULL);
 }
 
 static void cycles(const LugreModel *m) {

@@ -525,7 +525,7 @@ def fit(
     model: Union[
         Literal["maxwell-slip", "prandtl-ishlinskii", "bouc-wen", "elastoplastic"], ZooModel
     ],
-    kind: Literal["slow"] = "slow",
+    kind: Literal["slow", "full"] = "slow",
     fix: Union[str, Iterable[str], Mapping[str, Union[_Real, _Reals]]] = (),
     free: Union[str, Iterable[str]] = (),
     start: Optional[Mapping[str, Union[_Real, _Reals]]] = None,
@@ -546,6 +546,36 @@ def fit(
     (the engine of `lugre fit --model NAME`). An element model's thresholds are held on a grid
     spanning the record's amplitude (`elements` of them, default 4) or taken from a
     lugre.ZooModel given as the model, whose values are the start values."""
+    ...
+
+@overload
+def fit(
+    u: _Reals,
+    f: _Reals,
+    *,
+    t: _Reals,
+    model: Union[Literal["maxwell-slip", "elastoplastic"], ZooModel],
+    kind: Literal["full"],
+    fix: Union[str, Iterable[str], Mapping[str, Union[_Real, _Reals]]] = (),
+    free: Union[str, Iterable[str]] = (),
+    start: Optional[Mapping[str, Union[_Real, _Reals]]] = None,
+    bounds: None = None,
+    x0: Optional[_Real] = None,
+    starts: Optional[SupportsIndex] = None,
+    interpolate: Literal["linear"] = "linear",
+    normal: None = None,
+    v: None = None,
+    noise: Literal["auto", "off"] = "auto",
+    gate: None = None,
+    stribeck: None = None,
+    presliding: None = None,
+    elements: Optional[SupportsIndex] = None,
+) -> ZooFitResult:
+    """The full fit of a model of the zoo with a finite-rate form (GMS as "maxwell-slip", the
+    elasto-plastic model) to a rate-dependent record (t, u, f): every parameter of its table on
+    the model's exact path from rest at the record's rate, from `starts` start points (the
+    engine of `lugre fit --model NAME --fit full`); x0, if given, must be 0 (the model starts
+    from rest)."""
     ...
 
 @overload
@@ -597,7 +627,7 @@ class ZooFitResult(TypedDict):
     starts: int
     converged: bool
     termination: str
-    turning_points: int
+    turning_points: Optional[int]  # None for kind="full"
     model: str
     kind: Literal["slow"]
     normal_force: bool

@@ -1,9 +1,13 @@
 //! `lugre.fit(u, f, model="bouc-wen")` or `model=lugre.ZooModel(...)`: the slow-loop fit of a
-//! model of the zoo (core `lugre::fit::fit_zoo`, the engine of `lugre fit --model NAME`). A
-//! model object's values are the start values (and an element model's thresholds); a name
-//! starts every parameter from the data.
+//! model of the zoo (core `lugre::fit::fit_zoo`, the engine of `lugre fit --model NAME`), or,
+//! with `kind="full"` and `t`, the full fit of a model with a finite-rate form
+//! (`lugre::fit::fit_zoo_full`, `lugre fit --model NAME --fit full`). A model object's values
+//! are the start values (and an element model's thresholds); a name starts every parameter
+//! from the data.
 
-use lugre::fit::{fit_zoo, FitError, SlowOptions, ZooFitReport, ZooFitSpec};
+use lugre::fit::{
+    fit_zoo, fit_zoo_full, FitError, FitKind, FullOptions, SlowOptions, ZooFitReport, ZooFitSpec,
+};
 use lugre::zoo::{Shape, ZooModelSpec};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -33,8 +37,39 @@ pub(super) fn spec_of(model: Option<&Bound<'_, PyAny>>) -> PyResult<Option<ZooFi
     Ok(ZooModelSpec::find(&name).and_then(|spec| ZooFitSpec::new(spec.name).ok()))
 }
 
+/// `kind` for a model of the zoo: "slow" (default) or "full"; a full fit of a model without a
+/// finite-rate form refused with the core's message, in the keyword's terms.
+pub(super) fn kind_of(spec: &ZooFitSpec, kind: Option<&Bound<'_, PyAny>>) -> PyResult<FitKind> {
+    let Some(k) = kind else {
+        return Ok(FitKind::Slow);
+    };
+    let kind = super::kind_arg(k)?;
+    if !matches!(kind, FitKind::Slow | FitKind::Full) {
+        return Err(PyValueError::new_err(format!(
+            "kind={}: the {} model is fitted to its slow loop (kind='slow') or, with a finite-rate form, to a rate-dependent record (kind='full')",
+            k.repr()?,
+            spec.model().label
+        )));
+    }
+    if kind == FitKind::Full {
+        spec.check_finite_rate().map_err(|e| {
+            PyValueError::new_err(
+                e.to_string()
+                    .replace("--fit full", "kind='full'")
+                    .replace("--fit slow", "kind='slow'"),
+            )
+        })?;
+    }
+    Ok(kind)
+}
+
 /// The keywords of `lugre.fit` the zoo fit reads (`None`: not given).
 pub(super) struct Args<'py> {
+    pub kind: FitKind,
+    /// The full fit's times, start state and number of starts.
+    pub t: Option<Bound<'py, PyAny>>,
+    pub x0: Option<Bound<'py, PyAny>>,
+    pub starts: Option<Bound<'py, PyAny>>,
     pub fix: Option<Bound<'py, PyAny>>,
     pub free: Option<Bound<'py, PyAny>>,
     pub start: Option<Bound<'py, PyAny>>,
@@ -60,9 +95,18 @@ fn values(obj: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
 fn build(mut spec: ZooFitSpec, args: &Args<'_>) -> PyResult<ZooFitSpec> {
     let label = spec.model().label;
     if let Some((name, _)) = args.others.iter().find(|(_, v)| v.is_some()) {
-        return Err(PyValueError::new_err(format!(
-            "{name} does not apply to the {label} fit (a slow-loop fit of u and f; its bounds are the parameters' domains)"
-        )));
+        return Err(PyValueError::new_err(match (*name, args.kind) {
+            ("x0" | "starts", FitKind::Slow) => {
+                format!("{name} applies to the full fit (add kind='full')")
+            }
+            ("gate", _) => "gate applies to the slow fit (kind='slow'): the full fit simulates every turn of the input".to_string(),
+            (_, FitKind::Full) => format!(
+                "{name} does not apply to the {label} full fit (of t, u and f; its bounds are the parameters' domains)"
+            ),
+            _ => format!(
+                "{name} does not apply to the {label} fit (a slow-loop fit of u and f; its bounds are the parameters' domains)"
+            ),
+        }));
     }
     if let Some(start) = &args.start {
         for (name, value) in items(start, "start", "start value")? {
@@ -117,18 +161,49 @@ pub(super) fn fit<'py>(
     let spec = build(spec, &args)?;
     let u = floats(u, "u")?.one_dimensional("u", u)?;
     let f = floats(f, "f")?.one_dimensional("f", f)?;
-    let mut options = SlowOptions::default();
-    if let Some(n) = &args.noise {
-        options = options.with_noise(noise_arg(n)?);
-    }
-    if let Some(g) = &args.gate {
-        options = options.with_gate(real(g, "gate")?);
-    }
+    let noise = args.noise.as_ref().map(noise_arg).transpose()?;
+    let run = if args.kind == FitKind::Full {
+        let Some(t) = &args.t else {
+            return Err(PyValueError::new_err(
+                "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
+            ));
+        };
+        let t = floats(t, "t")?.one_dimensional("t", t)?;
+        let x0 = args.x0.as_ref().map(|x| real(x, "x0")).transpose()?;
+        let starts = match &args.starts {
+            Some(n) => usize::try_from(count(n, "starts")?).unwrap_or(usize::MAX),
+            None => FullOptions::DEFAULT_STARTS,
+        };
+        Run::Full {
+            t,
+            x0: x0.unwrap_or(0.0),
+            starts,
+        }
+    } else {
+        let mut options = SlowOptions::default();
+        if let Some(n) = noise {
+            options = options.with_noise(n);
+        }
+        if let Some(g) = &args.gate {
+            options = options.with_gate(real(g, "gate")?);
+        }
+        Run::Slow(options)
+    };
     drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
     let report = py
-        .detach(|| fit_zoo(&spec, &u, &f, options))
+        .detach(|| match run {
+            Run::Full { t, x0, starts } => {
+                let mut options = FullOptions::default().with_x0(x0).with_starts(starts);
+                if let Some(n) = noise {
+                    options = options.with_noise(n);
+                }
+                fit_zoo_full(&spec, &t, &u, &f, options)
+            }
+            Run::Slow(options) => fit_zoo(&spec, &u, &f, options),
+        })
         .map_err(|e| match e {
             FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
+            FitError::BadStarts { .. } => PyValueError::new_err(format!("starts: {e}")),
             FitError::BadElements { .. } => PyValueError::new_err(format!("elements: {e}")),
             FitError::Unidentifiable { ref parameters } => {
                 let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
@@ -142,6 +217,13 @@ pub(super) fn fit<'py>(
             e => explain(py, e),
         })?;
     report_dict(py, &report, &f)
+}
+
+/// The slow fit's options, or the full fit's times, start state and number of starts (its
+/// options are made where it runs: they may hold a progress callback, which stays there).
+enum Run {
+    Slow(SlowOptions),
+    Full { t: Vec<f64>, x0: f64, starts: usize },
 }
 
 /// The report as a dict: the keys of the LuGre fit's, "values" the fitted model's parameters
@@ -172,7 +254,7 @@ fn report_dict<'py>(py: Python<'py>, r: &ZooFitReport, f: &[f64]) -> PyResult<Bo
     d.set_item("values", values)?;
     d.set_item("fixed", fixed)?;
     d.set_item("model", spec.name)?;
-    d.set_item("kind", "slow")?;
+    d.set_item("kind", r.kind.label())?;
     d.set_item("normal_force", false)?;
     let residuals: Vec<f64> = f.iter().zip(&r.fitted).map(|(f, y)| f - y).collect();
     d.set_item("residuals", vec_out(py, residuals))?;

@@ -1,11 +1,17 @@
-//! `lugre fit --model NAME` for a model of the zoo (`lugre::fit::fit_zoo`): the slow-loop fit of
-//! its table's parameters to a slow periodic record `u,F`, through the same table, JSON and CSV
-//! as the LuGre fit. The model's flags given are held values (with `--fix`) or start values;
-//! an element model's thresholds come from its flags (`--thresholds`; `--slip-force` with
-//! `--stiffness`) or the grid on the record's amplitude, `--elements N` of them.
+//! `lugre fit --model NAME` for a model of the zoo: the slow-loop fit of its table's
+//! parameters to a slow periodic record `u,F` (`lugre::fit::fit_zoo`), or, for a model with a
+//! finite-rate form, the full fit to a rate-dependent record `t,u,F` (`--fit full`,
+//! `lugre::fit::fit_zoo_full`: its path from rest at the record's rate), through the same
+//! table, JSON and CSV as the LuGre fit. The model's flags given are held values (with
+//! `--fix`) or start values; an element model's thresholds come from its flags
+//! (`--thresholds`; `--slip-force` with `--stiffness`) or the grid on the record's amplitude,
+//! `--elements N` of them.
 
 use anyhow::{anyhow, bail, Result};
-use lugre::fit::{fit_zoo, FitError, SlowOptions, ZooFitReport, ZooFitSpec};
+use lugre::fit::{
+    fit_zoo, fit_zoo_full, FitError, FitProgress, FullOptions, SlowOptions, ZooFitReport,
+    ZooFitSpec,
+};
 use lugre::zoo::{Shape, ZooModelSpec};
 use std::io::Write;
 use std::path::Path;
@@ -14,68 +20,127 @@ use super::output::{
     figure_of, print_estimates, print_statistics, quote, write_csv, write_json_head,
     write_json_tail, Summary,
 };
-use super::{read_record, FitArgs, FitChoice, Record};
+use super::{read_record, FitArgs, FitChoice, FitProgressBar, Record};
 use crate::args::check_files;
 use crate::fmt::sig;
 use crate::io::atomic::write_atomic;
 use crate::io::json::JsonOut;
+use crate::numbers::parse_number;
 
 pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
     refuse_flags(args, model)?;
     check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
+    let full = args.fit == FitChoice::Full;
     let Some(path) = &args.input else {
-        bail!("no data: give --input FILE.csv (columns u,F)");
+        bail!(
+            "no data: give --input FILE.csv (columns {})",
+            if full { "t,u,F" } else { "u,F" }
+        );
     };
     let spec = build_spec(args)?;
+    if full {
+        spec.check_finite_rate()?;
+    }
     if let Some(plot) = &args.plot.path {
         crate::plot::check_path(plot)?;
     }
     let record = read_record(args, path)?;
     if record.normal.is_some() || record.velocity.is_some() {
         bail!(
-            "{}: the {} fit reads a slow record u,F (no normal force, no velocity)",
+            "{}: the {} fit reads a record {} (no normal force, no velocity)",
             path.display(),
-            model.label
+            model.label,
+            if full { "t,u,F" } else { "u,F" }
         );
     }
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
         bail!(
-            "{}: row {} has no force: the slow fit needs one at every row",
+            "{}: row {} has no force: the {} fit of the {} model needs one at every row",
             path.display(),
-            i + 1
+            i + 1,
+            args.fit.kind().label(),
+            model.name
         );
     }
-    let mut options = SlowOptions::default().with_noise(args.noise.unwrap_or_default());
-    if let Some(gate) = args.gate {
-        options = options.with_gate(gate);
-    }
-    let report = fit_zoo(&spec, &record.u, &record.f, options).map_err(|e| match e {
+    let with_file = |e: FitError| {
+        match e {
+        FitError::TooFewSamples { .. }
+        | FitError::NoReversal { .. }
+        | FitError::ZeroForce
+        | FitError::LengthMismatch { .. }
+        | FitError::Data(_) => anyhow!("{}: {e}", path.display()),
         FitError::BadGate { .. } => anyhow!("--gate: {e}"),
-        FitError::TooFewSamples { .. } | FitError::NoReversal { .. } | FitError::ZeroForce => {
-            anyhow!("{}: {e}", path.display())
-        }
         FitError::BadElements { .. } => anyhow!("--elements: {e}"),
+        FitError::BadStarts { .. } => anyhow!("--starts: {e}"),
         FitError::Unidentifiable { .. } => anyhow!(
             "{e}; hold a scalar at a value you know (--fix NAME=VALUE), fit fewer elements (--elements), or fit data that excite it"
         ),
         other => anyhow!("{other}"),
-    })?;
+    }
+    };
+    let report = if full {
+        let t = record.times_for_full_fit(path)?;
+        let x0 = match &args.x0 {
+            Some(text) => parse_number("--x0", 1, text)?,
+            None => 0.0,
+        };
+        fit_full(args, &spec, t, x0, &record).map_err(|e| match e {
+            FitError::ZooFromRest { .. } => anyhow!("--x0: {e}"),
+            other => with_file(other),
+        })?
+    } else {
+        let mut options = SlowOptions::default().with_noise(args.noise.unwrap_or_default());
+        if let Some(gate) = args.gate {
+            options = options.with_gate(gate);
+        }
+        fit_zoo(&spec, &record.u, &record.f, options).map_err(with_file)?
+    };
     show(args, path, &record, &report)
+}
+
+/// The full fit (`--fit full`) from rest with `--starts`, and a progress indicator.
+fn fit_full(
+    args: &FitArgs,
+    spec: &ZooFitSpec,
+    t: &[f64],
+    x0: f64,
+    record: &Record,
+) -> Result<ZooFitReport, FitError> {
+    let mut progress = FitProgressBar::new();
+    let mut report = |p: &FitProgress| progress.update(p);
+    let options = FullOptions::default()
+        .with_x0(x0)
+        .with_starts(args.starts.unwrap_or(FullOptions::DEFAULT_STARTS))
+        .with_noise(args.noise.unwrap_or_default())
+        .with_progress(&mut report);
+    let result = fit_zoo_full(spec, t, &record.u, &record.f, options);
+    progress.finish();
+    result
 }
 
 /// Flags of the LuGre fits that a model of the zoo does not take.
 fn refuse_flags(args: &FitArgs, model: &ZooModelSpec) -> Result<()> {
-    if args.fit != FitChoice::Slow {
+    if !matches!(args.fit, FitChoice::Slow | FitChoice::Full) {
         bail!(
-            "--fit {}: the {} model is fitted to its slow loop (--fit slow)",
+            "--fit {}: the {} model is fitted to its slow loop (--fit slow) or, with a finite-rate form, to a rate-dependent record (--fit full)",
             args.fit.kind().label(),
             model.label
         );
     }
+    if args.fit == FitChoice::Slow {
+        for (flag, given) in [
+            ("--x0", args.x0.is_some()),
+            ("--starts", args.starts.is_some()),
+        ] {
+            if given {
+                bail!("{flag} applies to the full fit (add --fit full)");
+            }
+        }
+    } else if args.gate.is_some() {
+        bail!("--gate applies to the slow fit (the full fit simulates every turn of the input)");
+    }
     let given = [
         ("--bounds", args.bounds.is_some()),
-        ("--x0", args.x0.is_some()),
-        ("--starts", args.starts.is_some()),
         ("--stribeck", args.stribeck.is_some()),
         ("--presliding", args.presliding.is_some()),
         (
@@ -125,15 +190,16 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
         write_atomic(csv, |w| write_csv(w, record, &r.fitted, &residuals))?;
     }
     let label = r.model.spec().label;
+    let kind = r.kind.label();
     if let Some(plot) = &args.plot.path {
         let units = record.units.clone().with_flag(args.plot.units.as_deref())?;
-        let title = format!("{label} slow fit: residual RMS {}", sig(r.rms, 4));
+        let title = format!("{label} {kind} fit: residual RMS {}", sig(r.rms, 4));
         figure_of(record, title, &r.fitted, &residuals, &units).save(plot)?;
     }
     if !r.converged {
         let _ = writeln!(
             std::io::stderr(),
-            "lugre: warning: the slow fit did not converge ({}); the best point found is reported",
+            "lugre: warning: the {kind} fit did not converge ({}); the best point found is reported",
             r.termination
         );
     }
@@ -143,8 +209,9 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
         let mut j = JsonOut::new(stdout.lock());
         write_json_head(&mut j, &summary)?;
         j.raw(&format!(
-            ",\"model\":{},\"fit\":\"slow\",\"values\":{},\"fixed\":{}",
+            ",\"model\":{},\"fit\":{},\"values\":{},\"fixed\":{}",
             quote(r.model.spec().name),
+            quote(kind),
             crate::zoo_args::zoo_json(&r.model),
             fixed_json(r)
         ))?;
@@ -152,9 +219,17 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
         return Ok(());
     }
     let mut out = std::io::BufWriter::new(stdout.lock());
+    let what = match r.kind {
+        lugre::fit::FitKind::Full => format!(
+            "full fit (the model's exact path from rest at the record's rate; {} start{})",
+            r.starts,
+            if r.starts == 1 { "" } else { "s" }
+        ),
+        _ => "slow-loop fit (the model's exact periodic loop)".to_string(),
+    };
     writeln!(
         out,
-        "{label} slow-loop fit (the model's exact periodic loop) to {} samples from {} ({} turning points)\n",
+        "{label} {what} to {} samples from {} ({} turning points)\n",
         r.samples,
         path.display(),
         r.turning_points
@@ -166,7 +241,7 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
     }
     writeln!(out, "fitted model: {}", crate::zoo_args::zoo_line(&r.model))?;
     print_statistics(&mut out, &summary)?;
-    super::output::print_written(&mut out, args, false)?;
+    super::output::print_written(&mut out, args, record.t.is_some())?;
     out.flush()?;
     Ok(())
 }

@@ -57,17 +57,7 @@ pub fn fit_zoo_full(
     options: FullOptions<'_>,
 ) -> Result<ZooFitReport, FitError> {
     let model = spec.model();
-    if !model.finite_rate {
-        let names: Vec<&str> = MODELS
-            .iter()
-            .filter(|m| m.finite_rate)
-            .map(|m| m.name)
-            .collect();
-        return Err(FitError::NoFiniteRate {
-            model: model.name,
-            takes: names.join(", "),
-        });
-    }
+    spec.check_finite_rate()?;
     let FullOptions {
         x0,
         starts,
@@ -162,6 +152,29 @@ pub fn fit_zoo_full(
         levels: noise,
     };
     conclude(end, outcome, f)
+}
+
+impl ZooFitSpec {
+    /// Whether the model has the finite-rate form [`fit_zoo_full`] needs: a front end asks
+    /// before it reads a record.
+    ///
+    /// # Errors
+    /// [`FitError::NoFiniteRate`] naming the models of the zoo that have one.
+    pub fn check_finite_rate(&self) -> Result<(), FitError> {
+        let model = self.model();
+        if model.finite_rate {
+            return Ok(());
+        }
+        let names: Vec<&str> = MODELS
+            .iter()
+            .filter(|m| m.finite_rate)
+            .map(|m| m.name)
+            .collect();
+        Err(FitError::NoFiniteRate {
+            model: model.name,
+            takes: names.join(", "),
+        })
+    }
 }
 
 /// Start values of the free slots not given (module docs), pulled inside their bounds.
