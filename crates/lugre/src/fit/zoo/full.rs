@@ -1,4 +1,4 @@
-//! The full fit of a model of the zoo with a finite-rate form ([`ZooModelSpec::finite_rate`]:
+//! The full fit of a model of the zoo with a finite-rate form ([`crate::zoo::ZooModelSpec::finite_rate`]:
 //! GMS, the elasto-plastic model) to a rate-dependent `(t, u, F)` record
 //! (`docs/mathematics.md#full-fit-of-the-zoos-finite-rate-models`).
 //!
