@@ -423,7 +423,7 @@ impl ModelArgs {
     pub(crate) fn build(&self) -> Result<ModelChoice> {
         if let Some(spec) = self.model.zoo() {
             bail!(
-                "--model {}: this command takes {} (the models of the zoo work with `lugre loop`, `lugre cycles` and `lugre simulate`)",
+                "--model {}: this command takes {} (the models of the zoo work with `lugre loop`, `lugre cycles`, `lugre simulate`, `lugre fit` and, those with a finite-rate form, `lugre dynamics`)",
                 spec.name,
                 Family::ALL.map(|f| f.name()).join(" or ")
             );
