@@ -9,7 +9,6 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::convert::{count, floats, real, try_vec, type_name, value_error, vec_out};
-use crate::zoo::echo;
 use lugre::simulate::{Drive, Output, Request};
 use lugre::zoo::ZooModel;
 
@@ -104,17 +103,15 @@ pub fn simulate<'py>(
     Ok(d)
 }
 
-/// A model of the zoo from rest under the piecewise-linear input `t, u`, or `turning_points`
-/// at `speed`: the core's [`ZooModel::simulate`], as a dict `model` (its name as `kind` and
-/// each parameter by name, as `lugre simulate --json` echoes it), `t`, `u`, `y` (the force).
-/// Of the `others` keywords, LuGre's own are refused in the core's words (`interpolate` may be
-/// "linear").
-pub fn simulate_zoo<'py>(
-    py: Python<'py>,
+/// The samples `(t, u)` a model of the zoo is simulated at ([`ZooModel::simulate`]): the
+/// piecewise-linear input `t, u`, or `turning_points` at `speed`, sampled by the core's
+/// `Drive::zoo_samples`. Of the `others` keywords, LuGre's own are refused in the core's words
+/// (`interpolate` may be "linear").
+pub fn zoo_input(
     model: &ZooModel,
-    input: [Option<&Bound<'py, PyAny>>; 5],
-    others: Option<&Bound<'py, PyDict>>,
-) -> PyResult<Bound<'py, PyDict>> {
+    input: [Option<&Bound<'_, PyAny>>; 5],
+    others: Option<&Bound<'_, PyDict>>,
+) -> PyResult<(Vec<f64>, Vec<f64>)> {
     refuse_lugre_keywords(model, others)?;
     let [turning_points, t, u, speed, samples_per_period] = input;
     if [turning_points, t, u].iter().all(|x| given(*x).is_none()) {
@@ -141,16 +138,10 @@ pub fn simulate_zoo<'py>(
         _ => None,
     };
     // Not None: no sine nor cubic reading without their keywords.
-    let Some((t, u)) = drive(&args)?.zoo_samples(per_period).map_err(value_error)? else {
-        return Err(value_error(model.simulate_option("sine")));
-    };
-    let y = py.detach(|| model.simulate(&t, &u)).map_err(value_error)?;
-    let d = PyDict::new(py);
-    d.set_item("model", echo(py, model)?)?;
-    d.set_item("t", vec_out(py, t))?;
-    d.set_item("u", vec_out(py, u))?;
-    d.set_item("y", vec_out(py, y))?;
-    Ok(d)
+    drive(&args)?
+        .zoo_samples(per_period)
+        .map_err(value_error)?
+        .ok_or_else(|| value_error(model.simulate_option("sine")))
 }
 
 /// LuGre's and Dahl's own keywords of `simulate` (a model of the zoo starts from rest and

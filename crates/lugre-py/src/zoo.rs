@@ -9,7 +9,7 @@ use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 
 use crate::convert::{float_repr, floats, list_repr, type_name, value_error, vec_out};
 use crate::loops::{loop_list, map_points, records_table, samples_n, PyCurve};
-use crate::simulate::simulate_zoo;
+use crate::simulate::zoo_input;
 use lugre::zoo::{Shape, ZooModel, ZooModelSpec, ZooParameter, MODELS};
 use lugre::ZooError;
 
@@ -182,8 +182,9 @@ impl PyZooModel {
     ///
     /// Returns a dict: model (the model's name as "kind" and its parameters by name, as
     /// `lugre simulate --json` echoes it), t, u, y (float64 arrays; y the force at each
-    /// sample). LuGre's own keywords (x0, gamma, periods, tol, times, samples_per_period,
-    /// sine, interpolate='cubic') raise ValueError, as the CLI refuses their flags; invalid
+    /// sample; turning points at 200 times per period and each turning point, or
+    /// samples_per_period). LuGre's own keywords (x0, gamma, periods, tol, times, sine,
+    /// interpolate='cubic') raise ValueError, as the CLI refuses their flags; invalid
     /// input raises ValueError naming the argument, a wrong type TypeError.
     #[pyo3(signature = (turning_points=None, t=None, u=None, speed=None, samples_per_period=None, **others))]
     #[allow(clippy::too_many_arguments)]
@@ -197,12 +198,17 @@ impl PyZooModel {
         samples_per_period: Option<&Bound<'py, PyAny>>,
         others: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        simulate_zoo(
-            py,
-            &self.inner,
-            [turning_points, t, u, speed, samples_per_period],
-            others,
-        )
+        let input = [turning_points, t, u, speed, samples_per_period];
+        let (t, u) = zoo_input(&self.inner, input, others)?;
+        let y = py
+            .detach(|| self.inner.simulate(&t, &u))
+            .map_err(value_error)?;
+        let d = PyDict::new(py);
+        d.set_item("model", echo(py, &self.inner)?)?;
+        d.set_item("t", vec_out(py, t))?;
+        d.set_item("u", vec_out(py, u))?;
+        d.set_item("y", vec_out(py, y))?;
+        Ok(d)
     }
 
     fn __repr__(&self, py: Python<'_>) -> String {

@@ -64,26 +64,7 @@ pub fn fit_zoo_full(
         noise: _,
         mut progress,
     } = options;
-    if x0 != 0.0 {
-        return Err(FitError::ZooFromRest {
-            model: model.name,
-            x0,
-        });
-    }
-    if starts == 0 || starts > FullOptions::MAX_STARTS {
-        return Err(FitError::BadStarts {
-            starts,
-            most: FullOptions::MAX_STARTS,
-        });
-    }
-    check_columns(&[("u", u), ("t", t), ("F", f)])?;
-    check_increasing(t)?;
-    if !has_reversal(u) {
-        return Err(FitError::NoReversal { fit: "full" });
-    }
-    if f.iter().all(|&v| v == 0.0) {
-        return Err(FitError::ZeroForce);
-    }
+    check_request(model.name, x0, starts, (t, u, f))?;
     let noise = levels(u, f, PositionHandling::AsGiven);
     let (layout, free, mut values) = lay_out(spec, u, FitKind::Full)?;
     check_count(u.len(), free.len())?;
@@ -106,12 +87,8 @@ pub fn fit_zoo_full(
         let spread = 1.0 + (n / START_FACTORS.len()) as f64;
         let mut v = values.clone();
         for (c, &i) in free.iter().enumerate() {
-            let k = match layout.slots[i].parameter {
-                "sigma0" | "attraction" => k0,
-                "vs" => kv,
-                _ => 1.0,
-            };
             if !given[c] {
+                let k = start_factor(layout.slots[i].parameter, (k0, kv));
                 v[i] = bounds[c].pull_inside(v[i] * k.powf(spread));
             }
         }
@@ -152,6 +129,43 @@ pub fn fit_zoo_full(
         levels: noise,
     };
     conclude(end, outcome, f)
+}
+
+/// The checks of a full fit's request and record `(t, u, F)` before anything is fitted.
+fn check_request(
+    model: &'static str,
+    x0: f64,
+    starts: usize,
+    (t, u, f): (&[f64], &[f64], &[f64]),
+) -> Result<(), FitError> {
+    if x0 != 0.0 {
+        return Err(FitError::ZooFromRest { model, x0 });
+    }
+    if starts == 0 || starts > FullOptions::MAX_STARTS {
+        return Err(FitError::BadStarts {
+            starts,
+            most: FullOptions::MAX_STARTS,
+        });
+    }
+    check_columns(&[("u", u), ("t", t), ("F", f)])?;
+    check_increasing(t)?;
+    if !has_reversal(u) {
+        return Err(FitError::NoReversal { fit: "full" });
+    }
+    if f.iter().all(|&v| v == 0.0) {
+        return Err(FitError::ZeroForce);
+    }
+    Ok(())
+}
+
+/// The factor of a start (`START_FACTORS`' pair `(k0, kv)`) on `parameter`: the stiffness or
+/// the attraction by `k0`, the Stribeck velocity by `kv`, the others kept.
+fn start_factor(parameter: &str, (k0, kv): (f64, f64)) -> f64 {
+    match parameter {
+        "sigma0" | "attraction" => k0,
+        "vs" => kv,
+        _ => 1.0,
+    }
 }
 
 impl ZooFitSpec {
