@@ -771,6 +771,54 @@ static mxArray *logical_column(const int32_t *v, size_t n) {
     return a;
 }
 
+/* The numbers of a fit's result the LuGre and the zoo fits share. */
+typedef struct {
+    double rms, t_quantile, condition_number;
+    size_t samples, dof, iterations, evaluations, starts, turning_points;
+    int converged, full;
+} FitNumbers;
+
+/* The struct lugre_fit.m documents: the estimates (k of them: names, value, stderr, ci95
+ * [lo hi], at_bound), the fitted model's values, the fit's numbers, the model's name, the
+ * fitted response and the residuals f - fitted at the n samples. */
+static mxArray *fit_struct_of(mxArray *names, double *value, double *se, mxArray *ci95,
+                              const int32_t *at_bound, size_t k, mxArray *values,
+                              const FitNumbers *s, const char *model, const double *f,
+                              const double *fitted, size_t n) {
+    double *residuals = doubles(n);
+    for (size_t i = 0; i < n; i++) residuals[i] = f[i] - fitted[i];
+    if (!s->converged)
+        mexWarnMsgIdAndTxt("lugre:notConverged",
+                           "the fit did not converge; the best point found is reported");
+    static const char *fields[] = {
+        "names", "value", "stderr", "ci95", "at_bound", "values", "rms", "samples", "dof",
+        "t_quantile", "condition_number", "iterations", "evaluations", "starts", "converged",
+        "turning_points", "model", "kind", "fitted", "residuals"};
+    mxArray *v[] = {
+        names,
+        column(value, k),
+        column(se, k),
+        ci95,
+        logical_column(at_bound, k),
+        values,
+        mxCreateDoubleScalar(s->rms),
+        mxCreateDoubleScalar((double)s->samples),
+        mxCreateDoubleScalar((double)s->dof),
+        mxCreateDoubleScalar(s->t_quantile),
+        mxCreateDoubleScalar(s->condition_number),
+        mxCreateDoubleScalar((double)s->iterations),
+        mxCreateDoubleScalar((double)s->evaluations),
+        mxCreateDoubleScalar((double)s->starts),
+        mxCreateLogicalScalar(s->converged != 0),
+        /* A full fit has no slow loop's turning points. */
+        s->full ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar((double)s->turning_points),
+        mxCreateString(model),
+        mxCreateString(s->full ? "full" : "slow"),
+        column(fitted, n),
+        column(residuals, n)};
+    return struct_of(20, fields, v);
+}
+
 /* The fit's result as the struct lugre_fit.m documents. */
 static mxArray *fit_result(const LugreFitResult *r, const double *f, const double *fitted,
                            size_t n, int full) {
@@ -796,37 +844,11 @@ static mxArray *fit_result(const LugreFitResult *r, const double *f, const doubl
     mxArray *values = mxCreateStructMatrix(1, 1, (int)r->parameters, all);
     for (size_t i = 0; i < r->parameters; i++)
         mxSetFieldByNumber(values, 0, (int)i, mxCreateDoubleScalar(r->value[i]));
-    double *residuals = doubles(n);
-    for (size_t i = 0; i < n; i++) residuals[i] = f[i] - fitted[i];
-    if (!r->converged)
-        mexWarnMsgIdAndTxt("lugre:notConverged",
-                           "the fit did not converge; the best point found is reported");
-    static const char *fields[] = {
-        "names", "value", "stderr", "ci95", "at_bound", "values", "rms", "samples", "dof",
-        "t_quantile", "condition_number", "iterations", "evaluations", "starts", "converged",
-        "turning_points", "model", "kind", "fitted", "residuals"};
-    mxArray *v[] = {
-        names,
-        column(value, k),
-        column(se, k),
-        ci95,
-        logical_column(at_bound, k),
-        values,
-        mxCreateDoubleScalar(r->rms),
-        mxCreateDoubleScalar((double)r->samples),
-        mxCreateDoubleScalar((double)r->dof),
-        mxCreateDoubleScalar(r->t_quantile),
-        mxCreateDoubleScalar(r->condition_number),
-        mxCreateDoubleScalar((double)r->iterations),
-        mxCreateDoubleScalar((double)r->evaluations),
-        mxCreateDoubleScalar((double)r->starts),
-        mxCreateLogicalScalar(r->converged != 0),
-        full ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar((double)r->turning_points),
-        mxCreateString(r->family == LUGRE_FAMILY_DAHL ? "dahl" : "lugre"),
-        mxCreateString(full ? "full" : "slow"),
-        column(fitted, n),
-        column(residuals, n)};
-    return struct_of(20, fields, v);
+    FitNumbers s = {r->rms, r->t_quantile, r->condition_number, r->samples, r->dof,
+                    r->iterations, r->evaluations, r->starts, r->turning_points, r->converged != 0,
+                    full};
+    return fit_struct_of(names, value, se, ci95, at_bound, k, values, &s,
+                         r->family == LUGRE_FAMILY_DAHL ? "dahl" : "lugre", f, fitted, n);
 }
 
 /* The fitted model of the zoo as a struct: every parameter by name (element arrays as rows),
@@ -895,38 +917,11 @@ static mxArray *zoo_fit_struct(const char *model, const mxArray *params, const d
     mxArray *values = zoo_values(fitted_model, model);
     lugre_zoo_free(fitted_model);
     lugre_zoo_fit_free(fit);
-    double *residuals = doubles(n);
-    for (size_t i = 0; i < n; i++) residuals[i] = f[i] - fitted[i];
-    if (!s.converged)
-        mexWarnMsgIdAndTxt("lugre:notConverged",
-                           "the fit did not converge; the best point found is reported");
-    static const char *fields[] = {
-        "names", "value", "stderr", "ci95", "at_bound", "values", "rms", "samples", "dof",
-        "t_quantile", "condition_number", "iterations", "evaluations", "starts", "converged",
-        "turning_points", "model", "kind", "fitted", "residuals"};
-    mxArray *v[] = {
-        names,
-        column(value, k),
-        column(se, k),
-        ci95,
-        logical_column(at_bound, k),
-        values,
-        mxCreateDoubleScalar(s.rms),
-        mxCreateDoubleScalar((double)s.samples),
-        mxCreateDoubleScalar((double)s.dof),
-        mxCreateDoubleScalar(s.t_quantile),
-        mxCreateDoubleScalar(s.condition_number),
-        mxCreateDoubleScalar((double)s.iterations),
-        mxCreateDoubleScalar((double)s.evaluations),
-        mxCreateDoubleScalar((double)s.starts),
-        mxCreateLogicalScalar(s.converged != 0),
-        /* As the LuGre full fit's: the turning points are the slow loop's. */
-        s.full ? mxCreateDoubleMatrix(0, 0, mxREAL) : mxCreateDoubleScalar((double)s.turning_points),
-        mxCreateString(info.name),
-        mxCreateString(s.full ? "full" : "slow"),
-        column(fitted, n),
-        column(residuals, n)};
-    return struct_of(20, fields, v);
+    FitNumbers numbers = {s.rms, s.t_quantile, s.condition_number, s.samples, s.dof,
+                          s.iterations, s.evaluations, s.starts, s.turning_points,
+                          s.converged != 0, s.full != 0};
+    return fit_struct_of(names, value, se, ci95, at_bound, k, values, &numbers, info.name, f,
+                         fitted, n);
 }
 
 /* r = lugre_fit(u, f, options): the C ABI's fit, its result as a struct (see lugre_fit.m). */
