@@ -32,13 +32,6 @@ struct Entry<S> {
     d: f64,
 }
 
-/// A closed loop before ordering: rotated arc ends, and the record.
-struct Found {
-    from: f64,
-    to: f64,
-    record: Loop,
-}
-
 impl ZooLoop {
     /// The loops of `model` for the periodic input `input`.
     ///
@@ -93,7 +86,11 @@ impl ZooLoop {
             d: 0.0,
         }];
         // At most one loop per two turning points: reserved once, never moved by growth.
-        let mut found = Vec::with_capacity(n / 2 + 1);
+        // The loops as they close; a loop's `parent` holds, until [`nest`], the index of the
+        // closed loop it lies in (`None`: the major loop).
+        let mut found: Vec<Loop> = Vec::with_capacity(n / 2 + 2);
+        // Closed loops without a parent yet, by where they start: (rotated index, loop).
+        let mut roots: Vec<(usize, usize)> = Vec::new();
         let mut d_period = 0.0;
         self.force[r] = bank.force(&start);
         for j in 1..=n {
@@ -110,6 +107,13 @@ impl ZooLoop {
                 // The arc ends where the input is back at u_A, on the segment into P.
                 M::assign(&mut scratch, &run);
                 let d = a.d + b.d + bank.advance(&mut scratch, M::input(&a.state));
+                // Every loop closed since A was pushed starts after A and lies in this arc.
+                let row = found.len();
+                while let Some(&(_, inside)) = roots.last().filter(|&&(start, _)| start > a.j) {
+                    found[inside].parent = Some(row);
+                    roots.pop();
+                }
+                roots.push((a.j, row));
                 found.push(self.found(bank, (a, b, j - 1), &scratch, d, r));
                 let merged = a.d + b.d;
                 stack.truncate(m - 2);
@@ -168,7 +172,7 @@ impl ZooLoop {
         end: &M::State,
         d: f64,
         r: usize,
-    ) -> Found {
+    ) -> Loop {
         let n = self.u.len();
         let from = self.rotated(r, a.j);
         let u_a = M::input(&a.state);
@@ -179,7 +183,7 @@ impl ZooLoop {
             rho_a -= self.period();
         }
         let k_a = (r + a.j) % n;
-        let record = Loop {
+        Loop {
             kind: LoopKind::Minor,
             start: self.point(k_a, rho_a),
             reversal: self.point((r + b.j) % n, rho_a + self.rotated(r, b.j) - from),
@@ -191,8 +195,7 @@ impl ZooLoop {
             energy: bank.arc(&a.state, end, d),
             parent: None,
             depth: 0,
-        };
-        Found { from, to, record }
+        }
     }
 
     /// `rho` of rotated index `j` from the start `r`.
@@ -271,39 +274,60 @@ impl ZooLoop {
     }
 }
 
-/// The major loop and the minor loops ordered by start (longer arcs first on a tie), with
-/// parents and depths: rainflow arcs are nested or disjoint, so one stack sweep finds each
-/// loop's smallest container.
-fn nest(major: Loop, found: Vec<Found>) -> Vec<Loop> {
-    // Sorted by key, not by record: a record is ~150 bytes, moved once rather than per swap.
-    let mut order: Vec<(f64, f64, usize)> = found
-        .iter()
-        .enumerate()
-        .map(|(i, f)| (f.from, f.to, i))
-        .collect();
-    order.sort_unstable_by(|x, y| {
-        x.0.total_cmp(&y.0)
-            .then(y.1.total_cmp(&x.1))
-            .then(x.2.cmp(&y.2))
-    });
-    let mut records: Vec<Option<Loop>> = found.into_iter().map(|f| Some(f.record)).collect();
-    let mut out = Vec::with_capacity(records.len() + 1);
-    out.push(major);
-    let mut open: Vec<(f64, usize)> = Vec::new();
-    for (from, to, i) in order {
-        while open.last().is_some_and(|&(end, _)| end <= from) {
-            open.pop();
-        }
-        let parent = open.last().map_or(0, |&(_, i)| i);
-        let Some(mut record) = records[i].take() else {
-            continue;
-        };
-        record.parent = Some(parent);
-        record.depth = out[parent].depth + 1;
-        open.push((to, out.len()));
-        out.push(record);
+/// The major loop and the minor loops ordered by where their arcs start, with parents and
+/// depths. Rainflow closes a loop after every loop inside it, and disjoint loops in the order
+/// they start: `found` is the tree of loops in post-order, its parents known (the index of the
+/// closed loop each lies in, `None` for the major loop), so each loop's place in pre-order (a
+/// parent before its children, siblings by start) follows in two linear passes, without a sort:
+/// a loop's subtree takes `size` places, handed out from the end of its parent's range to its
+/// children from the last one back. The records are then moved to their places where they are.
+fn nest(major: Loop, mut found: Vec<Loop>) -> Vec<Loop> {
+    let m = found.len();
+    // Node m is the major loop's. Indices fit u32: n <= MAX_STATES < 2^32.
+    let mut tree = vec![Node::default(); m + 1];
+    let up = |l: &Loop| l.parent.unwrap_or(m);
+    for i in 0..m {
+        tree[i].size += 1;
+        let p = up(&found[i]);
+        tree[p].size += tree[i].size;
     }
-    out
+    tree[m].size += 1;
+    tree[m].free = tree[m].size;
+    for i in (0..m).rev() {
+        let p = up(&found[i]);
+        tree[p].free -= tree[i].size;
+        let place = tree[p].free;
+        tree[i] = Node {
+            place,
+            free: place + tree[i].size,
+            depth: tree[p].depth + 1,
+            ..tree[i]
+        };
+    }
+    for (record, node) in found.iter_mut().zip(&tree) {
+        record.parent = Some(tree[record.parent.unwrap_or(m)].place as usize);
+        record.depth = node.depth as usize;
+    }
+    found.push(major);
+    // Each swap puts one record at its place.
+    for i in 0..=m {
+        while tree[i].place as usize != i {
+            let to = tree[i].place as usize;
+            found.swap(i, to);
+            tree.swap(i, to);
+        }
+    }
+    found
+}
+
+/// A loop's subtree in [`nest`]: its size, its place in pre-order, the first place after its
+/// range not yet handed to a child, its depth.
+#[derive(Debug, Clone, Copy, Default)]
+struct Node {
+    size: u32,
+    place: u32,
+    free: u32,
+    depth: u32,
 }
 
 impl ZooLoop {
@@ -392,5 +416,73 @@ impl ZooLoop {
     fn start_index(&self) -> usize {
         let max = self.u.iter().fold(f64::MIN, |m, &x| m.max(x));
         self.u.iter().position(|&x| x == max).unwrap_or(0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::zoo::{BoucWen, MaxwellSlip};
+
+    /// Alternating steps of a fixed LCG in `[0.01, 1)`, with ties of extreme values now and
+    /// then (steps repeated exactly).
+    fn walk(n: usize, seed: u64) -> TurningPoints {
+        let mut state = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut u, mut step) = (0.0, 0.5);
+        let values: Vec<f64> = (0..n)
+            .map(|i| {
+                if next() > 0.2 {
+                    step = 0.01 + 0.99 * next();
+                }
+                u += if i % 2 == 0 { step } else { -step };
+                u
+            })
+            .collect();
+        TurningPoints::new(&values).expect("reversals")
+    }
+
+    /// The order, parents and depths against their definitions, from the records alone: loops
+    /// by where their arcs start along the period walked from the major loop's start (longer
+    /// first on a tie), each one's parent the last loop before it whose arc contains it.
+    fn check(loops: &[Loop], period: f64) {
+        let rho0 = loops[0].start.rho;
+        let arc = |l: &Loop| {
+            let from = (l.start.rho - rho0).rem_euclid(period);
+            (from, from + (l.end.rho - l.start.rho))
+        };
+        assert_eq!(loops[0].parent, None);
+        for (i, l) in loops.iter().enumerate().skip(1) {
+            let (from, to) = arc(l);
+            let (prev_from, prev_to) = arc(&loops[i - 1]);
+            assert!(i == 1 || prev_from < from || (prev_from == from && prev_to >= to));
+            let parent = (1..i)
+                .rev()
+                .find(|&k| {
+                    let (a, c) = arc(&loops[k]);
+                    a <= from && to <= c
+                })
+                .unwrap_or(0);
+            assert_eq!(l.parent, Some(parent), "loop {i}");
+            assert_eq!(l.depth, loops[parent].depth + 1, "loop {i}");
+        }
+    }
+
+    #[test]
+    fn loops_come_by_start_with_their_smallest_container() {
+        let masing = MaxwellSlip::new(&[1.0, 2.0, 3.0], &[0.2, 0.5, 0.9]).expect("valid");
+        let single = BoucWen::new(0.5, 1.0, 4.0, 0.75, 1.0).expect("valid");
+        for seed in 0..300u64 {
+            let input = walk(2 + (seed as usize * 7) % 200, seed);
+            let hl = ZooLoop::new(masing.bank(), &input).expect("finite");
+            check(hl.loops(), hl.period());
+            let hl = ZooLoop::new(&single, &input).expect("finite");
+            check(hl.loops(), hl.period());
+        }
     }
 }
