@@ -3,7 +3,7 @@
 //! state per element, the mode changes as terminal events, Radau and DOP853 at rtol 1e-12;
 //! their output pasted below with their agreement).
 
-use lugre::dynamics::{Outcome, Request, Scenario};
+use lugre::dynamics::{FrictionLoop, Outcome, Request, Scenario};
 use lugre::zoo::ZooModel;
 
 /// The Table I scale of the reference: four elements sharing `sigma0 = 1e5` N/m, slip forces
@@ -30,12 +30,15 @@ fn table_one() -> ZooModel {
 }
 
 fn run(scenario: Scenario, times: Vec<f64>, rtol: f64) -> Outcome {
-    Request::new()
+    let request = Request::new()
         .with_scenario(scenario)
-        .with_zoo(&table_one())
-        .unwrap()
-        .with_times(times)
-        .unwrap()
+        .with_zoo(&table_one());
+    solve(request.unwrap().with_times(times).unwrap(), rtol)
+}
+
+/// `request` at rtol `rtol`, run.
+fn solve(request: Request, rtol: f64) -> Outcome {
+    request
         .with_rtol(rtol)
         .unwrap()
         .build()
@@ -274,4 +277,124 @@ fn stiff_elements_are_stable() {
     assert!(peak > 1.4 && peak < 1.5, "{peak}");
     assert!(out.motion.x[5].abs() < 1e-7, "{}", out.motion.x[5]);
     assert!(out.motion.stats.steps < 200_000, "{:?}", out.motion.stats);
+}
+
+/// A triangle wave of `x` between `-A` and `A` (`A = 1.975e-5` m: every element but the
+/// stiffest slips, `2 Delta_i < 2 A`), `k` times slower than 1e-5 m/s: the velocity `±1e-5 / k`
+/// with ramps of `0.1 k` s at the reversals, from 0 up to `A` at `2 k` s, down to `-A` at `6 k`
+/// s and back to `A` at `10 k` s, the run's end.
+fn triangle(k: f64) -> Request {
+    let (v0, d) = (1e-5 / k, 0.05 * k);
+    let t = [0.0, 2.0, 2.0, 6.0, 6.0, 10.0, 10.0];
+    let shift = [0.0, -d, d, -d, d, -d, d];
+    let t: Vec<f64> = t.iter().zip(shift).map(|(t, s)| t * k + s).collect();
+    let v = vec![v0, v0, -v0, -v0, v0, v0, -v0];
+    Request::new()
+        .with_zoo(&table_one())
+        .unwrap()
+        .with_velocity(t, v)
+        .unwrap()
+        .with_t_end(10.0 * k)
+        .unwrap()
+        .with_loops(true)
+}
+
+/// The one loop of [`triangle`] at rtol `rtol`.
+fn triangle_loop(k: f64, rtol: f64) -> FrictionLoop {
+    let out = solve(triangle(k).with_samples(2).unwrap(), rtol);
+    assert_eq!(out.loops.len(), 1, "{:?}", out.loops);
+    let l = out.loops[0].clone();
+    assert_eq!(
+        [l.t_start, l.t_turn, l.t_close],
+        [2.0 * k, 6.0 * k, 10.0 * k]
+    );
+    l
+}
+
+/// A slow loop of GMS friction tends to the Maxwell-slip model's loop on the same turning
+/// points, like `O(rate)`. The slow loop by hand: over the range `R = 2 A` the three elements
+/// with `2 Delta_i < R` slip, each dissipating `2 f_i (R - 2 Delta_i)`. The rate effect to
+/// first order (at constant speed a slipping element's force stays at its level): the damping
+/// `(sigma1 / K) K_S v` of the sticking elements and the viscous `sigma2 v`, whose work over
+/// the loop is `v0 (sigma1 / K) sum_i k_i 2 min(2 Delta_i, R) + sigma2 v0 2 R`, 9.72e-3 of the
+/// slow loop at 1e-5 m/s; measured 9.72e-3, 9.68e-3, 9.63e-3 at k = 1, 4, 16 (the Stribeck
+/// curve and the ramps, of higher order).
+#[test]
+fn gms_loop_tends_to_the_maxwell_slip_loop() {
+    let (k_el, f) = (2.5e4, [1.5 / 16.0, 4.5 / 16.0, 7.5 / 16.0, 10.5 / 16.0]);
+    let mut excess = Vec::new();
+    for k in [1.0, 4.0, 16.0] {
+        let l = triangle_loop(k, 1e-10);
+        let range = l.turning_points[0] - l.turning_points[1];
+        let by_hand: f64 = f
+            .iter()
+            .map(|fi| 2.0 * fi * (range - 2.0 * fi / k_el).max(0.0))
+            .sum();
+        let ri = l.rate_independent_work;
+        assert!((ri - by_hand).abs() <= 1e-12 * by_hand, "{ri} vs {by_hand}");
+        excess.push((l.work - ri) / ri);
+    }
+    assert!(
+        (3.9..4.1).contains(&(excess[0] / excess[1]))
+            && (3.9..4.1).contains(&(excess[1] / excess[2])),
+        "{excess:?}"
+    );
+    let (v0, range) = (1e-5, 3.95e-5);
+    let sticking: f64 = f
+        .iter()
+        .map(|fi| 2.0 * k_el * (2.0 * fi / k_el).min(range))
+        .sum();
+    let first_order = v0 * (1e5f64.sqrt() / 1e5 * sticking + 0.4 * 2.0 * range);
+    let slow: f64 = f
+        .iter()
+        .map(|fi| 2.0 * fi * (range - 2.0 * fi / k_el).max(0.0))
+        .sum();
+    let predicted = first_order / slow;
+    for (e, k) in excess.iter().zip([1.0, 4.0, 16.0]) {
+        assert!(
+            (e * k / predicted - 1.0).abs() < 0.015,
+            "{e:e} at k = {k}, {predicted:e}"
+        );
+    }
+}
+
+/// The loop's energy (L1): the elements' springs `sum F_i^2 / (2 k_i)` come back (every
+/// slipping element slipped both ways; the sticking one is back at its deflection), so the
+/// stored change is the integration's error; the dissipation is positive and equals the run's
+/// own dissipation (G7, the steps' quadrature) between the loop's start and its close, to the
+/// trapezoid rule's error on the outputs (5e-7, see `gms_loop_work_matches_scipy`).
+#[test]
+fn gms_loop_energy_balances() {
+    let l = triangle_loop(1.0, 1e-12);
+    assert!(l.dissipation > 0.0, "{l:?}");
+    assert!(l.bristle_energy_change.abs() < 1e-8 * l.work, "{l:?}");
+    assert_eq!(l.work, l.bristle_energy_change + l.dissipation);
+    let dissipated = |t_end: f64| {
+        let request = triangle(1.0).with_samples(2).unwrap().with_t_end(t_end);
+        solve(request.unwrap().with_loops(false), 1e-12)
+            .motion
+            .energy
+            .dissipated
+    };
+    let d = dissipated(10.0) - dissipated(2.0);
+    assert!(
+        (l.dissipation - d).abs() < 1e-6 * d,
+        "{} vs {d}",
+        l.dissipation
+    );
+}
+
+// gms_loop.py (scipy solve_ivp, rtol 1e-12):
+// Radau: work exact 1.7607071725543347e-05, trapezoid on the grid 1.7607062832383582e-05
+// Radau - DOP853: exact 2.3e-12, trapezoid 2.6e-12 relative
+/// The loop's work against scipy (`tests/reference/dynamics/gms_loop.py`, the elements one
+/// state each): within 1e-8 of the trapezoid rule on the same outputs at rtol 1e-12 (the
+/// integrations' difference), and within 1e-6 of the exact integral (the trapezoid rule's
+/// error on 20000 outputs, 5.1e-7).
+#[test]
+fn gms_loop_work_matches_scipy() {
+    let (trapezoid, exact) = (1.7607062832383582e-05, 1.7607071725543347e-05);
+    let l = triangle_loop(1.0, 1e-12);
+    assert!((l.work - trapezoid).abs() < 1e-8 * trapezoid, "{}", l.work);
+    assert!((l.work - exact).abs() < 1e-6 * exact, "{}", l.work);
 }

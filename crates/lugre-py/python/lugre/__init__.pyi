@@ -699,6 +699,8 @@ class FrictionLoop(TypedDict):
     t_close: float
     turning_points: np.ndarray
     work: float
+    # The change of the energy stored in the friction over the loop: the bristles'
+    # (LuGre, elasto-plastic), the elements' springs sum F_i^2 / (2 k_i) (GMS).
     bristle_energy_change: float
     dissipation: float
     rate_independent_work: float

@@ -32,6 +32,7 @@
 //! (a sticking element stores all its work), each integrated by the steps' own quadrature.
 
 use super::integrator::{dense, error_estimate, guess, quadrature, solve_stages, Factors, Newton};
+use super::loops::{loop_times, LoopTrace};
 use super::solver::bisect;
 use super::{Breakaway, Event, EventKind, Motion, System, Tolerances};
 use crate::error::DynamicsError;
@@ -123,6 +124,8 @@ pub(crate) struct GmsRun<'a> {
     /// Whether the first peak of the friction is still looked for.
     find_peak: bool,
     breakaway: Option<Breakaway>,
+    /// The energy stored in the elements at each output, `sum F_i^2 / (2 k_i)` (L2).
+    energy_out: Vec<f64>,
 }
 
 impl<'a> GmsRun<'a> {
@@ -146,6 +149,7 @@ impl<'a> GmsRun<'a> {
             out: Motion::default(),
             find_peak: peak,
             breakaway: None,
+            energy_out: Vec::new(),
         }
     }
 
@@ -259,10 +263,29 @@ impl<'a> GmsRun<'a> {
     /// The motion over `[0, t_end]` at `times` (increasing, in `[0, t_end]`), stopping at each
     /// output time and each kink of the drive.
     pub(crate) fn solve(
-        mut self,
+        self,
         t_end: f64,
         times: &[f64],
     ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
+        let run = self.integrate(t_end, times)?;
+        Ok((run.out, run.breakaway))
+    }
+
+    /// The outputs over `[0, t_end]` the friction loops are taken from
+    /// ([`super::loops::LoopTrace`]: the stored energy is the elements').
+    pub(crate) fn trace(self, t_end: f64) -> Result<LoopTrace, DynamicsError> {
+        let run = self.integrate(t_end, &loop_times(t_end))?;
+        let m = run.out;
+        Ok(LoopTrace {
+            t: m.t,
+            x: m.x,
+            friction: m.friction,
+            stored: run.energy_out,
+        })
+    }
+
+    /// [`Self::solve`]'s run, the outputs kept in `self`.
+    fn integrate(mut self, t_end: f64, times: &[f64]) -> Result<Self, DynamicsError> {
         let mut stops: Vec<f64> = self.system.kinks(t_end);
         let kinks = stops.clone();
         stops.extend(times.iter().copied().filter(|&t| t > 0.0 && t <= t_end));
@@ -288,7 +311,7 @@ impl<'a> GmsRun<'a> {
             }
         }
         self.out.energy.stored_end = self.stored(t, &y);
-        Ok((self.out, self.breakaway))
+        Ok(self)
     }
 
     /// Integrates from `(t, y)` to exactly `stop`, through the events on the way.
@@ -450,13 +473,17 @@ impl<'a> GmsRun<'a> {
     /// The energy stored in state `y` at `t`: kinetic, in the spring, in the elements.
     fn stored(&self, t: f64, y: &Y) -> f64 {
         let [x, v, q, _, _] = *y;
-        let forces = self.modes.forces(self.gms, y);
-        let elements: f64 = forces
+        let elements = self.element_energy(&self.modes.forces(self.gms, y));
+        self.system.stored(t, &[x, v, 0.0, q]) + elements
+    }
+
+    /// The energy in the elements' springs with forces `forces`, `sum F_i^2 / (2 k_i)`.
+    fn element_energy(&self, forces: &[f64]) -> f64 {
+        forces
             .iter()
             .zip(self.gms.stiffness())
             .map(|(f, k)| 0.5 * f * f / k)
-            .sum();
-        self.system.stored(t, &[x, v, 0.0, q]) + elements
+            .sum()
     }
 
     /// Adds the input and the dissipation over the step from `t` of size `h` with `stages`.
@@ -470,7 +497,10 @@ impl<'a> GmsRun<'a> {
     fn record(&mut self, t: f64, y: &Y) {
         let (_, friction) = self.rate(t, y);
         let stiffness: f64 = self.gms.stiffness().iter().sum();
-        let forces: f64 = self.modes.forces(self.gms, y).iter().sum();
+        let element_forces = self.modes.forces(self.gms, y);
+        let energy = self.element_energy(&element_forces);
+        self.energy_out.push(energy);
+        let forces: f64 = element_forces.iter().sum();
         let o = &mut self.out;
         o.t.push(t);
         o.x.push(y[0]);

@@ -3,20 +3,24 @@
 //! rainflow cycles (`lugre cycles`) say where loops close, and the friction along them gives each
 //! loop's work.
 //!
-//! Over an arc from `t_A` to `t_C` the work the mass does on the contact splits exactly
-//! (`F v = d/dt (sigma0 z^2 / 2) + sigma0^2 |v| z^2 / g + sigma1 z' v + f(v) v`) into the change
-//! of the energy stored in the bristles and what is dissipated:
+//! Over an arc from `t_A` to `t_C` the work the mass does on the contact splits exactly into
+//! the change of the energy `V` stored in the friction and what is dissipated:
 //!
 //! ```text
-//! W = integral F dx = sigma0 (z_C^2 - z_A^2) / 2 + D
+//! (L1)  W = integral F dx = V_C - V_A + D
+//! (L2)  V = sigma0 z^2 / 2                      LuGre, elasto-plastic (the bristles)
+//!       V = sum_i F_i^2 / (2 k_i)               GMS (the elements' springs, (G7))
 //! ```
 //!
-//! `W` is taken by the trapezoid rule on [`LOOP_SAMPLES`] outputs (each exact to the solver's
-//! tolerance), `D` as the difference. Beside each loop stands the rate-independent loop of
-//! `lugre loop` on the same turning points (its work per period, all of it dissipated): for slow
-//! drives the two agree to `O(rate)` (`crates/lugre/tests/dynamics.rs` shows it).
+//! (LuGre: `F v = d/dt (sigma0 z^2 / 2) + sigma0^2 |v| z^2 / g + sigma1 z' v + f(v) v`; GMS:
+//! (G7) of [`super::gms`].) `W` is taken by the trapezoid rule on [`LOOP_SAMPLES`] outputs
+//! (each exact to the solver's tolerance), `D` as the difference. Beside each loop stands the
+//! rate-independent loop of `lugre loop` on the same turning points for the same friction
+//! (LuGre's slow loop, the elasto-plastic model's, or the Maxwell-slip model's for GMS: its
+//! work per period, all of it dissipated): for slow drives the two agree to `O(rate)`
+//! (`crates/lugre/tests/dynamics.rs`, `crates/lugre/tests/dynamics_gms.rs` show it).
 
-use super::{FrictionLaw, Motion, System, Tolerances};
+use super::{FrictionLaw, System, Tolerances};
 use crate::cycles::count_cycles;
 use crate::error::Error;
 use crate::input::TurningPoints;
@@ -31,6 +35,56 @@ pub(crate) const LOOP_SAMPLES: usize = 20_000;
 /// Reversals of `x` smaller than this fraction of its span are ringing, not loops.
 pub(crate) const GATE: f64 = 1e-3;
 
+/// The outputs the loops are taken from: at each time, the displacement, the friction and the
+/// energy stored in the friction (L2).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct LoopTrace {
+    pub t: Vec<f64>,
+    pub x: Vec<f64>,
+    pub friction: Vec<f64>,
+    pub stored: Vec<f64>,
+}
+
+/// The output times of a [`LoopTrace`] over `[0, t_end]`.
+pub(crate) fn loop_times(t_end: f64) -> Vec<f64> {
+    uniform_times(0.0, t_end, 1, LOOP_SAMPLES)
+}
+
+/// The trace of `system` (LuGre or elasto-plastic friction, `V = sigma0 z^2 / 2`) over
+/// `[0, t_end]`.
+fn bristle_trace(system: &System, t_end: f64, tol: Tolerances) -> Result<LoopTrace> {
+    let m = system.solve(t_end, &loop_times(t_end), tol)?;
+    let sigma0 = system.model().sigma0();
+    let stored = m.z.iter().map(|z| 0.5 * sigma0 * z * z).collect();
+    Ok(LoopTrace {
+        t: m.t,
+        x: m.x,
+        friction: m.friction,
+        stored,
+    })
+}
+
+/// The loops of `system` (LuGre or elasto-plastic friction) over `[0, t_end]`, each beside
+/// its law's slow loop.
+pub(crate) fn friction_loops(
+    system: &System,
+    t_end: f64,
+    tol: Tolerances,
+) -> Result<Vec<FrictionLoop>> {
+    let trace = bristle_trace(system, t_end, tol)?;
+    loops_of(&trace, |input| match system.law() {
+        FrictionLaw::LuGre => {
+            Ok(HysteresisLoop::new(system.model().rate_independent(), input)?.work_per_period())
+        }
+        FrictionLaw::ElastoPlastic { zba } => {
+            let p = system.model().params();
+            Ok(ElastoPlastic::new(p.sigma0, p.fc, p.fs, zba)?
+                .loops(input)?
+                .work_per_period())
+        }
+    })
+}
+
 /// One closed friction-displacement loop.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrictionLoop {
@@ -42,45 +96,41 @@ pub struct FrictionLoop {
     pub turning_points: Vec<f64>,
     /// `integral F dx` over the loop.
     pub work: f64,
-    /// `sigma0 (z_C^2 - z_A^2) / 2`.
+    /// The change of the energy stored in the friction over the loop, `V_C - V_A` of (L2):
+    /// `sigma0 (z_C^2 - z_A^2) / 2` in the bristles (LuGre, elasto-plastic), `sum_i (F_i,C^2 -
+    /// F_i,A^2) / (2 k_i)` in the elements' springs (GMS).
     pub bristle_energy_change: f64,
     /// `work - bristle_energy_change`.
     pub dissipation: f64,
     /// The work per period of `lugre loop` on the same turning points (of the same friction
-    /// law: LuGre's slow loop, or the elasto-plastic model's).
+    /// law: LuGre's slow loop, the elasto-plastic model's, or the Maxwell-slip model's for GMS).
     pub rate_independent_work: f64,
 }
 
-/// The closed loops of the run over `[0, t_end]`: every full rainflow cycle of `x`, and the
-/// last open cycle when the run ends back at its start value (to the displacement tolerance).
-pub(crate) fn friction_loops(
-    system: &System,
-    t_end: f64,
-    tol: Tolerances,
+/// The closed loops of `trace`: every full rainflow cycle of `x`, and the last open cycle
+/// when the run ends back at its start value (to the displacement gate); `slow` gives the
+/// rate-independent work per period on a loop's turning points.
+pub(crate) fn loops_of(
+    trace: &LoopTrace,
+    slow: impl Fn(&TurningPoints) -> Result<f64>,
 ) -> Result<Vec<FrictionLoop>> {
-    let times = uniform_times(0.0, t_end, 1, LOOP_SAMPLES);
-    let m = system.solve(t_end, &times, tol)?;
-    let (lo, hi) =
-        m.x.iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                (a.min(x), b.max(x))
-            });
+    let (lo, hi) = trace
+        .x
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
     if hi <= lo {
         return Ok(Vec::new());
     }
     let gate = GATE * (hi - lo);
-    let history = count_cycles(&m.x, gate)?;
+    let history = count_cycles(&trace.x, gate)?;
     let reversals: Vec<usize> = history.reversals.iter().map(|r| r.index as usize).collect();
     let mut loops = Vec::new();
     for c in history.cycles.iter().filter(|c| c.is_full()) {
         if let Some(close) = c.closure {
-            loops.push(one_loop(
-                system,
-                &m,
-                &reversals,
-                c.start as usize,
-                close.position,
-            )?);
+            let start = c.start as usize;
+            loops.push(one_loop(trace, &reversals, start, close.position, &slow)?);
         }
     }
     // Two consecutive half cycles A -> B -> E of the residue with E back at A's value (the
@@ -90,21 +140,21 @@ pub(crate) fn friction_loops(
     for pair in halves.windows(2) {
         let (first, second) = (pair[0], pair[1]);
         let (a, e) = (first.start as usize, second.end as usize);
-        if second.start == first.end && (m.x[e] - m.x[a]).abs() <= gate {
-            loops.push(one_loop(system, &m, &reversals, a, e as f64)?);
+        if second.start == first.end && (trace.x[e] - trace.x[a]).abs() <= gate {
+            loops.push(one_loop(trace, &reversals, a, e as f64, &slow)?);
         }
     }
     loops.sort_by(|a, b| a.t_close.total_cmp(&b.t_close));
     Ok(loops)
 }
 
-/// The loop from sample `start` to the (fractional) sample position `close`.
+/// The loop of `trace` from sample `start` to the (fractional) sample position `close`.
 fn one_loop(
-    system: &System,
-    m: &Motion,
+    trace: &LoopTrace,
     reversals: &[usize],
     start: usize,
     close: f64,
+    slow: impl Fn(&TurningPoints) -> Result<f64>,
 ) -> Result<FrictionLoop> {
     let end = close.ceil() as usize;
     let at = |xs: &[f64]| -> f64 {
@@ -112,39 +162,27 @@ fn one_loop(
         let s = close - (k - 1) as f64;
         xs[k - 1] + s * (xs[k] - xs[k - 1])
     };
-    let (x_c, f_c, z_c, t_c) = (at(&m.x), at(&m.friction), at(&m.z), at(&m.t));
+    let (x, f) = (&trace.x, &trace.friction);
+    let (x_c, f_c, t_c) = (at(x), at(f), at(&trace.t));
     let mut work = 0.0;
     for i in start + 1..end {
-        work += 0.5 * (m.friction[i] + m.friction[i - 1]) * (m.x[i] - m.x[i - 1]);
+        work += 0.5 * (f[i] + f[i - 1]) * (x[i] - x[i - 1]);
     }
     if end > start {
-        work += 0.5 * (f_c + m.friction[end - 1]) * (x_c - m.x[end - 1]);
+        work += 0.5 * (f_c + f[end - 1]) * (x_c - x[end - 1]);
     }
-    let sigma0 = system.model().sigma0();
-    let z_a = m.z[start];
-    let stored = 0.5 * sigma0 * (z_c - z_a) * (z_c + z_a);
+    let stored = at(&trace.stored) - trace.stored[start];
     let inner: Vec<usize> = reversals
         .iter()
         .copied()
         .filter(|&r| r > start && (r as f64) < close)
         .collect();
-    let mut turning_points = vec![m.x[start]];
-    turning_points.extend(inner.iter().map(|&r| m.x[r]));
-    let input = TurningPoints::new(&turning_points)?;
-    let rate_independent_work = match system.law() {
-        FrictionLaw::LuGre => {
-            HysteresisLoop::new(system.model().rate_independent(), &input)?.work_per_period()
-        }
-        FrictionLaw::ElastoPlastic { zba } => {
-            let p = system.model().params();
-            ElastoPlastic::new(p.sigma0, p.fc, p.fs, zba)?
-                .loops(&input)?
-                .work_per_period()
-        }
-    };
+    let mut turning_points = vec![x[start]];
+    turning_points.extend(inner.iter().map(|&r| x[r]));
+    let rate_independent_work = slow(&TurningPoints::new(&turning_points)?)?;
     Ok(FrictionLoop {
-        t_start: m.t[start],
-        t_turn: inner.first().map_or(t_c, |&r| m.t[r]),
+        t_start: trace.t[start],
+        t_turn: inner.first().map_or(t_c, |&r| trace.t[r]),
         t_close: t_c,
         turning_points,
         work,

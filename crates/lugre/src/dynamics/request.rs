@@ -27,7 +27,7 @@
 //! both ([`DynamicsError::Conflict`]): two applied forces, `times` and `samples`, a prescribed
 //! velocity with anything that would drive the mass, a set point with no controller.
 
-use super::loops::{friction_loops, FrictionLoop};
+use super::loops::{friction_loops, loops_of, FrictionLoop};
 use super::{Breakaway, Motion, Pid, Profile, Scenario, Steps, System, Tolerances, Velocity};
 use crate::error::{DynamicsError, Error, Field};
 use crate::model::LuGre;
@@ -552,7 +552,7 @@ impl Request {
             tol,
             rate,
             pull,
-            loops: r.loops.unwrap_or(false) && r.gms.is_none(),
+            loops: r.loops.unwrap_or(false),
             gms: r.gms.clone(),
         })
     }
@@ -812,7 +812,7 @@ pub struct Plan {
     pub rate: Option<f64>,
     /// The pull speed of a spring (its upward crossings are the slip onsets).
     pub pull: Option<f64>,
-    /// Whether the friction-displacement loops are computed (not for GMS friction).
+    /// Whether the friction-displacement loops are computed.
     pub loops: bool,
     /// GMS friction (the Maxwell-slip model at finite rate) in place of the system's model
     /// ([`Request::with_zoo`]).
@@ -821,7 +821,7 @@ pub struct Plan {
 
 /// What a run gives: the motion, the break-away of a ramp, the friction loops. With GMS
 /// friction the motion's `z` is the elements' force over their stiffness, `sum F_i / K`, and
-/// there are no friction loops.
+/// each loop's stored energy is the elements' (`sum F_i^2 / (2 k_i)`).
 #[derive(Debug, Clone)]
 pub struct Outcome {
     pub motion: Motion,
@@ -852,10 +852,15 @@ impl Plan {
             let run =
                 super::gms::GmsRun::new(&self.system, gms.gms(), self.tol, self.rate.is_some());
             let (motion, breakaway) = run.solve(self.t_end, &self.times)?;
+            let loops = if self.loops {
+                gms_loops(&self.system, gms, self.t_end, self.tol)?
+            } else {
+                Vec::new()
+            };
             return Ok(Outcome {
                 motion,
                 breakaway,
-                loops: Vec::new(),
+                loops,
             });
         }
         let motion = self.motion()?;
@@ -887,6 +892,18 @@ impl Plan {
         }
         self.system.solve(self.t_end, &self.times, self.tol)
     }
+}
+
+/// The friction loops of `system` with the GMS friction of `ms` over `[0, t_end]`, each beside
+/// the Maxwell-slip model's slow loop on its turning points.
+fn gms_loops(
+    system: &System,
+    ms: &crate::zoo::MaxwellSlip,
+    t_end: f64,
+    tol: Tolerances,
+) -> Result<Vec<FrictionLoop>, Error> {
+    let trace = super::gms::GmsRun::new(system, ms.gms(), tol, false).trace(t_end)?;
+    loops_of(&trace, |input| Ok(ms.loops(input)?.work_per_period()))
 }
 
 /// The LuGre parameters standing in for the GMS model `ms` (stiffness `sum k_i`, static force

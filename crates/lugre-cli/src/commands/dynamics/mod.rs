@@ -137,9 +137,10 @@ pub(crate) struct DynamicsArgs {
     )]
     pub(crate) samples: Option<String>,
     /// Report the friction-displacement loops of x(t): each closed loop (a rainflow cycle of
-    /// x) with the work of the friction over it, the bristle energy change and the
-    /// dissipation, beside the rate-independent loop of `lugre loop` on the same turning
-    /// points (on by default for --scenario presliding).
+    /// x) with the work of the friction over it, the change of the energy stored in the
+    /// friction (the bristles', or GMS's elements') and the dissipation, beside the
+    /// rate-independent loop of `lugre loop` on the same turning points, of the same model
+    /// (on by default for --scenario presliding).
     #[arg(long, help_heading = "Run")]
     pub(crate) loops: bool,
     /// Relative tolerance in (0, 1) (default 1e-8).
@@ -607,7 +608,7 @@ fn write_loops(w: &mut impl Write, loops: &[FrictionLoop]) -> std::io::Result<()
     }
     writeln!(
         w,
-        "friction-displacement loops (closed where x returns; work = bristle energy change + dissipated; lugre loop: the rate-independent loop on the same turning points):"
+        "friction-displacement loops (closed where x returns; work = stored energy change + dissipated; lugre loop: the rate-independent loop on the same turning points):"
     )?;
     for l in loops {
         let points: Vec<String> = l.turning_points.iter().map(|x| sig(*x, 7)).collect();

@@ -56,6 +56,37 @@ def friction(v, F, mode):
     return F.sum() + S1 / K * element_rates(v, F, mode).sum() + S2 * v
 
 
+def mode_events(mode, velocity, force):
+    """The terminal events of a piece in `mode` (0 sticking, else the direction of slipping):
+    a sticking element at its level in the direction of v, v through 0 against the slipping
+    elements; `velocity(t, y)` and `force(y, i)` read the state."""
+    events = []
+    for i in range(len(K_EL)):
+        if mode[i] == 0:
+            for s in (1.0, -1.0):
+                ev = lambda tt, yy, i=i, s=s: ALPHA[i] * g(velocity(tt, yy)) - s * force(yy, i)
+                ev.terminal, ev.direction = True, -1
+                events.append(("onset", i, s, ev))
+    slipping = [m for m in mode if m != 0]
+    if slipping:
+        d = slipping[0]
+        ev = lambda tt, yy, d=d: d * velocity(tt, yy)
+        ev.terminal, ev.direction = True, -1
+        events.append(("reversal", None, d, ev))
+    return events
+
+
+def switch_modes(mode, events, sol, v):
+    """The modes after the events `sol` stopped at, the velocity there `v`."""
+    for (kind, i, s, _), te in zip(events, sol.t_events):
+        if not len(te):
+            continue
+        if kind == "reversal":
+            mode[:] = 0.0
+        elif np.sign(v) == s:
+            mode[i] = s
+
+
 def run(drive, t_end, times, method):
     y = np.zeros(2 + len(K_EL))  # x, v, F_i
     mode = np.zeros(len(K_EL))
@@ -69,32 +100,14 @@ def run(drive, t_end, times, method):
                 fr = F.sum() + S1 / K * dF.sum() + S2 * v
                 return np.concatenate([[v, (drive(tt, x) - fr) / M], dF])
 
-            events = []
-            for i in range(len(K_EL)):
-                if mode[i] == 0:
-                    for s in (1.0, -1.0):
-                        ev = lambda tt, yy, i=i, s=s: ALPHA[i] * g(yy[1]) - s * yy[2 + i]
-                        ev.terminal, ev.direction = True, -1
-                        events.append(("onset", i, s, ev))
-            slipping = [m for m in mode if m != 0]
-            if slipping:
-                d = slipping[0]
-                ev = lambda tt, yy, d=d: d * yy[1]
-                ev.terminal, ev.direction = True, -1
-                events.append(("reversal", None, d, ev))
+            events = mode_events(mode, lambda tt, yy: yy[1], lambda yy, i: yy[2 + i])
             sol = solve_ivp(rhs, (t, stop), y, method=method, rtol=1e-12,
                             atol=[1e-16, 1e-14] + [1e-12] * len(K_EL),
                             events=[e[3] for e in events] or None)
             y = sol.y[:, -1].copy()
             t = sol.t[-1]
             if sol.status == 1:
-                for (kind, i, s, _), te in zip(events, sol.t_events):
-                    if not len(te):
-                        continue
-                    if kind == "reversal":
-                        mode[:] = 0.0
-                    elif np.sign(y[1]) == s:
-                        mode[i] = s
+                switch_modes(mode, events, sol, y[1])
                 if t >= stop:
                     break
         out.append((t, y[0], y[1], friction(y[1], y[2:], mode)))
