@@ -38,6 +38,30 @@ enum Carried {
 }
 
 impl MassStepper {
+    /// The mass of `system` with its friction law (LuGre's, or the elasto-plastic one) and no
+    /// drive of its own, from `start` (its time, position, velocity and deflection; the PID's
+    /// integral is not used): the stepper of `lugre-mass.fmu`.
+    ///
+    /// # Errors
+    /// A start that is not finite.
+    pub fn new(system: System, start: State, tol: Tolerances) -> Result<Self, DynamicsError> {
+        check_start(&start)?;
+        let state = Carried::Bristle(State { q: 0.0, ..start });
+        Ok(Self::with_state(system, tol, state))
+    }
+
+    /// The stepper in `state`, its friction force computed.
+    fn with_state(system: System, tol: Tolerances, state: Carried) -> Self {
+        let mut out = Self {
+            system,
+            tol,
+            state,
+            friction: 0.0,
+        };
+        out.friction = out.friction_now();
+        out
+    }
+
     /// The mass `mass` with the friction of the finite-rate model `model`, at time `t0`,
     /// position `x0` and velocity `v0`, at rest in its friction (bristles undeflected, every
     /// GMS element sticking at force 0): the friction of `lugre dynamics --model NAME` with
@@ -58,25 +82,18 @@ impl MassStepper {
         if let Some(zba) = friction.zba {
             system = system.with_elastoplastic(zba)?;
         }
-        check_start(&start)?;
-        let state = match friction.gms {
-            Some(ms) => {
-                let n = ms.stiffness().len();
-                Carried::Gms(Box::new((
-                    GmsState::at_rest(n, start.t, start.x, start.v),
-                    ms,
-                )))
-            }
-            None => Carried::Bristle(State { z: 0.0, ..start }),
+        let start = State { z: 0.0, ..start };
+        let Some(ms) = friction.gms else {
+            return Self::new(system, start, tol);
         };
-        let mut out = Self {
+        check_start(&start)?;
+        let n = ms.stiffness().len();
+        let rest = GmsState::at_rest(n, start.t, start.x, start.v);
+        Ok(Self::with_state(
             system,
             tol,
-            state,
-            friction: 0.0,
-        };
-        out.friction = out.friction_now();
-        Ok(out)
+            Carried::Gms(Box::new((rest, ms))),
+        ))
     }
 
     /// The friction force in the state as it stands.
@@ -152,6 +169,18 @@ impl MassStepper {
         match &self.state {
             Carried::Bristle(s) => s.v,
             Carried::Gms(g) => g.0.v,
+        }
+    }
+
+    /// The bristle deflection (GMS: the elements' force over their stiffness, `sum F_i / K`,
+    /// as [`super::Outcome`]'s `z`).
+    pub fn z(&self) -> f64 {
+        match &self.state {
+            Carried::Bristle(s) => s.z,
+            Carried::Gms(g) => {
+                let k: f64 = g.1.stiffness().iter().sum();
+                g.0.forces.iter().sum::<f64>() / k
+            }
         }
     }
 
