@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds lugre's FMI 3.0 FMUs into target/fmu/: lugre-friction.fmu (the friction element),
-# lugre-mass.fmu (a mass with friction) and lugre-NAME.fmu for every model NAME of the core's
-# zoo table (crates/lugre-fmu/fmu/zoo/NAME.xml, written from the table by
-# scripts/write-tables.sh). Each is a zip of its modelDescription.xml and
+# lugre-mass.fmu (a mass with friction), lugre-NAME.fmu for every model NAME of the core's
+# zoo table (crates/lugre-fmu/fmu/zoo/NAME.xml) and lugre-mass-NAME.fmu for every model of the
+# table with a finite-rate form (crates/lugre-fmu/fmu/mass/NAME.xml), both written from the
+# table by scripts/write-tables.sh. Each is a zip of its modelDescription.xml and
 # binaries/x86_64-linux/<modelIdentifier>.so, the one library of crates/lugre-fmu (release).
 # No FMI tooling needed.
 set -euo pipefail
@@ -16,6 +17,7 @@ out = os.path.join(target, "fmu")
 os.makedirs(out, exist_ok=True)
 descriptions = ["crates/lugre-fmu/fmu/lugre-friction.xml", "crates/lugre-fmu/fmu/lugre-mass.xml"]
 descriptions += sorted(glob.glob("crates/lugre-fmu/fmu/zoo/*.xml"))
+descriptions += sorted(glob.glob("crates/lugre-fmu/fmu/mass/*.xml"))
 for xml in descriptions:
     text = open(xml, encoding="utf-8").read()
     name = re.search(r'modelName="([^"]+)"', text).group(1)

@@ -96,6 +96,8 @@ step "Python tests"
 step "FMI 3.0: the FMUs in fmpy"
 "${pip[@]}" fmpy
 bash scripts/build-fmu.sh
+# The CLI is the reference of the zoo's mass FMUs (test_zoo_mass_fmu.py).
+cargo build --release --quiet -p lugre-cli
 "$py" -m pytest -q -p no:cacheprovider tests/fmu
 
 step "The conformance table through Python and the FMUs"

@@ -9,10 +9,13 @@
 //! * `lugre-NAME.fmu` ([`zoo`]), one for each model of the core's zoo table (Maxwell-slip,
 //!   Prandtl-Ishlinskii, Bouc-Wen, ...): the model as a rate-independent hysteresis element in
 //!   co-simulation, displacement in, force, work and dissipation out, with no code of its own
-//!   here (the token names the table's entry; the description is written from the table).
+//!   here (the token names the table's entry; the description is written from the table);
+//! * `lugre-mass-NAME.fmu` ([`zoo_mass`]), one for each model of the table with a finite-rate
+//!   form (elasto-plastic, Maxwell-slip as GMS): the mass of `lugre dynamics --model NAME`,
+//!   drive force in, position, velocity and friction out, in co-simulation.
 //!
 //! `bash scripts/build-fmu.sh` bundles this library with `fmu/lugre-friction.xml`,
-//! `fmu/lugre-mass.xml` and each `fmu/zoo/NAME.xml`.
+//! `fmu/lugre-mass.xml`, each `fmu/zoo/NAME.xml` and each `fmu/mass/NAME.xml`.
 //!
 //! **Why one FMU per zoo model** rather than one FMU with a String parameter naming the model:
 //! an FMU's variables are fixed by its description, so one FMU for all would list every model's
@@ -71,6 +74,9 @@ pub mod mass;
 #[cfg(test)]
 mod tests;
 pub mod zoo;
+pub mod zoo_mass;
+#[cfg(test)]
+mod zoo_mass_tests;
 #[cfg(test)]
 mod zoo_tests;
 
@@ -128,6 +134,8 @@ enum Model {
     Mass,
     /// A model of the core's zoo table.
     Zoo(&'static lugre::zoo::ZooModelSpec),
+    /// A mass with a finite-rate model of the zoo table as its friction.
+    ZooMass(&'static lugre::zoo::ZooModelSpec),
 }
 
 impl Model {
@@ -136,6 +144,8 @@ impl Model {
             Some(Self::Friction)
         } else if token == MASS_TOKEN.as_bytes() {
             Some(Self::Mass)
+        } else if let Some(spec) = zoo_mass::model_of(token) {
+            Some(Self::ZooMass(spec))
         } else {
             zoo::model_of(token).map(Self::Zoo)
         }
@@ -318,6 +328,7 @@ impl Fmu {
             Model::Mass => Box::new(mass::Mass::new(kind)),
             Model::Friction => Box::new(friction::Friction::new(kind)),
             Model::Zoo(spec) => Box::new(zoo::Zoo::new(spec)),
+            Model::ZooMass(spec) => Box::new(zoo_mass::ZooMass::new(spec)),
         }
     }
 
@@ -461,11 +472,18 @@ fn instantiate(
             );
             return std::ptr::null_mut();
         };
-        if let (Model::Zoo(spec), Kind::ModelExchange) = (model, kind) {
-            let message = format!(
+        let refused = match (model, kind) {
+            (Model::Zoo(spec), Kind::ModelExchange) => Some(format!(
                 "lugre-{}.fmu is co-simulation only (a rate-independent element has no continuous state)",
                 spec.name
-            );
+            )),
+            (Model::ZooMass(spec), Kind::ModelExchange) => Some(format!(
+                "lugre-mass-{}.fmu is co-simulation only (its friction's events switch the equations: see lugre-fmu's zoo_mass module)",
+                spec.name
+            )),
+            _ => None,
+        };
+        if let Some(message) = refused {
             log_error(environment, log, &message);
             return std::ptr::null_mut();
         }

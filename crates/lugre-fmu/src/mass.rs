@@ -7,15 +7,16 @@
 //!
 //! * Co-simulation: a step moves the drive force linearly from `force` to `force + dforce h`
 //!   (`dforce`, the force's rate over the step: a host with a spring sets `k (V - v)`) and solves
-//!   the step with `lugre::dynamics` (Radau IIA with the sign changes of `v` located, to the
-//!   host's tolerance, 1e-8 by default): exact to that tolerance, whatever the step.
+//!   the step with `lugre::dynamics` ([`MassStepper`], as the zoo's mass FMUs do: Radau IIA
+//!   with the sign changes of `v` located, to the host's tolerance, 1e-8 by default): exact to
+//!   that tolerance, whatever the step.
 //! * Model exchange: states `x`, `v`, `z`; one event indicator, `v` (where `|v|` kinks); `z'`
 //!   and the friction force are the core's ([`FrictionElement::rates_at`]).
 //!
 //! The run starts at the parameters `x0`, `v0` and `z0` (position, velocity, bristle
 //! deflection; all 0 by default).
 
-use lugre::dynamics::{Profile, State, System, Tolerances};
+use lugre::dynamics::{MassStepper, State, System, Tolerances};
 use lugre::simulate::FrictionElement;
 use lugre::LuGreParams;
 
@@ -185,13 +186,8 @@ impl Unit for Mass {
             // Nothing moves in no time (the caller checked h finite and >= 0).
             return Ok(());
         }
-        let model = element.model();
-        let end = self.force + self.dforce * h;
-        let drive = Profile::new("the drive force", vec![t, t + h], vec![self.force, end])
-            .map_err(|e| e.to_string())?;
-        let system = System::new(model.clone(), self.mass)
-            .map_err(|e| e.to_string())?
-            .with_force(drive);
+        // The core's stepper from the state as it stands (model exchange keeps its own).
+        let system = System::new(element.model().clone(), self.mass).map_err(|e| e.to_string())?;
         let start = State {
             t,
             x: self.x,
@@ -199,10 +195,13 @@ impl Unit for Mass {
             z: self.z,
             q: 0.0,
         };
-        let m = system
-            .solve_from(start, t + h, &[t + h], self.tolerance)
+        let mut stepper =
+            MassStepper::new(system, start, self.tolerance).map_err(|e| e.to_string())?;
+        stepper
+            .step(self.force, self.dforce, h)
             .map_err(|e| e.to_string())?;
-        (self.x, self.v, self.z, self.friction) = (m.x[0], m.v[0], m.z[0], m.friction[0]);
+        (self.x, self.v, self.z) = (stepper.x(), stepper.v(), stepper.z());
+        self.friction = stepper.friction();
         self.time = t + h;
         Ok(())
     }

@@ -76,14 +76,146 @@ pub fn default_elements(spec: &ZooModelSpec) -> Option<usize> {
         .map(|p| p.default.len())
 }
 
-/// One instance of a zoo FMU.
-pub(crate) struct Zoo {
-    spec: &'static ZooModelSpec,
+/// The table's parameters of one instance (the zoo FMUs' and the mass FMUs' of the table),
+/// at the value references from [`crate::vr::PARAMETERS`] on, with the structural parameter
+/// `elements` at [`vr::ELEMENTS`].
+pub(crate) struct Params {
+    pub(crate) spec: &'static ZooModelSpec,
     /// The length of the element arrays.
     elements: usize,
     /// Each parameter's values in the table's order; `None`: an element array not set since
     /// `elements` changed.
     values: Vec<Option<Vec<f64>>>,
+}
+
+impl Params {
+    pub(crate) fn new(spec: &'static ZooModelSpec) -> Self {
+        Self {
+            spec,
+            elements: default_elements(spec).unwrap_or(1),
+            values: spec
+                .parameters
+                .iter()
+                .map(|p| Some(p.default.to_vec()))
+                .collect(),
+        }
+    }
+
+    /// The index in the table of the parameter at `r`.
+    fn parameter(&self, r: u32) -> Option<usize> {
+        let i = usize::try_from(r.checked_sub(crate::vr::PARAMETERS)?).ok()?;
+        (i < self.spec.parameters.len()).then_some(i)
+    }
+
+    /// The name of the parameter at `r` (`elements` too, where the model has arrays).
+    pub(crate) fn name_of(&self, r: u32) -> Option<&'static str> {
+        if let Some(i) = self.parameter(r) {
+            return Some(self.spec.parameters[i].name);
+        }
+        (r == vr::ELEMENTS && self.structural()).then_some("elements")
+    }
+
+    /// The name of the variable at `r`: a parameter's, else the one `variables` (name, value
+    /// reference) give it (`elements` only where the model has arrays).
+    pub(crate) fn name_among(&self, variables: &[(&'static str, u32)], r: u32) -> &'static str {
+        if let Some(name) = self.name_of(r) {
+            return name;
+        }
+        variables
+            .iter()
+            .find(|(_, v)| *v == r && (r != vr::ELEMENTS || self.structural()))
+            .map_or("an unknown variable", |(name, _)| name)
+    }
+
+    /// The number of values at `r`: an element array's length, else 1.
+    pub(crate) fn size(&self, r: u32) -> usize {
+        match self.parameter(r) {
+            Some(i) if self.spec.parameters[i].shape == Shape::Elements => self.elements,
+            _ => 1,
+        }
+    }
+
+    /// The model of the parameters as they stand (the core's checks and messages).
+    pub(crate) fn model(&self) -> Result<ZooModel, String> {
+        let mut given = Vec::with_capacity(self.values.len());
+        for (p, v) in self.spec.parameters.iter().zip(&self.values) {
+            let Some(v) = v else {
+                return Err(format!(
+                    "{} has no values for elements = {}: set its {} values before the end of initialization",
+                    p.name, self.elements, self.elements
+                ));
+            };
+            given.push((p.name, v.as_slice()));
+        }
+        ZooModel::new(self.spec.name, &given).map_err(|e| e.to_string())
+    }
+
+    /// The values of the parameter at `r` into `out`; `None`: `r` is no parameter's.
+    pub(crate) fn get(&self, r: u32, out: &mut [f64]) -> Option<Result<(), String>> {
+        let i = self.parameter(r)?;
+        let Some(v) = &self.values[i] else {
+            return Some(Err(format!(
+                "{} has no values for elements = {} yet",
+                self.spec.parameters[i].name, self.elements
+            )));
+        };
+        out.copy_from_slice(v);
+        Some(Ok(()))
+    }
+
+    /// Sets the parameter at `r` (`fixed`: after the end of initialization, refused); `None`:
+    /// `r` is no parameter's.
+    pub(crate) fn set(
+        &mut self,
+        r: u32,
+        values: &[f64],
+        fixed: bool,
+    ) -> Option<Result<(), String>> {
+        let i = self.parameter(r)?;
+        if fixed {
+            return Some(Err(fixed_message(self.spec.parameters[i].name)));
+        }
+        self.values[i] = Some(values.to_vec());
+        Some(Ok(()))
+    }
+
+    pub(crate) fn structural(&self) -> bool {
+        default_elements(self.spec).is_some()
+    }
+
+    pub(crate) fn get_count(&self, r: u32) -> Result<u64, String> {
+        match r {
+            vr::ELEMENTS if self.structural() => Ok(self.elements as u64),
+            _ => Err(format!("no UInt64 variable has value reference {r}")),
+        }
+    }
+
+    pub(crate) fn set_count(&mut self, r: u32, value: u64) -> Result<(), String> {
+        if !(r == vr::ELEMENTS && self.structural()) {
+            return Err(format!("no UInt64 variable has value reference {r}"));
+        }
+        let n = usize::try_from(value)
+            .ok()
+            .filter(|n| (1..=MAX_STATES).contains(n))
+            .ok_or_else(|| format!("elements must be in [1, {MAX_STATES}], got {value}"))?;
+        self.elements = n;
+        for (p, v) in self.spec.parameters.iter().zip(&mut self.values) {
+            if p.shape == Shape::Elements && v.as_ref().is_some_and(|v| v.len() != n) {
+                *v = (p.default.len() == n).then(|| p.default.to_vec());
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The message for a fixed parameter set after the end of initialization.
+pub(crate) fn fixed_message(name: &str) -> String {
+    format!("{name} is a fixed parameter: set it before the end of initialization")
+}
+
+/// One instance of a zoo FMU.
+pub(crate) struct Zoo {
+    params: Params,
     time: f64,
     u: f64,
     du: f64,
@@ -133,13 +265,7 @@ impl Driven {
 impl Zoo {
     pub(crate) fn new(spec: &'static ZooModelSpec) -> Self {
         Self {
-            spec,
-            elements: default_elements(spec).unwrap_or(1),
-            values: spec
-                .parameters
-                .iter()
-                .map(|p| Some(p.default.to_vec()))
-                .collect(),
+            params: Params::new(spec),
             time: 0.0,
             u: 0.0,
             du: 0.0,
@@ -148,86 +274,71 @@ impl Zoo {
         }
     }
 
-    /// The index in the table of the parameter at `r`.
-    fn parameter(&self, r: u32) -> Option<usize> {
-        let i = usize::try_from(r.checked_sub(crate::vr::PARAMETERS)?).ok()?;
-        (i < self.spec.parameters.len()).then_some(i)
-    }
-
     /// The input at time `t`.
     fn input_at(&self, t: f64) -> f64 {
         self.u + self.du * (t - self.t_u)
-    }
-
-    /// The model of the parameters as they stand (the core's checks and messages).
-    fn model(&self) -> Result<ZooModel, String> {
-        let mut given = Vec::with_capacity(self.values.len());
-        for (p, v) in self.spec.parameters.iter().zip(&self.values) {
-            let Some(v) = v else {
-                return Err(format!(
-                    "{} has no values for elements = {}: set its {} values before the end of initialization",
-                    p.name, self.elements, self.elements
-                ));
-            };
-            given.push((p.name, v.as_slice()));
-        }
-        ZooModel::new(self.spec.name, &given).map_err(|e| e.to_string())
     }
 
     /// The element (after initialization), or the one the parameters give at rest at `u`.
     fn with_element<T>(&self, f: impl FnOnce(&Driven) -> T) -> Result<T, String> {
         match &self.element {
             Some(e) => Ok(f(e)),
-            None => Ok(f(&Driven::at_rest(&self.model()?, self.u)?)),
+            None => Ok(f(&Driven::at_rest(&self.params.model()?, self.u)?)),
         }
-    }
-
-    fn fixed(&self, r: u32) -> Result<(), String> {
-        if self.element.is_some() {
-            return Err(format!(
-                "{} is a fixed parameter: set it before the end of initialization",
-                self.name_of(r)
-            ));
-        }
-        Ok(())
     }
 }
 
+/// The [`Unit`] methods an instance with the table's parameters in its field `params`
+/// ([`Params`]), its other variables in `VARIABLES` and its time in `time` has alike.
+macro_rules! table_parameters {
+    () => {
+        fn name_of(&self, r: u32) -> &'static str {
+            self.params.name_among(&VARIABLES, r)
+        }
+
+        fn size(&self, r: u32) -> usize {
+            self.params.size(r)
+        }
+
+        fn get(&self, r: u32) -> Result<f64, String> {
+            let mut out = [0.0];
+            self.get_values(r, &mut out)?;
+            Ok(out[0])
+        }
+
+        fn set(&mut self, r: u32, value: f64) -> Result<(), String> {
+            self.set_values(r, &[value])
+        }
+
+        fn structural(&self) -> bool {
+            self.params.structural()
+        }
+
+        fn get_count(&self, r: u32) -> Result<u64, String> {
+            self.params.get_count(r)
+        }
+
+        fn set_count(&mut self, r: u32, value: u64) -> Result<(), String> {
+            self.params.set_count(r, value)
+        }
+
+        fn set_time(&mut self, t: f64) {
+            self.time = t;
+        }
+
+        fn time(&self) -> f64 {
+            self.time
+        }
+    };
+}
+pub(crate) use table_parameters;
+
 impl Unit for Zoo {
-    fn name_of(&self, r: u32) -> &'static str {
-        if let Some(i) = self.parameter(r) {
-            return self.spec.parameters[i].name;
-        }
-        VARIABLES
-            .iter()
-            .find(|(_, v)| *v == r)
-            .map_or("an unknown variable", |(name, _)| name)
-    }
-
-    fn size(&self, r: u32) -> usize {
-        match self.parameter(r) {
-            Some(i) if self.spec.parameters[i].shape == Shape::Elements => self.elements,
-            _ => 1,
-        }
-    }
-
-    fn get(&self, r: u32) -> Result<f64, String> {
-        let mut out = [0.0];
-        self.get_values(r, &mut out)?;
-        Ok(out[0])
-    }
+    table_parameters!();
 
     fn get_values(&self, r: u32, out: &mut [f64]) -> Result<(), String> {
-        if let Some(i) = self.parameter(r) {
-            let Some(v) = &self.values[i] else {
-                return Err(format!(
-                    "{} has no values for elements = {} yet",
-                    self.name_of(r),
-                    self.elements
-                ));
-            };
-            out.copy_from_slice(v);
-            return Ok(());
+        if let Some(done) = self.params.get(r, out) {
+            return done;
         }
         out[0] = match r {
             crate::vr::TIME => self.time,
@@ -241,15 +352,9 @@ impl Unit for Zoo {
         Ok(())
     }
 
-    fn set(&mut self, r: u32, value: f64) -> Result<(), String> {
-        self.set_values(r, &[value])
-    }
-
     fn set_values(&mut self, r: u32, values: &[f64]) -> Result<(), String> {
-        if let Some(i) = self.parameter(r) {
-            self.fixed(r)?;
-            self.values[i] = Some(values.to_vec());
-            return Ok(());
+        if let Some(done) = self.params.set(r, values, self.element.is_some()) {
+            return done;
         }
         match r {
             vr::U => (self.u, self.t_u) = (values[0], self.time),
@@ -258,59 +363,16 @@ impl Unit for Zoo {
                 (self.u, self.t_u) = (self.input_at(self.time), self.time);
                 self.du = values[0];
             }
-            _ => {
-                return Err(match self.name_of(r) {
-                    "an unknown variable" => {
-                        format!("no settable Float64 variable has value reference {r}")
-                    }
-                    name => format!("{name} cannot be set (it is computed by the FMU)"),
-                })
-            }
-        }
-        Ok(())
-    }
-
-    fn structural(&self) -> bool {
-        default_elements(self.spec).is_some()
-    }
-
-    fn get_count(&self, r: u32) -> Result<u64, String> {
-        match r {
-            vr::ELEMENTS if self.structural() => Ok(self.elements as u64),
-            _ => Err(format!("no UInt64 variable has value reference {r}")),
-        }
-    }
-
-    fn set_count(&mut self, r: u32, value: u64) -> Result<(), String> {
-        if !(r == vr::ELEMENTS && self.structural()) {
-            return Err(format!("no UInt64 variable has value reference {r}"));
-        }
-        let n = usize::try_from(value)
-            .ok()
-            .filter(|n| (1..=MAX_STATES).contains(n))
-            .ok_or_else(|| format!("elements must be in [1, {MAX_STATES}], got {value}"))?;
-        self.elements = n;
-        for (p, v) in self.spec.parameters.iter().zip(&mut self.values) {
-            if p.shape == Shape::Elements && v.as_ref().is_some_and(|v| v.len() != n) {
-                *v = (p.default.len() == n).then(|| p.default.to_vec());
-            }
+            _ => return Err(not_settable(self.name_of(r), r)),
         }
         Ok(())
     }
 
     fn initialize(&mut self, start: f64, _tolerance: Option<f64>) -> Result<(), String> {
-        let model = self.model()?;
+        let model = self.params.model()?;
         (self.time, self.t_u) = (start, start);
         self.element = Some(Driven::at_rest(&model, self.u)?);
         Ok(())
-    }
-
-    fn set_time(&mut self, t: f64) {
-        self.time = t;
-    }
-
-    fn time(&self) -> f64 {
-        self.time
     }
 
     fn do_step(&mut self, t: f64, h: f64) -> Result<(), String> {
@@ -337,9 +399,18 @@ impl Unit for Zoo {
     }
 }
 
+/// The message for a set of the variable `name` at `r` that cannot be set.
+pub(crate) fn not_settable(name: &str, r: u32) -> String {
+    match name {
+        "an unknown variable" => format!("no settable Float64 variable has value reference {r}"),
+        name => format!("{name} cannot be set (it is computed by the FMU)"),
+    }
+}
+
 /// The SI base-unit exponents (kg, m, s) of the units the zoo FMUs use, in FMI's spelling.
-const UNITS: [(&str, [i32; 3]); 10] = [
+const UNITS: [(&str, [i32; 3]); 11] = [
     ("s", [0, 0, 1]),
+    ("kg", [1, 0, 0]),
     ("m", [0, 1, 0]),
     ("m/s", [0, 1, -1]),
     ("N", [1, 1, -2]),
@@ -357,7 +428,7 @@ pub fn fmi_unit(unit: &str) -> String {
 }
 
 /// `text` as an XML attribute value.
-fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('"', "&quot;")
@@ -370,7 +441,7 @@ fn start(values: &[f64]) -> String {
 }
 
 /// The `<UnitDefinitions>` of the units `used`, in [`UNITS`]' order.
-fn unit_definitions(used: &[String]) -> Result<String, String> {
+pub(crate) fn unit_definitions(used: &[String]) -> Result<String, String> {
     if let Some(unknown) = used.iter().find(|u| UNITS.iter().all(|(n, _)| n != u)) {
         return Err(format!(
             "the unit {unknown:?} has no SI base units in lugre-fmu's zoo::UNITS: add it there"
@@ -395,7 +466,7 @@ fn unit_definitions(used: &[String]) -> Result<String, String> {
 }
 
 /// The variables of the table's parameters of `spec` (and `elements`, if it has arrays).
-fn parameter_variables(spec: &ZooModelSpec) -> String {
+pub(crate) fn parameter_variables(spec: &ZooModelSpec) -> String {
     let mut out = String::new();
     if let Some(n) = default_elements(spec) {
         out.push_str(&format!(
@@ -440,40 +511,24 @@ pub fn model_description(spec: &ZooModelSpec) -> Result<String, String> {
         "{}: hysteresis element, displacement u in, force F, work and dissipation out; {stepping}. {} ({})",
         spec.label, spec.equations, spec.reference
     );
+    let head = head(
+        &format!("lugre-{name}"),
+        &description,
+        &token(spec),
+        &identifier(spec),
+        &unit_definitions(&used)?,
+        "",
+    );
     Ok(format!(
-        r#"<?xml version="1.0" encoding="UTF-8"?>
-<!-- Written from the core's zoo table (lugre::zoo::MODELS) by scripts/write-tables.sh: do not edit. -->
-<fmiModelDescription
-  fmiVersion="3.0"
-  modelName="lugre-{name}"
-  description="{description}"
-  generationTool="lugre (scripts/write-tables.sh)"
-  instantiationToken="{token}"
-  variableNamingConvention="structured">
-  <CoSimulation modelIdentifier="{identifier}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="false" canSerializeFMUState="false"/>
-{units}  <DefaultExperiment startTime="0" stopTime="1" stepSize="0.001"/>
-  <ModelVariables>
+        r#"{head}  <ModelVariables>
     <Float64 name="time" valueReference="{time}" causality="independent" variability="continuous" unit="s"/>
     <Float64 name="u" valueReference="{u}" causality="input" variability="continuous" start="0" unit="m" description="displacement (the element starts at rest at its value at the end of initialization)"/>
     <Float64 name="der(u)" valueReference="{du}" causality="input" variability="continuous" start="0" unit="m/s" derivative="{u}" description="du/dt over the coming steps: u(t) = u + der(u) (t - t_u), t_u the time u was set (0: u held)"/>
     <Float64 name="F" valueReference="{f}" causality="output" variability="continuous" initial="calculated" unit="N" description="force"/>
     <Float64 name="work" valueReference="{w}" causality="output" variability="continuous" initial="calculated" unit="J" description="work integral of F du from the start"/>
     <Float64 name="dissipation" valueReference="{d}" causality="output" variability="continuous" initial="calculated" unit="J" description="energy dissipated from the start (the work minus the change of the stored energy)"/>
-{parameters}  </ModelVariables>
-  <ModelStructure>
-    <Output valueReference="{f}"/>
-    <Output valueReference="{w}"/>
-    <Output valueReference="{d}"/>
-    <InitialUnknown valueReference="{f}"/>
-    <InitialUnknown valueReference="{w}"/>
-    <InitialUnknown valueReference="{d}"/>
-  </ModelStructure>
-</fmiModelDescription>
-"#,
-        description = escape(&description),
-        token = escape(&token(spec)),
-        identifier = identifier(spec),
-        units = unit_definitions(&used)?,
+{parameters}{tail}"#,
+        tail = tail(&[vr::F, vr::WORK, vr::DISSIPATION]),
         time = crate::vr::TIME,
         u = vr::U,
         du = vr::DER_U,
@@ -482,6 +537,48 @@ pub fn model_description(spec: &ZooModelSpec) -> Result<String, String> {
         d = vr::DISSIPATION,
         parameters = parameter_variables(spec),
     ))
+}
+
+/// The head of a description written from the table, up to its `<ModelVariables>`: a
+/// co-simulation FMU named `model_name` with `units` (the `<UnitDefinitions>`) and `experiment`
+/// (more attributes of the `<DefaultExperiment>`, each with a space before it).
+pub(crate) fn head(
+    model_name: &str,
+    description: &str,
+    token: &str,
+    identifier: &str,
+    units: &str,
+    experiment: &str,
+) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<!-- Written from the core's zoo table (lugre::zoo::MODELS) by scripts/write-tables.sh: do not edit. -->
+<fmiModelDescription
+  fmiVersion="3.0"
+  modelName="{model_name}"
+  description="{description}"
+  generationTool="lugre (scripts/write-tables.sh)"
+  instantiationToken="{token}"
+  variableNamingConvention="structured">
+  <CoSimulation modelIdentifier="{identifier}" canHandleVariableCommunicationStepSize="true" canGetAndSetFMUState="false" canSerializeFMUState="false"/>
+{units}  <DefaultExperiment startTime="0" stopTime="1" stepSize="0.001"{experiment}/>
+"#,
+        description = escape(description),
+        token = escape(token),
+    )
+}
+
+/// The end of a description written from the table, from `</ModelVariables>` on: the
+/// `outputs` (value references), each an initial unknown too.
+pub(crate) fn tail(outputs: &[u32]) -> String {
+    let mut out = String::from("  </ModelVariables>\n  <ModelStructure>\n");
+    for kind in ["Output", "InitialUnknown"] {
+        for r in outputs {
+            out.push_str(&format!("    <{kind} valueReference=\"{r}\"/>\n"));
+        }
+    }
+    out.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
+    out
 }
 
 /// The model identifier of the FMU of `spec` (its library's name): `lugre_NAME`, `-` as `_`.

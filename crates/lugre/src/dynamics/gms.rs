@@ -112,6 +112,30 @@ impl Modes {
     }
 }
 
+/// The full state of a mass with GMS friction between events: time, position, velocity,
+/// each element's force and mode (0 sticking, else the direction it slips in).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct GmsState {
+    pub t: f64,
+    pub x: f64,
+    pub v: f64,
+    pub forces: Vec<f64>,
+    pub slip: Vec<f64>,
+}
+
+impl GmsState {
+    /// At `(t, x, v)` with every one of `n` elements sticking at force 0.
+    pub(crate) fn at_rest(n: usize, t: f64, x: f64, v: f64) -> Self {
+        Self {
+            t,
+            x,
+            v,
+            forces: vec![0.0; n],
+            slip: vec![0.0; n],
+        }
+    }
+}
+
 /// One run of the system with GMS friction.
 pub(crate) struct GmsRun<'a> {
     system: &'a System,
@@ -258,6 +282,48 @@ impl<'a> GmsRun<'a> {
         let (err, extra) = error_estimate(f_start, &factors, y, &f0, &step, &scal, true);
         self.out.stats.rhs_evaluations += step.evaluations + extra + 1;
         Ok((step.stages, err))
+    }
+
+    /// The friction force in the state `start` (its modes and element forces).
+    pub(crate) fn friction_at(&mut self, start: &GmsState) -> f64 {
+        let y = self.load(start);
+        self.rate(start.t, &y).1
+    }
+
+    /// Takes the modes and element forces of `start` as the last event's (a restart: the
+    /// same motion as going on); returns `(x, v, q, G, E)` there.
+    fn load(&mut self, start: &GmsState) -> Y {
+        let (modes, g) = Modes::new(self.gms, start.x, start.forces.clone(), start.slip.clone());
+        self.modes = modes;
+        [start.x, start.v, 0.0, g, 1.0]
+    }
+
+    /// From `start` to `t_end` (> `start.t`) through the drive's kinks and the events on
+    /// the way (located as [`Self::solve`] locates them); returns the state at `t_end` and
+    /// the friction force there.
+    pub(crate) fn run_from(
+        mut self,
+        start: &GmsState,
+        t_end: f64,
+    ) -> Result<(GmsState, f64), DynamicsError> {
+        let mut y = self.load(start);
+        let mut t = start.t;
+        let w0 = (self.gms.stiffness().iter().sum::<f64>() / self.system.mass()).sqrt();
+        let mut h = (0.1 * self.rtol.powf(0.25) / w0).min(t_end - t);
+        let t0 = t;
+        let kinks = self.system.kinks(t_end);
+        for stop in kinks.into_iter().filter(|&k| k > t0).chain([t_end]) {
+            (t, y, h) = self.advance(t, y, stop, h)?;
+        }
+        let friction = self.rate(t, &y).1;
+        let state = GmsState {
+            t,
+            x: y[0],
+            v: y[1],
+            forces: self.modes.forces(self.gms, &y),
+            slip: self.modes.slip.clone(),
+        };
+        Ok((state, friction))
     }
 
     /// The motion over `[0, t_end]` at `times` (increasing, in `[0, t_end]`), stopping at each

@@ -46,12 +46,14 @@ mod profile;
 mod request;
 mod scenario;
 mod solver;
+mod stepper;
 
 pub use crate::error::Field;
 pub use loops::FrictionLoop;
 pub use profile::{Profile, Steps};
 pub use request::{Outcome, Plan, Request};
 pub use scenario::{Scenario, Setup};
+pub use stepper::MassStepper;
 
 pub use solver::{Breakaway, EnergyBalance, Event, EventKind, Motion, State, Stats, Tolerances};
 

@@ -150,12 +150,7 @@ impl Request {
     /// # Errors
     /// [`DynamicsError::NoFiniteRate`] for the models of the zoo without a finite-rate form.
     pub fn with_zoo(mut self, model: &crate::zoo::ZooModel) -> Result<Self, DynamicsError> {
-        if !model.spec().finite_rate {
-            return Err(DynamicsError::NoFiniteRate {
-                model: model.spec().name,
-                takes: crate::zoo::dynamics_model_names(),
-            });
-        }
+        ZooFriction::check(model)?;
         self.zoo = Some(model.clone());
         Ok(self)
     }
@@ -174,17 +169,10 @@ impl Request {
             values.extend([("stiffness", k), ("slip_force", f)]);
         }
         let zoo = zoo.over(&values)?;
-        match zoo.kind() {
-            crate::zoo::ZooKind::ElastoPlastic(ep) => {
-                let lugre = LuGre::from_params(ep.lugre_params())?;
-                self.model = user(Field::Model, lugre);
-                self.elastoplastic = Some(ep.zba());
-            }
-            crate::zoo::ZooKind::MaxwellSlip(ms) => {
-                self.model = user(Field::Model, LuGre::from_params(gms_lugre(ms))?);
-                self.gms = Some(ms.clone());
-            }
-            _ => {}
+        if let Some(friction) = ZooFriction::of(&zoo)? {
+            self.model = user(Field::Model, friction.model);
+            self.elastoplastic = friction.zba.or(self.elastoplastic);
+            self.gms = friction.gms.or(self.gms.take());
         }
         Ok(())
     }
@@ -904,6 +892,46 @@ fn gms_loops(
 ) -> Result<Vec<FrictionLoop>, Error> {
     let trace = super::gms::GmsRun::new(system, ms.gms(), tol, false).trace(t_end)?;
     loops_of(&trace, |input| Ok(ms.loops(input)?.work_per_period()))
+}
+
+/// What a finite-rate model of the zoo is as the friction of the mass: the LuGre model of
+/// its parameters (GMS: the stand-in of [`gms_lugre`]), the elasto-plastic law's `zba`, or
+/// GMS friction in place of the model.
+#[derive(Debug, Clone)]
+pub(crate) struct ZooFriction {
+    pub model: LuGre,
+    pub zba: Option<f64>,
+    pub gms: Option<crate::zoo::MaxwellSlip>,
+}
+
+impl ZooFriction {
+    /// `None` for a model without a finite-rate form.
+    pub(crate) fn of(zoo: &crate::zoo::ZooModel) -> Result<Option<Self>, DynamicsError> {
+        Ok(match zoo.kind() {
+            crate::zoo::ZooKind::ElastoPlastic(ep) => Some(Self {
+                model: LuGre::from_params(ep.lugre_params())?,
+                zba: Some(ep.zba()),
+                gms: None,
+            }),
+            crate::zoo::ZooKind::MaxwellSlip(ms) => Some(Self {
+                model: LuGre::from_params(gms_lugre(ms))?,
+                zba: None,
+                gms: Some(ms.clone()),
+            }),
+            _ => None,
+        })
+    }
+
+    /// [`DynamicsError::NoFiniteRate`] unless `zoo` has a finite-rate form.
+    pub(crate) fn check(zoo: &crate::zoo::ZooModel) -> Result<(), DynamicsError> {
+        if !zoo.spec().finite_rate {
+            return Err(DynamicsError::NoFiniteRate {
+                model: zoo.spec().name,
+                takes: crate::zoo::dynamics_model_names(),
+            });
+        }
+        Ok(())
+    }
 }
 
 /// The LuGre parameters standing in for the GMS model `ms` (stiffness `sum k_i`, static force
