@@ -10,7 +10,8 @@
 //! ```
 //!
 //! over every parameter of the table (the slow loop's and the finite rate's), with the slow
-//! fit's bounds, maps, iteration, central differences (ZF2, relative step `6e-6`) and
+//! fit's bounds, maps, iteration, central differences (ZF2, relative step `6e-6`; ZF2' where a
+//! switch from sticking to slipping crosses a sample inside the step) and
 //! statistics. An element model's thresholds are held as there (ZF3, on the record's range).
 //!
 //! Starts. The slow loop's parameters start as in the slow fit, from the record's initial
