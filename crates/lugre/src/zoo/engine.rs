@@ -303,31 +303,45 @@ fn nest(major: Loop, mut found: Vec<Loop>) -> Vec<Loop> {
             depth: tree[p].depth + 1,
             ..tree[i]
         };
+        tree[place as usize].at = i as u32;
     }
+    tree[0].at = m as u32;
     for (record, node) in found.iter_mut().zip(&tree) {
         record.parent = Some(tree[record.parent.unwrap_or(m)].place as usize);
         record.depth = node.depth as usize;
     }
     found.push(major);
-    // Each swap puts one record at its place.
-    for i in 0..=m {
-        while tree[i].place as usize != i {
-            let to = tree[i].place as usize;
-            found.swap(i, to);
-            tree.swap(i, to);
+    // Each cycle of the permutation pulled round once: every record is copied once (a swap
+    // would copy it three times).
+    for start in 0..=m {
+        if tree[start].at as usize == start {
+            continue;
+        }
+        let first = found[start].clone();
+        let mut k = start;
+        loop {
+            let from = tree[k].at as usize;
+            tree[k].at = k as u32;
+            if from == start {
+                found[k] = first;
+                break;
+            }
+            found[k] = found[from].clone();
+            k = from;
         }
     }
     found
 }
 
 /// A loop's subtree in [`nest`]: its size, its place in pre-order, the first place after its
-/// range not yet handed to a child, its depth.
+/// range not yet handed to a child, its depth; and the loop whose place is this index.
 #[derive(Debug, Clone, Copy, Default)]
 struct Node {
     size: u32,
     place: u32,
     free: u32,
     depth: u32,
+    at: u32,
 }
 
 impl ZooLoop {
