@@ -8,17 +8,22 @@ function r = lugre_dynamics(request, times, rtol)
 %               1 kg mass, its drive and its end) whose fields the others replace
 %     model     a params struct as lugre_loop takes (struct('preset', 'canudas1995') or
 %               struct('sigma0', 1e5, 'sigma1', 316, 'fc', 1, 'fs', 1.5, 'vs', 1e-3, 'beta', 2)),
-%               or the zoo's elasto-plastic law struct('model', 'elastoplastic', 'zba', 5e-6,
-%               ...) (its sigma0, sigma1, sigma2, fc, fs, vs, beta, zba; the others the
-%               scenario's Table I, else the table's defaults); needed unless a scenario
-%               gives Table I
+%               or a model of the zoo with a finite-rate form: the elasto-plastic law
+%               struct('model', 'elastoplastic', 'zba', 5e-6, ...) (its sigma0, sigma1,
+%               sigma2, fc, fs, vs, beta, zba; the others the scenario's Table I, else the
+%               table's defaults) or GMS struct('model', 'maxwell-slip', ...); needed unless a
+%               scenario gives Table I
 %     mass, damping, force_rate, spring, pull, t_end, rtol, atol, samples, loops   numbers
 %     pid       [Kp Ki Kv];  setpoint  a number, or an N-by-2 matrix [t xd] of steps
 %     force, input, end, velocity   N-by-2 matrices [t value] (linear between the points)
 %     times     the output times (the run ends at the last unless t_end is given)
 %   and returns r.t, r.x, r.v, r.z, r.friction, r.drive (columns), r.t_end, r.energy (input,
 %   stored_start, stored_end, dissipated), r.stats (steps, rejected, events), r.breakaway (t,
-%   force, x with a force ramp, else []), r.slip_onsets (how many) and r.period.
+%   force, x with a force ramp, else []), r.slip_onsets (how many), r.period and r.loops: the
+%   friction-displacement loops (asked for with loops = 1, on by default for 'presliding';
+%   else 0-by-1), a struct array with the fields of `lugre dynamics --json`'s loops: t_start,
+%   t_turn, t_close, turning_points (a column), work, bristle_energy_change, dissipation,
+%   rate_independent_work.
 %   Example: r = lugre_dynamics(struct('scenario', 'pid', 'pid', [3 8 6], 't_end', 40));
 %
 %   r = lugre_dynamics(scenario) runs a scenario alone (its run, 1001 samples).

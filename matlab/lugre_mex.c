@@ -591,6 +591,32 @@ static LugreZoo *zoo_request(const mxArray *model) {
     return zoo;
 }
 
+/* The run's friction-displacement loops to *out as a count-by-1 struct array, one element per
+ * loop with the fields of `lugre dynamics --json`'s loops (turning_points a column). */
+static LugreStatus friction_loops(const LugreMotion *run, size_t count, mxArray **out) {
+    enum { FIELDS = 8, TURNING_POINTS = 3 };
+    static const char *loop_names[FIELDS] = {"t_start", "t_turn", "t_close", "turning_points",
+                                             "work", "bristle_energy_change", "dissipation",
+                                             "rate_independent_work"};
+    mxArray *a = mxCreateStructMatrix(count, 1, FIELDS, loop_names);
+    for (size_t i = 0; i < count; i++) {
+        LugreFrictionLoop l;
+        LugreStatus st = lugre_motion_loop(run, i, &l);
+        if (st != LUGRE_STATUS_OK) {
+            mxDestroyArray(a);
+            return st;
+        }
+        double v[FIELDS] = {l.t_start, l.t_turn, l.t_close, 0, l.work, l.bristle_energy_change,
+                            l.dissipation, l.rate_independent_work};
+        for (int k = 0; k < FIELDS; k++)
+            mxSetFieldByNumber(a, i, k, k == TURNING_POINTS
+                                            ? column(l.turning_points, l.turning_points_len)
+                                            : mxCreateDoubleScalar(v[k]));
+    }
+    *out = a;
+    return LUGRE_STATUS_OK;
+}
+
 /* r = lugre_dynamics(request): every field of the core's request by its name. */
 static mxArray *dynamics_request(const mxArray *s) {
     if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
@@ -652,6 +678,8 @@ static mxArray *dynamics_request(const mxArray *s) {
     check_request(lugre_motion_columns(run, n, c[0], c[1], c[2], c[3], c[4], c[5]), d, m, run);
     LugreMotionSummary sum;
     check_request(lugre_motion_summary(run, &sum), d, m, run);
+    mxArray *loops = NULL;
+    check_request(friction_loops(run, sum.loops, &loops), d, m, run);
     lugre_motion_free(run);
     lugre_model_free(m);
     lugre_dynamics_free(d);
@@ -666,13 +694,14 @@ static mxArray *dynamics_request(const mxArray *s) {
         breakaway = scalar_struct(3, b_names, b);
     }
     static const char *names[] = {"t", "x", "v", "z", "friction", "drive", "t_end",
-                                  "energy", "stats", "breakaway", "slip_onsets", "period"};
+                                  "energy", "stats", "breakaway", "slip_onsets", "period",
+                                  "loops"};
     mxArray *v[] = {column(c[0], n), column(c[1], n), column(c[2], n), column(c[3], n),
                     column(c[4], n), column(c[5], n), mxCreateDoubleScalar(sum.t_end),
                     scalar_struct(4, energy_names, energy), scalar_struct(3, stats_names, stats),
                     breakaway, mxCreateDoubleScalar((double)sum.slip_onsets),
-                    mxCreateDoubleScalar(sum.period)};
-    return struct_of(12, names, v);
+                    mxCreateDoubleScalar(sum.period), loops};
+    return struct_of(13, names, v);
 }
 
 /* [F, z] after each step to x(k) over dt (a scalar or one per step), from displacement x0 and

@@ -87,6 +87,15 @@ function failures = test_lugre()
   failures += expect(numel(d.x) == 5 && d.t_end == 2, 'dynamics request: times past the scenario''s end');
   d = lugre_dynamics(struct('scenario', 'breakaway', 'force_rate', single(4), 'samples', 3));
   failures += expect(d.t_end == 0.5 && d.breakaway.force > 1, 'dynamics request: the break-away at another rate');
+  % The friction-displacement loops (GMS friction, the pre-sliding experiment): a struct array.
+  d = lugre_dynamics(struct('scenario', 'presliding', 'model', struct('model', 'maxwell-slip'), 'samples', 5));
+  l = d.loops;
+  failures += expect(isstruct(l) && numel(l) >= 1 && iscolumn(l(1).turning_points) && numel(l(1).turning_points) >= 2 ...
+                     && l(1).dissipation == l(1).work - l(1).bristle_energy_change && l(1).t_start < l(1).t_close, ...
+                     'dynamics: the GMS loops as a struct array');
+  d = lugre_dynamics(struct('scenario', 'pid', 't_end', 20, 'samples', 3));
+  failures += expect(isstruct(d.loops) && isempty(d.loops) && isfield(d.loops, 'rate_independent_work'), ...
+                     'dynamics: no loops, an empty struct array with the fields');
 
   % The friction element stepped through the knots is the exact simulation there.
   p = struct('preset', 'canudas1995');

@@ -462,6 +462,7 @@ function got = dynamics_answer(f)
   got.stats = struct('steps', r.stats.steps, 'rejected', r.stats.rejected);
   got.events = cell(1, r.stats.events);
   got.breakaway = r.breakaway;
+  got.loops = num2cell(r.loops);   % the struct array as a list of loops
 end
 
 % ---- values and the table

@@ -281,6 +281,8 @@ def py_dynamics(f):
     out = {k: tolist(r[k]) for k in ("t", "x", "v", "z", "friction", "drive")}
     out.update(events=list(r["events"]), stats=dict(r["stats"]), energy=dict(r["energy"]),
                breakaway=r.get("breakaway"))
+    if r.get("loops") is not None:
+        out["loops"] = [dict(loop, turning_points=tolist(loop["turning_points"])) for loop in r["loops"]]
     return out
 
 

@@ -85,3 +85,21 @@ fn every_case_through_the_cli_and_the_c_abi() {
         failed.join("\n")
     );
 }
+
+/// The set `friction_loops` compares every field of a run's loops
+/// (`lugre::dynamics::FrictionLoop::FIELDS`): a field the core adds or renames fails here
+/// until the table, and so every front end, has it.
+#[test]
+fn the_friction_loop_set_is_every_field_of_the_cores_loops() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/conformance/cases.json");
+    let table: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let set = table["sets"]["friction_loops"].as_array().expect("the set");
+    let fields: Vec<&str> = set
+        .iter()
+        .filter_map(Value::as_str)
+        .filter_map(|p| p.strip_prefix("loops[]."))
+        .map(|p| p.trim_end_matches("[]"))
+        .collect();
+    assert_eq!(fields, lugre::dynamics::FrictionLoop::FIELDS);
+}

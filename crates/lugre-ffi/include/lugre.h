@@ -209,9 +209,30 @@ typedef struct LugreMotionSummary {
   size_t slip_onsets;
   double period;
   // The friction-displacement loops computed (0 unless asked for with `"loops"` or the
-  // pre-sliding scenario).
+  // pre-sliding scenario), read one by one with [`lugre_motion_loop`].
   size_t loops;
 } LugreMotionSummary;
+
+// One friction-displacement loop of a run (the core's `lugre::dynamics::FrictionLoop`, a
+// loop of `lugre dynamics --json`'s `loops`): it starts at `t_start` (a reversal of `x`),
+// turns at `t_turn` and closes at `t_close` (`x` back at its start value); its
+// `turning_points_len` turning points (its start and the reversals inside it) are at
+// `turning_points`, owned by the motion (valid until [`lugre_motion_free`]). `work` is
+// `integral F dx` over the loop, `bristle_energy_change` the change of the energy stored in
+// the friction (the bristles', or the elements' springs' for GMS), `dissipation` their
+// difference, `rate_independent_work` the work per period of `lugre loop` on the same turning
+// points.
+typedef struct LugreFrictionLoop {
+  double t_start;
+  double t_turn;
+  double t_close;
+  const double *turning_points;
+  size_t turning_points_len;
+  double work;
+  double bristle_energy_change;
+  double dissipation;
+  double rate_independent_work;
+} LugreFrictionLoop;
 
 // A model of the zoo's entry in the core's table (static strings).
 typedef struct LugreZooModelInfo {
@@ -576,6 +597,12 @@ enum LugreStatus lugre_motion_columns(const struct LugreMotion *motion,
 // The run's summary (see [`LugreMotionSummary`]), to `out`.
 enum LugreStatus lugre_motion_summary(const struct LugreMotion *motion,
                                       struct LugreMotionSummary *out);
+
+// Loop `index` of the run (below [`LugreMotionSummary::loops`], in the order of `lugre
+// dynamics --json`'s `loops`), to `out`.
+enum LugreStatus lugre_motion_loop(const struct LugreMotion *motion,
+                                   size_t index,
+                                   struct LugreFrictionLoop *out);
 
 // The name of model `index` of the zoo's table (static), or NULL past the last: the way to
 // list the models (`for (i = 0; lugre_zoo_model_name(i); i++)`).

@@ -56,8 +56,31 @@ pub struct LugreMotionSummary {
     pub slip_onsets: usize,
     pub period: f64,
     /// The friction-displacement loops computed (0 unless asked for with `"loops"` or the
-    /// pre-sliding scenario).
+    /// pre-sliding scenario), read one by one with [`lugre_motion_loop`].
     pub loops: usize,
+}
+
+/// One friction-displacement loop of a run (the core's `lugre::dynamics::FrictionLoop`, a
+/// loop of `lugre dynamics --json`'s `loops`): it starts at `t_start` (a reversal of `x`),
+/// turns at `t_turn` and closes at `t_close` (`x` back at its start value); its
+/// `turning_points_len` turning points (its start and the reversals inside it) are at
+/// `turning_points`, owned by the motion (valid until [`lugre_motion_free`]). `work` is
+/// `integral F dx` over the loop, `bristle_energy_change` the change of the energy stored in
+/// the friction (the bristles', or the elements' springs' for GMS), `dissipation` their
+/// difference, `rate_independent_work` the work per period of `lugre loop` on the same turning
+/// points.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct LugreFrictionLoop {
+    pub t_start: f64,
+    pub t_turn: f64,
+    pub t_close: f64,
+    pub turning_points: *const f64,
+    pub turning_points_len: usize,
+    pub work: f64,
+    pub bristle_energy_change: f64,
+    pub dissipation: f64,
+    pub rate_independent_work: f64,
 }
 
 /// An empty request to `out`: every field at the core's default (free it with
@@ -275,6 +298,37 @@ pub extern "C" fn lugre_motion_summary(
                 _ => 0.0,
             },
             loops: o.loops.len(),
+        };
+        Ok(())
+    })
+}
+
+/// Loop `index` of the run (below [`LugreMotionSummary::loops`], in the order of `lugre
+/// dynamics --json`'s `loops`), to `out`.
+#[no_mangle]
+pub extern "C" fn lugre_motion_loop(
+    motion: *const LugreMotion,
+    index: usize,
+    out: *mut LugreFrictionLoop,
+) -> LugreStatus {
+    guard(|| {
+        let loops = &handle(motion, "motion")?.outcome.loops;
+        let l = loops.get(index).ok_or_else(|| {
+            fail(
+                LugreStatus::InvalidArgument,
+                format!("index must be below {}, got {index}", loops.len()),
+            )
+        })?;
+        *handle_mut(out, "out")? = LugreFrictionLoop {
+            t_start: l.t_start,
+            t_turn: l.t_turn,
+            t_close: l.t_close,
+            turning_points: l.turning_points.as_ptr(),
+            turning_points_len: l.turning_points.len(),
+            work: l.work,
+            bristle_energy_change: l.bristle_energy_change,
+            dissipation: l.dissipation,
+            rate_independent_work: l.rate_independent_work,
         };
         Ok(())
     })

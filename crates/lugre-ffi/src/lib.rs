@@ -38,7 +38,8 @@ pub use dynamics::{
     lugre_dynamics_free, lugre_dynamics_new, lugre_dynamics_run, lugre_dynamics_set,
     lugre_dynamics_set_model, lugre_dynamics_set_points, lugre_dynamics_set_scenario,
     lugre_dynamics_set_zoo, lugre_motion_columns, lugre_motion_free, lugre_motion_len,
-    lugre_motion_summary, LugreDynamics, LugreMotion, LugreMotionSummary,
+    lugre_motion_loop, lugre_motion_summary, LugreDynamics, LugreFrictionLoop, LugreMotion,
+    LugreMotionSummary,
 };
 pub use zoo::{
     lugre_zoo_cycles_new, lugre_zoo_free, lugre_zoo_loop_new, lugre_zoo_model_info,

@@ -1,9 +1,12 @@
 //! The column names the C side writes are the core's: the fields of `LugreCycleColumns` and
 //! the buffers of `lugre_loop_sample` in the header, and the struct fields the MEX gateway
 //! (`matlab/lugre_mex.c`) names its cycles and its sampled curve with
-//! (`lugre::CycleColumns::NAMES`, `lugre::LoopPoint::COLUMNS`). A column renamed or added in
-//! the core and not here fails, naming the place.
+//! (`lugre::CycleColumns::NAMES`, `lugre::LoopPoint::COLUMNS`), and the fields of a run's
+//! friction-displacement loop in `LugreFrictionLoop` and the MEX gateway's `loops`
+//! (`lugre::dynamics::FrictionLoop::FIELDS`). A column renamed or added in the core and not
+//! here fails, naming the place.
 
+use lugre::dynamics::FrictionLoop;
 use lugre::{CycleColumns, LoopPoint};
 
 fn read(path: &str) -> String {
@@ -54,6 +57,22 @@ fn the_headers_columns_are_the_cores() {
     let names = declared_names(sample);
     assert_eq!(names[0], "n");
     assert_eq!(names[1..], LoopPoint::COLUMNS);
+    // The turning points' length stands beside them (as `default_values`, `default_len`).
+    let friction_loop = between(
+        &header,
+        "typedef struct LugreFrictionLoop {",
+        "} LugreFrictionLoop;",
+    );
+    let mut names = declared_names(friction_loop);
+    let at = names.iter().position(|n| n == "turning_points");
+    let len = at.and_then(|k| names.get(k + 1));
+    assert_eq!(
+        len.map(String::as_str),
+        Some("turning_points_len"),
+        "{names:?}"
+    );
+    names.remove(at.unwrap_or_default() + 1);
+    assert_eq!(names, FrictionLoop::FIELDS, "LugreFrictionLoop");
 }
 
 #[test]
@@ -71,5 +90,11 @@ fn the_mex_gateways_columns_are_the_cores() {
         strings(curve),
         LoopPoint::COLUMNS,
         "lugre_mex.c, the loop's curve"
+    );
+    let loops = between(&mex, "static const char *loop_names[FIELDS] = {", "};");
+    assert_eq!(
+        strings(loops),
+        FrictionLoop::FIELDS,
+        "lugre_mex.c, the dynamics' loops"
     );
 }

@@ -161,3 +161,19 @@ def test_a_model_of_the_zoo_as_the_friction():
         lugre.dynamics(lugre.ZooModel("bouc-wen"), scenario="stick-slip")
     with pytest.raises(TypeError, match="model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got int"):
         lugre.dynamics(3, scenario="lag")
+
+
+def test_gms_loops_of_the_presliding_experiment(lugre_cli):
+    # The loops of GMS friction reach Python as the command line gives them, to the last bit,
+    # each with the core's fields; the work splits exactly into the springs' stored energy and
+    # the dissipation, and at the experiment's slow drive it is the Maxwell-slip loop's work per
+    # period to O(rate) (0.15 % here; crates/lugre/tests/dynamics_gms.rs bounds it).
+    r = lugre.dynamics(model=lugre.ZooModel("maxwell-slip"), scenario="presliding", loops=True)
+    j = lugre_cli(["dynamics", "--scenario", "presliding", "--model", "maxwell-slip", "--loops", "--json"])
+    assert len(r["loops"]) == len(j["loops"]) >= 1
+    for got, want in zip(r["loops"], j["loops"]):
+        assert list(got) == list(want)
+        assert {k: np.asarray(v).tolist() for k, v in got.items()} == want
+        assert got["dissipation"] == got["work"] - got["bristle_energy_change"] > 0
+        assert len(got["turning_points"]) >= 2 and got["t_start"] < got["t_turn"] < got["t_close"]
+        assert abs(got["work"] / got["rate_independent_work"] - 1) < 1e-2

@@ -546,6 +546,9 @@ fn motion_json(m: *mut LugreMotion) -> Outcome {
     ))?;
     let mut s = LugreMotionSummary::default();
     status(lugre_motion_summary(m, &mut s))?;
+    let loops = (0..s.loops)
+        .map(|i| friction_loop(m, i))
+        .collect::<Result<Vec<Value>, Failure>>()?;
     Ok(json!({
         "t": c[0], "x": c[1], "v": c[2], "z": c[3], "friction": c[4], "drive": c[5],
         "events": vec![json!({}); s.events],
@@ -555,5 +558,30 @@ fn motion_json(m: *mut LugreMotion) -> Outcome {
         "breakaway": (s.has_breakaway == 1).then(|| json!({
             "t": s.breakaway_t, "force": s.breakaway_force, "x": s.breakaway_x})),
         "t_end": s.t_end,
+        "loops": loops,
+    }))
+}
+
+/// Loop `i` of the run as a loop of the CLI's `loops`.
+fn friction_loop(m: *mut LugreMotion, i: usize) -> Outcome {
+    let mut l = LugreFrictionLoop {
+        t_start: 0.0,
+        t_turn: 0.0,
+        t_close: 0.0,
+        turning_points: ptr::null(),
+        turning_points_len: 0,
+        work: 0.0,
+        bristle_energy_change: 0.0,
+        dissipation: 0.0,
+        rate_independent_work: 0.0,
+    };
+    status(lugre_motion_loop(m, i, &mut l))?;
+    // SAFETY: the motion owns `turning_points_len` values there while it lives.
+    let turning = unsafe { std::slice::from_raw_parts(l.turning_points, l.turning_points_len) };
+    Ok(json!({
+        "t_start": l.t_start, "t_turn": l.t_turn, "t_close": l.t_close,
+        "turning_points": turning, "work": l.work,
+        "bristle_energy_change": l.bristle_energy_change, "dissipation": l.dissipation,
+        "rate_independent_work": l.rate_independent_work,
     }))
 }

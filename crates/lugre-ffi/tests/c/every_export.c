@@ -339,6 +339,31 @@ static void dynamics(const LugreModel *m) {
     OK(lugre_motion_summary(run, &s));
     CHECK(s.t_end == 40 && s.steps > 0 && s.energy_input > 0 && s.has_breakaway == 0);
     CHECK(fabs(s.energy_input - (s.stored_end - s.stored_start) - s.dissipated) < 1e-6);
+    CHECK(s.loops == 0);
+    LugreFrictionLoop l;
+    CHECK(lugre_motion_loop(run, 0, &l) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(strcmp(lugre_last_error(), "index must be below 0, got 0") == 0);
+    lugre_motion_free(run);
+    lugre_dynamics_free(d);
+
+    /* The pre-sliding experiment's loops (on by default): each read with its turning points,
+     * its work split into the stored energy's change and the dissipation. */
+    OK(lugre_dynamics_new(&d));
+    OK(lugre_dynamics_set_scenario(d, "presliding"));
+    OK(lugre_dynamics_set(d, "samples", &samples, 1));
+    OK(lugre_dynamics_run(d, &run));
+    OK(lugre_motion_summary(run, &s));
+    CHECK(s.loops > 0);
+    for (size_t i = 0; i < s.loops; i++) {
+        OK(lugre_motion_loop(run, i, &l));
+        CHECK(l.t_start < l.t_turn && l.t_turn < l.t_close && l.t_close <= s.t_end);
+        CHECK(l.turning_points_len >= 2 && l.turning_points != NULL);
+        CHECK(l.turning_points[0] != l.turning_points[1] && l.work > 0);
+        CHECK(l.dissipation == l.work - l.bristle_energy_change && l.rate_independent_work > 0);
+    }
+    CHECK(lugre_motion_loop(run, s.loops, &l) == LUGRE_STATUS_INVALID_ARGUMENT);
+    CHECK(lugre_motion_loop(run, 0, NULL) == LUGRE_STATUS_NULL_POINTER);
+    CHECK(lugre_motion_loop(NULL, 0, &l) == LUGRE_STATUS_NULL_POINTER);
     lugre_motion_free(run);
     lugre_dynamics_free(d);
 

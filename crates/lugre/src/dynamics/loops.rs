@@ -107,6 +107,22 @@ pub struct FrictionLoop {
     pub rate_independent_work: f64,
 }
 
+impl FrictionLoop {
+    /// The fields' names in order: the keys of a loop of `lugre dynamics --json`'s `loops`
+    /// (and Python's), the fields of the C ABI's `LugreFrictionLoop` (`turning_points` with its
+    /// length beside it) and of the MEX gateway's `loops` struct array.
+    pub const FIELDS: [&'static str; 8] = [
+        "t_start",
+        "t_turn",
+        "t_close",
+        "turning_points",
+        "work",
+        "bristle_energy_change",
+        "dissipation",
+        "rate_independent_work",
+    ];
+}
+
 /// The closed loops of `trace`: every full rainflow cycle of `x`, and the last open cycle
 /// when the run ends back at its start value (to the displacement gate); `slow` gives the
 /// rate-independent work per period on a loop's turning points.
