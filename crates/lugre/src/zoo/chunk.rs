@@ -19,7 +19,8 @@
 //!   is monotone, and removing a full cycle `(B, C)` of `A, B, C, D` (`A < C < B <= D`, or the
 //!   mirror) leaves the state unchanged: a state valid at `A` has `p <= fl(A + r) <= fl(C + r)`,
 //!   so the clamp at `C` either does nothing or gives `fl(C + r) < fl(B - r) <= fl(D - r)`,
-//!   which the run to `D` overwrites. So each chunk's entry is exact, without its prefix.
+//!   which the run to `D` overwrites. So each chunk's entry is exact, without its prefix
+//!   ((Z6) in `docs/mathematics.md`).
 //! * **Single-state models** (Bouc-Wen, elasto-plastic: `z` in [`SingleState::bounds`]): each
 //!   chunk is run from both bounds of `z` (the segment maps are monotone in `z`); where the two
 //!   runs land on the same double, that is the next chunk's entry whatever the state before,
