@@ -608,9 +608,14 @@ pub fn chunk_guess_entries<'py>(
             let y: f64 = y_start.extract()?;
             let bounds = bounds
                 .into_iter()
-                .map(|x| {
-                    x.map(b)
-                        .ok_or_else(|| PyValueError::new_err("bounds: None for LuGre"))
+                .enumerate()
+                .map(|(k, x)| {
+                    x.map(b).ok_or_else(|| {
+                        PyValueError::new_err(format!(
+                            "bounds[{k}] is None: LuGre's entry states need both bounds of \
+                             every chunk (chunk_bounds)"
+                        ))
+                    })
                 })
                 .collect::<PyResult<Vec<_>>>()?;
             let g = chunk::guess_entries(m, y, &bounds).map_err(value_error)?;
@@ -620,7 +625,10 @@ pub fn chunk_guess_entries<'py>(
             let start = zoo_state(y_start, "y_start")?;
             let leaves: Vec<ChunkSummary> = leaves
                 .ok_or_else(|| {
-                    PyValueError::new_err("leaves: a model of the zoo needs the chunks' summaries")
+                    PyValueError::new_err(
+                        "leaves: a model of the zoo needs the chunks' summaries (chunk_count's), \
+                         got None",
+                    )
                 })?
                 .iter()
                 .map(|l| l.get().0.clone())

@@ -86,3 +86,31 @@ def test_on_a_two_worker_local_cluster(tmp_path):
             pd.testing.assert_frame_equal(got, want, check_exact=True)
             assert r["summary"] == summary
             assert r["entries"]["chunks"] == 7
+
+
+def test_the_chunk_functions_take_a_zoo_model_and_refuse_what_it_cannot_be():
+    import lugre.chunk as lc
+
+    u = walk(50, 2)
+    ms, bw = MODELS["maxwell-slip"], MODELS["bouc-wen"]
+    start = lc.chunk_start_entry(ms, None, u[0])
+    assert isinstance(start, bytes) and len(start) == 8 * (1 + 4)  # u and four elements
+    assert lc.chunk_start_entry(lugre.LuGre(), 0.5, u[0]) == lugre.LuGre().sigma0 * 0.5
+    with pytest.raises(ValueError, match="x0"):
+        lc.chunk_start_entry(bw, 0.5, u[0])
+    assert lc.chunk_bounds(u, 0, None, ms) is None
+    upper, lower = lc.chunk_bounds(u, 0, None, bw)
+    assert np.isfinite([upper, lower]).all()
+    summary, _ = lc.chunk_count(u, 0)
+    with pytest.raises(ValueError, match="leaves"):
+        lc.chunk_guess_entries(ms, start, [None])
+    with pytest.raises(ValueError, match=r"bounds\[0\] is None"):
+        lc.chunk_guess_entries(lugre.LuGre(), 0.0, [None])
+    with pytest.raises(TypeError, match="y_entry: the entry state of a model of the zoo is bytes"):
+        lc.chunk_count_energy(u, 0, None, 0.0, ms, None)
+    with pytest.raises(ValueError, match="y_entry is not a state of the Maxwell-slip model"):
+        lc.chunk_count_energy(u, 0, None, lc.chunk_start_entry(bw, None, u[0]), ms, None)
+    rows, passed, last = lc.chunk_count_energy(u, 0, None, start, ms, None)
+    assert isinstance(passed, bytes) and isinstance(last, bytes) and len(last) == len(start)
+    with pytest.raises(ValueError, match="cannot be read"):
+        lc.chunk_history_energy(ms, start, [passed[:-1]])

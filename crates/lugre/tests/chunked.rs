@@ -631,3 +631,56 @@ fn zoo_energies_of_a_long_walk() {
         check_zoo(&u, &cuts, &[2, 0, 1], pick);
     }
 }
+
+/// With a model of the zoo: an entry that is not a state of the model, a span outside its
+/// chunk, bounds missing for a single-state model or of another count than the summaries, and
+/// bytes that are not an energy pass are errors naming what is wrong, never a panic; an energy
+/// pass survives its bytes.
+#[test]
+fn a_zoo_chunk_entered_wrongly_is_an_error() {
+    use lugre::cycles::chunk::ArcSpan;
+    use lugre::zoo::ZooChunkState;
+    let u = [0.0, 2.0, 1.0, 1.5, -1.0];
+    let ms = ZooModel::new("maxwell-slip", &[]).unwrap();
+    let bw = ZooModel::new("bouc-wen", &[]).unwrap();
+    let wrong = bw.chunk_start(0.0); // two numbers, not Maxwell-slip's five
+    let e = ms.count_chunk_energy(&u, 0, None, &wrong, &[]).unwrap_err();
+    assert!(e.to_string().contains("is not a state of the"), "{e}");
+    let nan = ZooChunkState::from_bytes(&[f64::NAN.to_le_bytes(), 0f64.to_le_bytes()].concat());
+    let e = bw
+        .count_chunk_energy(&u, 0, None, &nan.unwrap(), &[])
+        .unwrap_err();
+    assert!(e.to_string().contains("is not a state of the"), "{e}");
+    assert!(ZooChunkState::from_bytes(&[0u8; 7]).is_err());
+    let outside = ArcSpan {
+        id: 0,
+        from: Some(9),
+        to: None,
+    };
+    let start = ms.chunk_start(0.0);
+    let e = ms
+        .count_chunk_energy(&u, 0, None, &start, &[outside])
+        .unwrap_err();
+    assert!(e.to_string().contains("outside its chunk"), "{e}");
+    let (leaf, _) = count_chunk(&u, 0).unwrap();
+    let e = bw
+        .guess_entries(&bw.chunk_start(0.0), &[None], std::slice::from_ref(&leaf))
+        .unwrap_err();
+    assert!(e.to_string().contains("state bounds"), "{e}");
+    assert!(bw
+        .guess_entries(&bw.chunk_start(0.0), &[], &[leaf])
+        .is_err());
+    assert!(ms.chunk_bounds(&u, 0, None).unwrap().is_none());
+    assert!(bw.chunk_bounds(&u, 0, Some(1.0)).is_err()); // a sample before u[0]
+    let spans = [ArcSpan {
+        id: 3,
+        from: Some(1),
+        to: None,
+    }];
+    let (_, pass) = ms.count_chunk_energy(&u, 0, None, &start, &spans).unwrap();
+    let bytes = pass.to_bytes();
+    assert_eq!(ZooChunkEnergy::from_bytes(&bytes).unwrap(), pass);
+    assert!(ZooChunkEnergy::from_bytes(&bytes[..bytes.len() - 1]).is_err());
+    assert!(ZooChunkEnergy::from_bytes(&[bytes.as_slice(), &[0]].concat()).is_err());
+    assert!(pass.parts[0].from.is_some() && pass.parts[0].to.is_none());
+}

@@ -45,11 +45,6 @@ use crate::kernel::numerics::DoubleDouble;
 #[derive(Debug, Clone, PartialEq)]
 pub struct ZooChunkState(Vec<f64>);
 
-/// The error for numbers that are not a state of the model.
-const NOT_A_STATE: HistoryError = HistoryError::BadSummary {
-    why: "not a state of this model of the zoo",
-};
-
 impl ZooChunkState {
     /// The numbers: the input, then the model's internal state.
     pub fn values(&self) -> &[f64] {
@@ -65,7 +60,9 @@ impl ZooChunkState {
     /// Reads [`to_bytes`](Self::to_bytes)' output back (checked against a model where used).
     pub fn from_bytes(bytes: &[u8]) -> Result<Self, HistoryError> {
         if bytes.is_empty() || !bytes.len().is_multiple_of(8) {
-            return Err(NOT_A_STATE);
+            return Err(HistoryError::BadSummary {
+                why: "a state is one or more little-endian doubles",
+            });
         }
         let mut r = Reader(bytes);
         let values = (0..bytes.len() / 8)
@@ -78,8 +75,20 @@ impl ZooChunkState {
         Self(M::values(state))
     }
 
-    fn state<M: Segmental>(&self, model: &M) -> Result<M::State, HistoryError> {
-        model.state_of_values(&self.0).ok_or(NOT_A_STATE)
+    /// The state of `model` (the zoo's `label`) these numbers are; `name` is the argument's.
+    fn state<M: Segmental>(
+        &self,
+        model: &M,
+        label: &'static str,
+        name: &'static str,
+    ) -> Result<M::State, HistoryError> {
+        model
+            .state_of_values(&self.0)
+            .ok_or(HistoryError::NotAZooState {
+                name,
+                model: label,
+                count: self.0.len(),
+            })
     }
 }
 
@@ -143,10 +152,22 @@ impl ZooModel {
             });
         }
         match self.kind() {
-            ZooKind::BoucWen(m) => single_entries(m, start, bounds, leaves),
-            ZooKind::ElastoPlastic(m) => single_entries(m, start, bounds, leaves),
-            ZooKind::MaxwellSlip(m) => masing_entries(m.bank(), start, leaves),
-            ZooKind::PrandtlIshlinskii(m) => masing_entries(m.bank(), start, leaves),
+            ZooKind::BoucWen(m) => {
+                let first = start.state(m, self.spec().label, "y_start")?;
+                single_entries(m, first, bounds, leaves)
+            }
+            ZooKind::ElastoPlastic(m) => {
+                let first = start.state(m, self.spec().label, "y_start")?;
+                single_entries(m, first, bounds, leaves)
+            }
+            ZooKind::MaxwellSlip(m) => {
+                let first = start.state(m.bank(), self.spec().label, "y_start")?;
+                masing_entries(m.bank(), first, leaves)
+            }
+            ZooKind::PrandtlIshlinskii(m) => {
+                let first = start.state(m.bank(), self.spec().label, "y_start")?;
+                masing_entries(m.bank(), first, leaves)
+            }
         }
     }
 
@@ -185,7 +206,8 @@ impl ZooModel {
             .map(|k| rows.cycle_at(k))
             .collect();
         let pass = each!(self, m => {
-            let w = walk(m, entry.state(m)?, u, offset, prev, &mut cycles, spans);
+            let entry = entry.state(m, self.spec().label, "y_entry")?;
+            let w = walk(m, entry, u, offset, prev, &mut cycles, spans);
             pass_of(m, w)
         });
         check_energies(&cycles)?;
@@ -231,7 +253,9 @@ impl ZooModel {
                 return Err(missing());
             };
             let e = each!(self, m => {
-                arc_energy(m, &a.state(m)?, &c.state(m)?, d.to_f64())
+                let label = self.spec().label;
+                let (a, c) = (a.state(m, label, "from")?, c.state(m, label, "to")?);
+                arc_energy(m, &a, &c, d.to_f64())
             });
             let a = e.arc;
             let values = [a.work, a.stored_energy_change, a.dissipation, a.closure_gap];
@@ -256,7 +280,11 @@ impl ZooModel {
     ) -> Result<HistoryEnergy, HistoryError> {
         let d = chunks.iter().fold(DoubleDouble::ZERO, |d, c| d + c.d);
         let end = chunks.last().map_or(start, |c| &c.last);
-        let totals = each!(self, m => totals(m, &start.state(m)?, &end.state(m)?, d));
+        let label = self.spec().label;
+        let totals = each!(self, m => {
+            let (first, end) = (start.state(m, label, "y_start")?, end.state(m, label, "y_last")?);
+            totals(m, &first, &end, d)
+        });
         totals.check_finite()?;
         Ok(totals)
     }
@@ -302,11 +330,10 @@ fn single_bounds<T: SingleState>(
 /// before each chunk (the previous chunk's last).
 fn single_entries<T: SingleState>(
     m: &T,
-    start: &ZooChunkState,
+    first: Point,
     bounds: &[Option<StateBounds>],
     leaves: &[ChunkSummary],
 ) -> Result<Vec<ZooChunkState>, HistoryError> {
-    let first: Point = start.state(m)?;
     let bounds = bounds
         .iter()
         .map(|b| {
@@ -335,10 +362,9 @@ fn single_entries<T: SingleState>(
 /// order.
 fn masing_entries(
     bank: &PlayBank,
-    start: &ZooChunkState,
+    first: MasingState,
     leaves: &[ChunkSummary],
 ) -> Result<Vec<ZooChunkState>, HistoryError> {
-    let first: MasingState = start.state(bank)?;
     let mut out = Vec::with_capacity(leaves.len());
     let mut prefix: Option<ChunkSummary> = None;
     let mut points = Vec::new();
