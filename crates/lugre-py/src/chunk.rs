@@ -14,7 +14,8 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 
 use crate::convert::{self, value_error, vec_out};
 use crate::cycles::{cycle_table, summary_dict};
-use crate::models::lugre_of;
+use crate::cycles::{energy_model, Energy};
+use lugre::zoo::{ZooChunkEnergy, ZooChunkState};
 
 /// What a chunk (or a run of adjacent chunks) tells the rest of the history: its ends, extremes
 /// and irreducible residue. Picklable.
@@ -414,9 +415,11 @@ impl PyChunkPlan {
     /// Attaches the merge-time cycles' energies from every chunk's energy pass (the bytes of
     /// `chunk_count_energy`, in chunk order).
     fn attach_energy(&mut self, model: &Bound<'_, PyAny>, passes: Vec<Vec<u8>>) -> PyResult<()> {
-        let m = lugre_of(model)?.rate_independent();
-        let passes = energies(&passes)?;
-        self.0.attach_energy(m, &passes).map_err(value_error)
+        match energy_model(model, None)? {
+            Energy::Classic(m) => self.0.attach_energy(m, &energies(&passes)?),
+            Energy::Zoo(z) => z.attach_energy(&mut self.0, &zoo_energies(&passes)?),
+        }
+        .map_err(value_error)
     }
 
     /// The rows to merge into each chunk's own: a dict of columns (and sort keys) per chunk.
@@ -524,8 +527,48 @@ fn energies(passes: &[Vec<u8>]) -> PyResult<Vec<ChunkEnergy>> {
         .collect()
 }
 
-/// `chunk_bounds(samples, offset, prev, model)`: `y*` at the chunk's last sample from the
-/// entry states `+g0` and `-g0`, as a tuple (upper, lower).
+fn zoo_energies(passes: &[Vec<u8>]) -> PyResult<Vec<ZooChunkEnergy>> {
+    passes
+        .iter()
+        .map(|b| ZooChunkEnergy::from_bytes(b).map_err(value_error))
+        .collect()
+}
+
+/// An entry state: LuGre's `y*` (a float) or a zoo model's state (bytes), named `what`.
+fn zoo_state(state: &Bound<'_, PyAny>, what: &str) -> PyResult<ZooChunkState> {
+    let bytes: Vec<u8> = state.extract().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{what}: the entry state of a model of the zoo is bytes (of chunk_start_entry, \
+             chunk_guess_entries or chunk_count_energy), got {}",
+            crate::convert::type_name(state)
+        ))
+    })?;
+    ZooChunkState::from_bytes(&bytes).map_err(|e| PyValueError::new_err(format!("{what}: {e}")))
+}
+
+/// `chunk_start_entry(model, x0, first)`: the first chunk's entry state (exact): LuGre's
+/// `y* = sigma0 x0` (a float), or a zoo model's state at rest at the history's first sample
+/// `first` (bytes; `x0` must be None).
+#[pyfunction]
+#[pyo3(signature = (model, x0, first))]
+pub fn chunk_start_entry<'py>(
+    py: Python<'py>,
+    model: &Bound<'py, PyAny>,
+    x0: Option<f64>,
+    first: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    Ok(match energy_model(model, x0)? {
+        Energy::Classic(m) => (m.sigma0() * x0.unwrap_or(0.0))
+            .into_pyobject(py)?
+            .into_any(),
+        Energy::Zoo(z) => PyBytes::new(py, &z.chunk_start(first).to_bytes()).into_any(),
+    })
+}
+
+/// `chunk_bounds(samples, offset, prev, model)`: the state at the chunk's last sample from
+/// the two extreme entry states (LuGre's `y*` from `+g0` and `-g0`; a single-state model's
+/// `z` from its bounds), as a tuple (upper, lower); None for a Masing model of the zoo (its
+/// entries follow from the chunks' residues).
 #[pyfunction]
 pub fn chunk_bounds(
     py: Python<'_>,
@@ -533,36 +576,75 @@ pub fn chunk_bounds(
     offset: &Bound<'_, PyAny>,
     prev: Option<f64>,
     model: &Bound<'_, PyAny>,
-) -> PyResult<(f64, f64)> {
-    let m = lugre_of(model)?.rate_independent();
+) -> PyResult<Option<(f64, f64)>> {
+    let model = energy_model(model, None)?;
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
     let offset = placed(offset, u.len(), prev)?;
     let b = py
-        .detach(|| chunk::state_bounds(u, offset, prev, m))
+        .detach(|| match model {
+            Energy::Classic(m) => chunk::state_bounds(u, offset, prev, m).map(Some),
+            Energy::Zoo(z) => z.chunk_bounds(u, offset, prev),
+        })
         .map_err(value_error)?;
-    Ok((b.upper, b.lower))
+    Ok(b.map(|b| (b.upper, b.lower)))
 }
 
-/// `chunk_guess_entries(model, y_start, bounds)`: every chunk's guessed entry state from the
-/// chunks' `chunk_bounds`, in order (exact for chunk 0).
+/// `chunk_guess_entries(model, y_start, bounds, leaves=None)`: every chunk's guessed entry
+/// state from the chunks' `chunk_bounds` (and, for a model of the zoo, their summaries
+/// `leaves`), in order, from `y_start` (`chunk_start_entry`; chunk 0's, exact).
 #[pyfunction]
-pub fn chunk_guess_entries(
-    model: &Bound<'_, PyAny>,
-    y_start: f64,
-    bounds: Vec<(f64, f64)>,
-) -> PyResult<Vec<f64>> {
-    let m = lugre_of(model)?.rate_independent();
-    let b: Vec<StateBounds> = bounds
-        .into_iter()
-        .map(|(upper, lower)| StateBounds { upper, lower })
-        .collect();
-    chunk::guess_entries(m, y_start, &b).map_err(value_error)
+#[pyo3(signature = (model, y_start, bounds, leaves=None))]
+pub fn chunk_guess_entries<'py>(
+    py: Python<'py>,
+    model: &Bound<'py, PyAny>,
+    y_start: &Bound<'py, PyAny>,
+    bounds: Vec<Option<(f64, f64)>>,
+    leaves: Option<Vec<Bound<'py, PyChunkSummary>>>,
+) -> PyResult<Bound<'py, PyList>> {
+    let b = |(upper, lower)| StateBounds { upper, lower };
+    match energy_model(model, None)? {
+        Energy::Classic(m) => {
+            let y: f64 = y_start.extract()?;
+            let bounds = bounds
+                .into_iter()
+                .enumerate()
+                .map(|(k, x)| {
+                    x.map(b).ok_or_else(|| {
+                        PyValueError::new_err(format!(
+                            "bounds[{k}] is None: LuGre's entry states need both bounds of \
+                             every chunk (chunk_bounds)"
+                        ))
+                    })
+                })
+                .collect::<PyResult<Vec<_>>>()?;
+            let g = chunk::guess_entries(m, y, &bounds).map_err(value_error)?;
+            PyList::new(py, g)
+        }
+        Energy::Zoo(z) => {
+            let start = zoo_state(y_start, "y_start")?;
+            let leaves: Vec<ChunkSummary> = leaves
+                .ok_or_else(|| {
+                    PyValueError::new_err(
+                        "leaves: a model of the zoo needs the chunks' summaries (chunk_count's), \
+                         got None",
+                    )
+                })?
+                .iter()
+                .map(|l| l.get().0.clone())
+                .collect();
+            let bounds: Vec<_> = bounds.into_iter().map(|x| x.map(b)).collect();
+            let g = z
+                .guess_entries(&start, &bounds, &leaves)
+                .map_err(value_error)?;
+            PyList::new(py, g.iter().map(|s| PyBytes::new(py, &s.to_bytes())))
+        }
+    }
 }
 
 /// `chunk_count_energy(samples, offset, prev, y_entry, model, spans)`: the chunk's own rows
-/// with energies (`ChunkRows`), its energy pass for the driver (bytes) and `y*` at its
-/// last sample.
+/// with energies (`ChunkRows`), its energy pass for the driver (bytes) and the state at its
+/// last sample (LuGre's `y*`, a float; a zoo model's state, bytes), entering at `y_entry`.
 #[pyfunction]
 #[pyo3(signature = (samples, offset, prev, y_entry, model, spans))]
 pub fn chunk_count_energy<'py>(
@@ -570,11 +652,11 @@ pub fn chunk_count_energy<'py>(
     samples: &Bound<'py, PyAny>,
     offset: &Bound<'py, PyAny>,
     prev: Option<f64>,
-    y_entry: f64,
+    y_entry: &Bound<'py, PyAny>,
     model: &Bound<'py, PyAny>,
     spans: Option<&Bound<'py, PyDict>>,
-) -> PyResult<(PyChunkRows, Bound<'py, PyBytes>, f64)> {
-    let m = lugre_of(model)?.rate_independent();
+) -> PyResult<(PyChunkRows, Bound<'py, PyBytes>, Bound<'py, PyAny>)> {
+    let model = energy_model(model, None)?;
     let spans: Vec<ArcSpan> = match spans {
         None => Vec::new(),
         Some(d) => {
@@ -593,15 +675,24 @@ pub fn chunk_count_energy<'py>(
     let u = convert::series(samples, "samples")?;
     let u = u.as_slice();
     let offset = placed(offset, u.len(), prev)?;
-    let (rows, pass) = py
-        .detach(|| chunk::count_chunk_energy(u, offset, prev, y_entry, m, &spans))
-        .map_err(value_error)?;
-    let y_last = pass.y_last;
-    Ok((
-        PyChunkRows(rows),
-        PyBytes::new(py, &pass.to_bytes()),
-        y_last,
-    ))
+    match model {
+        Energy::Classic(m) => {
+            let y: f64 = y_entry.extract()?;
+            let (rows, pass) = py
+                .detach(|| chunk::count_chunk_energy(u, offset, prev, y, m, &spans))
+                .map_err(value_error)?;
+            let last = pass.y_last.into_pyobject(py)?.into_any();
+            Ok((PyChunkRows(rows), PyBytes::new(py, &pass.to_bytes()), last))
+        }
+        Energy::Zoo(z) => {
+            let entry = zoo_state(y_entry, "y_entry")?;
+            let (rows, pass) = py
+                .detach(|| z.count_chunk_energy(u, offset, prev, &entry, &spans))
+                .map_err(value_error)?;
+            let last = PyBytes::new(py, &pass.last.to_bytes()).into_any();
+            Ok((PyChunkRows(rows), PyBytes::new(py, &pass.to_bytes()), last))
+        }
+    }
 }
 
 /// `chunk_history_energy(model, y_start, passes)`: the totals along the whole history (the
@@ -610,11 +701,16 @@ pub fn chunk_count_energy<'py>(
 pub fn chunk_history_energy<'py>(
     py: Python<'py>,
     model: &Bound<'py, PyAny>,
-    y_start: f64,
+    y_start: &Bound<'py, PyAny>,
     passes: Vec<Vec<u8>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let m = lugre_of(model)?.rate_independent();
-    let e = chunk::history_energy(m, y_start, &energies(&passes)?).map_err(value_error)?;
+    let e = match energy_model(model, None)? {
+        Energy::Classic(m) => chunk::history_energy(m, y_start.extract()?, &energies(&passes)?),
+        Energy::Zoo(z) => {
+            z.history_energy(&zoo_state(y_start, "y_start")?, &zoo_energies(&passes)?)
+        }
+    }
+    .map_err(value_error)?;
     let s = lugre::CycleSummary {
         samples: 0,
         reversals: 0,

@@ -108,14 +108,14 @@ fn flag(obj: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<bool> {
 }
 
 /// The model whose energies a count follows: LuGre's or Dahl's y*, or a model of the zoo.
-enum Energy {
+pub(crate) enum Energy {
     Classic(lugre::RateIndependent),
     Zoo(Box<lugre::zoo::ZooModel>),
 }
 
 /// The `model` argument of [`cycles`]; a model of the zoo starts from rest, so an `x0` given
 /// with one is refused in the core's words.
-fn energy_model(m: &Bound<'_, PyAny>, x0: Option<f64>) -> PyResult<Energy> {
+pub(crate) fn energy_model(m: &Bound<'_, PyAny>, x0: Option<f64>) -> PyResult<Energy> {
     let Ok(zoo) = m.cast::<PyZooModel>() else {
         return match lugre_of(m) {
             Ok(l) => Ok(Energy::Classic(l.rate_independent())),

@@ -39,6 +39,7 @@ fn _lugre(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(chunk::chunk_close, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_assemble, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_bounds, m)?)?;
+    m.add_function(wrap_pyfunction!(chunk::chunk_start_entry, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_guess_entries, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_count_energy, m)?)?;
     m.add_function(wrap_pyfunction!(chunk::chunk_history_energy, m)?)?;

@@ -19,7 +19,7 @@ def test_the_protocol_is_a_submodule():
     assert set(lc.__all__) == {
         "ChunkPlan", "ChunkRows", "ChunkSummary", "chunk_assemble", "chunk_bounds", "chunk_close",
         "chunk_count", "chunk_count_energy", "chunk_guess_entries", "chunk_history_energy",
-        "chunk_merge",
+        "chunk_merge", "chunk_start_entry",
     }
     assert not set(lc.__all__) & set(lugre.__all__)
     # The old names: the same objects, with a DeprecationWarning naming the new place.

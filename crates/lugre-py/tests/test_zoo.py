@@ -311,20 +311,19 @@ def test_cycles_name_the_models_they_take():
     assert str(e.value) == "model must be a lugre.LuGre, lugre.Dahl or lugre.ZooModel, got str"
 
 
-def test_dask_refuses_a_model_of_the_zoo_in_chunks_and_takes_it_per_file(tmp_path):
-    """lugre.dask.count/cycles follow a model in chunks only for LuGre and Dahl: a model of
-    the zoo is refused with one line before any task runs; cycles_many counts each file whole,
-    as lugre.cycles."""
+def test_dask_takes_a_model_of_the_zoo_in_chunks_and_per_file(tmp_path):
+    """lugre.dask.count/cycles follow a model of the zoo in chunks (equal to lugre.cycles, bit
+    for bit; tests/test_dask_zoo.py checks it at length), with x0 refused as by lugre.cycles;
+    cycles_many counts each file whole, as lugre.cycles."""
     ld = pytest.importorskip("lugre.dask")
     da = pytest.importorskip("dask.array")
     m = lugre.ZooModel(MODELS[0])
     x = da.from_array(np.array(HISTORY), chunks=5)
-    with pytest.raises(ValueError) as e:
-        ld.cycles(x, model=m)
-    assert str(e.value) == (
-        f"lugre.dask: the energies of a model of the zoo ({MODELS[0]}) are not computed in "
-        "chunks (its path runs from rest over the whole history); count the history with "
-        "lugre.cycles, or here without a model")
+    got = ld.cycles(x, model=m).compute()
+    want = lugre.cycles(np.array(HISTORY), model=m, reversals=False)["cycles"]
+    np.testing.assert_array_equal(got["work"].to_numpy(), want["work"])
+    with pytest.raises(ValueError, match="x0"):
+        ld.cycles(x, model=m, x0=1.0)
     path = tmp_path / "h.npy"
     np.save(path, np.array(HISTORY))
     df = ld.cycles_many([str(path)], model=m)

@@ -336,6 +336,12 @@ pub enum HistoryError {
     ClosureNotFound { end: u64 },
     #[error("a chunk summary cannot be read from these bytes ({why})")]
     BadSummary { why: &'static str },
+    #[error("{name} is not a state of the {model} model ({count} numbers, each finite: the input and the model's state)")]
+    NotAZooState {
+        name: &'static str,
+        model: &'static str,
+        count: usize,
+    },
 }
 
 /// A parameter-identification request that cannot be carried out, or whose answer the data do

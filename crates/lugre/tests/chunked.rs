@@ -7,17 +7,33 @@ use lugre::cycles::chunk::{
     assemble, close_in_chunk, count_chunk, count_chunk_energy, history_energy, merge, state_bounds,
     ChunkPlan,
 };
+use lugre::zoo::{ZooChunkEnergy, ZooModel};
 use lugre::{
-    count_cycles, CycleColumns, CycleCounter, CycleSummary, HistoryError, RateIndependent,
+    count_cycles, CycleColumns, CycleCounter, CycleSummary, HistoryEnergy, HistoryError,
+    RateIndependent,
 };
 use proptest::prelude::*;
 
-/// The single pass into columns (with energies for `model`, from `x0`).
-fn single(u: &[f64], model: Option<(RateIndependent, f64)>) -> (CycleColumns, CycleSummary) {
+/// The model whose energies a count follows: LuGre's `y*` from `x0`, or a model of the zoo.
+#[derive(Debug, Clone)]
+enum Energy {
+    LuGre(RateIndependent, f64),
+    Zoo(Box<ZooModel>),
+}
+
+/// The single pass into columns (with the energies of `model`).
+fn single(u: &[f64], model: Option<&Energy>) -> (CycleColumns, CycleSummary) {
     let mut c = CycleColumns::new()
         .with_reversals(false)
         .with_energy(model.is_some());
-    let (m, x0) = (model.map(|(m, _)| m), model.map_or(0.0, |(_, x0)| x0));
+    if let Some(Energy::Zoo(z)) = model {
+        let s = z.count_cycles(u, 0.0, &mut c).unwrap();
+        return (c, s);
+    }
+    let (m, x0) = match model {
+        Some(&Energy::LuGre(m, x0)) => (Some(m), x0),
+        _ => (None, 0.0),
+    };
     let mut counter = CycleCounter::new(0.0).unwrap().with_energy(m, x0).unwrap();
     counter.push_all(u, &mut c).unwrap();
     let s = counter.finish(&mut c).unwrap();
@@ -38,7 +54,7 @@ fn chunked(
     u: &[f64],
     cuts: &[usize],
     order: &[usize],
-    model: Option<(RateIndependent, f64)>,
+    model: Option<&Energy>,
     entries: &mut Entries,
 ) -> Result<(CycleColumns, CycleSummary), HistoryError> {
     let mut bounds = vec![0];
@@ -68,37 +84,20 @@ fn chunked(
         plan.resolve(&found);
     }
     let mut summary = summary;
-    if let Some((m, x0)) = model {
-        // The energy passes from guessed entry states, then verified in order (a wrong guess
-        // counts its chunk again from the exact state the previous pass ended at).
-        let spans = plan.energy_spans()?;
-        let y0 = m.sigma0() * x0;
-        let pieces: Vec<(&[f64], u64, Option<f64>)> = bounds
-            .windows(2)
-            .map(|w| (&u[w[0]..w[1]], w[0] as u64, (w[0] > 0).then(|| u[w[0] - 1])))
-            .collect();
-        let b: Vec<_> = pieces
-            .iter()
-            .map(|&(c, o, p)| state_bounds(c, o, p, m))
-            .collect::<Result<_, _>>()?;
-        let guesses = lugre::cycles::chunk::guess_entries(m, y0, &b)?;
-        let mut passes = Vec::new();
-        for (k, &(c, o, p)) in pieces.iter().enumerate() {
-            let mut y = guesses[k];
-            if k > 0 {
-                let exact = passes
-                    .last()
-                    .map_or(y0, |x: &lugre::cycles::chunk::ChunkEnergy| x.y_last);
-                entries.chunks += 1;
-                entries.certified += usize::from(exact.to_bits() == y.to_bits());
-                y = exact;
-            }
-            let (own, pass) = count_chunk_energy(c, o, p, y, m, &spans[k])?;
-            rows[k] = own;
-            passes.push(pass);
+    let pieces: Vec<(&[f64], u64, Option<f64>)> = bounds
+        .windows(2)
+        .map(|w| (&u[w[0]..w[1]], w[0] as u64, (w[0] > 0).then(|| u[w[0] - 1])))
+        .collect();
+    match model {
+        Some(&Energy::LuGre(m, x0)) => {
+            summary.energy = Some(lugre_energies(
+                m, x0, &mut plan, &pieces, &mut rows, entries,
+            )?);
         }
-        plan.attach_energy(m, &passes)?;
-        summary.energy = Some(history_energy(m, y0, &passes)?);
+        Some(Energy::Zoo(z)) => {
+            summary.energy = Some(zoo_energies(z, &mut plan, &pieces, &mut rows, entries)?);
+        }
+        None => {}
     }
     let extras = plan.extras()?;
     let mut out = CycleColumns::new()
@@ -109,6 +108,77 @@ fn chunked(
         append(&mut out, &part);
     }
     Ok((out, summary))
+}
+
+/// A chunk: its samples, its first sample's index, the sample before it.
+type Piece<'a> = (&'a [f64], u64, Option<f64>);
+
+/// The energy passes from guessed entry states `y*`, then verified in order (a wrong guess
+/// counts its chunk again from the exact state the previous pass ended at).
+fn lugre_energies(
+    m: RateIndependent,
+    x0: f64,
+    plan: &mut ChunkPlan,
+    pieces: &[Piece],
+    rows: &mut [CycleColumns],
+    entries: &mut Entries,
+) -> Result<HistoryEnergy, HistoryError> {
+    let spans = plan.energy_spans()?;
+    let y0 = m.sigma0() * x0;
+    let b: Vec<_> = pieces
+        .iter()
+        .map(|&(c, o, p)| state_bounds(c, o, p, m))
+        .collect::<Result<_, _>>()?;
+    let guesses = lugre::cycles::chunk::guess_entries(m, y0, &b)?;
+    let mut passes = Vec::new();
+    for (k, &(c, o, p)) in pieces.iter().enumerate() {
+        let mut y = guesses[k];
+        if k > 0 {
+            let exact = passes
+                .last()
+                .map_or(y0, |x: &lugre::cycles::chunk::ChunkEnergy| x.y_last);
+            entries.chunks += 1;
+            entries.certified += usize::from(exact.to_bits() == y.to_bits());
+            y = exact;
+        }
+        let (own, pass) = count_chunk_energy(c, o, p, y, m, &spans[k])?;
+        rows[k] = own;
+        passes.push(pass);
+    }
+    plan.attach_energy(m, &passes)?;
+    history_energy(m, y0, &passes)
+}
+
+/// [`lugre_energies`] with a model of the zoo: its entry states (exact for a Masing model,
+/// guessed for a single-state one), verified in order alike.
+fn zoo_energies(
+    z: &ZooModel,
+    plan: &mut ChunkPlan,
+    pieces: &[Piece],
+    rows: &mut [CycleColumns],
+    entries: &mut Entries,
+) -> Result<HistoryEnergy, HistoryError> {
+    let spans = plan.energy_spans()?;
+    let start = z.chunk_start(pieces[0].0[0]);
+    let b: Vec<_> = pieces
+        .iter()
+        .map(|&(c, o, p)| z.chunk_bounds(c, o, p))
+        .collect::<Result<_, _>>()?;
+    let guesses = z.guess_entries(&start, &b, plan.leaves())?;
+    let mut passes: Vec<ZooChunkEnergy> = Vec::new();
+    for (k, &(c, o, p)) in pieces.iter().enumerate() {
+        let mut entry = guesses[k].clone();
+        if let Some(before) = passes.last() {
+            entries.chunks += 1;
+            entries.certified += usize::from(before.last.to_bytes() == entry.to_bytes());
+            entry = before.last.clone();
+        }
+        let (own, pass) = z.count_chunk_energy(c, o, p, &entry, &spans[k])?;
+        rows[k] = own;
+        passes.push(pass);
+    }
+    z.attach_energy(plan, &passes)?;
+    z.history_energy(&start, &passes)
 }
 
 fn append(out: &mut CycleColumns, part: &CycleColumns) {
@@ -401,17 +471,11 @@ fn a_long_walk_in_uneven_chunks() {
 /// sums are added in another order than the single pass adds them, so a last-place difference
 /// is possible in principle (`cycles::chunk::energy`); none was found in 3 x 10^5 random
 /// histories (`PROPTEST_CASES=150000 cargo test --release -p lugre --test chunked energies`).
-fn check_energy(
-    u: &[f64],
-    cuts: &[usize],
-    order: &[usize],
-    m: RateIndependent,
-    x0: f64,
-) -> Entries {
-    let (want, want_summary) = single(u, Some((m, x0)));
+fn check_energy(u: &[f64], cuts: &[usize], order: &[usize], model: &Energy) -> Entries {
+    let (want, want_summary) = single(u, Some(model));
     let mut entries = Entries::default();
-    let (got, got_summary) = chunked(u, cuts, order, Some((m, x0)), &mut entries).unwrap();
-    let ctx = format!("u = {u:?}, cuts = {cuts:?}, order = {order:?}, model = {m:?}, x0 = {x0}");
+    let (got, got_summary) = chunked(u, cuts, order, Some(model), &mut entries).unwrap();
+    let ctx = format!("u = {u:?}, cuts = {cuts:?}, order = {order:?}, model = {model:?}");
     assert_eq!(rows(&got), rows(&want), "{ctx}");
     let bits = |c: &CycleColumns| -> Vec<[u64; 4]> {
         (0..c.len())
@@ -447,14 +511,14 @@ proptest! {
     fn energies_any_chunking(u in walk(), raw in prop::collection::vec(any::<usize>(), 0..20),
                              order in prop::collection::vec(any::<usize>(), 1..20), (m, x0) in model()) {
         let cuts = cuts_of(u.len(), &raw);
-        check_energy(&u, &cuts, &order, m, x0);
+        check_energy(&u, &cuts, &order, &Energy::LuGre(m, x0));
     }
 
     #[test]
     fn energies_small_integers(u in small_ints(), raw in prop::collection::vec(any::<usize>(), 0..12),
                                order in prop::collection::vec(any::<usize>(), 1..12), (m, x0) in model()) {
         let cuts = cuts_of(u.len(), &raw);
-        check_energy(&u, &cuts, &order, m, x0);
+        check_energy(&u, &cuts, &order, &Energy::LuGre(m, x0));
     }
 }
 
@@ -464,9 +528,159 @@ fn energies_of_a_long_walk() {
     let cuts: Vec<usize> = (1..23).map(|k| k * 4321 + k * k * 7).collect();
     for (sigma0, g0) in [(1e5, 1.0), (1.0, 1.0), (1e-2, 1.0)] {
         let m = RateIndependent::new(sigma0, g0).unwrap();
-        let e = check_energy(&u, &cuts, &[1, 2, 0], m, 0.3 / sigma0);
+        let e = check_energy(&u, &cuts, &[1, 2, 0], &Energy::LuGre(m, 0.3 / sigma0));
         // Path length 25 000 per chunk: every guess holds unless a is tiny.
         let want = if sigma0 < 1.0 { 0 } else { e.chunks };
         assert!(e.certified >= want, "{sigma0}: {e:?}");
     }
+}
+
+/// Models of the zoo: each at its defaults, Bouc-Wen also with `n = 2.5` (its segment map by a
+/// root, not the closed form), Maxwell-slip with unequal elements, Prandtl-Ishlinskii with a
+/// zero threshold.
+fn zoo_models() -> Vec<ZooModel> {
+    type Given = &'static [(&'static str, &'static [f64])];
+    let named: [(&str, Given); 7] = [
+        ("maxwell-slip", &[]),
+        (
+            "maxwell-slip",
+            &[
+                ("stiffness", &[3.0, 0.5, 1e-3]),
+                ("slip_force", &[0.1, 2.5, 1e-2]),
+            ],
+        ),
+        ("prandtl-ishlinskii", &[]),
+        (
+            "prandtl-ishlinskii",
+            &[
+                ("thresholds", &[0.0, 0.3, 7.0]),
+                ("weights", &[0.5, -0.1, 2.0]),
+            ],
+        ),
+        ("bouc-wen", &[]),
+        (
+            "bouc-wen",
+            &[("n", &[2.5]), ("sigma", &[0.9]), ("kx", &[0.1])],
+        ),
+        ("elastoplastic", &[]),
+    ];
+    named
+        .iter()
+        .map(|(name, given)| ZooModel::new(name, given).unwrap())
+        .collect()
+}
+
+/// [`check_energy`] with a model of the zoo; a Masing model's entry states are exact (the
+/// wiping-out property in floating point: the state after a prefix, bit for bit, is the state
+/// after its residue).
+fn check_zoo(u: &[f64], cuts: &[usize], order: &[usize], pick: usize) {
+    let z = zoo_models().swap_remove(pick % 7);
+    let e = check_energy(u, cuts, order, &Energy::Zoo(Box::new(z.clone())));
+    if z.spec().closes_minor_loops {
+        assert_eq!(
+            e.certified,
+            e.chunks,
+            "{}: u = {u:?}, cuts = {cuts:?}",
+            z.spec().name
+        );
+    }
+}
+
+/// Cuts at every reversal of `u` and at every sample of a plateau (ties) after `raw`'s.
+fn cuts_at_turns(u: &[f64], raw: &[usize]) -> Vec<usize> {
+    let mut c = cuts_of(u.len(), raw);
+    c.extend((1..u.len() - 1).filter(|&k| {
+        let (a, b) = (u[k] - u[k - 1], u[k + 1] - u[k]);
+        a * b <= 0.0
+    }));
+    c.sort_unstable();
+    c.dedup();
+    c
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    #[test]
+    fn zoo_energies_any_chunking(u in walk(), raw in prop::collection::vec(any::<usize>(), 0..20),
+                                 order in prop::collection::vec(any::<usize>(), 1..20), pick in 0usize..7) {
+        let cuts = cuts_of(u.len(), &raw);
+        check_zoo(&u, &cuts, &order, pick);
+    }
+
+    #[test]
+    fn zoo_energies_small_integers(u in small_ints(), raw in prop::collection::vec(any::<usize>(), 0..12),
+                                   order in prop::collection::vec(any::<usize>(), 1..12), pick in 0usize..7) {
+        let cuts = cuts_of(u.len(), &raw);
+        check_zoo(&u, &cuts, &order, pick);
+    }
+
+    #[test]
+    fn zoo_energies_cut_at_reversals_and_ties(u in small_ints(), raw in prop::collection::vec(any::<usize>(), 0..4),
+                                              order in prop::collection::vec(any::<usize>(), 1..8), pick in 0usize..7) {
+        let cuts = cuts_at_turns(&u, &raw);
+        check_zoo(&u, &cuts, &order, pick);
+    }
+}
+
+#[test]
+fn zoo_energies_of_a_long_walk() {
+    let u = lcg_walk(0x2545_f491_4f6c_dd1d, 50_000);
+    let cuts: Vec<usize> = (1..23).map(|k| k * 2111 + k * k * 5).collect();
+    for pick in 0..7 {
+        check_zoo(&u, &cuts, &[2, 0, 1], pick);
+    }
+}
+
+/// With a model of the zoo: an entry that is not a state of the model, a span outside its
+/// chunk, bounds missing for a single-state model or of another count than the summaries, and
+/// bytes that are not an energy pass are errors naming what is wrong, never a panic; an energy
+/// pass survives its bytes.
+#[test]
+fn a_zoo_chunk_entered_wrongly_is_an_error() {
+    use lugre::cycles::chunk::ArcSpan;
+    use lugre::zoo::ZooChunkState;
+    let u = [0.0, 2.0, 1.0, 1.5, -1.0];
+    let ms = ZooModel::new("maxwell-slip", &[]).unwrap();
+    let bw = ZooModel::new("bouc-wen", &[]).unwrap();
+    let wrong = bw.chunk_start(0.0); // two numbers, not Maxwell-slip's five
+    let e = ms.count_chunk_energy(&u, 0, None, &wrong, &[]).unwrap_err();
+    assert!(e.to_string().contains("is not a state of the"), "{e}");
+    let nan = ZooChunkState::from_bytes(&[f64::NAN.to_le_bytes(), 0f64.to_le_bytes()].concat());
+    let e = bw
+        .count_chunk_energy(&u, 0, None, &nan.unwrap(), &[])
+        .unwrap_err();
+    assert!(e.to_string().contains("is not a state of the"), "{e}");
+    assert!(ZooChunkState::from_bytes(&[0u8; 7]).is_err());
+    let outside = ArcSpan {
+        id: 0,
+        from: Some(9),
+        to: None,
+    };
+    let start = ms.chunk_start(0.0);
+    let e = ms
+        .count_chunk_energy(&u, 0, None, &start, &[outside])
+        .unwrap_err();
+    assert!(e.to_string().contains("outside its chunk"), "{e}");
+    let (leaf, _) = count_chunk(&u, 0).unwrap();
+    let e = bw
+        .guess_entries(&bw.chunk_start(0.0), &[None], std::slice::from_ref(&leaf))
+        .unwrap_err();
+    assert!(e.to_string().contains("state bounds"), "{e}");
+    assert!(bw
+        .guess_entries(&bw.chunk_start(0.0), &[], &[leaf])
+        .is_err());
+    assert!(ms.chunk_bounds(&u, 0, None).unwrap().is_none());
+    assert!(bw.chunk_bounds(&u, 0, Some(1.0)).is_err()); // a sample before u[0]
+    let spans = [ArcSpan {
+        id: 3,
+        from: Some(1),
+        to: None,
+    }];
+    let (_, pass) = ms.count_chunk_energy(&u, 0, None, &start, &spans).unwrap();
+    let bytes = pass.to_bytes();
+    assert_eq!(ZooChunkEnergy::from_bytes(&bytes).unwrap(), pass);
+    assert!(ZooChunkEnergy::from_bytes(&bytes[..bytes.len() - 1]).is_err());
+    assert!(ZooChunkEnergy::from_bytes(&[bytes.as_slice(), &[0]].concat()).is_err());
+    assert!(pass.parts[0].from.is_some() && pass.parts[0].to.is_none());
 }

@@ -117,7 +117,8 @@ __all__ = [
 def __getattr__(name):
     """The chunk protocol's old top-level names (``lugre.chunk_count``, ...): deprecated
     aliases of ``lugre.chunk``'s, kept for this release only (see CHANGELOG.md)."""
-    if name in chunk.__all__:
+    # chunk_start_entry came after the move: it never had a top-level name.
+    if name in chunk.__all__ and name != "chunk_start_entry":
         _warnings.warn(
             f"lugre.{name} is deprecated and will be removed in the next release: "
             f"use lugre.chunk.{name}",

@@ -5,9 +5,14 @@ A history cut into chunks is counted chunk by chunk (``chunk_count``), the chunk
 merged in any tree order (``chunk_merge``), the cycles only the merges complete closed by a
 second, read-only pass (``ChunkPlan.queries``, ``chunk_close``), and each chunk's rows put in
 the single pass's order (``ChunkPlan.extras``, ``chunk_assemble``); with a model, each chunk is
-counted with energies from its entry state (``chunk_bounds``, ``chunk_guess_entries``,
-``chunk_count_energy``, ``ChunkPlan.attach_energy``, ``chunk_history_energy``). The result
-equals ``lugre.cycles`` row for row. ``lugre.dask`` is the worked driver.
+counted with energies from its entry state (``chunk_start_entry``, ``chunk_bounds``,
+``chunk_guess_entries``, ``chunk_count_energy``, ``ChunkPlan.attach_energy``,
+``chunk_history_energy``). The result equals ``lugre.cycles`` row for row. ``lugre.dask`` is
+the worked driver.
+
+The model is a ``lugre.LuGre``/``lugre.Dahl`` (entry states are floats, ``y*``) or a
+``lugre.ZooModel`` (entry states are bytes: the model's state as little-endian doubles, equal
+states giving equal bytes); the same calls take either.
 
 Bad arguments raise ValueError naming them: an ``offset`` whose chunk would run past the
 last index a history can have (int64), a ``prev`` (the sample before the chunk) before u[0] or
@@ -31,6 +36,7 @@ from ._lugre import (
     chunk_guess_entries,
     chunk_history_energy,
     chunk_merge,
+    chunk_start_entry,
 )
 
 __all__ = [
@@ -45,4 +51,5 @@ __all__ = [
     "chunk_guess_entries",
     "chunk_history_energy",
     "chunk_merge",
+    "chunk_start_entry",
 ]

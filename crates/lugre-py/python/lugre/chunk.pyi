@@ -5,7 +5,7 @@ from typing import Any, Optional, Sequence, SupportsIndex, Tuple, Union
 
 import numpy.typing as npt
 
-from . import CycleSummary, CycleTotals, Dahl, LuGre, _Reals
+from . import CycleSummary, CycleTotals, Dahl, LuGre, ZooModel, _Reals
 
 class ChunkSummary:
     """What a chunk (or a run of adjacent chunks) tells the rest of the history: its ends,
@@ -60,16 +60,19 @@ def chunk_merge(left: ChunkSummary, right: ChunkSummary) -> Tuple[ChunkSummary, 
 def chunk_close(samples: _Reals, offset: SupportsIndex, prev: Optional[float], queries: dict[str, npt.NDArray[Any]]) -> dict[str, npt.NDArray[Any]]:
     """The closures of ``queries`` found in this chunk (``prev``: the sample before it)."""
     ...
-def chunk_bounds(samples: _Reals, offset: SupportsIndex, prev: Optional[float], model: Union[LuGre, Dahl]) -> Tuple[float, float]:
-    """``y*`` at the chunk's last sample from the entry states ``+g0`` and ``-g0``."""
+def chunk_start_entry(model: Union[LuGre, Dahl, ZooModel], x0: Optional[float], first: float) -> Union[float, bytes]:
+    """The first chunk's entry state (exact): ``sigma0 x0``, or a zoo model's state at rest at ``first``."""
     ...
-def chunk_guess_entries(model: Union[LuGre, Dahl], y_start: float, bounds: Sequence[Tuple[float, float]]) -> list[float]:
+def chunk_bounds(samples: _Reals, offset: SupportsIndex, prev: Optional[float], model: Union[LuGre, Dahl, ZooModel]) -> Optional[Tuple[float, float]]:
+    """The state at the chunk's last sample from both extreme entry states (None: a Masing model)."""
+    ...
+def chunk_guess_entries(model: Union[LuGre, Dahl, ZooModel], y_start: Union[float, bytes], bounds: Sequence[Optional[Tuple[float, float]]], leaves: Optional[Sequence[ChunkSummary]] = None) -> list[Union[float, bytes]]:
     """Every chunk's guessed entry state (exact for chunk 0), to be verified in order."""
     ...
-def chunk_count_energy(samples: _Reals, offset: SupportsIndex, prev: Optional[float], y_entry: float, model: Union[LuGre, Dahl], spans: Optional[dict[str, npt.NDArray[Any]]]) -> Tuple[ChunkRows, bytes, float]:
-    """A chunk's own rows with energies, its energy pass for the driver, ``y*`` at its end."""
+def chunk_count_energy(samples: _Reals, offset: SupportsIndex, prev: Optional[float], y_entry: Union[float, bytes], model: Union[LuGre, Dahl, ZooModel], spans: Optional[dict[str, npt.NDArray[Any]]]) -> Tuple[ChunkRows, bytes, Union[float, bytes]]:
+    """A chunk's own rows with energies, its energy pass for the driver, the state at its end."""
     ...
-def chunk_history_energy(model: Union[LuGre, Dahl], y_start: float, passes: Sequence[bytes]) -> CycleTotals:
+def chunk_history_energy(model: Union[LuGre, Dahl, ZooModel], y_start: Union[float, bytes], passes: Sequence[bytes]) -> CycleTotals:
     """The history's energy totals from every chunk's energy pass, in order."""
     ...
 def chunk_assemble(own: ChunkRows, extras: dict[str, Any]) -> dict[str, npt.NDArray[Any]]:

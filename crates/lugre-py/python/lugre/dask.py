@@ -21,9 +21,15 @@ The core package never imports Dask; this module needs ``dask[distributed,datafr
 runs on the scheduler Dask would use anyway: a ``distributed.Client`` if one is active
 (``Client("tcp://scheduler:8786")`` for a real cluster), else threads.
 
-A model of the zoo (``lugre.ZooModel``) is refused by ``count`` and ``cycles`` with one line:
-its energies follow the model's path from rest over the whole history, which is held in memory
-(``lugre.cycles`` does it, up to 2^27 samples); ``cycles_many`` takes one, each file whole.
+A model of the zoo (``lugre.ZooModel``) is taken alike, its energies along the model's path
+from rest at the history's first sample equal to ``lugre.cycles(u, model=...)``'s: each chunk
+is counted from its entry state, the model's state at the sample before it. A Masing model's
+(Maxwell-slip, Prandtl-Ishlinskii) is exact from the merged residue of the chunks before it
+(the wiping-out property); a single-state model's (Bouc-Wen, elasto-plastic) is guessed from
+both bounds of its state run through the chunk before and verified in order, as LuGre's. The
+core decides which; this module passes the model through. ``x0`` is refused with a zoo model
+(it starts from rest), and each chunk may hold at most 2^27 samples (the whole history may
+hold more).
 
 The noise gate is not available here (``gate`` must be 0): whether a turn is a reversal
 depends on how far the history later comes back, which a chunk cannot know; count gated
@@ -200,7 +206,8 @@ def _leaf(u: np.ndarray, offset: int, where: str, model: Any) -> tuple:
         # chunk where these do not agree (a quiet stretch). A guess either way: verified.
         tail = max(len(u) - _TAIL, 0)
         bounds = _in_chunk(where, _chunk.chunk_bounds, u[tail:], offset + tail, None, model)
-        if bounds[0] != bounds[1] and tail > 0:
+        # None: the model's entry states follow from the summaries alone (exact).
+        if bounds is not None and bounds[0] != bounds[1] and tail > 0:
             bounds = _in_chunk(where, _chunk.chunk_bounds, u, offset, None, model)
         rows = None  # counted again with energies
     return summary, rows, bounds
@@ -226,6 +233,11 @@ def _close(u: np.ndarray, offset: int, prev: Optional[float], queries: dict, whe
 def _energy(u: np.ndarray, offset: int, prev: Optional[float], y: float, model: Any,
             spans: Optional[dict], where: str) -> tuple:
     return _in_chunk(where, _chunk.chunk_count_energy, u, offset, prev, y, model, spans)
+
+
+def _bits(state: Any) -> bytes:
+    """An entry state's bits: equal states, equal bits (0.0 and -0.0 differ)."""
+    return state if isinstance(state, bytes) else np.float64(state).tobytes()
 
 
 def _energy_small(t: tuple) -> tuple:
@@ -272,12 +284,6 @@ def _merge_tree(summaries: list, fan_in: int) -> tuple:
 
 
 def _check_model(model: Any, x0: Optional[float], gate: float) -> None:
-    if isinstance(model, _lugre.ZooModel):
-        raise ValueError(
-            f"lugre.dask: the energies of a model of the zoo ({model.name}) are not computed in "
-            "chunks (its path runs from rest over the whole history); count the history with "
-            "lugre.cycles, or here without a model"
-        )
     if gate != 0:
         raise ValueError(
             "lugre.dask: gate > 0 is not available in distributed mode (whether a turn is a "
@@ -300,7 +306,8 @@ def count(x: Any, model: Any = None, x0: Optional[float] = None, gate: float = 0
     ``x``: a 1-D ``dask.array`` of real numbers (no empty chunks, known chunk sizes) or a list
     of ``.npy`` files holding 1-D arrays, read as one history in the given order (checked to be
     in natural name order unless ``check_order=False``). ``merge_fan_in``: summaries merged
-    per task (>= 2; any tree gives the same result).
+    per task (>= 2; any tree gives the same result). ``model``: None, a ``lugre.LuGre`` or
+    ``lugre.Dahl`` (from ``x0``), or a ``lugre.ZooModel`` (from rest at the first sample).
     """
     if not isinstance(merge_fan_in, int) or merge_fan_in < 2:
         raise ValueError(f"lugre.dask: merge_fan_in must be an integer >= 2, got {merge_fan_in!r}")
@@ -344,8 +351,10 @@ def count(x: Any, model: Any = None, x0: Optional[float] = None, gate: float = 0
     if energy:
         tic = time.perf_counter()
         spans = plan.energy_spans()
-        y0 = model.sigma0 * (0.0 if x0 is None else x0)
-        guesses = _chunk.chunk_guess_entries(model, y0, list(bounds_v))
+        # The entry states are the core's: floats (y*) or bytes (a zoo model's state), alike
+        # here; the first is exact.
+        y0 = _chunk.chunk_start_entry(model, x0, summaries_v[0].first)
+        guesses = _chunk.chunk_guess_entries(model, y0, list(bounds_v), list(summaries_v))
 
         def energy_task(k: int, y: float) -> Any:
             return dask.delayed(_energy)(
@@ -361,7 +370,7 @@ def count(x: Any, model: Any = None, x0: Optional[float] = None, gate: float = 0
         # state chunk k-1's (exact) pass ended at, else chunk k is counted again from it.
         for k in range(1, n):
             exact = small[k - 1][1]
-            if exact == guesses[k] and np.signbit(exact) == np.signbit(guesses[k]):
+            if _bits(exact) == _bits(guesses[k]):
                 held += 1
                 continue
             (passes[k],) = dask.persist(energy_task(k, exact), optimize_graph=False)
@@ -434,7 +443,7 @@ def cycles_many(paths: Sequence[Any], model: Any = None, x0: Optional[float] = N
     or a data file read by ``lugre.read`` (the ``lugre`` command's reader): the series is its
     column ``column`` (default "u": a header's u, x, position or displacement; or a column's
     own name), other columns ignored, a time column checked. A ``lugre.ZooModel`` is taken
-    here (each file is held whole, as by ``lugre.cycles``), not by ``count``."""
+    here (each file is held whole, as by ``lugre.cycles``), as by ``count``."""
     names = [os.fspath(p) for p in paths]
     for p in names:
         if not os.path.isfile(p):

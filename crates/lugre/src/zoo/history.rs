@@ -15,6 +15,7 @@
 //! their closures (as many as the rainflow stack holds).
 
 use super::{Segmental, ZooModel};
+use crate::cycles::chunk::ArcSpan;
 use crate::cycles::{
     Collect, Cycle, CycleCounter, CycleEnergy, CycleSink, CycleSummary, HistoryEnergy,
 };
@@ -55,7 +56,21 @@ pub(crate) fn count(
     counter.push_all(u, &mut history)?;
     let mut summary = counter.finish(&mut history)?;
     let totals = model.cycle_energies(u, &mut history.cycles);
-    for c in &history.cycles {
+    check_energies(&history.cycles)?;
+    totals.check_finite()?;
+    summary.energy = Some(totals);
+    for r in history.reversals {
+        sink.reversal(r);
+    }
+    for c in history.cycles {
+        sink.cycle(c);
+    }
+    Ok(summary)
+}
+
+/// Refuses energies that overflowed (naming the cycle's closure).
+pub(crate) fn check_energies(cycles: &[Cycle]) -> Result<(), HistoryError> {
+    for c in cycles {
         let Some(e) = c.energy else { continue };
         let a = e.arc;
         let values = [a.work, a.stored_energy_change, a.dissipation, a.closure_gap];
@@ -68,19 +83,38 @@ pub(crate) fn count(
             return Err(HistoryError::EnergyOverflow { index });
         }
     }
-    totals.check_finite()?;
-    summary.energy = Some(totals);
-    for r in history.reversals {
-        sink.reversal(r);
-    }
-    for c in history.cycles {
-        sink.cycle(c);
-    }
-    Ok(summary)
+    Ok(())
 }
 
-/// A start state kept until its cycle closes: the cycle's index, the state, `D(A)`.
-type Open<S> = (usize, S, DoubleDouble);
+/// What a walk opens at one sample and closes at a later one: a full cycle of the slice it
+/// fills, or the part of an arc across chunks ([`ArcSpan`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Mark {
+    Cycle(usize),
+    Span(usize),
+}
+
+/// A state kept until its mark closes: the mark, the state (none for a span from the chunk's
+/// entry), `D` there.
+type Open<S> = (Mark, Option<S>, DoubleDouble);
+
+/// The part of an arc inside one chunk ([`ArcSpan`]): the dissipation along it (double-double),
+/// the state at `A` where it starts there, at `C` where it ends there.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct WalkedSpan<S> {
+    pub id: usize,
+    pub d: DoubleDouble,
+    pub from: Option<S>,
+    pub to: Option<S>,
+}
+
+/// What a walk over a chunk ends with: the state at its last sample, the dissipation along all
+/// its pieces, the parts of the arcs across it.
+pub(crate) struct Walked<S> {
+    pub end: S,
+    pub d: DoubleDouble,
+    pub spans: Vec<WalkedSpan<S>>,
+}
 
 /// Fills `energy` of every full cycle of `cycles` (counted on `u`, the history) along the path
 /// of `model` from `start` (its state at `u[0]`), and returns the totals over the history.
@@ -90,83 +124,138 @@ pub(crate) fn cycle_energies<M: Segmental>(
     u: &[f64],
     cycles: &mut [Cycle],
 ) -> HistoryEnergy {
-    // Full cycles by start sample, and by closure (index, then position along the step).
-    let mut by_start: Vec<usize> = (0..cycles.len())
-        .filter(|&i| cycles[i].closure.is_some())
-        .collect();
-    by_start.sort_by_key(|&i| cycles[i].start);
-    let mut by_closure = by_start.clone();
-    by_closure.sort_by(|&a, &b| {
-        let (ca, cb) = (
-            cycles[a].closure.unwrap_or_else(no_closure),
-            cycles[b].closure.unwrap_or_else(no_closure),
-        );
-        ca.index
-            .cmp(&cb.index)
-            .then(ca.position.total_cmp(&cb.position))
-    });
-    let first = start.clone();
-    let mut state = start;
-    let mut d = DoubleDouble::ZERO;
-    let mut open: Vec<Open<M::State>> = Vec::new();
-    let (mut next_start, mut next_closure) = (0, 0);
-    for k in 0..u.len() {
-        if k > 0 {
-            while let Some(&i) = by_closure.get(next_closure) {
-                if cycles[i].closure.is_none_or(|c| c.index != k as u64) {
-                    break;
-                }
-                next_closure += 1;
-                close(model, &state, &d, u, &mut open, &mut cycles[i], i);
-            }
-            d = d.add_f64(model.advance(&mut state, u[k]));
-        }
-        while let Some(&i) = by_start.get(next_start) {
-            if cycles[i].start != k as u64 {
-                break;
-            }
-            next_start += 1;
-            open.push((i, state.clone(), d));
-        }
-    }
-    let arc = model.arc(&first, &state, d.to_f64());
+    let w = walk(model, start.clone(), u, 0, None, cycles, &[]);
+    totals(model, &start, &w.end, w.d)
+}
+
+/// The totals (H1) over a path from `first` to `end` with dissipation `d` along it.
+pub(crate) fn totals<M: Segmental>(
+    model: &M,
+    first: &M::State,
+    end: &M::State,
+    d: DoubleDouble,
+) -> HistoryEnergy {
+    let arc = model.arc(first, end, d.to_f64());
     HistoryEnergy {
-        y_start: model.force(&first),
-        y_end: model.force(&state),
+        y_start: model.force(first),
+        y_end: model.force(end),
         work: arc.work,
         stored_energy_change: arc.stored_energy_change,
         dissipation: arc.dissipation,
     }
 }
 
-fn no_closure() -> crate::cycles::Closure {
-    crate::cycles::Closure {
-        index: u64::MAX,
-        position: f64::INFINITY,
+/// Walks `model` over the chunk `u` (first sample at `offset`; `prev` the sample before it,
+/// `None` for the history's first chunk) from `entry`, its state at `prev` (or at `u[0]`),
+/// filling `energy` of every full cycle of `cycles` (global indices, inside the chunk) by
+/// (H1) with `D` counted from the entry, and summing the parts of the arcs `spans`. The single
+/// pass is the walk over the whole history from rest.
+pub(crate) fn walk<M: Segmental>(
+    model: &M,
+    entry: M::State,
+    u: &[f64],
+    offset: u64,
+    prev: Option<f64>,
+    cycles: &mut [Cycle],
+    spans: &[ArcSpan],
+) -> Walked<M::State> {
+    // Marks by the local sample where they open, and where they close (on the step into it,
+    // cut at the start's value).
+    let mut opens: Vec<(u64, Mark)> = Vec::new();
+    let mut closes: Vec<(u64, Mark, f64)> = Vec::new();
+    let mut open: Vec<Open<M::State>> = Vec::new();
+    for (i, c) in cycles.iter().enumerate() {
+        if let Some(k) = c.closure {
+            let a = c.start - offset;
+            opens.push((a, Mark::Cycle(i)));
+            closes.push((k.index - offset, Mark::Cycle(i), u[a as usize]));
+        }
+    }
+    for s in spans {
+        match s.from {
+            Some(a) => opens.push((a - offset, Mark::Span(s.id))),
+            None => open.push((Mark::Span(s.id), None, DoubleDouble::ZERO)),
+        }
+        if let Some((c, u_a)) = s.to {
+            closes.push((c - offset, Mark::Span(s.id), u_a));
+        }
+    }
+    opens.sort_by_key(|o| o.0);
+    closes.sort_by_key(|c| c.0);
+    let mut state = entry;
+    let mut d = DoubleDouble::ZERO;
+    let mut parts = Vec::new();
+    let (mut next_open, mut next_close) = (0, 0);
+    for (k, &x) in u.iter().enumerate() {
+        let k = k as u64;
+        if k > 0 || prev.is_some() {
+            while let Some(&(_, mark, u_a)) = closes.get(next_close).filter(|c| c.0 <= k) {
+                next_close += 1;
+                let at = open.iter().position(|o| o.0 == mark);
+                let Some((_, a, d_a)) = at.map(|at| open.swap_remove(at)) else {
+                    continue;
+                };
+                let mut c = state.clone();
+                let d_c = d.add_f64(model.advance(&mut c, u_a));
+                match mark {
+                    Mark::Cycle(i) => close(model, a, c, d_c - d_a, &mut cycles[i]),
+                    Mark::Span(id) => parts.push(WalkedSpan {
+                        id,
+                        d: d_c - d_a,
+                        from: a,
+                        to: Some(c),
+                    }),
+                }
+            }
+            d = d.add_f64(model.advance(&mut state, x));
+        }
+        while let Some(&(_, mark)) = opens.get(next_open).filter(|o| o.0 == k) {
+            next_open += 1;
+            open.push((mark, Some(state.clone()), d));
+        }
+    }
+    // The spans that run to the chunk's end.
+    for (mark, a, d_a) in open {
+        if let Mark::Span(id) = mark {
+            parts.push(WalkedSpan {
+                id,
+                d: d - d_a,
+                from: a,
+                to: None,
+            });
+        }
+    }
+    Walked {
+        end: state,
+        d,
+        spans: parts,
     }
 }
 
-/// The energy (H1) of cycle `i`, closing on the step into sample `index` from `state` (at the
-/// sample before it, where the dissipation so far is `d`).
+/// The energy (H1) of `cycle` from the state `a` at its start to `c` at its closure, with
+/// dissipation `d` between.
 fn close<M: Segmental>(
     model: &M,
-    state: &M::State,
-    d: &DoubleDouble,
-    u: &[f64],
-    open: &mut Vec<Open<M::State>>,
+    a: Option<M::State>,
+    c: M::State,
+    d: DoubleDouble,
     cycle: &mut Cycle,
-    i: usize,
 ) {
-    let Some(at) = open.iter().position(|(j, _, _)| *j == i) else {
-        return;
-    };
-    let (_, a, d_a) = open.swap_remove(at);
-    let mut c = state.clone();
-    let d_c = d.add_f64(model.advance(&mut c, u[cycle.start as usize]));
-    let dissipation = (d_c - d_a).to_f64();
-    cycle.energy = Some(CycleEnergy {
-        arc: model.arc(&a, &c, dissipation),
-        y_start: model.force(&a),
-        y_closure: model.force(&c),
-    });
+    if let Some(a) = a {
+        cycle.energy = Some(arc_energy(model, &a, &c, d.to_f64()));
+    }
+}
+
+/// The energies (H1) of an arc from the state `a` to `c` with dissipation `d` along it.
+pub(crate) fn arc_energy<M: Segmental>(
+    model: &M,
+    a: &M::State,
+    c: &M::State,
+    d: f64,
+) -> CycleEnergy {
+    CycleEnergy {
+        arc: model.arc(a, c, d),
+        y_start: model.force(a),
+        y_closure: model.force(c),
+    }
 }

@@ -58,6 +58,7 @@
 //! this module has its own small one ([`ZooLoop`]), generic over the model's state ([`Segmental`]).
 
 mod bouc_wen;
+mod chunk;
 mod elastoplastic;
 mod element;
 mod engine;
@@ -70,6 +71,7 @@ mod stepper;
 mod table;
 
 pub use bouc_wen::BoucWen;
+pub use chunk::{ZooChunkEnergy, ZooChunkState, ZooSpanPart};
 pub(crate) use elastoplastic::alpha as elastoplastic_alpha;
 pub use elastoplastic::ElastoPlastic;
 pub use element::ZooElement;

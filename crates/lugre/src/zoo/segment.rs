@@ -68,6 +68,13 @@ pub trait Segmental {
     fn assign(dst: &mut Self::State, src: &Self::State) {
         dst.clone_from(src);
     }
+
+    /// The state's numbers, the input first (what a chunked count sends between processes).
+    fn values(state: &Self::State) -> Vec<f64>;
+
+    /// The state of [`Segmental::values`]' numbers; `None` unless they are as many as a state
+    /// of this model holds, and finite.
+    fn state_of_values(&self, values: &[f64]) -> Option<Self::State>;
 }
 
 impl Segmental for PlayBank {
@@ -108,6 +115,18 @@ impl Segmental for PlayBank {
     fn assign(dst: &mut MasingState, src: &MasingState) {
         dst.u = src.u;
         dst.p.copy_from_slice(&src.p);
+    }
+
+    fn values(state: &MasingState) -> Vec<f64> {
+        std::iter::once(state.u)
+            .chain(state.p.iter().copied())
+            .collect()
+    }
+
+    fn state_of_values(&self, values: &[f64]) -> Option<MasingState> {
+        let (&u, p) = values.split_first()?;
+        (p.len() == self.len() && values.iter().all(|x| x.is_finite()))
+            .then(|| MasingState { u, p: p.to_vec() })
     }
 }
 
@@ -176,6 +195,17 @@ impl<T: SingleState> Segmental for T {
 
     fn rest(&self, u: f64) -> Point {
         Point { u, z: 0.0 }
+    }
+
+    fn values(state: &Point) -> Vec<f64> {
+        vec![state.u, state.z]
+    }
+
+    fn state_of_values(&self, values: &[f64]) -> Option<Point> {
+        match *values {
+            [u, z] if u.is_finite() && z.is_finite() => Some(Point { u, z }),
+            _ => None,
+        }
     }
 
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Point {

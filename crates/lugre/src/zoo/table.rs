@@ -396,7 +396,7 @@ pub enum ZooKind {
 /// Runs `$body` with `$m` bound to the concrete model (one dispatch for every method).
 macro_rules! each {
     ($self:expr, $m:ident => $body:expr) => {
-        match &$self.kind {
+        match $self.kind() {
             ZooKind::MaxwellSlip(x) => {
                 let $m = x.bank();
                 $body
@@ -416,6 +416,7 @@ macro_rules! each {
         }
     };
 }
+pub(crate) use each;
 
 impl ZooModel {
     /// The model `name` of [`MODELS`] with the values `given` by parameter name (any

@@ -97,10 +97,26 @@ pub fn state_bounds(
     prev: Option<f64>,
     model: RateIndependent,
 ) -> Result<StateBounds, HistoryError> {
+    let g0 = model.g0();
+    bounds_walk(u, offset, prev, (-g0, g0), |y, from, to| {
+        advance(model, y, from, to)
+    })
+}
+
+/// Runs the chunk `u` (first sample at `offset`, `prev` the sample before it) from the two
+/// extreme states `hi` and `lo` of a model with one state, moved along each piece `from -> to`
+/// by `advance(state, from, to)` (monotone in the state): the last sample's state from each
+/// ([`state_bounds`] for LuGre's `y*`, the zoo's single-state models alike).
+pub(crate) fn bounds_walk(
+    u: &[f64],
+    offset: u64,
+    prev: Option<f64>,
+    (lo, hi): (f64, f64),
+    advance: impl Fn(f64, f64, f64) -> f64,
+) -> Result<StateBounds, HistoryError> {
     super::check_offset(offset, u.len())?;
     super::check_prev(offset, prev)?;
-    let g0 = model.g0();
-    let (mut upper, mut lower) = (g0, -g0);
+    let (mut upper, mut lower) = (hi, lo);
     let mut from = prev;
     for (i, &x) in u.iter().enumerate() {
         if !admissible(x) {
@@ -109,12 +125,8 @@ pub fn state_bounds(
         if let Some(p) = from {
             // Once equal, equal for good: one run.
             let same = lower == upper;
-            upper = advance(model, upper, p, x);
-            lower = if same {
-                upper
-            } else {
-                advance(model, lower, p, x)
-            };
+            upper = advance(upper, p, x);
+            lower = if same { upper } else { advance(lower, p, x) };
         }
         from = Some(x);
     }
@@ -133,6 +145,17 @@ pub fn guess_entries(
 ) -> Result<Vec<f64>, HistoryError> {
     let g0 = model.g0();
     check_state("y_start", y_start, model)?;
+    guess_within((-g0, g0), y_start, bounds)
+}
+
+/// The guesses of [`guess_entries`] for a state in `[lo, hi]` entering the history at `start`
+/// (the bounds must be finite): the certified value where a chunk's bounds agree, else the
+/// affine interpolation between them at the previous guess, clamped to `[lo, hi]`.
+pub(crate) fn guess_within(
+    (lo, hi): (f64, f64),
+    start: f64,
+    bounds: &[StateBounds],
+) -> Result<Vec<f64>, HistoryError> {
     if let Some(index) = bounds
         .iter()
         .position(|b| !(b.upper.is_finite() && b.lower.is_finite()))
@@ -144,13 +167,13 @@ pub fn guess_entries(
             lower: b.lower,
         });
     }
-    let mut y = y_start;
+    let mut y = start;
     let mut out = Vec::with_capacity(bounds.len());
     for b in bounds {
         out.push(y);
         y = b.certified().unwrap_or_else(|| {
-            let t = (y + g0) / (2.0 * g0);
-            (b.lower + t * (b.upper - b.lower)).clamp(-g0, g0)
+            let t = (y - lo) / (hi - lo);
+            (b.lower + t * (b.upper - b.lower)).clamp(lo, hi)
         });
     }
     Ok(out)

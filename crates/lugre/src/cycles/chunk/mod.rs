@@ -63,9 +63,12 @@ pub use energy::{
     arc_energy_of, count_chunk_energy, guess_entries, history_energy, state_bounds, ArcSpan,
     ArcSums, ChunkEnergy, SpanPart, StateBounds,
 };
+pub(crate) use energy::{bounds_walk, guess_within};
 
 use super::engine::{self, admissible, bad_sample, closure_at};
-use super::{Closure, Cycle, CycleColumns, CycleCounter, CycleSink, CycleSummary, Reversal};
+use super::{
+    Closure, Cycle, CycleColumns, CycleCounter, CycleEnergy, CycleSink, CycleSummary, Reversal,
+};
 use crate::error::HistoryError;
 use crate::model::RateIndependent;
 
@@ -206,7 +209,7 @@ impl ChunkSummary {
     }
 
     /// The pseudo-history: first sample, end of the leading plateau, residue, last sample.
-    fn pseudo(&self, out: &mut Vec<Reversal>) {
+    pub(crate) fn pseudo(&self, out: &mut Vec<Reversal>) {
         out.push(Reversal {
             index: self.start,
             u: self.first,
@@ -313,7 +316,7 @@ impl ChunkSummary {
 
 const MAGIC: &[u8] = b"lugre-chunk-1\0";
 
-struct Reader<'a>(&'a [u8]);
+pub(crate) struct Reader<'a>(pub(crate) &'a [u8]);
 
 impl Reader<'_> {
     fn take(&mut self) -> Result<[u8; 8], HistoryError> {
@@ -324,10 +327,10 @@ impl Reader<'_> {
         self.0 = rest;
         Ok(*head)
     }
-    fn u64(&mut self) -> Result<u64, HistoryError> {
+    pub(crate) fn u64(&mut self) -> Result<u64, HistoryError> {
         self.take().map(u64::from_le_bytes)
     }
-    fn f64(&mut self) -> Result<f64, HistoryError> {
+    pub(crate) fn f64(&mut self) -> Result<f64, HistoryError> {
         self.take().map(f64::from_le_bytes)
     }
 }
@@ -734,22 +737,37 @@ impl ChunkPlan {
                 },
             });
         }
-        for (id, arc) in arcs.into_iter().enumerate() {
-            let o = &mut self.open[id];
-            if !o.cycle.is_full() {
-                continue;
-            }
-            let c = self.closures[id].ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
-            let Some(SpanPart {
+        self.attach_with(|id, closure| {
+            let Some(Some(SpanPart {
                 sums,
                 y_from: Some(y_a),
                 y_to: Some(y_c),
                 ..
-            }) = arc
+            })) = arcs.get(id)
             else {
                 return Err(missing());
             };
-            o.cycle.energy = Some(arc_energy_of(model, &sums, y_a, y_c, c.index)?);
+            arc_energy_of(model, sums, *y_a, *y_c, closure)
+        })
+    }
+
+    /// How many open cycles the plan holds (the ids of the arcs run below it).
+    pub fn open_cycles(&self) -> usize {
+        self.open.len()
+    }
+
+    /// Sets the energy of each merge-time full cycle `id` to `energy(id, closure index)`
+    /// (after [`resolve`](Self::resolve)).
+    pub(crate) fn attach_with(
+        &mut self,
+        mut energy: impl FnMut(usize, u64) -> Result<CycleEnergy, HistoryError>,
+    ) -> Result<(), HistoryError> {
+        for (id, o) in self.open.iter_mut().enumerate() {
+            if !o.cycle.is_full() {
+                continue;
+            }
+            let c = self.closures[id].ok_or(HistoryError::ClosureNotFound { end: o.cycle.end })?;
+            o.cycle.energy = Some(energy(id, c.index)?);
         }
         Ok(())
     }
