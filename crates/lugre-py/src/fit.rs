@@ -10,7 +10,7 @@ use std::ffi::CString;
 use lugre::error::NormalForceError;
 use lugre::fit::{
     fit_full, fit_full_smooth, fit_slow_with, Covariance, Family, FitError, FitKind, FitReport,
-    FitSpec, FitSummary, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions,
+    FitSpec, FitSummary, FitWarning, FullOptions, Noise, PositionHandling, SlowOptions, ZooFitSpec,
     CUBIC_READING_TOL,
 };
 use lugre::model::{normal as normal_force, Parameter};
@@ -199,145 +199,240 @@ pub fn fit<'py>(
     presliding: Option<&Bound<'py, PyAny>>,
     elements: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let given = |o: Option<&Bound<'py, PyAny>>| o.filter(|o| !o.is_none()).cloned();
-    if let Some(spec) = zoo::spec_of(given(model).as_ref())? {
-        let kind = zoo::kind_of(&spec, given(kind).as_ref())?;
-        let full = kind == FitKind::Full;
-        // The full fit's keywords, refused by name in the slow fit, and the slow fit's gate in
-        // the full fit (as `lugre fit --model NAME` refuses the flags).
-        let only = |full_only: bool, o: Option<&Bound<'py, PyAny>>| {
-            if full == full_only {
-                (given(o), None)
-            } else {
-                (None, given(o))
-            }
-        };
-        let (t, t_other) = only(true, t);
-        let (x0, x0_other) = only(true, x0);
-        let (starts, starts_other) = only(true, starts);
-        let (gate, gate_other) = only(false, gate);
-        let args = zoo::Args {
-            kind,
-            t,
-            x0,
-            starts,
-            fix: given(fix),
-            free: given(free),
-            start: given(start),
-            elements: given(elements),
-            noise: given(noise),
-            gate,
-            others: vec![
-                ("t", t_other),
-                ("x0", x0_other),
-                ("starts", starts_other),
-                ("gate", gate_other),
-                ("bounds", given(bounds)),
-                ("interpolate", given(interpolate)),
-                ("normal", given(normal)),
-                ("v", given(v)),
-                ("stribeck", given(stribeck)),
-                ("presliding", given(presliding)),
-            ],
-        };
-        return zoo::fit(py, spec, u, f, args);
+    let k = Keywords {
+        t: given(t),
+        model: given(model),
+        kind: given(kind),
+        fix: given(fix),
+        free: given(free),
+        start: given(start),
+        bounds: given(bounds),
+        x0: given(x0),
+        starts: given(starts),
+        interpolate: given(interpolate),
+        normal: given(normal),
+        v: given(v),
+        noise: given(noise),
+        gate: given(gate),
+        stribeck: given(stribeck),
+        presliding: given(presliding),
+        elements: given(elements),
+    };
+    match zoo::spec_of(k.model.as_ref())? {
+        Some(spec) => fit_zoo(py, spec, u, f, k),
+        None => fit_lugre(py, u, f, k),
     }
-    if given(elements).is_some() {
+}
+
+/// The keywords of `lugre.fit` (`None`: not given, or given as None).
+struct Keywords<'py> {
+    t: Option<Bound<'py, PyAny>>,
+    model: Option<Bound<'py, PyAny>>,
+    kind: Option<Bound<'py, PyAny>>,
+    fix: Option<Bound<'py, PyAny>>,
+    free: Option<Bound<'py, PyAny>>,
+    start: Option<Bound<'py, PyAny>>,
+    bounds: Option<Bound<'py, PyAny>>,
+    x0: Option<Bound<'py, PyAny>>,
+    starts: Option<Bound<'py, PyAny>>,
+    interpolate: Option<Bound<'py, PyAny>>,
+    normal: Option<Bound<'py, PyAny>>,
+    v: Option<Bound<'py, PyAny>>,
+    noise: Option<Bound<'py, PyAny>>,
+    gate: Option<Bound<'py, PyAny>>,
+    stribeck: Option<Bound<'py, PyAny>>,
+    presliding: Option<Bound<'py, PyAny>>,
+    elements: Option<Bound<'py, PyAny>>,
+}
+
+/// An argument as given: Python's None reads as not given (the signature's defaults are None).
+fn given<'py>(o: Option<&Bound<'py, PyAny>>) -> Option<Bound<'py, PyAny>> {
+    o.filter(|o| !o.is_none()).cloned()
+}
+
+/// A model of the zoo (`lugre fit --model NAME`): its slow-loop or full fit.
+fn fit_zoo<'py>(
+    py: Python<'py>,
+    spec: ZooFitSpec,
+    u: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    k: Keywords<'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let kind = zoo::kind_of(&spec, k.kind.as_ref())?;
+    let full = kind == FitKind::Full;
+    // The full fit's keywords, refused by name in the slow fit, and the slow fit's gate in
+    // the full fit (as `lugre fit --model NAME` refuses the flags).
+    let only = |full_only: bool, o: Option<Bound<'py, PyAny>>| {
+        if full == full_only {
+            (o, None)
+        } else {
+            (None, o)
+        }
+    };
+    let (t, t_other) = only(true, k.t);
+    let (x0, x0_other) = only(true, k.x0);
+    let (starts, starts_other) = only(true, k.starts);
+    let (gate, gate_other) = only(false, k.gate);
+    let args = zoo::Args {
+        kind,
+        t,
+        x0,
+        starts,
+        fix: k.fix,
+        free: k.free,
+        start: k.start,
+        elements: k.elements,
+        noise: k.noise,
+        gate,
+        others: vec![
+            ("t", t_other),
+            ("x0", x0_other),
+            ("starts", starts_other),
+            ("gate", gate_other),
+            ("bounds", k.bounds),
+            ("interpolate", k.interpolate),
+            ("normal", k.normal),
+            ("v", k.v),
+            ("stribeck", k.stribeck),
+            ("presliding", k.presliding),
+        ],
+    };
+    zoo::fit(py, spec, u, f, args)
+}
+
+/// The LuGre or Dahl model: the request from the keywords, then the lab's fit or the slow or
+/// full one.
+fn fit_lugre<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    k: Keywords<'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    if k.elements.is_some() {
         return Err(PyValueError::new_err(
             "elements applies to an element model of the zoo (model='maxwell-slip' or 'prandtl-ishlinskii', or a lugre.ZooModel of them)",
         ));
     }
-    let kind = match given(kind) {
-        Some(k) => kind_arg(&k)?,
+    let kind = match &k.kind {
+        Some(kind) => kind_arg(kind)?,
         None => FitKind::Slow,
     };
     let spec = build_spec(
-        given(model),
-        given(fix),
-        given(free),
-        given(start),
-        given(bounds),
+        k.model.clone(),
+        k.fix.clone(),
+        k.free.clone(),
+        k.start.clone(),
+        k.bounds.clone(),
     )?;
     if lab::is_lab(kind) {
-        let cubic = crate::simulate::cubic_arg(given(interpolate).as_ref())?;
-        let args = lab::Args {
-            u: given(Some(u)),
-            f: given(Some(f)),
-            t: given(t),
-            v: given(v),
-            stribeck: given(stribeck),
-            presliding: given(presliding),
-            others: [
-                ("x0", given(x0)),
-                ("starts", given(starts)),
-                ("interpolate='cubic'", given(interpolate).filter(|_| cubic)),
-                ("normal", given(normal)),
-                ("noise", given(noise)),
-                ("gate", given(gate)),
-            ],
-        };
-        return lab::fit(py, kind, &spec, args);
+        fit_lab(py, kind, &spec, u, f, k)
+    } else {
+        fit_slow_or_full(py, kind, &spec, u, f, k)
     }
-    lab::refuse_records(kind, [("stribeck", stribeck), ("presliding", presliding)])?;
-    let t = match given(t) {
-        Some(t) => Some(floats(&t, "t")?.one_dimensional("t", &t)?),
-        None => None,
-    };
-    let (u, motion) = motion_of(py, given(Some(u)), given(v), t.as_deref())?;
-    let (f, normal) = friction_of(f, given(normal))?;
+}
 
-    let Run {
-        slow: slow_options,
-        full: options,
-        cubic,
-        noise,
-    } = run_options(
-        py,
+/// The lab's experiments (`lugre fit --fit stribeck|presliding|staged`), the keywords of the
+/// other fits refused by name.
+fn fit_lab<'py>(
+    py: Python<'py>,
+    kind: FitKind,
+    spec: &FitSpec,
+    u: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    k: Keywords<'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    // interpolate='linear' is the default reading, not a refused option.
+    let cubic = crate::simulate::cubic_arg(k.interpolate.as_ref())?;
+    let args = lab::Args {
+        u: given(Some(u)),
+        f: given(Some(f)),
+        t: k.t,
+        v: k.v,
+        stribeck: k.stribeck,
+        presliding: k.presliding,
+        others: [
+            ("x0", k.x0),
+            ("starts", k.starts),
+            ("interpolate='cubic'", k.interpolate.filter(|_| cubic)),
+            ("normal", k.normal),
+            ("noise", k.noise),
+            ("gate", k.gate),
+        ],
+    };
+    lab::fit(py, kind, spec, args)
+}
+
+/// The slow fit (the closed-form loop, eqs. 8-10) or the full fit (the simulation of eq. 1)
+/// of `lugre fit --fit slow|full`: the samples and options checked, the fit run without the
+/// interpreter lock, the report as a dict.
+fn fit_slow_or_full<'py>(
+    py: Python<'py>,
+    kind: FitKind,
+    spec: &FitSpec,
+    u: &Bound<'py, PyAny>,
+    f: &Bound<'py, PyAny>,
+    k: Keywords<'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    lab::refuse_records(
         kind,
         [
-            given(x0),
-            given(starts),
-            given(interpolate),
-            given(noise),
-            given(gate),
+            ("stribeck", k.stribeck.as_ref()),
+            ("presliding", k.presliding.as_ref()),
         ],
-        t.as_deref(),
-        u.len(),
     )?;
+    let t = match &k.t {
+        Some(t) => Some(floats(t, "t")?.one_dimensional("t", t)?),
+        None => None,
+    };
+    let (u, motion) = motion_of(py, given(Some(u)), k.v, t.as_deref())?;
+    let (f, normal) = friction_of(f, k.normal)?;
+    let options = [k.x0, k.starts, k.interpolate, k.noise, k.gate];
+    let run = run_options(py, kind, options, t.as_deref(), u.len())?;
     drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
 
     let report = py
-        // `options` is set for the full fit only, which has times.
-        .detach(|| match (&options, &t) {
-            (Some((x0, starts)), Some(t)) => {
-                let options = FullOptions::default()
-                    .with_x0(*x0)
-                    .with_starts(*starts)
-                    .with_noise(noise);
-                if let Some(m) = &motion {
-                    fit_full_smooth(&spec, m, &f, options)
-                } else if cubic {
-                    SmoothSamples::pchip(t.to_vec(), u.to_vec(), CUBIC_READING_TOL)
-                        .map_err(FitError::from)
-                        .and_then(|m| fit_full_smooth(&spec, &m, &f, options))
-                } else {
-                    fit_full(&spec, t, &u, &f, options)
-                }
-            }
-            _ => fit_slow_with(&spec, &u, &f, slow_options),
-        })
+        .detach(|| run_fit(spec, run, t.as_deref(), &u, motion.as_ref(), &f))
         .map_err(|e| match e {
             FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
             e => explain(py, e),
         })?;
 
     warn_unconverged(py, &report)?;
-    let d = report_dict(py, &report, &spec, &f, normal.is_some())?;
+    let d = report_dict(py, &report, spec, &f, normal.is_some())?;
     if motion.is_some() {
         // The displacement the velocity record integrates to, at the samples.
         d.set_item("u", vec_out(py, u.to_vec()))?;
     }
     Ok(d)
+}
+
+/// The core's slow or full fit as `run` says: the full fit on the smooth motion of a velocity
+/// record, on the C1 cubic through the samples (`interpolate='cubic'`), or on the samples.
+fn run_fit(
+    spec: &FitSpec,
+    run: Run,
+    t: Option<&[f64]>,
+    u: &[f64],
+    motion: Option<&SmoothSamples>,
+    f: &[f64],
+) -> Result<FitReport, FitError> {
+    // `run.full` is set for the full fit only, which has times.
+    let (Some((x0, starts)), Some(t)) = (run.full, t) else {
+        return fit_slow_with(spec, u, f, run.slow);
+    };
+    let options = FullOptions::default()
+        .with_x0(x0)
+        .with_starts(starts)
+        .with_noise(run.noise);
+    if let Some(m) = motion {
+        fit_full_smooth(spec, m, f, options)
+    } else if run.cubic {
+        SmoothSamples::pchip(t.to_vec(), u.to_vec(), CUBIC_READING_TOL)
+            .map_err(FitError::from)
+            .and_then(|m| fit_full_smooth(spec, &m, f, options))
+    } else {
+        fit_full(spec, t, u, f, options)
+    }
 }
 
 /// How the slow or full fit runs, from its keywords.

@@ -241,6 +241,10 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
     /// [`Self::solve`]; with `to_peak`, it stops at the first local maximum of the friction
     /// force (the sign change of `dF/dt` from + to -, located on the collocation polynomial)
     /// and also returns the state there (`t`, `x`, `F`).
+    ///
+    /// The drive's kinks split `[start.t, t_end]` into segments, each integrated with a fresh
+    /// start ("Non-smooth points" in `docs/mathematics.md`): the frozen sign of `v` from the
+    /// segment's start, then Radau IIA steps ([`Run::step`]) to the segment's end.
     fn integrate(
         &self,
         start: State,
@@ -250,132 +254,29 @@ impl<G: VelocityFn, F: VelocityFn> System<G, F> {
         to_peak: bool,
     ) -> Result<(Motion, Option<Breakaway>), DynamicsError> {
         check_times(start.t, t_end, times)?;
-        let m = self.model();
-        let w0 = (m.sigma0() / self.mass()).sqrt();
-        let length = m.g0() / m.sigma0();
-        let atol = tol.atol.unwrap_or(tol.rtol * length);
-        let atol = [atol, atol * w0, atol, atol];
-        // The embedded error estimate is held to the tolerances as given. radau5 holds it to
-        // 0.1 rtol^(2/3), aiming at a global error of about rtol at moderate tolerances; against
-        // the references that let the error reach 1000x rtol at rtol 1e-11 (BENCHMARKS.md). As
-        // given, the estimate (of order 4 for a method of order 5) is conservative and the
-        // global error stays within 3x rtol on every experiment.
-        let rtol = tol.rtol;
-        let mut run = Run {
-            system: self,
-            rtol,
-            atol,
-            w0,
-            out: Motion::default(),
-            times,
-            next_time: 0,
-            rising: false,
-            control: Control::new(rtol),
-        };
+        let mut run = Run::new(self, tol, times);
         let kinks: Vec<f64> = self
             .kinks(t_end)
             .into_iter()
             .filter(|&k| k > start.t)
             .collect();
-        let mut y = [start.x, start.v, start.z, start.q];
-        let mut t = start.t;
-        let mut h = (0.01 / w0).min(t_end - t);
-        run.report_until(t, &y, 0.0, None);
-        run.out.energy.stored_start = self.stored(t, &y);
+        let mut p = Position {
+            t: start.t,
+            y: [start.x, start.v, start.z, start.q],
+            s: 0.0,
+            h: (0.01 / run.w0).min(t_end - start.t),
+        };
+        run.report_until(p.t, &p.y, 0.0, None);
+        run.out.energy.stored_start = self.stored(p.t, &p.y);
         for bound in kinks.iter().copied().chain(std::iter::once(t_end)) {
-            let mut s = self.start_sign(t, &y);
-            run.restart(t, &y, s);
-            while t < bound {
-                if run.out.stats.steps + run.out.stats.rejected > MAX_STEPS {
-                    return Err(DynamicsError::Solver {
-                        t,
-                        reason: format!("more than {MAX_STEPS} steps"),
-                    });
-                }
-                let last = t + h >= bound;
-                let step = if last { bound - t } else { h };
-                match run.attempt(t, &y, step, s) {
-                    Err(h_new) => {
-                        run.out.stats.rejected += 1;
-                        h = h_new;
-                        if h.is_nan() || h <= f64::EPSILON * t.abs().max(1.0) {
-                            return Err(DynamicsError::Solver {
-                                t,
-                                reason: "the step fell below the resolution of t".into(),
-                            });
-                        }
-                    }
-                    Ok((first, h_new)) => {
-                        let crossing = run.crossing(&first, s);
-                        if crossing.is_some_and(|tc| tc - t <= MIN_PROGRESS * step) {
-                            // v leaves a sign change (or a kink) in the direction of its
-                            // acceleration: a sign change at the very start of a step is the
-                            // collocation polynomial not resolving the start of a step this
-                            // long (far longer than the mass's period): shorter.
-                            run.out.stats.rejected += 1;
-                            h = run.retry(0.1 * step);
-                            continue;
-                        }
-                        let piece = match crossing {
-                            None => first,
-                            // v changed sign inside the step. Past the crossing the frozen
-                            // sign is not the motion, and the step's error estimate covered
-                            // that part too: the step is redone to the crossing under its own
-                            // error control (rejected, the run goes on with shorter steps and
-                            // finds the crossing again).
-                            Some(tc) => match run.attempt(t, &y, tc - t, s) {
-                                Ok((to_crossing, _)) => to_crossing,
-                                Err(h_retry) => {
-                                    run.out.stats.rejected += 1;
-                                    h = h_retry;
-                                    continue;
-                                }
-                            },
-                        };
-                        run.out.stats.steps += 1;
-                        let end = match crossing {
-                            Some(tc) => tc,
-                            None if last => bound,
-                            None => t + step,
-                        };
-                        run.watch(&piece, end);
-                        if to_peak {
-                            if let Some(tp) = run.friction_peak(&piece, s, end) {
-                                return run.peak_at(&piece, tp, s);
-                            }
-                        }
-                        run.account(&piece, s);
-                        let y_end = piece.step.y;
-                        run.report_until(end, &y_end, s, Some(&piece));
-                        check_finite(end, &y_end)?;
-                        if crossing.is_some() {
-                            // At the crossing: v = 0, an event, and the sign to go on with.
-                            let (yc, s_next) = run.reversal(end, y_end);
-                            (t, y, s) = (end, yc, s_next);
-                            run.restart(t, &y, s);
-                            h = h_new;
-                        } else {
-                            (t, y) = (end, y_end);
-                            run.accepted(piece, s);
-                            // A step cut short to land on the bound leaves the size as it was.
-                            h = if last { h.max(h_new) } else { h_new };
-                        }
-                    }
+            p.s = self.start_sign(p.t, &p.y);
+            run.restart(p.t, &p.y, p.s);
+            while p.t < bound {
+                if let Some((piece, tp)) = run.step(&mut p, bound, to_peak)? {
+                    return run.peak_at(&piece, tp, p.s);
                 }
             }
-            if bound >= t_end {
-                run.out.energy.stored_end = self.stored(t, &y);
-                // Times within rounding past the end (`check_output_times`): the end's state.
-                run.report_until(f64::INFINITY, &y, s, None);
-            }
-            if bound < t_end {
-                run.out.events.push(Event {
-                    t: bound,
-                    kind: EventKind::Kink,
-                    x: y[0],
-                });
-                run.out.stats.restarts += 1;
-            }
+            run.segment_end(&p, bound, t_end);
         }
         Ok((run.out, None))
     }
@@ -484,7 +385,178 @@ struct Run<'a, G, F> {
     control: Control,
 }
 
+/// Where the integration stands: the time, the state `(x, v, z, q)`, the frozen sign `s` of
+/// `v` (0: not frozen) and the size of the next step.
+struct Position {
+    t: f64,
+    y: [f64; N],
+    s: f64,
+    h: f64,
+}
+
+impl<'a, G: VelocityFn, F: VelocityFn> Run<'a, G, F> {
+    /// A run of `system` reporting at `times`, with the error weights `atol + rtol |y|` of
+    /// `tol` on the system's scales (module docs): `atol` on `x`, `z`, `q`, `atol w0` on `v`.
+    fn new(system: &'a System<G, F>, tol: Tolerances, times: &'a [f64]) -> Self {
+        let m = system.model();
+        let w0 = (m.sigma0() / system.mass()).sqrt();
+        let length = m.g0() / m.sigma0();
+        let atol = tol.atol.unwrap_or(tol.rtol * length);
+        // The embedded error estimate is held to the tolerances as given. radau5 holds it to
+        // 0.1 rtol^(2/3), aiming at a global error of about rtol at moderate tolerances; against
+        // the references that let the error reach 1000x rtol at rtol 1e-11 (BENCHMARKS.md). As
+        // given, the estimate (of order 4 for a method of order 5) is conservative and the
+        // global error stays within 3x rtol on every experiment.
+        let rtol = tol.rtol;
+        Self {
+            system,
+            rtol,
+            atol: [atol, atol * w0, atol, atol],
+            w0,
+            out: Motion::default(),
+            times,
+            next_time: 0,
+            rising: false,
+            control: Control::new(rtol),
+        }
+    }
+}
+
 impl<G: VelocityFn, F: VelocityFn> Run<'_, G, F> {
+    /// One step from `p` towards `bound` (landing on it exactly): attempted under the error
+    /// control ([`Self::attempt`]: the embedded estimate, eq. (8.19)-(8.20) of Hairer & Wanner
+    /// IV.8, and the step-size rule of "The integrator" in `docs/mathematics.md`), cut at a sign
+    /// change of `v` ([`Self::locate`]), its events and outputs recorded ([`Self::output`]), and
+    /// `p` moved to its end (a reversal there restarts the integrator); a rejected step only
+    /// changes `p.h`. With `to_peak`, `Some` with the accepted step and the friction peak in
+    /// it, where the run stops: the step is boxed, as a result the size of a step, copied out
+    /// of every step, cost 0.8 % of the experiments' instructions.
+    fn step(
+        &mut self,
+        p: &mut Position,
+        bound: f64,
+        to_peak: bool,
+    ) -> Result<Option<(Box<Piece>, f64)>, DynamicsError> {
+        if self.out.stats.steps + self.out.stats.rejected > MAX_STEPS {
+            return Err(DynamicsError::Solver {
+                t: p.t,
+                reason: format!("more than {MAX_STEPS} steps"),
+            });
+        }
+        let last = p.t + p.h >= bound;
+        let step = if last { bound - p.t } else { p.h };
+        let (first, h_new) = match self.attempt(p.t, &p.y, step, p.s) {
+            Ok(accepted) => accepted,
+            Err(h_new) => return self.rejected(p, h_new).map(|()| None),
+        };
+        let Some((piece, crossing)) = self.locate(p, first, step) else {
+            return Ok(None);
+        };
+        self.out.stats.steps += 1;
+        let end = match crossing {
+            Some(tc) => tc,
+            None if last => bound,
+            None => p.t + step,
+        };
+        self.watch(&piece, end);
+        if to_peak {
+            if let Some(tp) = self.friction_peak(&piece, p.s, end) {
+                return Ok(Some((Box::new(piece), tp)));
+            }
+        }
+        self.output(&piece, end, p.s)?;
+        let y_end = piece.step.y;
+        if crossing.is_some() {
+            // At the crossing: v = 0, an event, and the sign to go on with.
+            let (yc, s_next) = self.reversal(end, y_end);
+            (p.t, p.y, p.s) = (end, yc, s_next);
+            self.restart(p.t, &p.y, p.s);
+            p.h = h_new;
+        } else {
+            (p.t, p.y) = (end, y_end);
+            self.accepted(piece, p.s);
+            // A step cut short to land on the bound leaves the size as it was.
+            p.h = if last { p.h.max(h_new) } else { h_new };
+        }
+        Ok(None)
+    }
+
+    /// A step rejected by the error control or Newton: the run goes on with `h_new`, unless
+    /// that fell below the resolution of `t`.
+    fn rejected(&mut self, p: &mut Position, h_new: f64) -> Result<(), DynamicsError> {
+        self.out.stats.rejected += 1;
+        p.h = h_new;
+        if h_new.is_nan() || h_new <= f64::EPSILON * p.t.abs().max(1.0) {
+            return Err(DynamicsError::Solver {
+                t: p.t,
+                reason: "the step fell below the resolution of t".into(),
+            });
+        }
+        Ok(())
+    }
+
+    /// Event location ("Non-smooth points" in `docs/mathematics.md`): the step `first` of size
+    /// `step` from `p`, as it is or, where `v` crosses 0 against the frozen sign inside it, redone
+    /// to the crossing (returned with it). `None`: the step is rejected and `p.h` is the size
+    /// to retry with.
+    #[inline]
+    fn locate(
+        &mut self,
+        p: &mut Position,
+        first: Piece,
+        step: f64,
+    ) -> Option<(Piece, Option<f64>)> {
+        let Some(tc) = self.crossing(&first, p.s) else {
+            return Some((first, None));
+        };
+        if tc - p.t <= MIN_PROGRESS * step {
+            // v leaves a sign change (or a kink) in the direction of its acceleration: a sign
+            // change at the very start of a step is the collocation polynomial not resolving
+            // the start of a step this long (far longer than the mass's period): shorter.
+            self.out.stats.rejected += 1;
+            p.h = self.retry(0.1 * step);
+            return None;
+        }
+        // Past the crossing the frozen sign is not the motion, and the step's error estimate
+        // covered that part too: the step is redone to the crossing under its own error
+        // control (rejected, the run goes on with shorter steps and finds the crossing again).
+        match self.attempt(p.t, &p.y, tc - p.t, p.s) {
+            Ok((to_crossing, _)) => Some((to_crossing, Some(tc))),
+            Err(h_retry) => {
+                self.out.stats.rejected += 1;
+                p.h = h_retry;
+                None
+            }
+        }
+    }
+
+    /// The outputs of the accepted `piece` up to `end`: the energy over it (its own
+    /// quadrature, "Energy balance" in `docs/mathematics.md`), the requested times in it (steps
+    /// of their own), and its end state checked finite.
+    fn output(&mut self, piece: &Piece, end: f64, s: f64) -> Result<(), DynamicsError> {
+        self.account(piece, s);
+        let y_end = piece.step.y;
+        self.report_until(end, &y_end, s, Some(piece));
+        check_finite(end, &y_end)
+    }
+
+    /// At the end `bound` of a segment: the run's end (the stored energy, the times within
+    /// rounding past it), or a kink (an event and a restart).
+    fn segment_end(&mut self, p: &Position, bound: f64, t_end: f64) {
+        if bound >= t_end {
+            self.out.energy.stored_end = self.system.stored(p.t, &p.y);
+            // Times within rounding past the end (`check_output_times`): the end's state.
+            self.report_until(f64::INFINITY, &p.y, p.s, None);
+        }
+        if bound < t_end {
+            self.out.events.push(Event {
+                t: bound,
+                kind: EventKind::Kink,
+                x: p.y[0],
+            });
+            self.out.stats.restarts += 1;
+        }
+    }
     /// A fresh start at `(t, y)` with the sign `s` (the run's start, a kink, a reversal):
     /// nothing of the previous steps carries over but the step size.
     fn restart(&mut self, t: f64, y: &[f64; N], s: f64) {

@@ -642,17 +642,65 @@ pub fn fit_full(
     f: &[f64],
     options: FullOptions<'_>,
 ) -> Result<FitReport, FitError> {
-    let FullOptions {
-        x0,
-        starts,
-        noise,
-        mut progress,
-    } = options;
-    let mut progress = |p: &FitProgress| {
-        if let Some(f) = progress.as_mut() {
-            f(p)
-        }
+    let (x0, starts, noise) = (options.x0, options.starts, options.noise);
+    check_full_input(t, u, f, x0, starts)?;
+    // The noise, and the displacement the fit runs on (smoothed where it is noisy).
+    let (smoothed, levels) = match noise {
+        Noise::Auto => noise::prepare_full(t, u, f),
+        Noise::Off => (None, noise::levels(u, f, PositionHandling::AsGiven)),
     };
+    let (smoothed, smoother) = smoothed.unzip();
+    let u = smoothed.as_deref().unwrap_or(u);
+    let measured = Measured::new(t, u, f);
+    let mut resolved = spec.resolve(FitKind::Full)?;
+    measured.check(u, resolved.free.len())?;
+    let start = measured.data_start(&resolved, x0);
+    let ex = full_evaluator(&resolved, t, u, x0, smoothed.is_some(), &measured);
+    resolved.fill_starts(&start);
+    let (mut ex, outcome) = best_start(ex, &resolved, &measured.f, starts, options.progress)?;
+    let fitted = if smoothed.is_some() {
+        // (X5) is the fit's own output, not the simulator's at the knots.
+        own_output(&mut ex.inner, &outcome.values, u.len(), resolved.free.len())
+    } else {
+        simulated_output(&resolved, &outcome.values, t, u, x0)?
+    };
+    // A smoothed record: the estimates move with the smoothing's error too (S3).
+    let input_effects = match &smoother {
+        Some(smoother) => {
+            let model_at = output_at(resolved.family, &outcome.values, t, x0);
+            noise::input_effects(u, levels.position, smoother, model_at)
+                .iter()
+                .map(|dy| measured.pick(dy))
+                .collect()
+        }
+        None => Vec::new(),
+    };
+    let fitted_m = measured.pick(&fitted);
+    let mut r = report(
+        FitKind::Full,
+        &resolved,
+        outcome,
+        fitted_m,
+        &measured.f,
+        starts,
+        &input_effects,
+    )?;
+    // The fitted curve at every row, measured or not.
+    r.fitted = fitted;
+    r.noise = Some(levels);
+    r.check_fit(f);
+    Ok(r)
+}
+
+/// The full fit's columns (equal lengths, finite; a force may be NaN, a row without a
+/// measured force), strictly increasing times, a finite `x0` and `1..=MAX_STARTS` starts.
+fn check_full_input(
+    t: &[f64],
+    u: &[f64],
+    f: &[f64],
+    x0: f64,
+    starts: usize,
+) -> Result<(), FitError> {
     check_columns(&[("u", u), ("t", t)])?;
     // NaN marks a row without a measured force: the input there still drives the model.
     check_columns(&[
@@ -674,68 +722,98 @@ pub fn fit_full(
             most: FullOptions::MAX_STARTS,
         });
     }
-    // The noise, and the displacement the fit runs on (smoothed where it is noisy).
-    let (smoothed, levels) = match noise {
-        Noise::Auto => noise::prepare_full(t, u, f),
-        Noise::Off => (None, noise::levels(u, f, PositionHandling::AsGiven)),
-    };
-    let (smoothed, smoother) = match smoothed {
-        Some((x, s)) => (Some(x), Some(s)),
-        None => (None, None),
-    };
-    let u = smoothed.as_deref().unwrap_or(u);
-    let f_all = f;
-    let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
-    let pick = |xs: &[f64]| -> Vec<f64> { rows.iter().map(|&i| xs[i]).collect() };
-    let (t_m, u_m, f_m) = (pick(t), pick(u), pick(f));
-    let mut resolved = spec.resolve(FitKind::Full)?;
-    check_count(rows.len(), resolved.free.len())?;
-    if !full::has_reversal(u) {
-        return Err(FitError::NoReversal { fit: "full" });
+    Ok(())
+}
+
+/// The rows of a full fit's record with a measured force (NaN marks a row without one), and
+/// the samples there: the residual is taken at these rows, every row drives the model.
+struct Measured {
+    rows: Vec<usize>,
+    t: Vec<f64>,
+    u: Vec<f64>,
+    f: Vec<f64>,
+}
+
+impl Measured {
+    fn new(t: &[f64], u: &[f64], f: &[f64]) -> Self {
+        let rows: Vec<usize> = (0..f.len()).filter(|&i| !f[i].is_nan()).collect();
+        let (t, u, f) = (pick(&rows, t), pick(&rows, u), pick(&rows, f));
+        Self { rows, t, u, f }
     }
-    if f_m.iter().all(|&v| v == 0.0) {
-        return Err(FitError::ZeroForce);
+
+    /// The values of a column at the measured rows.
+    fn pick(&self, xs: &[f64]) -> Vec<f64> {
+        pick(&self.rows, xs)
     }
-    // The starting values from the measured rows alone (their speeds between measured rows).
-    let measured = full::Exact::new(resolved.family, resolved.free.clone(), &t_m, &u_m, x0);
-    let start = full::data_start(resolved.family, &measured, &u_m, &f_m, &resolved.values);
+
+    /// Enough measured rows for the `free` parameters, a reversal in the input `u` (every
+    /// row), and a force that is not zero throughout.
+    fn check(&self, u: &[f64], free: usize) -> Result<(), FitError> {
+        check_count(self.rows.len(), free)?;
+        if !full::has_reversal(u) {
+            return Err(FitError::NoReversal { fit: "full" });
+        }
+        if self.f.iter().all(|&v| v == 0.0) {
+            return Err(FitError::ZeroForce);
+        }
+        Ok(())
+    }
+
+    /// The starting values from the measured rows alone (their speeds between measured rows).
+    fn data_start(&self, resolved: &Resolved, x0: f64) -> Vec<f64> {
+        let family = resolved.family;
+        let ex = full::Exact::new(family, resolved.free.clone(), &self.t, &self.u, x0);
+        full::data_start(family, &ex, &self.u, &self.f, &resolved.values)
+    }
+}
+
+fn pick(rows: &[usize], xs: &[f64]) -> Vec<f64> {
+    rows.iter().map(|&i| xs[i]).collect()
+}
+
+/// The exact simulation over every row of `(t, u)` from `x0`, its output at the measured rows.
+fn full_evaluator(
+    resolved: &Resolved,
+    t: &[f64],
+    u: &[f64],
+    x0: f64,
+    smoothed: bool,
+    measured: &Measured,
+) -> full::Rows<full::Exact> {
     let mut exact = full::Exact::new(resolved.family, resolved.free.clone(), t, u, x0);
-    if smoothed.is_some() {
+    if smoothed {
         // A smooth motion: each sample output with its own velocity (X5).
         exact = exact.with_central_output(t, u);
     }
-    let mut ex = full::Rows::new(exact, rows.clone(), f.len());
-    let f = &f_m[..];
-    resolved.fill_starts(&start);
-    let base = resolved.values.clone();
+    full::Rows::new(exact, measured.rows.clone(), t.len())
+}
+
+/// The full fit from `starts` start points (the data's, then the stiffness and `vs` scaled by
+/// [`START_FACTORS`], cycled): the evaluator back and the best end point, with the
+/// evaluations of every start.
+fn best_start(
+    mut ex: full::Rows<full::Exact>,
+    resolved: &Resolved,
+    f: &[f64],
+    starts: usize,
+    mut progress: Option<&mut dyn FnMut(&FitProgress)>,
+) -> Result<(full::Rows<full::Exact>, Outcome), FitError> {
     let mut best: Option<Outcome> = None;
     let mut evaluations = 0;
-    for (n, &(k0, kv)) in START_FACTORS.iter().cycle().take(starts).enumerate() {
-        let mut values = base.clone();
-        let scale = |i: usize, k: f64, values: &mut Vec<f64>| {
-            if let Some(c) = resolved.free.iter().position(|&j| j == i) {
-                if !resolved.given[c] {
-                    values[i] = resolved.bounds[c].pull_inside(values[i] * k);
-                }
-            }
-        };
-        // Cycling past the table (more than 7 starts) spreads further.
-        let spread = 1.0 + (n / START_FACTORS.len()) as f64;
-        scale(0, k0.powf(spread), &mut values);
-        if resolved.family == Family::LuGre {
-            scale(5, kv.powf(spread), &mut values);
-        }
-        full::solve_linear(&ex, &resolved, &mut values, f);
+    for (n, &factors) in START_FACTORS.iter().cycle().take(starts).enumerate() {
         let mut run = resolved.clone();
-        run.values = values;
+        run.values = start_point(resolved, n, factors);
+        full::solve_linear(&ex, resolved, &mut run.values, f);
         let free_start = run.free_values();
         let mut report = |evaluations: usize, rms: f64| {
-            progress(&FitProgress {
-                start: n + 1,
-                starts,
-                evaluations,
-                rms,
-            })
+            if let Some(f) = progress.as_mut() {
+                f(&FitProgress {
+                    start: n + 1,
+                    starts,
+                    evaluations,
+                    rms,
+                })
+            }
         };
         let (back, outcome) = minimize(ex, f, run.space(), &free_start, FULL_CONFIG, &mut report);
         ex = back;
@@ -748,51 +826,68 @@ pub fn fit_full(
         return Err(FitError::NoStart { starts });
     };
     outcome.evaluations = evaluations;
-    let fitted = if smoothed.is_some() {
-        // (X5) is the fit's own output, not the simulator's at the knots.
-        let mut y = vec![0.0; u.len()];
-        let mut jac = nalgebra::DMatrix::zeros(u.len(), resolved.free.len());
-        ex.inner.evaluate(&outcome.values, &mut y, &mut jac);
-        y
-    } else {
-        let model = crate::LuGre::from_params(resolved.lugre(&outcome.values))?;
-        let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
-        let mut out = Trajectory::with_capacity(u.len());
-        Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
-        out.y
-    };
-    // A smoothed record: the estimates move with the smoothing's error too (S3).
-    let input_effects = match &smoother {
-        Some(smoother) => {
-            // The output alone (no derivatives) for another reading of the input.
-            let model_at = |uk: &[f64]| -> Option<Vec<f64>> {
-                let mut e = full::Exact::new(resolved.family, Vec::new(), t, uk, x0)
-                    .with_central_output(t, uk);
-                let mut y = vec![0.0; uk.len()];
-                let mut none = nalgebra::DMatrix::zeros(uk.len(), 0);
-                e.evaluate(&outcome.values, &mut y, &mut none).then_some(y)
-            };
-            noise::input_effects(u, levels.position, smoother, model_at)
-                .into_iter()
-                .map(|dy| rows.iter().map(|&i| dy[i]).collect())
-                .collect()
+    Ok((ex, outcome))
+}
+
+/// The `n`-th start point: the data's start with sigma0 scaled by `k0` and (LuGre) vs by `kv`,
+/// where their starts were not given, inside their bounds.
+fn start_point(resolved: &Resolved, n: usize, (k0, kv): (f64, f64)) -> Vec<f64> {
+    let mut values = resolved.values.clone();
+    let mut scale = |i: usize, k: f64| {
+        if let Some(c) = resolved.free.iter().position(|&j| j == i) {
+            if !resolved.given[c] {
+                values[i] = resolved.bounds[c].pull_inside(values[i] * k);
+            }
         }
-        None => Vec::new(),
     };
-    let mut r = report(
-        FitKind::Full,
-        &resolved,
-        outcome,
-        pick(&fitted),
-        f,
-        starts,
-        &input_effects,
-    )?;
-    // The fitted curve at every row, measured or not.
-    r.fitted = fitted;
-    r.noise = Some(levels);
-    r.check_fit(f_all);
-    Ok(r)
+    // Cycling past the table (more than 7 starts) spreads further.
+    let spread = 1.0 + (n / START_FACTORS.len()) as f64;
+    scale(0, k0.powf(spread));
+    if resolved.family == Family::LuGre {
+        scale(5, kv.powf(spread));
+    }
+    values
+}
+
+/// The fit's own output at the `n` rows at `values`, from the evaluator the fit ran on (of
+/// `free` free parameters).
+fn own_output(ex: &mut full::Exact, values: &[f64], n: usize, free: usize) -> Vec<f64> {
+    let mut y = vec![0.0; n];
+    let mut jac = nalgebra::DMatrix::zeros(n, free);
+    ex.evaluate(values, &mut y, &mut jac);
+    y
+}
+
+/// The fitted model's output at every row: the simulator's at the knots of the piecewise-linear
+/// input through `(t, u)` from `x0`.
+fn simulated_output(
+    resolved: &Resolved,
+    values: &[f64],
+    t: &[f64],
+    u: &[f64],
+    x0: f64,
+) -> Result<Vec<f64>, FitError> {
+    let model = crate::LuGre::from_params(resolved.lugre(values))?;
+    let input = PiecewiseLinear::new(t.to_vec(), u.to_vec())?;
+    let mut out = Trajectory::with_capacity(u.len());
+    Simulator::new(&model, Gamma::ONE, x0)?.at_knots(&input, 1, &mut out)?;
+    Ok(out.y)
+}
+
+/// The fitted model's output (alone, no derivatives) for another reading `uk` of the input at
+/// the times `t` (each sample with its own velocity, X5); `None` where the simulation fails.
+fn output_at<'a>(
+    family: Family,
+    values: &'a [f64],
+    t: &'a [f64],
+    x0: f64,
+) -> impl Fn(&[f64]) -> Option<Vec<f64>> + 'a {
+    move |uk: &[f64]| {
+        let mut e = full::Exact::new(family, Vec::new(), t, uk, x0).with_central_output(t, uk);
+        let mut y = vec![0.0; uk.len()];
+        let mut none = nalgebra::DMatrix::zeros(uk.len(), 0);
+        e.evaluate(values, &mut y, &mut none).then_some(y)
+    }
 }
 
 fn not_converged(resolved: &Resolved, outcome: &Outcome, m: usize) -> FitError {
