@@ -258,6 +258,9 @@ pub enum FitWarning {
     },
     /// The residuals are structured (lag-1 autocorrelation above 0.5).
     Structured { lag1: f64, slow: bool },
+    /// The iteration ended at a sum of squares `rss`, and a point beside its end has the
+    /// lower `lower`: not a minimum (a sum of squares that steps, docs/mathematics.md (ZF6)).
+    NotMinimum { rss: f64, lower: f64 },
 }
 
 impl std::fmt::Display for FitWarning {
@@ -300,6 +303,13 @@ impl std::fmt::Display for FitWarning {
                 "the intervals cannot be trusted: the residuals are structured (lag-1 \
                  autocorrelation {lag1:.2}), not noise: the model misses part of the data{}",
                 slow_hint(slow)
+            ),
+            FitWarning::NotMinimum { rss, lower } => write!(
+                f,
+                "the estimates and intervals cannot be trusted: the fit ended at a sum of \
+                 squares {rss:.6e}, and a point beside its end has {lower:.6e}: not a minimum \
+                 (the model's output jumps where a switch between sticking and slipping \
+                 crosses a sample, and the iteration stopped at such a step); run more starts"
             ),
         }
     }
