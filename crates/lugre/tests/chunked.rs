@@ -466,18 +466,21 @@ fn a_long_walk_in_uneven_chunks() {
     check(&u, &cuts, &[1, 3, 5, 0, 2, 4]);
 }
 
-/// The same check with energies, bit for bit: the energy columns, the summary's totals, and
-/// (through `y_end`) the state at every chunk start, verified in order. The arcs' double-double
-/// sums are added in another order than the single pass adds them, so a last-place difference
-/// is possible in principle (`cycles::chunk::energy`); none was found in 3 x 10^5 random
-/// histories (`PROPTEST_CASES=150000 cargo test --release -p lugre --test chunked energies`).
+/// The same check with energies: the rows and (through `y_end`) the state at every chunk
+/// start, verified in order, bit for bit; the energy columns and the summary's totals bit for
+/// bit or within a few units in the last place ([`same_to_last_place`]). The arcs' double-double
+/// sums are added in another order than the single pass adds them (`cycles::chunk::energy`):
+/// with LuGre no difference was found in 3 x 10^5 random histories (`PROPTEST_CASES=150000
+/// cargo test --release -p lugre --test chunked energies`); with the elasto-plastic model one
+/// history gave a work 1 unit in the last place apart (-7.766438558970967e-16 against
+/// -7.766438558970968e-16).
 fn check_energy(u: &[f64], cuts: &[usize], order: &[usize], model: &Energy) -> Entries {
     let (want, want_summary) = single(u, Some(model));
     let mut entries = Entries::default();
     let (got, got_summary) = chunked(u, cuts, order, Some(model), &mut entries).unwrap();
     let ctx = format!("u = {u:?}, cuts = {cuts:?}, order = {order:?}, model = {model:?}");
     assert_eq!(rows(&got), rows(&want), "{ctx}");
-    let bits = |c: &CycleColumns| -> Vec<[u64; 4]> {
+    let energies = |c: &CycleColumns| -> Vec<[f64; 4]> {
         (0..c.len())
             .map(|k| {
                 [
@@ -486,13 +489,43 @@ fn check_energy(u: &[f64], cuts: &[usize], order: &[usize], model: &Energy) -> E
                     c.dissipation[k],
                     c.closure_gap[k],
                 ]
-                .map(f64::to_bits)
             })
             .collect()
     };
-    assert_eq!(bits(&got), bits(&want), "{ctx}");
-    assert_eq!(got_summary, want_summary, "{ctx}");
+    for (k, (g, w)) in energies(&got).iter().zip(&energies(&want)).enumerate() {
+        assert!(same_to_last_place(g, w), "cycle {k}: {g:?} != {w:?}; {ctx}");
+    }
+    let history = |s: &CycleSummary| {
+        s.energy
+            .map(|e| [e.work, e.stored_energy_change, e.dissipation])
+    };
+    let (mut g, mut w) = (got_summary, want_summary);
+    match (history(&g), history(&w)) {
+        (Some(a), Some(b)) => assert!(same_to_last_place(&a, &b), "{a:?} != {b:?}; {ctx}"),
+        (a, b) => assert_eq!(a, b, "{ctx}"),
+    }
+    // The states themselves are exact (the rest of the summary, bit for bit).
+    if let (Some(a), Some(b)) = (g.energy.as_mut(), w.energy.as_mut()) {
+        [a.work, a.stored_energy_change, a.dissipation] = [0.0; 3];
+        [b.work, b.stored_energy_change, b.dissipation] = [0.0; 3];
+    }
+    assert_eq!(g, w, "{ctx}");
     entries
+}
+
+/// The energies of one cycle (or the history's totals) as the single pass's: bit for bit
+/// (NaN where it is NaN), or within 2 units in the last place of the largest of them. The
+/// chunked arcs' double-double sums are added in another order (cut at the chunk entries), so
+/// a last-place difference is possible in principle (`cycles::chunk::energy`); a dissipation
+/// of a tiny cycle is a difference of larger sums, and carries their rounding.
+fn same_to_last_place<const N: usize>(got: &[f64; N], want: &[f64; N]) -> bool {
+    let scale = want
+        .iter()
+        .filter(|x| x.is_finite())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    got.iter()
+        .zip(want)
+        .all(|(&a, &b)| a.to_bits() == b.to_bits() || (a - b).abs() <= 4.0 * f64::EPSILON * scale)
 }
 
 /// A model with `a = sigma0 / g0` from 1e-3 to 1e3 (quiet chunks that do not certify their

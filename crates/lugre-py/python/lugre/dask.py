@@ -5,7 +5,8 @@ files read as one history, in order) chunk by chunk and returns a ``dask.datafra
 columns of ``lugre.cycles(...)["cycles"]``, **equal to the single pass row for row**: the same
 ranges, means, counts, start/end indices, closure indices and positions, in the same order
 (the frame's index is the row number of the single pass), and with a model the same energies
-and totals, bit for bit.
+and totals, bit for bit but for a rare difference in the last place (the arcs' double-double
+sums are added in another order: README, "The contract").
 
 How (``lugre::cycles::chunk``): each chunk is counted on its own (its own full cycles and an
 irreducible residue, at the single pass's speed); the residues are merged pairwise as a tree
