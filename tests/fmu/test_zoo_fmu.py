@@ -10,20 +10,16 @@ Run by scripts/test.sh after `bash scripts/build-fmu.sh` (needs fmpy and the lug
 """
 
 import math
-import os
-import pathlib
 
 import numpy as np
 import pytest
 
 fmpy = pytest.importorskip("fmpy")
 import lugre  # noqa: E402
-from fmpy import extract, read_model_description  # noqa: E402
+from fmpy import read_model_description  # noqa: E402
 from fmpy.fmi1 import FMICallException  # noqa: E402
-from fmpy.fmi3 import FMU3Slave  # noqa: E402
+import cosim  # noqa: E402
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-FMUS = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target")) / "fmu"
 MODELS = sorted(lugre.ZOO_MODELS)
 # A periodic input with nested reversals (m), started at rest at its mid-range: for the Masing
 # models the state at the global maximum is then the periodic one (docs/mathematics.md, Z5).
@@ -32,32 +28,20 @@ MID = 0.5 * (max(TURNING) + min(TURNING))
 
 
 def fmu_path(name):
-    path = FMUS / f"lugre-{name}.fmu"
-    if not path.exists():
-        pytest.fail(f"{path} is missing: run bash scripts/build-fmu.sh")
-    return path
+    return cosim.fmu_path(f"lugre-{name}.fmu")
 
 
 @pytest.fixture(scope="module")
 def unzipped(tmp_path_factory):
-    return {name: extract(str(fmu_path(name)), unzipdir=str(tmp_path_factory.mktemp(name))) for name in MODELS}
+    return cosim.unzip_all(tmp_path_factory, {name: f"lugre-{name}.fmu" for name in MODELS})
 
 
-class Host:
-    """One co-simulation instance, its variables by name, the messages it logged."""
+class Host(cosim.Host):
+    """A zoo model's FMU driven along an input `u` from the time 0."""
 
     def __init__(self, directory):
-        self.md = read_model_description(directory)
-        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.logs = []
-        self.fmu = FMU3Slave(guid=self.md.guid, unzipDirectory=directory,
-                             modelIdentifier=self.md.coSimulation.modelIdentifier, instanceName="zoo")
-        self.fmu.instantiate(logMessage=lambda env, status, category, message: self.logs.append(message.decode()))
+        super().__init__(directory, "zoo")
         self.t = 0.0
-
-    def set(self, name, value):
-        values = [float(x) for x in np.atleast_1d(value)]
-        self.fmu.setFloat64([self.vr[name]], values)
 
     def get(self, name, n=1):
         return self.fmu.getFloat64([self.vr[name]], nValues=n)
@@ -82,10 +66,6 @@ class Host:
             self.t += h
         self.set("u", to)
         self.set("der(u)", 0.0)
-
-    def close(self):
-        self.fmu.terminate()
-        self.fmu.freeInstance()
 
 
 RNG = np.random.default_rng(28)

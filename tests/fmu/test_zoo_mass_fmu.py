@@ -13,22 +13,17 @@ scripts/test.sh after `bash scripts/build-fmu.sh` (needs fmpy).
 
 import json
 import os
-import pathlib
 import subprocess
 
 import numpy as np
 import pytest
 
 fmpy = pytest.importorskip("fmpy")
-from fmpy import extract, read_model_description  # noqa: E402
 from fmpy.fmi1 import FMICallException  # noqa: E402
-from fmpy.fmi3 import FMU3Slave  # noqa: E402
+import cosim  # noqa: E402
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-TARGET = pathlib.Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
-FMUS = TARGET / "fmu"
-EXE = os.environ.get("LUGRE_EXE") or str(TARGET / "release" / "lugre")
-MODELS = sorted(p.stem for p in (ROOT / "crates" / "lugre-fmu" / "fmu" / "mass").glob("*.xml"))
+EXE = os.environ.get("LUGRE_EXE") or str(cosim.TARGET / "release" / "lugre")
+MODELS = sorted(p.stem for p in (cosim.ROOT / "crates" / "lugre-fmu" / "fmu" / "mass").glob("*.xml"))
 # The force (t [s], P [N]): up to 3 N, held, down to -3 N, held to T_END: every default
 # model breaks away, slides, reverses and slides back.
 FORCE = [(0.0, 0.0), (2.0, 3.0), (4.0, 3.0), (6.0, -3.0)]
@@ -42,30 +37,19 @@ def test_every_finite_rate_model_has_its_fmu():
 
 
 def fmu_path(name):
-    path = FMUS / f"lugre-mass-{name}.fmu"
-    if not path.exists():
-        pytest.fail(f"{path} is missing: run bash scripts/build-fmu.sh")
-    return path
+    return cosim.fmu_path(f"lugre-mass-{name}.fmu")
 
 
 @pytest.fixture(scope="module")
 def unzipped(tmp_path_factory):
-    return {name: extract(str(fmu_path(name)), unzipdir=str(tmp_path_factory.mktemp(name))) for name in MODELS}
+    return cosim.unzip_all(tmp_path_factory, {name: f"lugre-mass-{name}.fmu" for name in MODELS})
 
 
-class Host:
-    """One co-simulation instance, its variables by name, the messages it logged."""
+class Host(cosim.Host):
+    """A mass FMU driven by a force from the time 0."""
 
     def __init__(self, directory):
-        self.md = read_model_description(directory)
-        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.logs = []
-        self.fmu = FMU3Slave(guid=self.md.guid, unzipDirectory=directory,
-                             modelIdentifier=self.md.coSimulation.modelIdentifier, instanceName="mass")
-        self.fmu.instantiate(logMessage=lambda env, status, category, message: self.logs.append(message.decode()))
-
-    def set(self, name, value):
-        self.fmu.setFloat64([self.vr[name]], [float(x) for x in np.atleast_1d(value)])
+        super().__init__(directory, "mass")
 
     def get(self, *names):
         return self.fmu.getFloat64([self.vr[n] for n in names])
