@@ -4,6 +4,8 @@
 //! the largest force): noise-free records give back every parameter, noisy ones hold the truth
 //! within their intervals, and a model without a finite-rate form is refused.
 
+mod common;
+
 use lugre::fit::{fit_zoo_full, FitError, FitWarning, FullOptions, Why, ZooFitSpec};
 
 fn record(name: &str) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -61,22 +63,8 @@ fn noise_free_records_give_back_every_parameter() {
         let (t, u, f) = record(model);
         let spec = ZooFitSpec::new(model).unwrap();
         let r = fit_zoo_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
-        assert!(r.converged, "{model}: {}", r.termination);
-        assert_eq!(r.estimates.len(), truth(model).len(), "{model}: {r:?}");
-        for (name, value) in truth(model) {
-            let e = r
-                .estimate(name)
-                .unwrap_or_else(|| panic!("{model}: {name}"));
-            let rel = (e.value - value).abs() / value;
-            // The generator's integration agrees to 1e-13: 1e-8 leaves the fit's tolerance.
-            assert!(
-                rel < 1e-8,
-                "{model} {name}: {} vs {value} ({rel:e})",
-                e.value
-            );
-            assert!(!e.at_bound, "{model} {name}");
-        }
-        assert!(r.rms < 1e-9, "{model}: rms {}", r.rms);
+        // The generator's integration agrees to 1e-13.
+        common::assert_gives_back(model, &r, &truth(model));
         assert_eq!(r.kind, lugre::fit::FitKind::Full);
     }
 }
@@ -91,16 +79,7 @@ fn noisy_records_hold_the_truth() {
         let r = fit_zoo_full(&spec, &t, &u, &f, FullOptions::default()).unwrap();
         assert!(r.converged, "{model}: {}", r.termination);
         assert!((r.rms / 0.01 - 1.0).abs() < 0.15, "{model}: rms {}", r.rms);
-        for (name, value) in truth(model) {
-            let e = r.estimate(name).unwrap();
-            let z = (e.value - value) / e.stderr;
-            assert!(
-                z.abs() < 4.0,
-                "{model} {name}: {} -+ {} ({z})",
-                e.value,
-                e.stderr
-            );
-        }
+        common::assert_within_four_errors(model, &r, &truth(model));
     }
 }
 

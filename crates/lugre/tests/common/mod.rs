@@ -295,3 +295,42 @@ impl Gauss {
         r * (std::f64::consts::TAU * self.0.unit()).cos()
     }
 }
+
+/// A zoo fit of a noise-free record of a reference generator
+/// (`tests/reference/zoo_*fit_reference.py`) gives back every parameter of `truth` to 1e-8
+/// relative (the generators integrate to 1e-12 or better; 1e-8 leaves the fit's tolerance),
+/// none at a bound, and a residual RMS below 1e-9.
+#[track_caller]
+pub fn assert_gives_back(model: &str, r: &lugre::fit::ZooFitReport, truth: &[(&str, f64)]) {
+    assert!(r.converged, "{model}: {}", r.termination);
+    assert_eq!(r.estimates.len(), truth.len(), "{model}: {r:?}");
+    for &(name, value) in truth {
+        let e = r
+            .estimate(name)
+            .unwrap_or_else(|| panic!("{model}: {name}"));
+        let rel = (e.value - value).abs() / value;
+        assert!(
+            rel < 1e-8,
+            "{model} {name}: {} vs {value} ({rel:e})",
+            e.value
+        );
+        assert!(!e.at_bound, "{model} {name}");
+    }
+    assert!(r.rms < 1e-9, "{model}: rms {}", r.rms);
+}
+
+/// Each parameter of `truth` within 4 of its standard errors of the estimate of a zoo fit of a
+/// noisy record (a miss has probability 6e-5 each).
+#[track_caller]
+pub fn assert_within_four_errors(model: &str, r: &lugre::fit::ZooFitReport, truth: &[(&str, f64)]) {
+    for &(name, value) in truth {
+        let e = r.estimate(name).unwrap();
+        let z = (e.value - value) / e.stderr;
+        assert!(
+            z.abs() < 4.0,
+            "{model} {name}: {} -+ {} ({z})",
+            e.value,
+            e.stderr
+        );
+    }
+}
