@@ -142,7 +142,9 @@ pub trait SingleState {
     /// along it (`>= 0`), both exact (closed form, or a root or quadrature to 1e-13 relative).
     fn segment(&self, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64);
 
-    /// `h_s(z) = dz/du` moving up (`up`) or down: the derivative (S1) of the period map.
+    /// `h_s(z) = dz/du` moving up (`up`) or down: the derivative (S1) of the period map. It
+    /// does not increase in the direction of motion (`h_+` non-increasing in `z`, `h_-`
+    /// non-decreasing): the state is drawn toward its bound.
     fn slope(&self, z: f64, up: bool) -> f64;
 
     /// The range `[lo, hi]` the state stays in once inside it.
@@ -229,6 +231,8 @@ impl<T: SingleState> Segmental for T {
 
 /// Iterations of the periodic-state solver; each halves the bracket at least once in two.
 const MAX_ITERATIONS: usize = 200;
+/// A derivative of the period map below this is -1 when 1 is taken from it: `2^-60`.
+const NEGLIGIBLE: f64 = 1.0 / (1u64 << 60) as f64;
 
 /// `T(z) - z`, `T'(z)` (S1) for the period of `u` started at `u[r]`, and the first rotated
 /// index from which the walk from `z` stays within `tolerance` of the walk from any state within
@@ -248,9 +252,10 @@ fn period_map<T: SingleState>(
     for j in 1..=n {
         let to = u[(r + j) % n];
         let (after_z, d) = model.segment(at, state, to);
-        // Once the derivative is 0 (a saturated state, h = 0, or underflow) it stays 0: the
-        // slopes are skipped.
-        if derivative != 0.0 {
+        // `h_s` does not increase along a segment (the state moves toward its bound), so the
+        // derivative never grows: once below `NEGLIGIBLE` it stays below, `T' - 1` is -1 to
+        // the last bit whatever its value, and the slopes are skipped.
+        if derivative >= NEGLIGIBLE {
             let up = to > at;
             let before = model.slope(state, up);
             let after = model.slope(after_z, up);
