@@ -598,7 +598,9 @@ impl lugre::zoo::SingleState for HandDahl {
     fn stored_energy(&self, _u: f64, w: f64) -> f64 {
         self.fc * w * w / (2.0 * self.rho)
     }
-    fn segment(&self, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
+    type Start = ();
+    fn start(&self, _w_a: f64, _up: bool) {}
+    fn segment_from(&self, _start: &(), u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
         let s = if u_b >= u_a { 1.0 } else { -1.0 };
         let x = self.rho * (u_b - u_a).abs();
         // w_b = s - (s - w_a) e^(-x); integral of w du = |du| - s (s - w_a)(1 - e^(-x)) / rho.

@@ -310,19 +310,31 @@ impl SingleState for BoucWen {
         0.5 * (self.kx * u * u + self.kw * w * w / self.rho)
     }
 
-    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B13)
-    /// otherwise. `w_a` outside `[-1, 1]` is taken at the nearest bound.
+    type Start = SegmentStart;
+
+    /// `v_a = s w_a` and where it lies on the segment's relation (B6) or (B8). `w_a` outside
+    /// `[-1, 1]` is taken at the nearest bound.
     #[inline]
-    fn segment(&self, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
+    fn start(&self, w_a: f64, up: bool) -> SegmentStart {
+        let v = (if up { w_a } else { -w_a }).clamp(-1.0, 1.0);
+        match &self.shape {
+            Shape::Linear { c } => linear_start(*c, v),
+            Shape::General(g) => g.start(v),
+        }
+    }
+
+    /// The state at `u_b` and the dissipation (B5), by (B6-B7) for `n = 1` and (B8-B13)
+    /// otherwise.
+    #[inline]
+    fn segment_from(&self, start: &SegmentStart, u_a: f64, w_a: f64, u_b: f64) -> (f64, f64) {
         if u_b == u_a || u_b.is_nan() || u_a.is_nan() {
             return (w_a, 0.0);
         }
         let s = if u_b > u_a { 1.0 } else { -1.0 };
         let tau = self.rho * (u_b - u_a).abs();
-        let v_a = (s * w_a).clamp(-1.0, 1.0);
         let (v_b, d) = match &self.shape {
-            Shape::Linear { c } => linear(*c, v_a, tau),
-            Shape::General(g) => g.segment(v_a, tau),
+            Shape::Linear { c } => linear(*c, start, tau),
+            Shape::General(g) => g.segment(start, tau),
         };
         (s * v_b, (self.kw / self.rho * d).max(0.0))
     }
@@ -366,19 +378,48 @@ fn dahl_loss(c: f64, t: f64, l: f64) -> f64 {
     c * t * t * t * g
 }
 
-/// The segment map for `n = 1` (B6-B7): `v_b` and `D rho / kw` from `v_a` after `tau`. One
-/// `ln_1p` and one `expm1` on the negative part, one `expm1` on the positive part: on the
+/// Where a segment of direction `s` starts on its exact relation, what every segment from
+/// there in that direction shares: `v = s w_a` and, for `v < 0`, `(T_-(t_a), E_-(t_a))` of
+/// (B8) (for `n = 1`: `tau_0`, `K(t_a)` and `ln(1 + c t_a)` of (B6)), for `0 < v < 1` and
+/// `n != 1`, `(T(v), E(v))`; zeros where unused.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SegmentStart {
+    v: f64,
+    time: f64,
+    loss: f64,
+    log: f64,
+}
+
+/// [`SegmentStart`] for `n = 1` (B6): one `ln_1p` on the negative part.
+#[inline]
+fn linear_start(c: f64, v: f64) -> SegmentStart {
+    if v >= 0.0 {
+        return SegmentStart {
+            v,
+            ..SegmentStart::default()
+        };
+    }
+    let t = -v;
+    let (x, log) = (c * t, (c * t).ln_1p());
+    SegmentStart {
+        v,
+        time: if x == 0.0 { t } else { t * (log / x) },
+        loss: dahl_loss(c, t, log),
+        log,
+    }
+}
+
+/// The segment map for `n = 1` (B6-B7): `v_b` and `D rho / kw` from `start` after `tau`. One
+/// `expm1` on the negative part, one on the positive part: on the
 /// negative part `ln(1 + c t_b) = ln(1 + c t_a) - c tau` and `e^(-c tau) = 1 + expm1(-c tau)`
 /// (absolute errors of a few rounding units of `t_a`, the bound (B11) of `w`); on the positive
 /// part `1 - e^(-2 tau) = m (2 - m)`, `m = 1 - e^(-tau)`.
 #[inline]
-fn linear(c: f64, v_a: f64, tau: f64) -> (f64, f64) {
-    let (mut v, mut tau, mut d) = (v_a, tau, 0.0);
+fn linear(c: f64, start: &SegmentStart, tau: f64) -> (f64, f64) {
+    let (mut v, mut tau, mut d) = (start.v, tau, 0.0);
     if v < 0.0 {
         let t = -v;
-        let (x, l) = (c * t, (c * t).ln_1p());
-        let reach = if x == 0.0 { t } else { t * (l / x) };
-        let loss_a = dahl_loss(c, t, l);
+        let (l, reach, loss_a) = (start.log, start.time, start.loss);
         if tau < reach {
             let (ct, m) = (c * tau, (-c * tau).exp_m1());
             // (1 - e^(-c tau)) / c, tau at c = 0.
@@ -716,15 +757,33 @@ impl General {
         self.pos(v, e).0
     }
 
-    /// `v_b` and `D rho / kw` from `v_a` after `tau` (B8-B13).
-    fn segment(&self, v_a: f64, tau: f64) -> (f64, f64) {
+    /// [`SegmentStart`] at `v` (B8): one forward table pair, or a series.
+    #[inline]
+    fn start(&self, v: f64) -> SegmentStart {
+        let (time, loss) = if v < 0.0 {
+            self.neg(-v)
+        } else if v > 0.0 && v < 1.0 {
+            self.forward(v)
+        } else {
+            (0.0, 0.0)
+        };
+        SegmentStart {
+            v,
+            time,
+            loss,
+            log: 0.0,
+        }
+    }
+
+    /// `v_b` and `D rho / kw` from `start` after `tau` (B8-B13).
+    fn segment(&self, start: &SegmentStart, tau: f64) -> (f64, f64) {
+        let (v_a, time, loss) = (start.v, start.time, start.loss);
         if v_a >= 0.0 {
-            return self.positive(v_a, tau);
+            return self.positive_from(v_a, (time, loss), tau);
         }
         let t_a = -v_a;
-        let (time, loss) = self.neg(t_a);
         if tau >= time {
-            let (v, d) = self.positive(0.0, tau - time);
+            let (v, d) = self.positive_from(0.0, (0.0, 0.0), tau - time);
             return (v, loss + d);
         }
         let (t, loss_b) = self.neg_inverse(t_a, time - tau);
@@ -769,16 +828,18 @@ impl General {
     }
 
     /// The positive part (B12): `v_b` and `D rho / kw` from `v_a >= 0` after `tau`.
-    #[inline]
+    #[cfg(test)]
     fn positive(&self, v_a: f64, tau: f64) -> (f64, f64) {
+        let start = self.start(v_a);
+        self.positive_from(v_a, (start.time, start.loss), tau)
+    }
+
+    /// The positive part (B12) from `v_a >= 0` at `(T(v_a), E(v_a))` after `tau`.
+    #[inline]
+    fn positive_from(&self, v_a: f64, (time, loss): (f64, f64), tau: f64) -> (f64, f64) {
         if v_a >= 1.0 {
             return (1.0, tau);
         }
-        let (time, loss) = if v_a > 0.0 {
-            self.forward(v_a)
-        } else {
-            (0.0, 0.0)
-        };
         let (v_b, loss_b) = self.inverse(time + tau);
         (v_b.max(v_a).min(1.0), loss_b - loss)
     }
@@ -838,8 +899,8 @@ mod tests {
             let g = General::new(1.0, c).unwrap();
             for v_a in [-1.0, -0.7, -0.2, -1e-9, 0.0, 0.3, 0.9, 1.0 - 1e-12, 1.0] {
                 for tau in [1e-6, 0.01, 0.3, 1.0, 2.5, 7.0, 40.0] {
-                    let (v1, d1) = linear(c, v_a, tau);
-                    let (v2, d2) = g.segment(v_a, tau);
+                    let (v1, d1) = linear(c, &linear_start(c, v_a), tau);
+                    let (v2, d2) = g.segment(&g.start(v_a), tau);
                     assert!(
                         (v1 - v2).abs() < 2e-14,
                         "{sigma} {v_a} {tau}: v {v1} vs {v2}"
@@ -913,7 +974,7 @@ mod tests {
         for n in [1.0 + 1e-9, 1.5, 2.0, 3.7, 25.0, MAX_EXPONENT] {
             for c in [0.0, 1.0, 1e3, 1e300] {
                 let g = General::new(n, c).unwrap_or_else(|| panic!("n {n} c {c}"));
-                let (v, d) = g.segment(-1.0, 3.0);
+                let (v, d) = g.segment(&g.start(-1.0), 3.0);
                 assert!(
                     v.is_finite() && d.is_finite() && v > 0.0,
                     "{n} {c}: {v} {d}"

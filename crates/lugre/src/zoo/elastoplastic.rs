@@ -346,6 +346,11 @@ impl ElastoPlastic {
 }
 
 impl SingleState for ElastoPlastic {
+    type Start = ();
+
+    #[inline]
+    fn start(&self, _z_a: f64, _up: bool) {}
+
     #[inline]
     fn force(&self, _u: f64, z: f64) -> f64 {
         self.sigma0 * z
@@ -356,8 +361,9 @@ impl SingleState for ElastoPlastic {
         0.5 * self.sigma0 * z * z
     }
 
+    /// Its legs share nothing worth keeping: the map is a few operations and one table.
     #[inline]
-    fn segment(&self, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64) {
+    fn segment_from(&self, _start: &(), u_a: f64, z_a: f64, u_b: f64) -> (f64, f64) {
         let du = u_b - u_a;
         let s = if du >= 0.0 { 1.0 } else { -1.0 };
         let w = s * z_a;

@@ -4,7 +4,8 @@
 //! ([`Segmental::periodic_start`]). Each stack entry keeps its state and the dissipation from
 //! its point to the next entry up; a loop's arc `A -> B -> C` ends on the segment into `P`
 //! where the input is back at `u_A`, reached from the running state by one partial segment
-//! map. Any model with an exact segment map ([`Segmental`]) runs on it: Masing models, whose
+//! map, which starts where the whole segment does ([`Segmental::Start`], from the periodic
+//! solver's walk). Any model with an exact segment map ([`Segmental`]) runs on it: Masing models, whose
 //! loops close, and single-state models, whose minor loops drift as LuGre's do.
 
 use super::Segmental;
@@ -96,6 +97,12 @@ impl ZooLoop {
         for j in 1..=n {
             let k = (r + j) % n;
             let u_p = self.u[k];
+            // The segment into P starts at `run`: its shared start serves every loop closing
+            // on it and the segment itself (the walk's, where `run` is the walk's state).
+            let segment = match trail.get(j - 1) {
+                Some(step) if j > first => step.start,
+                _ => bank.start(&run, u_p),
+            };
             // The pair on the bottom entry (the global maximum) is the major loop, closed at the end.
             while stack.len() >= 3 {
                 let m = stack.len();
@@ -106,7 +113,7 @@ impl ZooLoop {
                 }
                 // The arc ends where the input is back at u_A, on the segment into P.
                 M::assign(&mut scratch, &run);
-                let d = a.d + b.d + bank.advance(&mut scratch, M::input(&a.state));
+                let d = a.d + b.d + bank.advance_from(&segment, &mut scratch, M::input(&a.state));
                 // Every loop closed since A was pushed starts after A and lies in this arc.
                 let row = found.len();
                 while let Some(&(_, inside)) = roots.last().filter(|&&(start, _)| start > a.j) {
@@ -121,12 +128,12 @@ impl ZooLoop {
                     below.d += merged;
                 }
             }
-            let d = match trail.get(j.wrapping_sub(1)) {
-                Some((state, d)) if j >= first => {
-                    M::assign(&mut run, state);
-                    *d
+            let d = match trail.get(j - 1) {
+                Some(step) if j >= first => {
+                    M::assign(&mut run, &step.state);
+                    step.d
                 }
-                _ => bank.advance(&mut run, u_p),
+                _ => bank.advance_from(&segment, &mut run, u_p),
             };
             d_period += d;
             if let Some(top) = stack.last_mut() {

@@ -79,7 +79,7 @@ pub use engine::{ZooLoop, MAX_STATES};
 pub use history::{check_held, MAX_HISTORY_SAMPLES};
 pub use maxwell::MaxwellSlip;
 pub use prandtl::PrandtlIshlinskii;
-pub use segment::{Point, Segmental, SingleState};
+pub use segment::{Point, Segmental, SingleState, Step};
 pub use stepper::ZooStepper;
 pub use table::{
     dynamics_model_names, model_names, Domain, Shape, ZooKind, ZooModel, ZooModelSpec,

@@ -25,6 +25,11 @@ pub trait Segmental {
     /// The state: the input and the model's internal variables.
     type State: Clone + std::fmt::Debug;
 
+    /// What every map of a segment from one state in one direction shares, whichever point
+    /// of the segment it ends at (Bouc-Wen: where the state lies on the segment's exact
+    /// relation (B8)); `()` when a map has nothing to share.
+    type Start: Copy + Default + std::fmt::Debug;
+
     /// How many numbers one state holds (for the memory check of a loop's stack).
     fn state_len(&self) -> usize;
 
@@ -37,6 +42,16 @@ pub trait Segmental {
     /// Moves `state` along the monotone segment to `to`; returns the dissipation over it.
     fn advance(&self, state: &mut Self::State, to: f64) -> f64;
 
+    /// The shared start of the segments from `state` in the direction of `to`.
+    fn start(&self, _state: &Self::State, _to: f64) -> Self::Start {
+        Self::Start::default()
+    }
+
+    /// [`Segmental::advance`] given `start`, [`Segmental::start`] of `state` toward `to`.
+    fn advance_from(&self, _start: &Self::Start, state: &mut Self::State, to: f64) -> f64 {
+        self.advance(state, to)
+    }
+
     /// Work, stored-energy change, dissipation `d` and force difference over an arc.
     fn arc(&self, from: &Self::State, to: &Self::State, d: f64) -> ArcEnergy;
 
@@ -44,8 +59,9 @@ pub trait Segmental {
     /// points, the period running `u[r], u[r+1], ...` and wrapping), whose minimum is `min`.
     fn periodic_start(&self, u: &[f64], r: usize, min: f64) -> Self::State;
 
-    /// [`Segmental::periodic_start`], and in `trail` the states and segment dissipations the
-    /// solver met on its last walk over the period (`trail[j - 1]` at rotated index `j`); the
+    /// [`Segmental::periodic_start`], and in `trail` the states, segment dissipations and
+    /// segment starts the solver met on its last walk over the period (`trail[j - 1]` at
+    /// rotated index `j`, after the segment from `j - 1`); the
     /// returned index is the first `j` from which they are the periodic ones to rounding (the
     /// walk's dependence on where it started contracted below the solver's tolerance), so the
     /// loop engine reuses them instead of mapping those segments again. By default no walk:
@@ -55,7 +71,7 @@ pub trait Segmental {
         u: &[f64],
         r: usize,
         min: f64,
-        trail: &mut Vec<(Self::State, f64)>,
+        trail: &mut Vec<Step<Self::State, Self::Start>>,
     ) -> (Self::State, usize) {
         trail.clear();
         (self.periodic_start(u, r, min), u.len() + 1)
@@ -77,8 +93,21 @@ pub trait Segmental {
     fn state_of_values(&self, values: &[f64]) -> Option<Self::State>;
 }
 
+/// One segment of a walk over the period: the state it ends in, its dissipation, and the
+/// shared start ([`Segmental::Start`]) of the segment, which any part of it reuses.
+#[derive(Debug, Clone)]
+pub struct Step<S, P> {
+    /// The state at the segment's end.
+    pub state: S,
+    /// The dissipation over the segment.
+    pub d: f64,
+    /// The segment's shared start.
+    pub start: P,
+}
+
 impl Segmental for PlayBank {
     type State = MasingState;
+    type Start = ();
 
     fn state_len(&self) -> usize {
         self.len()
@@ -138,9 +167,22 @@ pub trait SingleState {
     /// The stored energy at `(u, z)`.
     fn stored_energy(&self, u: f64, z: f64) -> f64;
 
+    /// What the segments from `z_a` in one direction share ([`Segmental::Start`]).
+    type Start: Copy + Default + std::fmt::Debug;
+
+    /// The shared start of the segments from `z_a` moving up (`up`) or down.
+    fn start(&self, z_a: f64, up: bool) -> Self::Start;
+
     /// The state at `u_b` after the monotone segment from `(u_a, z_a)`, and the dissipation
-    /// along it (`>= 0`), both exact (closed form, or a root or quadrature to 1e-13 relative).
-    fn segment(&self, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64);
+    /// along it (`>= 0`), both exact (closed form, or a root or quadrature to 1e-13 relative),
+    /// given `start`, [`SingleState::start`] of `z_a` in the segment's direction.
+    fn segment_from(&self, start: &Self::Start, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64);
+
+    /// [`SingleState::segment_from`] with its start.
+    #[inline]
+    fn segment(&self, u_a: f64, z_a: f64, u_b: f64) -> (f64, f64) {
+        self.segment_from(&self.start(z_a, u_b > u_a), u_a, z_a, u_b)
+    }
 
     /// `h_s(z) = dz/du` moving up (`up`) or down: the derivative (S1) of the period map. It
     /// does not increase in the direction of motion (`h_+` non-increasing in `z`, `h_-`
@@ -162,6 +204,7 @@ pub struct Point {
 
 impl<T: SingleState> Segmental for T {
     type State = Point;
+    type Start = T::Start;
 
     fn state_len(&self) -> usize {
         2
@@ -180,6 +223,18 @@ impl<T: SingleState> Segmental for T {
     #[inline]
     fn advance(&self, state: &mut Point, to: f64) -> f64 {
         let (z, d) = self.segment(state.u, state.z, to);
+        *state = Point { u: to, z };
+        d
+    }
+
+    #[inline]
+    fn start(&self, state: &Point, to: f64) -> T::Start {
+        SingleState::start(self, state.z, to > state.u)
+    }
+
+    #[inline]
+    fn advance_from(&self, start: &T::Start, state: &mut Point, to: f64) -> f64 {
+        let (z, d) = self.segment_from(start, state.u, state.z, to);
         *state = Point { u: to, z };
         d
     }
@@ -222,7 +277,7 @@ impl<T: SingleState> Segmental for T {
         u: &[f64],
         r: usize,
         min: f64,
-        trail: &mut Vec<(Point, f64)>,
+        trail: &mut Vec<Step<Point, T::Start>>,
     ) -> (Point, usize) {
         let (z, first) = fixed_point(self, u, r, min, Some(trail));
         (Point { u: u[r], z }, first)
@@ -242,7 +297,7 @@ fn period_map<T: SingleState>(
     model: &T,
     (u, r, z): (&[f64], usize, f64),
     (width, tolerance): (f64, f64),
-    mut trail: Option<&mut Vec<(Point, f64)>>,
+    mut trail: Option<&mut Vec<Step<Point, T::Start>>>,
 ) -> (f64, f64, usize) {
     let n = u.len();
     let (mut at, mut state, mut derivative, mut first) = (u[r], z, 1.0, n + 1);
@@ -251,7 +306,8 @@ fn period_map<T: SingleState>(
     }
     for j in 1..=n {
         let to = u[(r + j) % n];
-        let (after_z, d) = model.segment(at, state, to);
+        let start = model.start(state, to > at);
+        let (after_z, d) = model.segment_from(&start, at, state, to);
         // `h_s` does not increase along a segment (the state moves toward its bound), so the
         // derivative never grows: once below `NEGLIGIBLE` it stays below, `T' - 1` is -1 to
         // the last bit whatever its value, and the slopes are skipped.
@@ -266,7 +322,11 @@ fn period_map<T: SingleState>(
             first = j;
         }
         if let Some(t) = trail.as_deref_mut() {
-            t.push((Point { u: to, z: after_z }, d));
+            t.push(Step {
+                state: Point { u: to, z: after_z },
+                d,
+                start,
+            });
         }
         (at, state) = (to, after_z);
     }
@@ -281,7 +341,7 @@ fn fixed_point<T: SingleState>(
     u: &[f64],
     r: usize,
     min: f64,
-    mut trail: Option<&mut Vec<(Point, f64)>>,
+    mut trail: Option<&mut Vec<Step<Point, T::Start>>>,
 ) -> (f64, usize) {
     let n = u.len();
     let (mut lo, mut hi) = model.bounds();
