@@ -6,7 +6,8 @@
 //! from the data.
 
 use lugre::fit::{
-    fit_zoo, fit_zoo_full, FitError, FitKind, FullOptions, SlowOptions, ZooFitReport, ZooFitSpec,
+    fit_zoo, fit_zoo_full, FitError, FitKind, FullOptions, Noise, SlowOptions, ZooFitReport,
+    ZooFitSpec,
 };
 use lugre::zoo::{Shape, ZooModelSpec};
 use pyo3::exceptions::PyValueError;
@@ -162,33 +163,7 @@ pub(super) fn fit<'py>(
     let u = floats(u, "u")?.one_dimensional("u", u)?;
     let f = floats(f, "f")?.one_dimensional("f", f)?;
     let noise = args.noise.as_ref().map(noise_arg).transpose()?;
-    let run = if args.kind == FitKind::Full {
-        let Some(t) = &args.t else {
-            return Err(PyValueError::new_err(
-                "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
-            ));
-        };
-        let t = floats(t, "t")?.one_dimensional("t", t)?;
-        let x0 = args.x0.as_ref().map(|x| real(x, "x0")).transpose()?;
-        let starts = match &args.starts {
-            Some(n) => usize::try_from(count(n, "starts")?).unwrap_or(usize::MAX),
-            None => FullOptions::DEFAULT_STARTS,
-        };
-        Run::Full {
-            t,
-            x0: x0.unwrap_or(0.0),
-            starts,
-        }
-    } else {
-        let mut options = SlowOptions::default();
-        if let Some(n) = noise {
-            options = options.with_noise(n);
-        }
-        if let Some(g) = &args.gate {
-            options = options.with_gate(real(g, "gate")?);
-        }
-        Run::Slow(options)
-    };
+    let run = run_of(&args, noise)?;
     drop(try_vec::<[f64; FLOATS_PER_SAMPLE]>(u.len())?);
     let report = py
         .detach(|| match run {
@@ -201,22 +176,58 @@ pub(super) fn fit<'py>(
             }
             Run::Slow(options) => fit_zoo(&spec, &u, &f, options),
         })
-        .map_err(|e| match e {
-            FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
-            FitError::BadStarts { .. } => PyValueError::new_err(format!("starts: {e}")),
-            FitError::BadElements { .. } => PyValueError::new_err(format!("elements: {e}")),
-            FitError::Unidentifiable { ref parameters } => {
-                let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
-                unidentifiable(
-                    py,
-                    &e,
-                    &names,
-                    "hold a scalar at a value you know (fix={'NAME': value}), fit fewer elements (elements=N), or fit data that excite it".to_string(),
-                )
-            }
-            e => explain(py, e),
-        })?;
+        .map_err(|e| fit_error(py, e))?;
     report_dict(py, &report, &f)
+}
+
+/// The fit `args` ask for: the slow fit's options with `noise` and `gate`, or the full fit's
+/// `t`, `x0` and `starts`.
+fn run_of(args: &Args<'_>, noise: Option<Noise>) -> PyResult<Run> {
+    if args.kind != FitKind::Full {
+        let mut options = SlowOptions::default();
+        if let Some(n) = noise {
+            options = options.with_noise(n);
+        }
+        if let Some(g) = &args.gate {
+            options = options.with_gate(real(g, "gate")?);
+        }
+        return Ok(Run::Slow(options));
+    }
+    let Some(t) = &args.t else {
+        return Err(PyValueError::new_err(
+            "a full fit needs the samples' times: give t (strictly increasing, one per sample)",
+        ));
+    };
+    let t = floats(t, "t")?.one_dimensional("t", t)?;
+    let x0 = args.x0.as_ref().map(|x| real(x, "x0")).transpose()?;
+    let starts = match &args.starts {
+        Some(n) => usize::try_from(count(n, "starts")?).unwrap_or(usize::MAX),
+        None => FullOptions::DEFAULT_STARTS,
+    };
+    Ok(Run::Full {
+        t,
+        x0: x0.unwrap_or(0.0),
+        starts,
+    })
+}
+
+/// A zoo fit's error in the keywords' terms.
+fn fit_error(py: Python<'_>, e: FitError) -> PyErr {
+    match e {
+        FitError::BadGate { .. } => PyValueError::new_err(format!("gate: {e}")),
+        FitError::BadStarts { .. } => PyValueError::new_err(format!("starts: {e}")),
+        FitError::BadElements { .. } => PyValueError::new_err(format!("elements: {e}")),
+        FitError::Unidentifiable { ref parameters } => {
+            let names: Vec<&str> = parameters.iter().map(|p| p.name).collect();
+            unidentifiable(
+                py,
+                &e,
+                &names,
+                "hold a scalar at a value you know (fix={'NAME': value}), fit fewer elements (elements=N), or fit data that excite it".to_string(),
+            )
+        }
+        e => explain(py, e),
+    }
 }
 
 /// The slow fit's options, or the full fit's times, start state and number of starts (its

@@ -103,6 +103,14 @@ enum Threshold {
     Product(&'static str),
 }
 
+impl Elements {
+    /// Whether the parameter `name` is the elements' weight or threshold.
+    fn holds(&self, name: &str) -> bool {
+        self.weight == name
+            || matches!(self.threshold, Threshold::Parameter(t) | Threshold::Product(t) if t == name)
+    }
+}
+
 /// What a model needs of the fit beyond its table entry.
 fn elements_of(model: &ZooModelSpec) -> Option<Elements> {
     match model.name {
@@ -675,65 +683,11 @@ fn lay_out(
     } else {
         Vec::new()
     };
-    for &name in &spec.freed {
-        if spec.fixed.contains(&name) {
-            return Err(FitError::FixedAndFree { name });
-        }
-        if outside.contains(&name) {
-            return Err(FitError::NotInZooSlowLoop {
-                name,
-                model: model.name,
-                slow: slow_names(model),
-            });
-        }
-    }
-    let elements = match elements_of(model) {
-        Some(e) => Some((e, thresholds(spec, e, turning)?)),
-        None if spec.elements.is_some() || spec.thresholds.is_some() => {
-            return Err(FitError::NoElements {
-                model: model.name,
-                known: model.parameter_names(),
-            })
-        }
-        None => None,
-    };
-    let mut slots = Vec::new();
-    let mut values = Vec::new();
-    let mut rest = Vec::new();
-    for p in model.parameters {
-        let value = spec
-            .given(p.name)
-            .map_or_else(|| p.default.to_vec(), <[f64]>::to_vec);
-        let in_elements = elements.as_ref().is_some_and(|(e, _)| {
-            e.weight == p.name
-                || matches!(e.threshold, Threshold::Parameter(t) | Threshold::Product(t) if t == p.name)
-        });
-        if p.shape == Shape::Scalar && !in_elements && !outside.contains(&p.name) {
-            if value.len() != 1 {
-                return Err(ZooError::NotScalar {
-                    name: p.name,
-                    count: value.len(),
-                }
-                .into());
-            }
-            slots.push(Slot {
-                name: p.name,
-                parameter: p.name,
-            });
-            values.push(value[0]);
-        } else if !in_elements {
-            rest.push((p.name, value));
-        }
-    }
+    check_freed(spec, &outside)?;
+    let elements = elements_for(spec, turning)?;
+    let (mut slots, mut values, rest) = scalar_slots(spec, elements.as_ref(), &outside)?;
     if let Some((e, t)) = &elements {
-        let given = spec.given(e.weight);
-        for i in 0..t.len() {
-            slots.push(Slot {
-                name: element_name(e.weight, i),
-                parameter: e.weight,
-            });
-            values.push(given.and_then(|g| g.get(i).copied()).unwrap_or(1.0));
-        }
+        push_weights(spec, e, t.len(), &mut slots, &mut values);
     }
     let free: Vec<usize> = (0..slots.len())
         .filter(|&i| !spec.fixed.contains(&slots[i].parameter))
@@ -751,6 +705,96 @@ fn lay_out(
     // A held value outside its domain is named now, not found unevaluable in the fit.
     layout.build(&values)?;
     Ok((layout, free, values))
+}
+
+/// Refuses a parameter both held and freed, or freed though `outside` the fit's response.
+fn check_freed(spec: &ZooFitSpec, outside: &[&'static str]) -> Result<(), FitError> {
+    for &name in &spec.freed {
+        if spec.fixed.contains(&name) {
+            return Err(FitError::FixedAndFree { name });
+        }
+        if outside.contains(&name) {
+            return Err(FitError::NotInZooSlowLoop {
+                name,
+                model: spec.model.name,
+                slow: slow_names(spec.model),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// An element model's elements with their thresholds; elements asked of another model refused.
+fn elements_for(
+    spec: &ZooFitSpec,
+    turning: &[f64],
+) -> Result<Option<(Elements, Vec<f64>)>, FitError> {
+    let model = spec.model;
+    match elements_of(model) {
+        Some(e) => Ok(Some((e, thresholds(spec, e, turning)?))),
+        None if spec.elements.is_some() || spec.thresholds.is_some() => Err(FitError::NoElements {
+            model: model.name,
+            known: model.parameter_names(),
+        }),
+        None => Ok(None),
+    }
+}
+
+/// The scalar slots with their values (given, or the table's default), and the values of the
+/// parameters neither a scalar slot nor the elements' (an array, or `outside` the response).
+type Scalars = (Vec<Slot>, Vec<f64>, Vec<(&'static str, Vec<f64>)>);
+
+/// The slots of the scalars the fit moves (module docs), in the table's order.
+fn scalar_slots(
+    spec: &ZooFitSpec,
+    elements: Option<&(Elements, Vec<f64>)>,
+    outside: &[&'static str],
+) -> Result<Scalars, FitError> {
+    let (mut slots, mut values, mut rest) = (Vec::new(), Vec::new(), Vec::new());
+    for p in spec.model.parameters {
+        let value = spec
+            .given(p.name)
+            .map_or_else(|| p.default.to_vec(), <[f64]>::to_vec);
+        // The weights and thresholds are the elements' slots and held values.
+        if elements.is_some_and(|(e, _)| e.holds(p.name)) {
+            continue;
+        }
+        if p.shape != Shape::Scalar || outside.contains(&p.name) {
+            rest.push((p.name, value));
+            continue;
+        }
+        if value.len() != 1 {
+            return Err(ZooError::NotScalar {
+                name: p.name,
+                count: value.len(),
+            }
+            .into());
+        }
+        slots.push(Slot {
+            name: p.name,
+            parameter: p.name,
+        });
+        values.push(value[0]);
+    }
+    Ok((slots, values, rest))
+}
+
+/// One slot per element for its weight, started at the weight given (else 1).
+fn push_weights(
+    spec: &ZooFitSpec,
+    e: &Elements,
+    count: usize,
+    slots: &mut Vec<Slot>,
+    values: &mut Vec<f64>,
+) {
+    let given = spec.given(e.weight);
+    for i in 0..count {
+        slots.push(Slot {
+            name: element_name(e.weight, i),
+            parameter: e.weight,
+        });
+        values.push(given.and_then(|g| g.get(i).copied()).unwrap_or(1.0));
+    }
 }
 
 /// The slow loop's parameters of `model`, comma-separated (for the refusal).

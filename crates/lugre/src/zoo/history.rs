@@ -159,29 +159,11 @@ pub(crate) fn walk<M: Segmental>(
     cycles: &mut [Cycle],
     spans: &[ArcSpan],
 ) -> Walked<M::State> {
-    // Marks by the local sample where they open, and where they close (on the step into it,
-    // cut at the start's value).
-    let mut opens: Vec<(u64, Mark)> = Vec::new();
-    let mut closes: Vec<(u64, Mark, f64)> = Vec::new();
-    let mut open: Vec<Open<M::State>> = Vec::new();
-    for (i, c) in cycles.iter().enumerate() {
-        if let Some(k) = c.closure {
-            let a = c.start - offset;
-            opens.push((a, Mark::Cycle(i)));
-            closes.push((k.index - offset, Mark::Cycle(i), u[a as usize]));
-        }
-    }
-    for s in spans {
-        match s.from {
-            Some(a) => opens.push((a - offset, Mark::Span(s.id))),
-            None => open.push((Mark::Span(s.id), None, DoubleDouble::ZERO)),
-        }
-        if let Some((c, u_a)) = s.to {
-            closes.push((c - offset, Mark::Span(s.id), u_a));
-        }
-    }
-    opens.sort_by_key(|o| o.0);
-    closes.sort_by_key(|c| c.0);
+    let Marks {
+        opens,
+        closes,
+        mut open,
+    } = Marks::of(u, offset, cycles, spans);
     let mut state = entry;
     let mut d = DoubleDouble::ZERO;
     let mut parts = Vec::new();
@@ -191,21 +173,8 @@ pub(crate) fn walk<M: Segmental>(
         if k > 0 || prev.is_some() {
             while let Some(&(_, mark, u_a)) = closes.get(next_close).filter(|c| c.0 <= k) {
                 next_close += 1;
-                let at = open.iter().position(|o| o.0 == mark);
-                let Some((_, a, d_a)) = at.map(|at| open.swap_remove(at)) else {
-                    continue;
-                };
-                let mut c = state.clone();
-                let d_c = d.add_f64(model.advance(&mut c, u_a));
-                match mark {
-                    Mark::Cycle(i) => close(model, a, c, d_c - d_a, &mut cycles[i]),
-                    Mark::Span(id) => parts.push(WalkedSpan {
-                        id,
-                        d: d_c - d_a,
-                        from: a,
-                        to: Some(c),
-                    }),
-                }
+                let here = (&state, d);
+                close_mark(model, (mark, u_a), &mut open, here, cycles, &mut parts);
             }
             d = d.add_f64(model.advance(&mut state, x));
         }
@@ -215,20 +184,89 @@ pub(crate) fn walk<M: Segmental>(
         }
     }
     // The spans that run to the chunk's end.
-    for (mark, a, d_a) in open {
-        if let Mark::Span(id) = mark {
-            parts.push(WalkedSpan {
-                id,
-                d: d - d_a,
-                from: a,
-                to: None,
-            });
-        }
-    }
+    parts.extend(open.into_iter().filter_map(|(mark, a, d_a)| match mark {
+        Mark::Span(id) => Some(WalkedSpan {
+            id,
+            d: d - d_a,
+            from: a,
+            to: None,
+        }),
+        Mark::Cycle(_) => None,
+    }));
     Walked {
         end: state,
         d,
         spans: parts,
+    }
+}
+
+/// A walk's marks: where each opens (local sample, sorted), where each closes (local sample,
+/// sorted; on the step into it, cut at the start's value), and those open at the chunk's
+/// entry (the spans from an earlier chunk).
+struct Marks<S> {
+    opens: Vec<(u64, Mark)>,
+    closes: Vec<(u64, Mark, f64)>,
+    open: Vec<Open<S>>,
+}
+
+impl<S> Marks<S> {
+    /// The marks of the full cycles of `cycles` and of the arcs `spans` over the chunk `u`
+    /// whose first sample is at `offset`.
+    fn of(u: &[f64], offset: u64, cycles: &[Cycle], spans: &[ArcSpan]) -> Self {
+        let mut opens: Vec<(u64, Mark)> = Vec::new();
+        let mut closes: Vec<(u64, Mark, f64)> = Vec::new();
+        let mut open: Vec<Open<S>> = Vec::new();
+        for (i, c) in cycles.iter().enumerate() {
+            if let Some(k) = c.closure {
+                let a = c.start - offset;
+                opens.push((a, Mark::Cycle(i)));
+                closes.push((k.index - offset, Mark::Cycle(i), u[a as usize]));
+            }
+        }
+        for s in spans {
+            match s.from {
+                Some(a) => opens.push((a - offset, Mark::Span(s.id))),
+                None => open.push((Mark::Span(s.id), None, DoubleDouble::ZERO)),
+            }
+            if let Some((c, u_a)) = s.to {
+                closes.push((c - offset, Mark::Span(s.id), u_a));
+            }
+        }
+        opens.sort_by_key(|o| o.0);
+        closes.sort_by_key(|c| c.0);
+        Self {
+            opens,
+            closes,
+            open,
+        }
+    }
+}
+
+/// Closes `mark` (if open) on the step from the walk's `state` (with `D = d` there) to
+/// `u_a`, its start's value: a cycle's energy (H1) is filled, a span's part kept.
+#[inline]
+fn close_mark<M: Segmental>(
+    model: &M,
+    (mark, u_a): (Mark, f64),
+    open: &mut Vec<Open<M::State>>,
+    (state, d): (&M::State, DoubleDouble),
+    cycles: &mut [Cycle],
+    parts: &mut Vec<WalkedSpan<M::State>>,
+) {
+    let Some(at) = open.iter().position(|o| o.0 == mark) else {
+        return;
+    };
+    let (_, a, d_a) = open.swap_remove(at);
+    let mut c = state.clone();
+    let d_c = d.add_f64(model.advance(&mut c, u_a));
+    match mark {
+        Mark::Cycle(i) => close(model, a, c, d_c - d_a, &mut cycles[i]),
+        Mark::Span(id) => parts.push(WalkedSpan {
+            id,
+            d: d_c - d_a,
+            from: a,
+            to: Some(c),
+        }),
     }
 }
 

@@ -431,66 +431,31 @@ impl ZooModel {
             name: name.trim().to_string(),
             known: model_names(),
         })?;
-        let values = resolve(spec, given)?;
-        let is_given = |name: &str| {
-            given
-                .iter()
-                .any(|(n, _)| n.trim().eq_ignore_ascii_case(name))
-        };
-        let value = |name: &str| -> &[f64] {
-            let i = spec.parameters.iter().position(|p| p.name == name);
-            i.map_or(&[], |i| &values[i])
+        let values = Resolved {
+            values: resolve(spec, given)?,
+            spec,
+            given,
         };
         let kind = match spec.name {
-            "maxwell-slip" => ZooKind::MaxwellSlip(
-                MaxwellSlip::new(value("stiffness"), value("slip_force"))?.with_rate(GmsRate {
-                    fc: value("fc")[0],
-                    vs: value("vs")[0],
-                    beta: value("beta")[0],
-                    attraction: value("attraction")[0],
-                    sigma1: value("sigma1")[0],
-                    sigma2: value("sigma2")[0],
-                })?,
-            ),
+            "maxwell-slip" => values.maxwell_slip()?,
             "prandtl-ishlinskii" => ZooKind::PrandtlIshlinskii(PrandtlIshlinskii::new(
-                value("linear_weight")[0],
-                value("thresholds"),
-                value("weights"),
+                values.scalar("linear_weight"),
+                values.value("thresholds"),
+                values.value("weights"),
             )?),
-            "elastoplastic" => ZooKind::ElastoPlastic(
-                ElastoPlastic::new(
-                    value("sigma0")[0],
-                    value("fc")[0],
-                    value("fs")[0],
-                    scaled_zba(
-                        is_given("zba"),
-                        value("zba")[0],
-                        value("fc")[0],
-                        value("sigma0")[0],
-                    ),
-                )?
-                .with_rate(
-                    value("sigma1")[0],
-                    value("sigma2")[0],
-                    value("vs")[0],
-                    value("beta")[0],
-                )?,
-            ),
+            "elastoplastic" => values.elastoplastic()?,
             _ => ZooKind::BoucWen(BoucWen::new(
-                value("kx")[0],
-                value("kw")[0],
-                value("rho")[0],
-                value("sigma")[0],
-                value("n")[0],
+                values.scalar("kx"),
+                values.scalar("kw"),
+                values.scalar("rho"),
+                values.scalar("sigma"),
+                values.scalar("n"),
             )?),
         };
-        let given = spec
-            .parameters
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| is_given(p.name))
-            .fold(0u64, |bits, (i, _)| bits | 1 << i);
-        Ok(Self { kind, given })
+        Ok(Self {
+            kind,
+            given: values.given_bits(),
+        })
     }
 
     /// This model with `base`'s values for each parameter of the same name that was not
@@ -710,6 +675,67 @@ pub fn dynamics_model_names() -> String {
     match names.split_last() {
         Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
         _ => names.join(", "),
+    }
+}
+
+/// A model's values by parameter ([`resolve`]), and the names given (any case, any spaces
+/// around), for [`ZooModel::new`].
+struct Resolved<'a> {
+    spec: &'static ZooModelSpec,
+    values: Vec<Vec<f64>>,
+    given: &'a [(&'a str, &'a [f64])],
+}
+
+impl Resolved<'_> {
+    fn value(&self, name: &str) -> &[f64] {
+        let i = self.spec.parameters.iter().position(|p| p.name == name);
+        i.map_or(&[], |i| &self.values[i])
+    }
+
+    /// A scalar parameter's value ([`resolve`] has checked it holds one).
+    fn scalar(&self, name: &str) -> f64 {
+        self.value(name)[0]
+    }
+
+    fn is_given(&self, name: &str) -> bool {
+        self.given
+            .iter()
+            .any(|(n, _)| n.trim().eq_ignore_ascii_case(name))
+    }
+
+    /// The bit `i` set for each parameter `i` of the table given ([`ZooModel::is_named`]).
+    fn given_bits(&self) -> u64 {
+        let parameters = self.spec.parameters.iter().enumerate();
+        parameters
+            .filter(|(_, p)| self.is_given(p.name))
+            .fold(0u64, |bits, (i, _)| bits | 1 << i)
+    }
+
+    /// Maxwell-slip, with its finite rate (GMS).
+    fn maxwell_slip(&self) -> Result<ZooKind, ZooError> {
+        let bank = MaxwellSlip::new(self.value("stiffness"), self.value("slip_force"))?;
+        Ok(ZooKind::MaxwellSlip(bank.with_rate(GmsRate {
+            fc: self.scalar("fc"),
+            vs: self.scalar("vs"),
+            beta: self.scalar("beta"),
+            attraction: self.scalar("attraction"),
+            sigma1: self.scalar("sigma1"),
+            sigma2: self.scalar("sigma2"),
+        })?))
+    }
+
+    /// The elasto-plastic model, `zba` scaled with `fc / sigma0` unless given
+    /// ([`scaled_zba`]), with its finite rate.
+    fn elastoplastic(&self) -> Result<ZooKind, ZooError> {
+        let (sigma0, fc) = (self.scalar("sigma0"), self.scalar("fc"));
+        let zba = scaled_zba(self.is_given("zba"), self.scalar("zba"), fc, sigma0);
+        let model = ElastoPlastic::new(sigma0, fc, self.scalar("fs"), zba)?;
+        Ok(ZooKind::ElastoPlastic(model.with_rate(
+            self.scalar("sigma1"),
+            self.scalar("sigma2"),
+            self.scalar("vs"),
+            self.scalar("beta"),
+        )?))
     }
 }
 

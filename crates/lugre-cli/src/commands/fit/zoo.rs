@@ -32,10 +32,7 @@ pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
     check_files(args.input.as_deref(), &args.output, Some(&args.plot))?;
     let full = args.fit == FitChoice::Full;
     let Some(path) = &args.input else {
-        bail!(
-            "no data: give --input FILE.csv (columns {})",
-            if full { "t,u,F" } else { "u,F" }
-        );
+        bail!("no data: give --input FILE.csv (columns {})", columns(full));
     };
     let spec = build_spec(args)?;
     if full {
@@ -45,12 +42,28 @@ pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
         crate::plot::check_path(plot)?;
     }
     let record = read_record(args, path)?;
+    check_record(args, path, model, &record)?;
+    let report = fit_record(args, &spec, path, &record)?;
+    show(args, path, &record, &report)
+}
+
+/// The record's columns for the fit `full` or slow.
+fn columns(full: bool) -> &'static str {
+    if full {
+        "t,u,F"
+    } else {
+        "u,F"
+    }
+}
+
+/// Refuses a record with columns the fit does not read, or a row without a force.
+fn check_record(args: &FitArgs, path: &Path, model: &ZooModelSpec, record: &Record) -> Result<()> {
     if record.normal.is_some() || record.velocity.is_some() {
         bail!(
             "{}: the {} fit reads a record {} (no normal force, no velocity)",
             path.display(),
             model.label,
-            if full { "t,u,F" } else { "u,F" }
+            columns(args.fit == FitChoice::Full)
         );
     }
     if let Some(i) = record.f.iter().position(|f| f.is_nan()) {
@@ -62,8 +75,39 @@ pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
             model.name
         );
     }
-    let with_file = |e: FitError| {
-        match e {
+    Ok(())
+}
+
+/// The fit asked for (slow, or `--fit full` with `--x0`), its errors in the terms of the
+/// flags and of the file.
+fn fit_record(
+    args: &FitArgs,
+    spec: &ZooFitSpec,
+    path: &Path,
+    record: &Record,
+) -> Result<ZooFitReport> {
+    if args.fit != FitChoice::Full {
+        let mut options = SlowOptions::default().with_noise(args.noise.unwrap_or_default());
+        if let Some(gate) = args.gate {
+            options = options.with_gate(gate);
+        }
+        return fit_zoo(spec, &record.u, &record.f, options).map_err(|e| file_error(path, e));
+    }
+    let t = record.times_for_full_fit(path)?;
+    let x0 = match &args.x0 {
+        Some(text) => parse_number("--x0", 1, text)?,
+        None => 0.0,
+    };
+    fit_full(args, spec, t, x0, record).map_err(|e| match e {
+        FitError::ZooFromRest { .. } => anyhow!("--x0: {e}"),
+        other => file_error(path, other),
+    })
+}
+
+/// A fit's error naming the file (the record's faults) or the flag (`--gate`, `--elements`,
+/// `--starts`), with what to do for a parameter that cannot be identified.
+fn file_error(path: &Path, e: FitError) -> anyhow::Error {
+    match e {
         FitError::TooFewSamples { .. }
         | FitError::NoReversal { .. }
         | FitError::ZeroForce
@@ -77,25 +121,6 @@ pub(super) fn run(args: &FitArgs, model: &'static ZooModelSpec) -> Result<()> {
         ),
         other => anyhow!("{other}"),
     }
-    };
-    let report = if full {
-        let t = record.times_for_full_fit(path)?;
-        let x0 = match &args.x0 {
-            Some(text) => parse_number("--x0", 1, text)?,
-            None => 0.0,
-        };
-        fit_full(args, &spec, t, x0, &record).map_err(|e| match e {
-            FitError::ZooFromRest { .. } => anyhow!("--x0: {e}"),
-            other => with_file(other),
-        })?
-    } else {
-        let mut options = SlowOptions::default().with_noise(args.noise.unwrap_or_default());
-        if let Some(gate) = args.gate {
-            options = options.with_gate(gate);
-        }
-        fit_zoo(&spec, &record.u, &record.f, options).map_err(with_file)?
-    };
-    show(args, path, &record, &report)
 }
 
 /// The full fit (`--fit full`) from rest with `--starts`, and a progress indicator.
@@ -204,20 +229,39 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
         );
     }
     let summary = summary(r);
-    let stdout = std::io::stdout();
     if args.output.json {
-        let mut j = JsonOut::new(stdout.lock());
-        write_json_head(&mut j, &summary)?;
-        j.raw(&format!(
-            ",\"model\":{},\"fit\":{},\"values\":{},\"fixed\":{}",
-            quote(r.model.spec().name),
-            quote(kind),
-            crate::zoo_args::zoo_json(&r.model),
-            fixed_json(r)
-        ))?;
-        write_json_tail(j, &summary, path, false)?;
-        return Ok(());
+        return write_json(path, r, &summary);
     }
+    print_table(args, path, record, r, &summary)
+}
+
+/// The JSON document: the LuGre fit's, with the model, the fit's kind, the fitted model's
+/// values and the held ones.
+fn write_json(path: &Path, r: &ZooFitReport, summary: &Summary<'_>) -> Result<()> {
+    let stdout = std::io::stdout();
+    let mut j = JsonOut::new(stdout.lock());
+    write_json_head(&mut j, summary)?;
+    j.raw(&format!(
+        ",\"model\":{},\"fit\":{},\"values\":{},\"fixed\":{}",
+        quote(r.model.spec().name),
+        quote(r.kind.label()),
+        crate::zoo_args::zoo_json(&r.model),
+        fixed_json(r)
+    ))?;
+    write_json_tail(j, summary, path, false)?;
+    Ok(())
+}
+
+/// The table: what was fitted to what, the estimates, the held values, the fitted model, the
+/// statistics and the files written.
+fn print_table(
+    args: &FitArgs,
+    path: &Path,
+    record: &Record,
+    r: &ZooFitReport,
+    summary: &Summary<'_>,
+) -> Result<()> {
+    let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let what = match r.kind {
         lugre::fit::FitKind::Full => format!(
@@ -229,18 +273,19 @@ fn show(args: &FitArgs, path: &Path, record: &Record, r: &ZooFitReport) -> Resul
     };
     writeln!(
         out,
-        "{label} {what} to {} samples from {} ({} turning points)\n",
+        "{} {what} to {} samples from {} ({} turning points)\n",
+        r.model.spec().label,
         r.samples,
         path.display(),
         r.turning_points
     )?;
-    print_estimates(&mut out, &summary)?;
+    print_estimates(&mut out, summary)?;
     for (name, values) in &r.fixed {
         let v: Vec<String> = values.iter().map(|x| sig(*x, 10)).collect();
         writeln!(out, "fixed: {name} = {}", v.join(","))?;
     }
     writeln!(out, "fitted model: {}", crate::zoo_args::zoo_line(&r.model))?;
-    print_statistics(&mut out, &summary)?;
+    print_statistics(&mut out, summary)?;
     super::output::print_written(&mut out, args, record.t.is_some())?;
     out.flush()?;
     Ok(())

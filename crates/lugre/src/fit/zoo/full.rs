@@ -78,7 +78,7 @@ pub fn fit_zoo_full(
     let (layout, free, mut values) = lay_out(spec, u, FitKind::Full)?;
     check_count(u.len(), free.len())?;
     let (given, bounds) = given_and_bounds(spec, &layout, &free, &values);
-    let mut out = Output {
+    let out = Output {
         layout: &layout,
         response: Response::Path {
             t: t.to_vec(),
@@ -89,18 +89,43 @@ pub fn fit_zoo_full(
         bounds: bounds.clone(),
         step: STEP,
     };
-    rate_start(&mut out, t, u, f, &given, &mut values)?;
-    let mut best: Option<(Vec<f64>, Outcome, Option<f64>)> = None;
+    rate_start(&out, t, u, f, &given, &mut values)?;
+    let (start, outcome, lower) = best_start(out, f, (&values, &given), starts, &mut progress)?;
+    let end = End {
+        kind: FitKind::Full,
+        layout: &layout,
+        free: &free,
+        bounds: &bounds,
+        starts: (starts, &start),
+        turning_points: segments(u).len() + 1,
+        levels: noise,
+    };
+    let rss = outcome.rss;
+    let mut report = conclude(end, outcome, f)?;
+    if let Some(lower) = lower {
+        report.warnings.push(FitWarning::NotMinimum { rss, lower });
+    }
+    Ok(report)
+}
+
+/// One start's end: its free values at the start, the iteration's end, and the sum of squares
+/// of a lower point still found beside the end ([`escape_steps`]).
+type StartEnd = (Vec<f64>, Outcome, Option<f64>);
+
+/// The best end of `starts` iterations, each from `values` with the free ones not `given`
+/// scaled by a start's factors ([`spread_start`]); its evaluations the sum over all starts.
+fn best_start(
+    mut out: Output<'_>,
+    f: &[f64],
+    (values, given): (&[f64], &[bool]),
+    starts: usize,
+    progress: &mut Option<&mut dyn FnMut(&super::super::FitProgress)>,
+) -> Result<StartEnd, FitError> {
+    let (free, bounds) = (out.free.clone(), out.bounds.clone());
+    let mut best: Option<StartEnd> = None;
     let mut evaluations = 0;
-    for (n, &(k0, kv)) in START_FACTORS.iter().cycle().take(starts).enumerate() {
-        let spread = 1.0 + (n / START_FACTORS.len()) as f64;
-        let mut v = values.clone();
-        for (c, &i) in free.iter().enumerate() {
-            if !given[c] {
-                let k = start_factor(layout.slots[i].parameter, (k0, kv));
-                v[i] = bounds[c].pull_inside(v[i] * k.powf(spread));
-            }
-        }
+    for n in 0..starts {
+        let v = spread_start(&out, values, given, n);
         let start: Vec<f64> = free.iter().map(|&i| v[i]).collect();
         let space = Space {
             values: &v,
@@ -129,21 +154,22 @@ pub fn fit_zoo_full(
         return Err(FitError::NoStart { starts });
     };
     outcome.evaluations = evaluations;
-    let end = End {
-        kind: FitKind::Full,
-        layout: &layout,
-        free: &free,
-        bounds: &bounds,
-        starts: (starts, &start),
-        turning_points: segments(u).len() + 1,
-        levels: noise,
-    };
-    let rss = outcome.rss;
-    let mut report = conclude(end, outcome, f)?;
-    if let Some(lower) = lower {
-        report.warnings.push(FitWarning::NotMinimum { rss, lower });
+    Ok((start, outcome, lower))
+}
+
+/// The values of start `n`: the free ones not `given` scaled by the factors of
+/// [`START_FACTORS`] (cycled, each round's by a higher power), pulled inside their bounds.
+fn spread_start(out: &Output<'_>, values: &[f64], given: &[bool], n: usize) -> Vec<f64> {
+    let (k0, kv) = START_FACTORS[n % START_FACTORS.len()];
+    let spread = 1.0 + (n / START_FACTORS.len()) as f64;
+    let mut v = values.to_vec();
+    for (c, &i) in out.free.iter().enumerate() {
+        if !given[c] {
+            let k = start_factor(out.layout.slots[i].parameter, (k0, kv));
+            v[i] = out.bounds[c].pull_inside(v[i] * k.powf(spread));
+        }
     }
-    Ok(report)
+    v
 }
 
 /// Restarts of one start's iteration from a lower point beside its end (ZF6), at most this
@@ -321,7 +347,7 @@ impl ZooFitSpec {
 
 /// Start values of the free slots not given (module docs), pulled inside their bounds.
 fn rate_start(
-    out: &mut Output<'_>,
+    out: &Output<'_>,
     t: &[f64],
     u: &[f64],
     f: &[f64],
@@ -329,53 +355,17 @@ fn rate_start(
     values: &mut [f64],
 ) -> Result<(), FitError> {
     let layout = out.layout;
-    if let Some((e, _)) = &layout.elements {
-        // The weights alone, on the rate-independent path (linear in them).
-        let weights: Vec<usize> = (0..out.free.len())
-            .filter(|&c| layout.slots[out.free[c]].parameter == e.weight)
-            .collect();
-        let mut linear = Output {
-            layout,
-            response: Response::Path {
-                t: t.to_vec(),
-                u: u.to_vec(),
-                rate: false,
-            },
-            free: weights.iter().map(|&c| out.free[c]).collect(),
-            bounds: weights.iter().map(|&c| out.bounds[c]).collect(),
-            step: super::LINEAR_STEP,
-        };
-        let given_w: Vec<bool> = weights.iter().map(|&c| given[c]).collect();
-        linear_start(&mut linear, f, &given_w, values)?;
+    let weight = layout.elements.as_ref().map(|(e, _)| e.weight);
+    if let Some(weight) = weight {
+        weights_start(out, weight, (t, u, f), given, values)?;
     }
-    let ex = Exact::new(Family::LuGre, Vec::new(), t, u, 0.0);
-    let current: Vec<f64> = Parameter::LUGRE.iter().map(|p| p.default_value()).collect();
-    let lugre = lugre_start(Family::LuGre, &ex, u, f, &current);
-    let of = |name: &str| {
-        let i = Parameter::LUGRE.iter().position(|p| p.name() == name);
-        i.map(|i| lugre[i])
-    };
-    let g0 = of("fs").unwrap_or(1.0);
-    let reversals: Vec<usize> = segments(u).iter().map(|s| s.0).collect();
-    let s0 = initial_slope(u, f, &reversals)
-        .or(of("sigma0"))
-        .unwrap_or(1.0);
-    let fc = of("fc").map_or(g0, |fc| fc.min(g0));
-    let mut speeds: Vec<f64> = (0..u.len() - 1).map(|i| ex.speed(i)).collect();
-    let speed = super::super::slow::median(&mut speeds).unwrap_or(1.0);
+    let data = RateData::of(t, u, f);
     for (c, &i) in out.free.iter().enumerate() {
         let name = layout.slots[i].parameter;
-        if given[c] || name == layout.elements.as_ref().map_or("", |(e, _)| e.weight) {
+        if given[c] || Some(name) == weight {
             continue;
         }
-        let x = match name {
-            "fc" => Some(fc),
-            "zba" => Some(0.3 * fc / s0),
-            "attraction" => Some(s0 * speed),
-            "sigma1" | "sigma2" | "vs" => of(name),
-            _ => data_start(name, s0, g0),
-        };
-        if let Some(x) = x {
+        if let Some(x) = data.start(name) {
             values[i] = out.bounds[c].pull_inside(x);
         }
     }
@@ -383,4 +373,83 @@ fn rate_start(
         values[i] = out.bounds[c].pull_inside(values[i]);
     }
     Ok(())
+}
+
+/// An element model's free weights `weight` alone, on the rate-independent path (linear in
+/// them: [`linear_start`]).
+fn weights_start(
+    out: &Output<'_>,
+    weight: &str,
+    (t, u, f): (&[f64], &[f64], &[f64]),
+    given: &[bool],
+    values: &mut [f64],
+) -> Result<(), FitError> {
+    let layout = out.layout;
+    let weights: Vec<usize> = (0..out.free.len())
+        .filter(|&c| layout.slots[out.free[c]].parameter == weight)
+        .collect();
+    let mut linear = Output {
+        layout,
+        response: Response::Path {
+            t: t.to_vec(),
+            u: u.to_vec(),
+            rate: false,
+        },
+        free: weights.iter().map(|&c| out.free[c]).collect(),
+        bounds: weights.iter().map(|&c| out.bounds[c]).collect(),
+        step: super::LINEAR_STEP,
+    };
+    let given_w: Vec<bool> = weights.iter().map(|&c| given[c]).collect();
+    linear_start(&mut linear, f, &given_w, values)
+}
+
+/// What the record gives the finite rate's starts (module docs): the LuGre full fit's data
+/// starts, the plateau `g0`, the initial slope `s0`, `fc <= g0`, and the median speed.
+struct RateData {
+    lugre: Vec<f64>,
+    g0: f64,
+    s0: f64,
+    fc: f64,
+    speed: f64,
+}
+
+impl RateData {
+    fn of(t: &[f64], u: &[f64], f: &[f64]) -> Self {
+        let ex = Exact::new(Family::LuGre, Vec::new(), t, u, 0.0);
+        let current: Vec<f64> = Parameter::LUGRE.iter().map(|p| p.default_value()).collect();
+        let lugre = lugre_start(Family::LuGre, &ex, u, f, &current);
+        let of = |name: &str| Self::named(&lugre, name);
+        let g0 = of("fs").unwrap_or(1.0);
+        let reversals: Vec<usize> = segments(u).iter().map(|s| s.0).collect();
+        let s0 = initial_slope(u, f, &reversals)
+            .or(of("sigma0"))
+            .unwrap_or(1.0);
+        let fc = of("fc").map_or(g0, |fc| fc.min(g0));
+        let mut speeds: Vec<f64> = (0..u.len() - 1).map(|i| ex.speed(i)).collect();
+        let speed = super::super::slow::median(&mut speeds).unwrap_or(1.0);
+        Self {
+            lugre,
+            g0,
+            s0,
+            fc,
+            speed,
+        }
+    }
+
+    /// The LuGre parameter `name`'s value in `lugre` (LuGre's order).
+    fn named(lugre: &[f64], name: &str) -> Option<f64> {
+        let i = Parameter::LUGRE.iter().position(|p| p.name() == name);
+        i.map(|i| lugre[i])
+    }
+
+    /// The start of the parameter `name` (module docs), if the data give one.
+    fn start(&self, name: &str) -> Option<f64> {
+        match name {
+            "fc" => Some(self.fc),
+            "zba" => Some(0.3 * self.fc / self.s0),
+            "attraction" => Some(self.s0 * self.speed),
+            "sigma1" | "sigma2" | "vs" => Self::named(&self.lugre, name),
+            _ => data_start(name, self.s0, self.g0),
+        }
+    }
 }
