@@ -171,12 +171,14 @@ pub(crate) fn walk<M: Segmental>(
     for (k, &x) in u.iter().enumerate() {
         let k = k as u64;
         if k > 0 || prev.is_some() {
+            // The step's start on its exact relation, shared by the marks closing on it.
+            let start = model.start(&state, x);
             while let Some(&(_, mark, u_a)) = closes.get(next_close).filter(|c| c.0 <= k) {
                 next_close += 1;
-                let here = (&state, d);
+                let here = (&state, &start, d);
                 close_mark(model, (mark, u_a), &mut open, here, cycles, &mut parts);
             }
-            d = d.add_f64(model.advance(&mut state, x));
+            d = d.add_f64(model.advance_from(&start, &mut state, x));
         }
         while let Some(&(_, mark)) = opens.get(next_open).filter(|o| o.0 == k) {
             next_open += 1;
@@ -242,14 +244,15 @@ impl<S> Marks<S> {
     }
 }
 
-/// Closes `mark` (if open) on the step from the walk's `state` (with `D = d` there) to
-/// `u_a`, its start's value: a cycle's energy (H1) is filled, a span's part kept.
+/// Closes `mark` (if open) on the step from the walk's `state` (with `D = d` there, the
+/// step's start `start`) to `u_a`, its start's value: a cycle's energy (H1) is filled, a
+/// span's part kept.
 #[inline]
 fn close_mark<M: Segmental>(
     model: &M,
     (mark, u_a): (Mark, f64),
     open: &mut Vec<Open<M::State>>,
-    (state, d): (&M::State, DoubleDouble),
+    (state, start, d): (&M::State, &M::Start, DoubleDouble),
     cycles: &mut [Cycle],
     parts: &mut Vec<WalkedSpan<M::State>>,
 ) {
@@ -258,7 +261,7 @@ fn close_mark<M: Segmental>(
     };
     let (_, a, d_a) = open.swap_remove(at);
     let mut c = state.clone();
-    let d_c = d.add_f64(model.advance(&mut c, u_a));
+    let d_c = d.add_f64(model.advance_from(start, &mut c, u_a));
     match mark {
         Mark::Cycle(i) => close(model, a, c, d_c - d_a, &mut cycles[i]),
         Mark::Span(id) => parts.push(WalkedSpan {
