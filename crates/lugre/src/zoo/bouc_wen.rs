@@ -312,11 +312,10 @@ impl SingleState for BoucWen {
 
     type Start = SegmentStart;
 
-    /// `v_a = s w_a` and where it lies on the segment's relation (B6) or (B8). `w_a` outside
-    /// `[-1, 1]` is taken at the nearest bound.
+    /// Where `v_a = s w_a` lies on the segment's relation (B6) or (B8).
     #[inline]
     fn start(&self, w_a: f64, up: bool) -> SegmentStart {
-        let v = (if up { w_a } else { -w_a }).clamp(-1.0, 1.0);
+        let v = direct(w_a, if up { 1.0 } else { -1.0 });
         match &self.shape {
             Shape::Linear { c } => linear_start(*c, v),
             Shape::General(g) => g.start(v),
@@ -332,9 +331,10 @@ impl SingleState for BoucWen {
         }
         let s = if u_b > u_a { 1.0 } else { -1.0 };
         let tau = self.rho * (u_b - u_a).abs();
+        let v_a = direct(w_a, s);
         let (v_b, d) = match &self.shape {
-            Shape::Linear { c } => linear(*c, start, tau),
-            Shape::General(g) => g.segment(start, tau),
+            Shape::Linear { c } => linear(*c, v_a, start, tau),
+            Shape::General(g) => g.segment(v_a, start, tau),
         };
         (s * v_b, (self.kw / self.rho * d).max(0.0))
     }
@@ -378,34 +378,33 @@ fn dahl_loss(c: f64, t: f64, l: f64) -> f64 {
     c * t * t * t * g
 }
 
-/// Where a segment of direction `s` starts on its exact relation, what every segment from
-/// there in that direction shares: `v = s w_a` and, for `v < 0`, `(T_-(t_a), E_-(t_a))` of
-/// (B8) (for `n = 1`: `tau_0`, `K(t_a)` and `ln(1 + c t_a)` of (B6)), for `0 < v < 1` and
-/// `n != 1`, `(T(v), E(v))`; zeros where unused.
+/// `v = s w` on a segment of direction `s`, `w` outside `[-1, 1]` taken at the nearest bound.
+#[inline]
+fn direct(w: f64, s: f64) -> f64 {
+    (s * w).clamp(-1.0, 1.0)
+}
+
+/// Where a segment from `v = s w_a` starts on its exact relation, what every segment from
+/// there in that direction shares (two numbers, as the periodic solver keeps one per
+/// segment): `at` is `T_-(t_a)` for `v < 0` and `T(v)` for `0 < v < 1` (B8), or for `n = 1`
+/// `ln(1 + c t_a)` (B6); `loss` is `E_-(t_a)`, `E(v)` or `K(t_a)`; zeros where unused.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SegmentStart {
-    v: f64,
-    time: f64,
+    at: f64,
     loss: f64,
-    log: f64,
 }
 
 /// [`SegmentStart`] for `n = 1` (B6): one `ln_1p` on the negative part.
 #[inline]
 fn linear_start(c: f64, v: f64) -> SegmentStart {
     if v >= 0.0 {
-        return SegmentStart {
-            v,
-            ..SegmentStart::default()
-        };
+        return SegmentStart::default();
     }
     let t = -v;
-    let (x, log) = (c * t, (c * t).ln_1p());
+    let log = (c * t).ln_1p();
     SegmentStart {
-        v,
-        time: if x == 0.0 { t } else { t * (log / x) },
+        at: log,
         loss: dahl_loss(c, t, log),
-        log,
     }
 }
 
@@ -415,11 +414,12 @@ fn linear_start(c: f64, v: f64) -> SegmentStart {
 /// (absolute errors of a few rounding units of `t_a`, the bound (B11) of `w`); on the positive
 /// part `1 - e^(-2 tau) = m (2 - m)`, `m = 1 - e^(-tau)`.
 #[inline]
-fn linear(c: f64, start: &SegmentStart, tau: f64) -> (f64, f64) {
-    let (mut v, mut tau, mut d) = (start.v, tau, 0.0);
+fn linear(c: f64, v_a: f64, start: &SegmentStart, tau: f64) -> (f64, f64) {
+    let (mut v, mut tau, mut d) = (v_a, tau, 0.0);
     if v < 0.0 {
         let t = -v;
-        let (l, reach, loss_a) = (start.log, start.time, start.loss);
+        let (x, l, loss_a) = (c * t, start.at, start.loss);
+        let reach = if x == 0.0 { t } else { t * (l / x) };
         if tau < reach {
             let (ct, m) = (c * tau, (-c * tau).exp_m1());
             // (1 - e^(-c tau)) / c, tau at c = 0.
@@ -767,17 +767,12 @@ impl General {
         } else {
             (0.0, 0.0)
         };
-        SegmentStart {
-            v,
-            time,
-            loss,
-            log: 0.0,
-        }
+        SegmentStart { at: time, loss }
     }
 
-    /// `v_b` and `D rho / kw` from `start` after `tau` (B8-B13).
-    fn segment(&self, start: &SegmentStart, tau: f64) -> (f64, f64) {
-        let (v_a, time, loss) = (start.v, start.time, start.loss);
+    /// `v_b` and `D rho / kw` from `v_a` at `start` after `tau` (B8-B13).
+    fn segment(&self, v_a: f64, start: &SegmentStart, tau: f64) -> (f64, f64) {
+        let (time, loss) = (start.at, start.loss);
         if v_a >= 0.0 {
             return self.positive_from(v_a, (time, loss), tau);
         }
@@ -831,7 +826,7 @@ impl General {
     #[cfg(test)]
     fn positive(&self, v_a: f64, tau: f64) -> (f64, f64) {
         let start = self.start(v_a);
-        self.positive_from(v_a, (start.time, start.loss), tau)
+        self.positive_from(v_a, (start.at, start.loss), tau)
     }
 
     /// The positive part (B12) from `v_a >= 0` at `(T(v_a), E(v_a))` after `tau`.
@@ -899,8 +894,8 @@ mod tests {
             let g = General::new(1.0, c).unwrap();
             for v_a in [-1.0, -0.7, -0.2, -1e-9, 0.0, 0.3, 0.9, 1.0 - 1e-12, 1.0] {
                 for tau in [1e-6, 0.01, 0.3, 1.0, 2.5, 7.0, 40.0] {
-                    let (v1, d1) = linear(c, &linear_start(c, v_a), tau);
-                    let (v2, d2) = g.segment(&g.start(v_a), tau);
+                    let (v1, d1) = linear(c, v_a, &linear_start(c, v_a), tau);
+                    let (v2, d2) = g.segment(v_a, &g.start(v_a), tau);
                     assert!(
                         (v1 - v2).abs() < 2e-14,
                         "{sigma} {v_a} {tau}: v {v1} vs {v2}"
@@ -974,7 +969,7 @@ mod tests {
         for n in [1.0 + 1e-9, 1.5, 2.0, 3.7, 25.0, MAX_EXPONENT] {
             for c in [0.0, 1.0, 1e3, 1e300] {
                 let g = General::new(n, c).unwrap_or_else(|| panic!("n {n} c {c}"));
-                let (v, d) = g.segment(&g.start(-1.0), 3.0);
+                let (v, d) = g.segment(-1.0, &g.start(-1.0), 3.0);
                 assert!(
                     v.is_finite() && d.is_finite() && v > 0.0,
                     "{n} {c}: {v} {d}"

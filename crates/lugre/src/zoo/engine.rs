@@ -77,7 +77,7 @@ impl ZooLoop {
         let (max, min) = (self.u[r], self.u.iter().fold(f64::MAX, |m, &x| m.min(x)));
         let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
         // The solver's last walk, reused from `first` on (the same states to rounding).
-        let mut trail = Vec::new();
+        let mut trail = Vec::with_capacity(n);
         let (start, first) = bank.periodic_trail(&self.u, r, min, &mut trail);
         let mut run = start.clone();
         let mut scratch = start.clone();
