@@ -33,6 +33,36 @@ struct Entry<S> {
     d: f64,
 }
 
+/// The rainflow pass's work: the open reversals, the loops as they close, and a state to map
+/// arcs' ends in.
+struct Pairing<S> {
+    /// The open reversals, the global maximum at the bottom.
+    stack: Vec<Entry<S>>,
+    /// The loops as they close; a loop's `parent` holds, until [`nest`], the index of the
+    /// closed loop it lies in (`None`: the major loop). At most one loop per two turning
+    /// points: reserved once, never moved by growth.
+    found: Vec<Loop>,
+    /// Closed loops without a parent yet, by where they start: (rotated index, loop).
+    roots: Vec<(usize, usize)>,
+    scratch: S,
+}
+
+impl<S: Clone> Pairing<S> {
+    /// The pass's start at the periodic state `start`, for `n` turning points.
+    fn new(start: &S, n: usize) -> Self {
+        Self {
+            stack: vec![Entry {
+                j: 0,
+                state: start.clone(),
+                d: 0.0,
+            }],
+            found: Vec::with_capacity(n / 2 + 2),
+            roots: Vec::new(),
+            scratch: start.clone(),
+        }
+    }
+}
+
 impl ZooLoop {
     /// The loops of `model` for the periodic input `input`.
     ///
@@ -74,100 +104,115 @@ impl ZooLoop {
     fn pair<M: Segmental>(&mut self, bank: &M) {
         let n = self.u.len();
         let r = self.start_index();
-        let (max, min) = (self.u[r], self.u.iter().fold(f64::MAX, |m, &x| m.min(x)));
-        let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
+        let min = self.u.iter().fold(f64::MAX, |m, &x| m.min(x));
         // The solver's last walk, reused from `first` on (the same states to rounding).
         let mut trail = Vec::with_capacity(n);
         let (start, first) = bank.periodic_trail(&self.u, r, min, &mut trail);
         let mut run = start.clone();
-        let mut scratch = start.clone();
-        let mut stack = vec![Entry {
-            j: 0,
-            state: start.clone(),
-            d: 0.0,
-        }];
-        // At most one loop per two turning points: reserved once, never moved by growth.
-        // The loops as they close; a loop's `parent` holds, until [`nest`], the index of the
-        // closed loop it lies in (`None`: the major loop).
-        let mut found: Vec<Loop> = Vec::with_capacity(n / 2 + 2);
-        // Closed loops without a parent yet, by where they start: (rotated index, loop).
-        let mut roots: Vec<(usize, usize)> = Vec::new();
+        let mut pairing = Pairing::new(&start, n);
         let mut d_period = 0.0;
         self.force[r] = bank.force(&start);
         for j in 1..=n {
             let k = (r + j) % n;
-            let u_p = self.u[k];
             // The segment into P starts at `run`: its shared start serves every loop closing
             // on it and the segment itself (the walk's, where `run` is the walk's state).
             let segment = match trail.get(j - 1) {
                 Some(step) if j > first => step.start,
-                _ => bank.start(&run, u_p),
+                _ => bank.start(&run, self.u[k]),
             };
-            // The pair on the bottom entry (the global maximum) is the major loop, closed at the end.
-            while stack.len() >= 3 {
-                let m = stack.len();
-                let (a, b) = (&stack[m - 2], &stack[m - 1]);
-                let (u_a, u_b) = (M::input(&a.state), M::input(&b.state));
-                if (u_p - u_b).abs() < (u_b - u_a).abs() {
-                    break;
-                }
-                // The arc ends where the input is back at u_A, on the segment into P.
-                M::assign(&mut scratch, &run);
-                let d = a.d + b.d + bank.advance_from(&segment, &mut scratch, M::input(&a.state));
-                // Every loop closed since A was pushed starts after A and lies in this arc.
-                let row = found.len();
-                while let Some(&(_, inside)) = roots.last().filter(|&&(start, _)| start > a.j) {
-                    found[inside].parent = Some(row);
-                    roots.pop();
-                }
-                roots.push((a.j, row));
-                found.push(self.found(bank, (a, b, j - 1), &scratch, d, r));
-                let merged = a.d + b.d;
-                stack.truncate(m - 2);
-                if let Some(below) = stack.last_mut() {
-                    below.d += merged;
-                }
-            }
+            self.close_pairs(bank, &mut pairing, (&run, &segment), (j, r));
             let d = match trail.get(j - 1) {
                 Some(step) if j >= first => {
                     M::assign(&mut run, &step.state);
                     step.d
                 }
-                _ => bank.advance_from(&segment, &mut run, u_p),
+                _ => bank.advance_from(&segment, &mut run, self.u[k]),
             };
             d_period += d;
-            if let Some(top) = stack.last_mut() {
+            if let Some(top) = pairing.stack.last_mut() {
                 top.d += d;
             }
             self.force[k] = bank.force(&run);
             if j < n {
-                stack.push(Entry {
+                pairing.stack.push(Entry {
                     j,
                     state: run.clone(),
                     d: 0.0,
                 });
             }
         }
+        let major = self.major(bank, (&start, &run), d_period, (r, min));
+        self.loops = nest(major, pairing.found);
+    }
+
+    /// Closes every pair that the segment into `P` (rotated index `j`, from `run` with its
+    /// shared start `segment`) completes, innermost first.
+    #[inline]
+    fn close_pairs<M: Segmental>(
+        &self,
+        bank: &M,
+        p: &mut Pairing<M::State>,
+        (run, segment): (&M::State, &M::Start),
+        (j, r): (usize, usize),
+    ) {
+        let u_p = self.u[(r + j) % self.u.len()];
+        // The pair on the bottom entry (the global maximum) is the major loop, closed at the end.
+        while p.stack.len() >= 3 {
+            let m = p.stack.len();
+            let (a, b) = (&p.stack[m - 2], &p.stack[m - 1]);
+            let (u_a, u_b) = (M::input(&a.state), M::input(&b.state));
+            if (u_p - u_b).abs() < (u_b - u_a).abs() {
+                break;
+            }
+            // The arc ends where the input is back at u_A, on the segment into P.
+            M::assign(&mut p.scratch, run);
+            let d = a.d + b.d + bank.advance_from(segment, &mut p.scratch, u_a);
+            // Every loop closed since A was pushed starts after A and lies in this arc.
+            let row = p.found.len();
+            while let Some(&(_, inside)) = p.roots.last().filter(|&&(start, _)| start > a.j) {
+                p.found[inside].parent = Some(row);
+                p.roots.pop();
+            }
+            p.roots.push((a.j, row));
+            p.found
+                .push(self.found(bank, (a, b, j - 1), &p.scratch, d, r));
+            let merged = a.d + b.d;
+            p.stack.truncate(m - 2);
+            if let Some(below) = p.stack.last_mut() {
+                below.d += merged;
+            }
+        }
+    }
+
+    /// The major loop: from the global maximum `u[r]` (periodic state `start`) through the
+    /// first global minimum `min` and back (state `end`), with the period's dissipation.
+    fn major<M: Segmental>(
+        &self,
+        bank: &M,
+        (start, end): (&M::State, &M::State),
+        d_period: f64,
+        (r, min): (usize, f64),
+    ) -> Loop {
+        let n = self.u.len();
+        let lowest = (0..n).find(|&j| self.u[(r + j) % n] == min).unwrap_or(0);
         // Over the whole period the state returns to the periodic state: exactly for the
         // Masing models, to the fixed point's few ulps for single-state models (S1), which
         // would otherwise show as a stored-energy change and a gap of 1e-16.
-        let energy = bank.arc(&start, &start, d_period);
+        let energy = bank.arc(start, start, d_period);
         let rho_r = self.rho[r];
-        let k_low = (r + lowest) % n;
-        let major = Loop {
+        Loop {
             kind: LoopKind::Major,
             start: self.point(r, rho_r),
-            reversal: self.point(k_low, rho_r + self.rotated(r, lowest)),
+            reversal: self.point((r + lowest) % n, rho_r + self.rotated(r, lowest)),
             end: LoopPoint {
                 rho: rho_r + self.period(),
-                u: max,
-                y: bank.force(&run),
+                u: self.u[r],
+                y: bank.force(end),
             },
             energy,
             parent: None,
             depth: 0,
-        };
-        self.loops = nest(major, found);
+        }
     }
 
     /// The record of the loop `(A, B)` closing on the segment after rotated index `prev`, its
