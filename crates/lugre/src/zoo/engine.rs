@@ -116,12 +116,13 @@ impl ZooLoop {
             let k = (r + j) % n;
             // The segment into P starts at `run`: its shared start serves every loop closing
             // on it and the segment itself (the walk's, where `run` is the walk's state).
-            let segment = match trail.get(j - 1) {
+            let walked = trail.get(j - 1);
+            let segment = match walked {
                 Some(step) if j > first => step.start,
                 _ => bank.start(&run, self.u[k]),
             };
             self.close_pairs(bank, &mut pairing, (&run, &segment), (j, r));
-            let d = match trail.get(j - 1) {
+            let d = match walked {
                 Some(step) if j >= first => {
                     M::assign(&mut run, &step.state);
                     step.d
