@@ -293,16 +293,7 @@ fn presliding_reports_its_friction_displacement_loop() {
     assert!(out.contains("friction-displacement loops"), "{out}");
     assert!(out.contains("lugre loop"), "{out}");
     let j = accepts_json(&["dynamics", "--scenario", "presliding", "--json"]);
-    let loops = j["loops"].as_array().unwrap();
-    assert_eq!(loops.len(), 1, "{loops:?}");
-    let l = &loops[0];
-    let tp: Vec<f64> = l["turning_points"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(f)
-        .collect();
-    assert_eq!(tp.len(), 2);
+    let (l, tp) = the_one_loop(&j);
     // Table I: sigma0 = 1e5 N/m, g0 = Fs = 1.5 N.
     let (g0, a) = (1.5, 1e5 / 1.5);
     let span = (tp[0] - tp[1]).abs();
@@ -353,16 +344,7 @@ fn gms_friction_reports_its_friction_displacement_loop() {
         "3",
         "--json",
     ]);
-    let loops = j["loops"].as_array().unwrap();
-    assert_eq!(loops.len(), 1, "{loops:?}");
-    let l = &loops[0];
-    let tp: Vec<f64> = l["turning_points"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(f)
-        .collect();
-    assert_eq!(tp.len(), 2);
+    let (l, tp) = the_one_loop(&j);
     let range = tp[0] - tp[1];
     let by_hand: f64 = [1.0, 3.0, 5.0, 7.0]
         .iter()
@@ -613,4 +595,19 @@ fn gms_friction_from_the_zoo_flags() {
         ],
         "--zba is not a parameter of the Maxwell-slip model",
     );
+}
+
+/// The run's one friction loop in `j` (checked to be the only one) and its two turning points.
+fn the_one_loop(j: &serde_json::Value) -> (&serde_json::Value, Vec<f64>) {
+    let loops = j["loops"].as_array().unwrap();
+    assert_eq!(loops.len(), 1, "{loops:?}");
+    let l = &loops[0];
+    let tp: Vec<f64> = l["turning_points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(f)
+        .collect();
+    assert_eq!(tp.len(), 2);
+    (l, tp)
 }
